@@ -1,0 +1,14 @@
+#pragma once
+// Each group of `motostab` subcommands registers itself here; apps/motostab.cpp only wires them.
+#include <CLI/CLI.hpp>
+
+namespace motostab::cli {
+
+void registerScenarioCommands(CLI::App& app);   ///< check, import (apps/cmd_scenario.cpp)
+void registerStabilityCommands(CLI::App& app);  ///< sweep, linearize (apps/cmd_stability.cpp)
+/// identify static|frf|swingarm|cog|inertia (apps/cmd_identify_swingarm.cpp); `identify` is the parent.
+void registerSwingarmIdentifyCommands(CLI::App& identify);
+/// identify response (apps/cmd_identify_response.cpp); `identify` is the parent.
+void registerResponseIdentifyCommands(CLI::App& identify);
+
+}  // namespace motostab::cli

@@ -1,0 +1,28 @@
+// motostab: stability of motorcycles and bicycles. Subcommands are registered by apps/cmd_*.cpp.
+#include <iostream>
+
+#include "apps/commands.h"
+#include "io/input_error.h"
+
+int main(int argc, char** argv) {
+  CLI::App app{"motostab: stability of motorcycles and bicycles (Simbody multibody models from YAML scenarios)"};
+  app.require_subcommand(1);
+  motostab::cli::registerScenarioCommands(app);
+  motostab::cli::registerStabilityCommands(app);
+  CLI::App* identify = app.add_subcommand("identify", "Identify model parameters from lab tests or responses");
+  identify->require_subcommand(1);
+  motostab::cli::registerSwingarmIdentifyCommands(*identify);
+  motostab::cli::registerResponseIdentifyCommands(*identify);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    return app.exit(e);
+  } catch (const motostab::InputError& e) {
+    std::cerr << "motostab: input error: " << e.what() << "\n";
+    return 2;
+  } catch (const std::exception& e) {
+    std::cerr << "motostab: error: " << e.what() << "\n";
+    return 1;
+  }
+  return 0;
+}

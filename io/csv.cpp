@@ -1,0 +1,110 @@
+#include "io/csv.h"
+
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <sstream>
+
+#include "io/input_error.h"
+
+namespace motostab {
+namespace {
+
+std::vector<std::string> splitCells(const std::string& line) {
+  std::vector<std::string> cells;
+  std::string cell;
+  std::stringstream ss(line);
+  while (std::getline(ss, cell, ',')) cells.push_back(cell);
+  if (!line.empty() && line.back() == ',') cells.push_back("");
+  return cells;
+}
+
+std::string trim(const std::string& s) {
+  const auto b = s.find_first_not_of(" \t\r");
+  if (b == std::string::npos) return "";
+  const auto e = s.find_last_not_of(" \t\r");
+  return s.substr(b, e - b + 1);
+}
+
+}  // namespace
+
+int CsvTable::getColumnIndex(const std::string& name) const {
+  for (size_t j = 0; j < header.size(); ++j)
+    if (header[j] == name) return static_cast<int>(j);
+  std::string have;
+  for (const auto& h : header) have += (have.empty() ? "" : ", ") + h;
+  throw InputError({source, 0, 0, name}, "no such column (columns: " + have + ")");
+}
+
+std::vector<double> CsvTable::getColumn(const std::string& name) const {
+  const int j = getColumnIndex(name);
+  std::vector<double> out;
+  out.reserve(rows.size());
+  for (const auto& r : rows) out.push_back(r[j]);
+  return out;
+}
+
+CsvTable readCsv(const std::filesystem::path& path) {
+  CsvTable table;
+  table.source = path.string();
+  std::ifstream in(path);
+  if (!in) throw InputError({table.source, 0, 0, ""}, "cannot open CSV file");
+  std::string line;
+  int lineNo = 0;
+  while (std::getline(in, line)) {
+    ++lineNo;
+    const std::string t = trim(line);
+    if (t.empty() || t[0] == '#') continue;
+    auto cells = splitCells(t);
+    if (table.header.empty()) {
+      for (auto& c : cells) table.header.push_back(trim(c));
+      continue;
+    }
+    if (cells.size() != table.header.size())
+      throw InputError({table.source, lineNo, 0, ""},
+                       "expected " + std::to_string(table.header.size()) + " cells, found " +
+                           std::to_string(cells.size()));
+    std::vector<double> row(cells.size());
+    for (size_t j = 0; j < cells.size(); ++j) {
+      const std::string c = trim(cells[j]);
+      char* end = nullptr;
+      row[j] = std::strtod(c.c_str(), &end);
+      if (c.empty() || end != c.c_str() + c.size() || !std::isfinite(row[j]))
+        throw InputError({table.source, lineNo, static_cast<int>(j + 1), table.header[j]},
+                         "not a finite number: '" + c + "'");
+    }
+    table.rows.push_back(std::move(row));
+    table.lineNumbers.push_back(lineNo);
+  }
+  if (table.header.empty()) throw InputError({table.source, 0, 0, ""}, "no header row");
+  return table;
+}
+
+std::string formatNumber(double value, int significantDigits) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.*g", significantDigits, value);
+  return buf;
+}
+
+CsvWriter::CsvWriter(const std::vector<std::string>& header) {
+  for (size_t j = 0; j < header.size(); ++j) text_ += (j ? "," : "") + header[j];
+  text_ += "\n";
+}
+
+CsvWriter& CsvWriter::beginRow() {
+  if (rowStarted_) text_ += "\n";
+  rowStarted_ = true;
+  firstCell_ = true;
+  return *this;
+}
+
+CsvWriter& CsvWriter::add(const std::string& cell) {
+  if (!firstCell_) text_ += ",";
+  text_ += cell;
+  firstCell_ = false;
+  return *this;
+}
+
+CsvWriter& CsvWriter::add(double value) { return add(formatNumber(value)); }
+
+}  // namespace motostab

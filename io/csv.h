@@ -1,0 +1,46 @@
+#pragma once
+// Strict numeric CSV reading and full-precision CSV writing.
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace motostab {
+
+/// A numeric table read from a CSV file with a header row. Lines starting with '#' and blank
+/// lines are comments.
+struct CsvTable {
+  std::string source;                     ///< file path, for messages
+  std::vector<std::string> header;        ///< column names
+  std::vector<std::vector<double>> rows;  ///< rows[i][j]: row i, column j
+  std::vector<int> lineNumbers;           ///< 1-based file line of each row
+
+  /// Index of a named column; throws InputError naming the file and the column if absent.
+  int getColumnIndex(const std::string& name) const;
+  /// One column's values by name.
+  std::vector<double> getColumn(const std::string& name) const;
+};
+
+/// Reads a CSV file. Every non-comment row must have as many numeric cells as the header; a bad
+/// cell is an InputError naming the file, line and column name.
+CsvTable readCsv(const std::filesystem::path& path);
+
+/// Formats a number with `significantDigits` (17 round-trips a double exactly).
+std::string formatNumber(double value, int significantDigits = 17);
+
+/// Builds CSV text row by row; cells are strings or numbers (written with 17 significant digits).
+class CsvWriter {
+ public:
+  explicit CsvWriter(const std::vector<std::string>& header);
+  CsvWriter& beginRow();
+  CsvWriter& add(double value);
+  CsvWriter& add(const std::string& text);
+  /// The whole CSV text, newline-terminated.
+  std::string getText() const { return rowStarted_ ? text_ + "\n" : text_; }
+
+ private:
+  std::string text_;
+  bool rowStarted_ = false;
+  bool firstCell_ = true;
+};
+
+}  // namespace motostab

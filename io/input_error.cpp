@@ -1,0 +1,18 @@
+#include "io/input_error.h"
+
+namespace motostab {
+
+std::string InputLocation::describe() const {
+  std::string s = file.empty() ? std::string("<input>") : file;
+  if (line > 0) {
+    s += ":" + std::to_string(line);
+    if (column > 0) s += ":" + std::to_string(column);
+  }
+  if (!key.empty()) s += ": " + key;
+  return s;
+}
+
+InputError::InputError(const InputLocation& where, const std::string& what)
+    : std::runtime_error(where.describe() + ": " + what), where_(where), reason_(what) {}
+
+}  // namespace motostab

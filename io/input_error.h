@@ -1,0 +1,30 @@
+#pragma once
+// Errors in user input (scenarios, test descriptions, CSV files), located by file, line, column and key.
+#include <stdexcept>
+#include <string>
+
+namespace motostab {
+
+/// Where a value came from: file, 1-based line and column, and the dotted key path ("rear_frame.mass_kg").
+struct InputLocation {
+  std::string file;
+  int line = 0;    ///< 1-based; 0 if unknown
+  int column = 0;  ///< 1-based; 0 if unknown
+  std::string key;
+  /// "file:line:column: key" with the unknown parts left out.
+  std::string describe() const;
+};
+
+/// Bad input: the message names the file, line, column and key. Never a crash or a silent default.
+class InputError : public std::runtime_error {
+ public:
+  InputError(const InputLocation& where, const std::string& what);
+  const InputLocation& getLocation() const { return where_; }
+  const std::string& getReason() const { return reason_; }
+
+ private:
+  InputLocation where_;
+  std::string reason_;
+};
+
+}  // namespace motostab

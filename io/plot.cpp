@@ -1,0 +1,48 @@
+#include "io/plot.h"
+
+#include <cstdlib>
+#include <stdexcept>
+
+#include "io/atomic_file.h"
+
+namespace motostab {
+
+std::string gnuplotQuote(const std::string& text) {
+  std::string out = "'";
+  for (char c : text) out += (c == '\'') ? std::string("''") : std::string(1, c);
+  return out + "'";
+}
+
+namespace {
+std::string shellQuote(const std::string& text) {
+  std::string out = "'";
+  for (char c : text) out += (c == '\'') ? std::string("'\\''") : std::string(1, c);
+  return out + "'";
+}
+}  // namespace
+
+void renderGnuplot(const std::filesystem::path& dir, const std::string& name, const std::string& body) {
+  const std::string script =
+      "# Made by motostab. Restyle and re-run with: gnuplot " + name + ".gp\n"
+      "if (!exists('outstem')) outstem = " + gnuplotQuote(name) + "\n"
+      "do for [ext in 'png svg'] {\n"
+      "  if (ext eq 'png') { set terminal pngcairo size 1000,700 enhanced font ',11' }\n"
+      "  else { set terminal svg size 1000,700 dynamic enhanced font 'Helvetica,12' }\n"
+      "  set output outstem.'.'.ext\n" +
+      body +
+      "\n  unset output\n}\n";
+  writeFileAtomically(dir / (name + ".gp"), script);
+  const std::string stem = "." + name + ".rendering";
+  const std::string cmd = "cd " + shellQuote(dir.string()) + " && gnuplot -e \"outstem='" + stem + "'\" " +
+                          shellQuote(name + ".gp") + " 2>" + shellQuote(stem + ".log");
+  const int rc = std::system(cmd.c_str());
+  if (rc != 0) {
+    throw std::runtime_error("gnuplot failed on " + (dir / (name + ".gp")).string() + " (see " +
+                             (dir / (stem + ".log")).string() + ")");
+  }
+  for (const char* ext : {".png", ".svg"})
+    std::filesystem::rename(dir / (stem + ext), dir / (name + ext));
+  std::filesystem::remove(dir / (stem + ".log"));
+}
+
+}  // namespace motostab

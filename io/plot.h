@@ -1,0 +1,17 @@
+#pragma once
+// Plots through gnuplot: each plot is a script beside its data, so users can restyle and re-run it.
+#include <filesystem>
+#include <string>
+
+namespace motostab {
+
+/// Writes DIR/NAME.gp and renders DIR/NAME.png and DIR/NAME.svg by running gnuplot in DIR.
+/// `body` holds the gnuplot commands after the terminal and output are set (data files are named
+/// relative to DIR). The images appear only when gnuplot succeeds. Throws std::runtime_error if
+/// gnuplot is missing or fails, naming the script.
+void renderGnuplot(const std::filesystem::path& dir, const std::string& name, const std::string& body);
+
+/// Quotes a string for use inside a gnuplot single-quoted literal.
+std::string gnuplotQuote(const std::string& text);
+
+}  // namespace motostab

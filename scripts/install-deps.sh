@@ -1,0 +1,15 @@
+#!/usr/bin/env bash
+# Installs the Debian packages motostab needs, only those missing. Run as root (or with sudo available).
+set -euo pipefail
+pkgs=(cmake g++ make libsimbody-dev libeigen3-dev libyaml-cpp-dev libcli11-dev nlohmann-json3-dev
+      libfftw3-dev libceres-dev libgtest-dev libbenchmark-dev gnuplot-nox)
+missing=()
+for p in "${pkgs[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+[ ${#missing[@]} -eq 0 ] && exit 0
+echo "motostab: installing missing packages: ${missing[*]}" >&2
+SUDO=""; [ "$(id -u)" -ne 0 ] && SUDO="sudo"
+export DEBIAN_FRONTEND=noninteractive
+$SUDO apt-get update -qq
+$SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null

@@ -1,0 +1,51 @@
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+
+#include "io/csv.h"
+#include "io/input_error.h"
+
+namespace {
+
+std::filesystem::path writeTemp(const std::string& name, const std::string& text) {
+  auto p = std::filesystem::temp_directory_path() / name;
+  std::ofstream(p) << text;
+  return p;
+}
+
+TEST(Csv, ReadsCommentsHeaderAndRows) {
+  auto p = writeTemp("motostab_csv_ok.csv", "# comment\nt_s,y\n0,1.5\n\n0.1,-2e-3\n");
+  auto t = motostab::readCsv(p);
+  ASSERT_EQ(t.header.size(), 2u);
+  ASSERT_EQ(t.rows.size(), 2u);
+  EXPECT_DOUBLE_EQ(t.getColumn("y")[1], -2e-3);
+  EXPECT_EQ(t.lineNumbers[1], 5);
+}
+
+TEST(Csv, BadCellNamesFileLineAndColumn) {
+  auto p = writeTemp("motostab_csv_bad.csv", "t_s,y\n0,1\n0.1,abc\n");
+  try {
+    motostab::readCsv(p);
+    FAIL() << "no error";
+  } catch (const motostab::InputError& e) {
+    const std::string m = e.what();
+    EXPECT_NE(m.find("motostab_csv_bad.csv:3:2"), std::string::npos) << m;
+    EXPECT_NE(m.find("y"), std::string::npos) << m;
+  }
+}
+
+TEST(Csv, RaggedRowIsAnError) {
+  auto p = writeTemp("motostab_csv_ragged.csv", "a,b\n1,2\n3\n");
+  EXPECT_THROW(motostab::readCsv(p), motostab::InputError);
+}
+
+TEST(Csv, WriterRoundTripsDoublesExactly) {
+  motostab::CsvWriter w({"x"});
+  const double v = 0.1 + 0.2;
+  w.beginRow().add(v);
+  auto p = writeTemp("motostab_csv_rt.csv", w.getText());
+  EXPECT_EQ(motostab::readCsv(p).rows[0][0], v);
+}
+
+}  // namespace
