@@ -1,0 +1,155 @@
+#include "analysis/linearize.h"
+
+#include <Eigen/Eigenvalues>
+#include <algorithm>
+
+namespace motostab {
+
+int LinearModel::findState(const std::string& name) const {
+  for (size_t i = 0; i < states.size(); ++i)
+    if (states[i].name == name) return static_cast<int>(i);
+  return -1;
+}
+
+namespace {
+
+// Greedy choice of dependent columns of G (rows) in priority order, keeping G_dep full rank.
+std::vector<int> chooseDependent(const Eigen::MatrixXd& G, const std::vector<int>& priority) {
+  std::vector<int> dep;
+  const int m = static_cast<int>(G.rows());
+  for (int c : priority) {
+    if (static_cast<int>(dep.size()) == m) break;
+    Eigen::MatrixXd sub(m, dep.size() + 1);
+    for (size_t k = 0; k < dep.size(); ++k) sub.col(k) = G.col(dep[k]);
+    sub.col(dep.size()) = G.col(c);
+    Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr(sub);
+    qr.setThreshold(1e-9);
+    if (qr.rank() == static_cast<int>(dep.size()) + 1) dep.push_back(c);
+  }
+  return dep;
+}
+
+std::vector<int> withPriority(const std::vector<int>& first, int n) {
+  std::vector<int> out;
+  for (int i : first)
+    if (i >= 0) out.push_back(i);
+  for (int i = 0; i < n; ++i)
+    if (std::find(out.begin(), out.end(), i) == out.end()) out.push_back(i);
+  return out;
+}
+
+}  // namespace
+
+LinearModel linearize(const VehicleModel& model, const TrimResult& trim, const LinearizeOptions& opt) {
+  const StateFunction fn(model);
+  const CoordinateIndices& ix = model.getIndices();
+  SimTK::State s = trim.state;
+  const int nq = model.getNumQ(), nu = model.getNumU(), nz = model.getNumZ();
+  auto yDot = [&](const SimTK::State& st, Eigen::VectorXd& out) { fn.calcYDot(st, out); };
+  auto errors = [&](const SimTK::State& st, Eigen::VectorXd& out) { fn.calcConstraintErrors(st, out); };
+  auto stepFor = [&](const StateEntry& e) { return opt.step * std::max(1.0, std::abs(fn.get(s, e))); };
+
+  // Constraint Jacobian G = d[qerr; uerr]/d[q; u].
+  Eigen::VectorXd err0, col;
+  fn.calcConstraintErrors(s, err0);
+  const int m = static_cast<int>(err0.size());
+  const int mp = s.getNQErr();
+  Eigen::MatrixXd G(m, nq + nu);
+  for (int j = 0; j < nq + nu; ++j) {
+    const StateEntry e{j < nq ? Slot::Q : Slot::U, j < nq ? j : j - nq};
+    fn.calcDirectionalDerivative(s, {{e, 1.0}}, stepFor(e), opt.order, errors, col);
+    G.col(j) = col;
+  }
+
+  // Dependent coordinates: heights and pitch first, then the rates that the contact fixes.
+  std::vector<int> depQ, depU;
+  if (m > 0) {
+    depQ = chooseDependent(G.topLeftCorner(mp, nq), withPriority({ix.height, ix.pitch}, nq));
+    depU = chooseDependent(G.bottomRightCorner(m - mp, nu),
+                           withPriority({ix.height, ix.pitch, ix.rearSpin, ix.frontSpin, ix.y, ix.yaw}, nu));
+    if (static_cast<int>(depQ.size()) != mp || static_cast<int>(depU.size()) != m - mp)
+      throw std::runtime_error("linearize: constraints are redundant or singular at the trim");
+  }
+  std::vector<int> depCols;
+  for (int q : depQ) depCols.push_back(q);
+  for (int u : depU) depCols.push_back(nq + u);
+  Eigen::MatrixXd Gdep(m, depCols.size());
+  for (size_t k = 0; k < depCols.size(); ++k) Gdep.col(k) = G.col(depCols[k]);
+  const Eigen::PartialPivLU<Eigen::MatrixXd> GdepLU = m > 0 ? Gdep.partialPivLu() : Eigen::PartialPivLU<Eigen::MatrixXd>();
+
+  // Independent states in model order: q, u, z.
+  LinearModel lin;
+  lin.speed = trim.speed;
+  for (int i = 0; i < nq; ++i)
+    if (std::find(depQ.begin(), depQ.end(), i) == depQ.end()) lin.states.push_back({model.getQNames()[i], {Slot::Q, i}});
+  for (int i = 0; i < nu; ++i)
+    if (std::find(depU.begin(), depU.end(), i) == depU.end()) lin.states.push_back({model.getUNames()[i], {Slot::U, i}});
+  for (int i = 0; i < nz; ++i) lin.states.push_back({model.getZNames()[i], {Slot::Z, i}});
+  const int n = static_cast<int>(lin.states.size());
+  auto rowOf = [&](const StateEntry& e) { return e.slot == Slot::Q ? e.index : e.slot == Slot::U ? nq + e.index : nq + nu + e.index; };
+
+  // Columns: directional derivatives along the tangent-space basis vectors.
+  Eigen::MatrixXd A(n, n);
+  for (int j = 0; j < n; ++j) {
+    const StateEntry& e = lin.states[j].entry;
+    std::vector<std::pair<StateEntry, double>> dir{{e, 1.0}};
+    if (e.slot != Slot::Z && m > 0) {
+      const Eigen::VectorXd dDep = GdepLU.solve(-G.col(rowOf(e)));
+      for (size_t k = 0; k < depCols.size(); ++k) {
+        const int c = depCols[k];
+        dir.push_back({{c < nq ? Slot::Q : Slot::U, c < nq ? c : c - nq}, dDep[k]});
+      }
+    }
+    fn.calcDirectionalDerivative(s, dir, stepFor(e), opt.order, yDot, col);
+    for (int i = 0; i < n; ++i) A(i, j) = col[rowOf(lin.states[i].entry)];
+  }
+  lin.inputNames = VehicleModel::getInputNames();
+  Eigen::MatrixXd B(n, kNumInputs);
+  for (int k = 0; k < kNumInputs; ++k) {
+    fn.calcDirectionalDerivative(s, {{{Slot::Input, k}, 1.0}}, 1.0, 2, yDot, col);
+    for (int i = 0; i < n; ++i) B(i, k) = col[rowOf(lin.states[i].entry)];
+  }
+
+  // Remove cyclic coordinates; yaw too when no kept row depends on it (rolling constraints).
+  std::vector<int> remove;
+  const auto cyc = model.getCyclicQ();
+  int yawCol = -1;
+  for (int j = 0; j < n; ++j) {
+    const StateEntry& e = lin.states[j].entry;
+    if (e.slot != Slot::Q) continue;
+    if (std::find(cyc.begin(), cyc.end(), e.index) != cyc.end()) remove.push_back(j);
+    if (e.index == ix.yaw) yawCol = j;
+  }
+  if (yawCol >= 0) {
+    double yawInfluence = 0;
+    for (int i = 0; i < n; ++i)
+      if (std::find(remove.begin(), remove.end(), i) == remove.end())
+        yawInfluence = std::max(yawInfluence, std::abs(A(i, yawCol)));
+    if (yawInfluence < opt.zeroColumnTolerance * std::max(1.0, A.lpNorm<Eigen::Infinity>())) remove.push_back(yawCol);
+  }
+  std::vector<int> keep;
+  for (int j = 0; j < n; ++j)
+    if (std::find(remove.begin(), remove.end(), j) == remove.end()) keep.push_back(j);
+  for (int j : remove) {
+    Eigen::VectorXd kept(keep.size());
+    for (size_t a = 0; a < keep.size(); ++a) kept[a] = A(keep[a], j);
+    lin.removedColumns.push_back({lin.states[j].name, kept});
+  }
+  lin.A.resize(keep.size(), keep.size());
+  lin.B.resize(keep.size(), kNumInputs);
+  std::vector<LinearState> kept;
+  for (size_t a = 0; a < keep.size(); ++a) {
+    kept.push_back(lin.states[keep[a]]);
+    lin.B.row(a) = B.row(keep[a]);
+    for (size_t b = 0; b < keep.size(); ++b) lin.A(a, b) = A(keep[a], keep[b]);
+  }
+  lin.states = kept;
+
+  Eigen::EigenSolver<Eigen::MatrixXd> es(lin.A);
+  lin.eigenvalues = es.eigenvalues();
+  lin.eigenvectors = es.eigenvectors();
+  for (int k = 0; k < lin.eigenvectors.cols(); ++k) lin.eigenvectors.col(k).normalize();
+  return lin;
+}
+
+}  // namespace motostab

@@ -1,0 +1,41 @@
+#pragma once
+// Linearisation about a trim: x' = A x + B u in named, independent, non-cyclic coordinates.
+#include <Eigen/Dense>
+#include <string>
+#include <vector>
+
+#include "analysis/trim.h"
+
+namespace motostab {
+
+struct LinearizeOptions {
+  int order = 4;            ///< central-difference order: 2 or 4
+  double step = 1e-3;       ///< perturbation (rad, m, rad/s, m/s; scaled by max(1, |value|))
+  double zeroColumnTolerance = 1e-9;
+};
+
+/// One state of the linear model.
+struct LinearState {
+  std::string name;
+  StateEntry entry;  ///< the q, u or z it stands for
+};
+
+/// x' = A x + B u about a trim, restricted to the constraint tangent space (simbody-notes:
+/// T = [I; -G_dep^-1 G_ind]) with the cyclic coordinates removed.
+struct LinearModel {
+  double speed = 0;  ///< m/s
+  std::vector<LinearState> states;
+  std::vector<std::string> inputNames;  ///< steer_torque, drive_torque, roll_torque (N m)
+  Eigen::MatrixXd A, B;
+  /// Columns of the removed cyclic coordinates over the kept rows (zero for a correct model).
+  std::vector<std::pair<std::string, Eigen::VectorXd>> removedColumns;
+  Eigen::VectorXcd eigenvalues;   ///< 1/s
+  Eigen::MatrixXcd eigenvectors;  ///< column k belongs to eigenvalue k, unit 2-norm
+
+  int findState(const std::string& name) const;
+};
+
+/// Linearises `model` about `trim` (seed eq. 26) and computes eigenvalues and eigenvectors.
+LinearModel linearize(const VehicleModel& model, const TrimResult& trim, const LinearizeOptions& options = {});
+
+}  // namespace motostab

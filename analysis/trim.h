@@ -1,0 +1,42 @@
+#pragma once
+// Steady straight running at a forward speed: Newton's method (Gauss-Newton for the
+// over-determined constrained case) with a backtracking line search.
+#include <Eigen/Dense>
+#include <stdexcept>
+
+#include "analysis/state_function.h"
+
+namespace motostab {
+
+struct TrimOptions {
+  double tolerance = 1e-11;   ///< on the residual's infinity norm (rad/s^2, m/s^2, m, m/s)
+  int maxIterations = 40;
+  double jacobianStep = 1e-6;
+};
+
+/// A trimmed state: every udot and zdot zero, constraints satisfied, forward speed fixed.
+struct TrimResult {
+  SimTK::State state;
+  double speed = 0;           ///< m/s
+  double residualNorm = 0;    ///< infinity norm of [udot; zdot; qerr; uerr]
+  int iterations = 0;
+  Eigen::MatrixXd jacobian;   ///< d residual / d unknowns at the solution (reusable as a warm start)
+};
+
+/// A trim that did not converge: names the speed and the residual.
+class TrimError : public std::runtime_error {
+ public:
+  TrimError(double speed, double residual, int iterations);
+  double speed, residual;
+};
+
+/// The trim unknowns: the non-cyclic q (yaw, roll, pitch, height, steer, compliance...), the wheel
+/// spin rates, every z, and the steer and drive torques.
+std::vector<StateEntry> getTrimUnknowns(const VehicleModel& model);
+
+/// Trims `model` at `speed` (m/s). `warmStart` (a trim at a nearby speed) speeds it up and lets its
+/// Jacobian be reused. Throws TrimError on failure.
+TrimResult calcTrim(const VehicleModel& model, double speed, const TrimOptions& options = {},
+                    const TrimResult* warmStart = nullptr);
+
+}  // namespace motostab

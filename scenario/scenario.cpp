@@ -1,0 +1,130 @@
+#include "scenario/scenario.h"
+
+#include <Eigen/Eigenvalues>
+#include <cmath>
+
+#include "scenario/yaml_map.h"
+
+namespace motostab {
+namespace {
+
+InertiaSpec readInertia(YamlMap m) {
+  InertiaSpec I;
+  I.xx = m.getDouble("xx");
+  I.yy = m.getDouble("yy");
+  I.zz = m.getDouble("zz");
+  I.xy = m.getDouble("xy");
+  I.xz = m.getDouble("xz");
+  I.yz = m.getDouble("yz");
+  m.finish();
+  const std::string why = checkInertia(I);
+  if (!why.empty()) m.fail("", why);
+  return I;
+}
+
+BodySpec readBody(YamlMap m) {
+  BodySpec b;
+  b.mass = m.getPositive("mass_kg");
+  b.com = m.getVec3("com_m");
+  b.inertia = readInertia(m.getMap("inertia_kgm2"));
+  m.finish();
+  return b;
+}
+
+WheelSpec readWheel(YamlMap m) {
+  WheelSpec w;
+  w.radius = m.getPositive("radius_m");
+  w.crownRadius = m.getNonNegative("crown_radius_m");
+  if (w.crownRadius >= w.radius) m.fail("crown_radius_m", "must be smaller than radius_m");
+  w.mass = m.getPositive("mass_kg");
+  w.axialInertia = m.getPositive("spin_inertia_kgm2");
+  w.diametralInertia = m.getPositive("diametral_inertia_kgm2");
+  // A wheel is a body of revolution: principal moments (A, D, D) need A <= 2D.
+  if (w.axialInertia > 2 * w.diametralInertia)
+    m.fail("spin_inertia_kgm2", "violates the triangle inequality: spin inertia exceeds twice the diametral inertia");
+  m.finish();
+  return w;
+}
+
+}  // namespace
+
+std::string checkInertia(const InertiaSpec& I) {
+  Eigen::Matrix3d M;
+  M << I.xx, I.xy, I.xz, I.xy, I.yy, I.yz, I.xz, I.yz, I.zz;
+  const Eigen::Vector3d p = Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(M).eigenvalues();
+  if (p.minCoeff() <= 0) return "inertia tensor is not positive definite (principal moments " +
+                                std::to_string(p(0)) + ", " + std::to_string(p(1)) + ", " +
+                                std::to_string(p(2)) + " kg m^2)";
+  const double tol = 1e-12 * p.sum();
+  if (p(0) + p(1) < p(2) - tol)
+    return "inertia tensor violates the triangle inequality (principal moments " + std::to_string(p(0)) +
+           " + " + std::to_string(p(1)) + " < " + std::to_string(p(2)) + " kg m^2)";
+  return "";
+}
+
+Scenario loadScenario(const std::string& file, const std::vector<std::string>& overrides) {
+  YamlMap root = loadYamlFile(file);
+  YAML::Node tree = root.getNode();
+  for (const auto& o : overrides) applyOverride(tree, o);
+  YamlMap m(tree, file, "");
+
+  Scenario s;
+  s.sourceFile = file;
+  s.name = m.getString("name");
+  s.description = m.getString("description", "");
+  s.gravity = m.getNonNegative("gravity_mps2");
+  if (m.has("speeds_mps")) {
+    YamlMap sp = m.getMap("speeds_mps");
+    s.speeds.start = sp.getNonNegative("start");
+    s.speeds.stop = sp.getNonNegative("stop");
+    s.speeds.step = sp.getPositive("step");
+    if (s.speeds.stop < s.speeds.start) sp.fail("stop", "must not be below start");
+    sp.finish();
+  }
+  {
+    YamlMap g = m.getMap("geometry");
+    s.geometry.wheelbase = g.getPositive("wheelbase_m");
+    s.geometry.trail = g.getDouble("trail_m");
+    s.geometry.steerAxisTilt = g.getDouble("steer_axis_tilt_deg") * M_PI / 180.0;
+    if (std::abs(s.geometry.steerAxisTilt) >= M_PI / 2) g.fail("steer_axis_tilt_deg", "must lie in (-90, 90) degrees");
+    g.finish();
+  }
+  s.rearFrame = readBody(m.getMap("rear_frame"));
+  s.frontFrame = readBody(m.getMap("front_frame"));
+  s.rearWheel = readWheel(m.getMap("rear_wheel"));
+  s.frontWheel = readWheel(m.getMap("front_wheel"));
+  {
+    YamlMap c = m.getMap("contact");
+    s.contact.model = c.getString("model");
+    s.contact.params = c.getNode();
+    s.contact.file = file;
+    s.contact.path = "contact";
+  }
+  if (m.has("plugins")) s.plugins = m.getStringList("plugins");
+  m.finish();
+  return s;
+}
+
+MassSummary calcMassSummary(const Scenario& s) {
+  MassSummary out;
+  auto add = [&](double mass, const Vec3d& c) {
+    for (int i = 0; i < 3; ++i) out.com[i] = (out.com[i] * out.mass + c[i] * mass) / (out.mass + mass);
+    out.mass += mass;
+  };
+  add(s.rearFrame.mass, s.rearFrame.com);
+  add(s.frontFrame.mass, s.frontFrame.com);
+  add(s.rearWheel.mass, {0, 0, s.rearWheel.radius});
+  add(s.frontWheel.mass, {s.geometry.wheelbase, 0, s.frontWheel.radius});
+  return out;
+}
+
+double calcNormalTrail(const GeometrySpec& g) { return g.trail * std::cos(g.steerAxisTilt); }
+
+std::array<double, 2> calcStaticWheelLoads(const Scenario& s) {
+  const MassSummary ms = calcMassSummary(s);
+  const double weight = ms.mass * s.gravity;
+  const double front = weight * ms.com[0] / s.geometry.wheelbase;
+  return {weight - front, front};
+}
+
+}  // namespace motostab

@@ -1,0 +1,96 @@
+#pragma once
+// The scenario: everything that defines one vehicle study, read strictly from YAML.
+// Frame of all positions and inertias (the design frame D): origin at the rear contact point of the
+// upright vehicle at rest, x forward, y left, z up (ISO 8855). SI units; angles say their unit in the key.
+#include <yaml-cpp/yaml.h>
+
+#include <array>
+#include <string>
+#include <vector>
+
+#include "io/input_error.h"
+
+namespace motostab {
+
+using Vec3d = std::array<double, 3>;
+
+/// Inertia tensor components about the centre of mass, in the design frame, kg m^2.
+/// Off-diagonal entries are tensor components (I_xz = -sum m x z), as in Meijaard et al. 2007.
+struct InertiaSpec {
+  double xx = 0, yy = 0, zz = 0, xy = 0, xz = 0, yz = 0;
+};
+
+/// A rigid body: mass (kg), centre of mass in D (m), inertia about the CoM in D.
+struct BodySpec {
+  double mass = 0;
+  Vec3d com{0, 0, 0};
+  InertiaSpec inertia;
+};
+
+/// A wheel: rolling (outer) radius and crown radius (0 = knife edge), mass, and the spin (axial)
+/// and diametral moments of inertia about its centre (kg m^2).
+struct WheelSpec {
+  double radius = 0;
+  double crownRadius = 0;
+  double mass = 0;
+  double axialInertia = 0;
+  double diametralInertia = 0;
+};
+
+/// Steer geometry: wheelbase w (m), trail c (m, front contact behind the steer-axis ground point),
+/// steer axis tilt lambda from vertical (rad).
+struct GeometrySpec {
+  double wheelbase = 0;
+  double trail = 0;
+  double steerAxisTilt = 0;
+};
+
+/// A plugin selected by name with its own parameters (validated by the plugin itself).
+struct PluginSpec {
+  std::string model;
+  YAML::Node params;    ///< the whole mapping, including `model`
+  std::string file;     ///< for error messages
+  std::string path;     ///< key path, e.g. "contact"
+};
+
+/// Default speed range for sweeps, m/s.
+struct SpeedRange {
+  double start = 0, stop = 10, step = 0.1;
+};
+
+struct Scenario {
+  std::string name;
+  std::string description;
+  std::string sourceFile;
+  double gravity = 9.81;                ///< m/s^2, acting along -z
+  SpeedRange speeds;
+  GeometrySpec geometry;
+  BodySpec rearFrame;                   ///< rear frame with rigid rider
+  BodySpec frontFrame;                  ///< fork and handlebar
+  WheelSpec rearWheel, frontWheel;
+  PluginSpec contact;                   ///< contact/tyre model for both wheels
+  std::vector<std::string> plugins;     ///< shared libraries to load before building
+};
+
+/// Loads and validates a scenario file. `overrides` are "a.b=value" assignments applied first.
+/// Every problem is an InputError naming file, line, column and key.
+Scenario loadScenario(const std::string& file, const std::vector<std::string>& overrides = {});
+
+/// Checks an inertia tensor: symmetric positive definite and principal moments satisfying the
+/// triangle inequality. Returns an empty string if valid, else the reason.
+std::string checkInertia(const InertiaSpec& inertia);
+
+/// Total mass (kg) and centre of mass in D (m) of frames and wheels.
+struct MassSummary {
+  double mass = 0;
+  Vec3d com{0, 0, 0};
+};
+MassSummary calcMassSummary(const Scenario& scenario);
+
+/// Normal trail c cos(lambda), m.
+double calcNormalTrail(const GeometrySpec& geometry);
+
+/// Static vertical wheel loads (N) of the upright vehicle at rest: {rear, front}.
+std::array<double, 2> calcStaticWheelLoads(const Scenario& scenario);
+
+}  // namespace motostab

@@ -1,0 +1,170 @@
+#include "scenario/yaml_map.h"
+
+#include <cmath>
+
+namespace motostab {
+
+YamlMap::YamlMap(const YAML::Node& node, std::string file, std::string path)
+    : node_(node), file_(std::move(file)), path_(std::move(path)),
+      used_(std::make_shared<std::set<std::string>>()) {
+  if (!node_.IsMap()) fail("", "expected a mapping of keys to values");
+}
+
+std::string YamlMap::childPath(const std::string& key) const {
+  return path_.empty() ? key : (key.empty() ? path_ : path_ + "." + key);
+}
+
+InputLocation YamlMap::locate(const std::string& key) const {
+  YAML::Mark mark = node_.Mark();
+  if (!key.empty()) {
+    for (const auto& kv : node_)
+      if (kv.first.as<std::string>() == key) mark = kv.first.Mark();
+  }
+  return {file_, mark.line >= 0 ? mark.line + 1 : 0, mark.column >= 0 ? mark.column + 1 : 0, childPath(key)};
+}
+
+void YamlMap::fail(const std::string& key, const std::string& message) const {
+  throw InputError(locate(key), message);
+}
+
+bool YamlMap::has(const std::string& key) const { return static_cast<bool>(node_[key]); }
+
+void YamlMap::markUsed(const std::string& key) { used_->insert(key); }
+
+YAML::Node YamlMap::require(const std::string& key) {
+  const YAML::Node n = static_cast<const YAML::Node&>(node_)[key];
+  if (!n) fail("", "missing key '" + childPath(key) + "'");
+  used_->insert(key);
+  return n;
+}
+
+double YamlMap::getDouble(const std::string& key) {
+  const YAML::Node n = require(key);
+  double v = 0;
+  if (!n.IsScalar() || !YAML::convert<double>::decode(n, v) || !std::isfinite(v))
+    fail(key, "expected a finite number");
+  return v;
+}
+
+double YamlMap::getDouble(const std::string& key, double fallback) {
+  return has(key) ? getDouble(key) : fallback;
+}
+
+double YamlMap::getPositive(const std::string& key) {
+  const double v = getDouble(key);
+  if (!(v > 0)) fail(key, "must be positive (got " + std::to_string(v) + ")");
+  return v;
+}
+
+double YamlMap::getNonNegative(const std::string& key) {
+  const double v = getDouble(key);
+  if (v < 0) fail(key, "must not be negative (got " + std::to_string(v) + ")");
+  return v;
+}
+
+int YamlMap::getInt(const std::string& key) {
+  const YAML::Node n = require(key);
+  int v = 0;
+  if (!n.IsScalar() || !YAML::convert<int>::decode(n, v)) fail(key, "expected an integer");
+  return v;
+}
+
+bool YamlMap::getBool(const std::string& key, bool fallback) {
+  if (!has(key)) return fallback;
+  const YAML::Node n = require(key);
+  bool v = false;
+  if (!n.IsScalar() || !YAML::convert<bool>::decode(n, v)) fail(key, "expected true or false");
+  return v;
+}
+
+std::string YamlMap::getString(const std::string& key) {
+  const YAML::Node n = require(key);
+  if (!n.IsScalar()) fail(key, "expected a string");
+  return n.as<std::string>();
+}
+
+std::string YamlMap::getString(const std::string& key, const std::string& fallback) {
+  return has(key) ? getString(key) : fallback;
+}
+
+std::vector<double> YamlMap::getDoubleList(const std::string& key) {
+  const YAML::Node n = require(key);
+  if (!n.IsSequence()) fail(key, "expected a list of numbers");
+  std::vector<double> out;
+  for (const auto& e : n) {
+    double v = 0;
+    if (!e.IsScalar() || !YAML::convert<double>::decode(e, v) || !std::isfinite(v))
+      fail(key, "expected a list of finite numbers");
+    out.push_back(v);
+  }
+  return out;
+}
+
+std::array<double, 3> YamlMap::getVec3(const std::string& key) {
+  const auto v = getDoubleList(key);
+  if (v.size() != 3) fail(key, "expected 3 numbers [x, y, z], found " + std::to_string(v.size()));
+  return {v[0], v[1], v[2]};
+}
+
+std::vector<std::string> YamlMap::getStringList(const std::string& key) {
+  const YAML::Node n = require(key);
+  if (!n.IsSequence()) fail(key, "expected a list of strings");
+  std::vector<std::string> out;
+  for (const auto& e : n) {
+    if (!e.IsScalar()) fail(key, "expected a list of strings");
+    out.push_back(e.as<std::string>());
+  }
+  return out;
+}
+
+YamlMap YamlMap::getMap(const std::string& key) {
+  const YAML::Node n = require(key);
+  if (!n.IsMap()) fail(key, "expected a mapping");
+  return YamlMap(n, file_, childPath(key));
+}
+
+void YamlMap::finish() const {
+  for (const auto& kv : node_) {
+    const std::string k = kv.first.as<std::string>();
+    if (!used_->count(k)) {
+      const YAML::Mark m = kv.first.Mark();
+      throw InputError({file_, m.line + 1, m.column + 1, childPath(k)}, "unknown key");
+    }
+  }
+}
+
+YamlMap loadYamlFile(const std::string& file) {
+  YAML::Node root;
+  try {
+    root = YAML::LoadFile(file);
+  } catch (const YAML::BadFile&) {
+    throw InputError({file, 0, 0, ""}, "cannot open file");
+  } catch (const YAML::ParserException& e) {
+    throw InputError({file, e.mark.line + 1, e.mark.column + 1, ""}, "YAML syntax error: " + e.msg);
+  }
+  return YamlMap(root, file, "");
+}
+
+void applyOverride(YAML::Node& root, const std::string& assignment) {
+  const auto eq = assignment.find('=');
+  if (eq == std::string::npos || eq == 0)
+    throw InputError({"--set", 0, 0, assignment}, "expected KEY.PATH=VALUE");
+  const std::string path = assignment.substr(0, eq);
+  YAML::Node value = YAML::Load(assignment.substr(eq + 1));
+  std::vector<std::string> keys;
+  size_t start = 0;
+  for (size_t dot; (dot = path.find('.', start)) != std::string::npos; start = dot + 1)
+    keys.push_back(path.substr(start, dot - start));
+  keys.push_back(path.substr(start));
+  // yaml-cpp nodes are handles: walk with fresh handles so the tree itself is edited.
+  std::vector<YAML::Node> chain{root};
+  for (size_t i = 0; i + 1 < keys.size(); ++i) {
+    YAML::Node next = chain.back()[keys[i]];
+    if (!next || !next.IsMap())
+      throw InputError({"--set", 0, 0, path}, "'" + keys[i] + "' is not a mapping in the scenario");
+    chain.push_back(next);
+  }
+  chain.back()[keys.back()] = value;
+}
+
+}  // namespace motostab

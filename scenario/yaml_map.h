@@ -1,0 +1,67 @@
+#pragma once
+// Strict YAML reading: every key must be consumed, every error names file, line, column and key path.
+#include <yaml-cpp/yaml.h>
+
+#include <array>
+#include <memory>
+#include <set>
+#include <string>
+#include <vector>
+
+#include "io/input_error.h"
+
+namespace motostab {
+
+/// A YAML mapping read strictly (Drake-style): a missing key, a wrong type, or a key that
+/// finish() finds unused is an InputError naming file:line:column and the dotted key path.
+class YamlMap {
+ public:
+  YamlMap(const YAML::Node& node, std::string file, std::string path);
+
+  bool has(const std::string& key) const;
+  double getDouble(const std::string& key);
+  /// A value that must be > 0 (masses, radii, lengths).
+  double getPositive(const std::string& key);
+  /// A value that must be >= 0.
+  double getNonNegative(const std::string& key);
+  double getDouble(const std::string& key, double fallback);
+  int getInt(const std::string& key);
+  bool getBool(const std::string& key, bool fallback);
+  std::string getString(const std::string& key);
+  std::string getString(const std::string& key, const std::string& fallback);
+  std::array<double, 3> getVec3(const std::string& key);
+  std::vector<double> getDoubleList(const std::string& key);
+  std::vector<std::string> getStringList(const std::string& key);
+  YamlMap getMap(const std::string& key);
+  /// Marks a key as handled by someone else (e.g. a plugin's own parameters).
+  void markUsed(const std::string& key);
+  /// Throws InputError for the first key never read.
+  void finish() const;
+
+  /// Location of a key (or of this map when key is empty) for error messages.
+  InputLocation locate(const std::string& key = "") const;
+  /// An InputError at `key` with `message`.
+  [[noreturn]] void fail(const std::string& key, const std::string& message) const;
+
+  const YAML::Node& getNode() const { return node_; }
+  const std::string& getFile() const { return file_; }
+  const std::string& getPath() const { return path_; }
+
+ private:
+  YAML::Node require(const std::string& key);
+  std::string childPath(const std::string& key) const;
+
+  YAML::Node node_;
+  std::string file_;
+  std::string path_;
+  std::shared_ptr<std::set<std::string>> used_;
+};
+
+/// Loads a YAML file as the root map. Syntax errors are InputErrors with line and column.
+YamlMap loadYamlFile(const std::string& file);
+
+/// Applies "a.b.c=value" overrides (from --set) to a YAML tree; the value is parsed as YAML.
+/// An override path through a non-map is an InputError naming the override.
+void applyOverride(YAML::Node& root, const std::string& assignment);
+
+}  // namespace motostab

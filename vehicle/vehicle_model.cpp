@@ -1,0 +1,150 @@
+#include "vehicle/vehicle_model.h"
+
+#include "tyres/rolling_no_slip.h"
+
+namespace motostab {
+
+using SimTK::MobilizedBody;
+using SimTK::Rotation;
+using SimTK::Transform;
+using SimTK::UnitVec3;
+using SimTK::Vec3;
+
+PluginRegistry makeBuiltinRegistry() {
+  PluginRegistry registry;
+  registerRollingNoSlip(registry);
+  return registry;
+}
+
+namespace {
+
+Vec3 toVec3(const Vec3d& v) { return Vec3(v[0], v[1], v[2]); }
+
+// Rigid body with its origin at `origin_D` (design frame), axes parallel to the design frame.
+SimTK::Body::Rigid makeBody(const BodySpec& b, const Vec3& origin_D) {
+  const Vec3 com_B = toVec3(b.com) - origin_D;
+  const SimTK::Inertia I_com(Vec3(b.inertia.xx, b.inertia.yy, b.inertia.zz),
+                             Vec3(b.inertia.xy, b.inertia.xz, b.inertia.yz));
+  return SimTK::Body::Rigid(SimTK::MassProperties(b.mass, com_B, I_com.shiftFromMassCenter(-com_B, b.mass)));
+}
+
+SimTK::Body::Rigid makeWheel(const WheelSpec& w) {
+  return SimTK::Body::Rigid(SimTK::MassProperties(
+      w.mass, Vec3(0), SimTK::Inertia(w.diametralInertia, w.axialInertia, w.diametralInertia)));
+}
+
+// Pin about axis n through point p: frames with z along n, so q = 0 is the design pose.
+MobilizedBody::Pin addPin(MobilizedBody& parent, const Vec3& p_P, const SimTK::Body& body, const Vec3& p_C,
+                          const Vec3& n) {
+  const Rotation R(UnitVec3(n), SimTK::ZAxis);
+  return MobilizedBody::Pin(parent, Transform(R, p_P), body, Transform(R, p_C));
+}
+
+}  // namespace
+
+VehicleModel::VehicleModel(const Scenario& scenario, PluginRegistry& registry)
+    : scenario_(scenario), matter_(system_), forces_(system_) {
+  build(registry);
+}
+
+VehicleModel::VehicleModel(const Scenario& scenario) : scenario_(scenario), matter_(system_), forces_(system_) {
+  PluginRegistry registry = makeBuiltinRegistry();
+  build(registry);
+}
+
+void VehicleModel::build(PluginRegistry& registry) {
+  const Scenario& s = scenario_;
+  for (size_t i = 0; i < s.plugins.size(); ++i)
+    registry.loadLibrary(s.plugins[i], {s.sourceFile, 0, 0, "plugins[" + std::to_string(i) + "]"});
+  auto contact = registry.createContactModel(s.contact);
+
+  const double w = s.geometry.wheelbase, c = s.geometry.trail, lambda = s.geometry.steerAxisTilt;
+  const double rR = s.rearWheel.radius, rF = s.frontWheel.radius;
+  const Vec3 pRearHub_D(0, 0, rR), pFrontHub_D(w, 0, rF);
+
+  // Rear frame on a Bushing whose frames are permuted (F.x = G.z, F.y = G.x, F.z = G.y) so that
+  // its body-fixed 1-2-3 angles are yaw, roll, pitch and its translations are height, x, y.
+  const Rotation R_perm(SimTK::Mat33(0, 1, 0, 0, 0, 1, 1, 0, 0), true);
+  rearFrame_ = MobilizedBody::Bushing(matter_.Ground(), Transform(R_perm, Vec3(0)), makeBody(s.rearFrame, pRearHub_D),
+                                      Transform(R_perm, Vec3(0)));
+  rearWheel_ = addPin(rearFrame_, Vec3(0), makeWheel(s.rearWheel), Vec3(0), Vec3(0, 1, 0));
+  // Steer axis through the ground point (w + c, 0, 0), tilted back by lambda.
+  const Vec3 steerAxis(-std::sin(lambda), 0, std::cos(lambda));
+  const Vec3 pSteer_D(w + c, 0, 0);
+  frontFrame_ = addPin(rearFrame_, pSteer_D - pRearHub_D, makeBody(s.frontFrame, pFrontHub_D), pSteer_D - pFrontHub_D,
+                       steerAxis);
+  frontWheel_ = addPin(frontFrame_, Vec3(0), makeWheel(s.frontWheel), Vec3(0), Vec3(0, 1, 0));
+
+  SimTK::Force::Gravity(forces_, matter_, -SimTK::ZAxis, s.gravity);
+  inputs_ = SimTK::Force::DiscreteForces(forces_, matter_);
+
+  const auto loads = calcStaticWheelLoads(s);
+  BuildContext ctx{system_, matter_, forces_, s.gravity};
+  const WheelSite rear{"rear_wheel", rearWheel_, rR, s.rearWheel.crownRadius, loads[0]};
+  const WheelSite front{"front_wheel", frontWheel_, rF, s.frontWheel.crownRadius, loads[1]};
+  for (const WheelSite* site : {&rear, &front}) {
+    contact->addWheel(ctx, *site);
+    for (const auto& n : contact->getStateNames(*site)) zNames_.push_back(n);
+  }
+  contacts_.push_back(std::move(contact));
+
+  defaultState_ = system_.realizeTopology();
+  system_.realizeModel(defaultState_);
+  nq_ = defaultState_.getNQ();
+  if (defaultState_.getNU() != nq_) throw std::logic_error("vehicle model: every mobilizer must have u = qdot");
+  if (defaultState_.getNZ() != static_cast<int>(zNames_.size()))
+    throw std::logic_error("vehicle model: contact plugins allocated z states they did not name");
+
+  const int qR = rearFrame_.getFirstQIndex(defaultState_);
+  idx_.yaw = qR;
+  idx_.roll = qR + 1;
+  idx_.pitch = qR + 2;
+  idx_.height = qR + 3;
+  idx_.x = qR + 4;
+  idx_.y = qR + 5;
+  idx_.steer = frontFrame_.getFirstQIndex(defaultState_);
+  idx_.rearSpin = rearWheel_.getFirstQIndex(defaultState_);
+  idx_.frontSpin = frontWheel_.getFirstQIndex(defaultState_);
+  qNames_.assign(nq_, "");
+  qNames_[idx_.yaw] = "yaw";
+  qNames_[idx_.roll] = "roll";
+  qNames_[idx_.pitch] = "pitch";
+  qNames_[idx_.height] = "height";
+  qNames_[idx_.x] = "x";
+  qNames_[idx_.y] = "y";
+  qNames_[idx_.steer] = "steer";
+  qNames_[idx_.rearSpin] = "rear_wheel_angle";
+  qNames_[idx_.frontSpin] = "front_wheel_angle";
+  for (const auto& n : qNames_) uNames_.push_back(n + "_rate");
+  uNames_[idx_.x] = "vx";
+  uNames_[idx_.y] = "vy";
+  uNames_[idx_.height] = "vz";
+
+  defaultState_.updQ()[idx_.height] = rR;
+  system_.realize(defaultState_, SimTK::Stage::Instance);
+}
+
+void VehicleModel::setInput(SimTK::State& state, Input which, double value) const {
+  switch (which) {
+    case Input::SteerTorque:
+      inputs_.setOneMobilityForce(state, frontFrame_, SimTK::MobilizerUIndex(0), value);
+      break;
+    case Input::DriveTorque:
+      inputs_.setOneMobilityForce(state, rearWheel_, SimTK::MobilizerUIndex(0), value);
+      break;
+    case Input::RollTorque:
+      inputs_.setOneBodyForce(state, rearFrame_, SimTK::SpatialVec(Vec3(value, 0, 0), Vec3(0)));
+      break;
+  }
+}
+
+double VehicleModel::getInput(const SimTK::State& state, Input which) const {
+  switch (which) {
+    case Input::SteerTorque: return inputs_.getOneMobilityForce(state, frontFrame_, SimTK::MobilizerUIndex(0));
+    case Input::DriveTorque: return inputs_.getOneMobilityForce(state, rearWheel_, SimTK::MobilizerUIndex(0));
+    case Input::RollTorque: return inputs_.getOneBodyForce(state, rearFrame_)[0][0];
+  }
+  return 0;
+}
+
+}  // namespace motostab

@@ -1,0 +1,86 @@
+#pragma once
+// A single-track vehicle assembled in Simbody from a Scenario: rear frame (with rider) on a 6-DOF
+// Bushing mobilizer, front frame on a revolute steer axis, two wheels on revolute spin joints, and
+// a contact plugin per wheel. Coordinates (ground: x forward, y left, z up):
+//   q = yaw, roll, pitch (body-fixed z-x-y of the rear frame), height, x, y of the rear wheel centre,
+//       then steer, rear and front wheel spin angles. Every u is the corresponding qdot.
+// Signs: roll > 0 leans right, yaw > 0 turns left, steer > 0 steers left, pitch > 0 nose down.
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "Simbody.h"
+#include "plugins/plugin_api.h"
+#include "scenario/scenario.h"
+
+namespace motostab {
+
+/// Generalized coordinates with a role in trim and linearisation (indices into q; u alike).
+struct CoordinateIndices {
+  int yaw = -1, roll = -1, pitch = -1, height = -1, x = -1, y = -1;
+  int steer = -1, rearSpin = -1, frontSpin = -1;
+};
+
+/// Model inputs: generalized forces the trim may solve for and B is taken against.
+enum class Input { SteerTorque = 0, DriveTorque = 1, RollTorque = 2 };
+constexpr int kNumInputs = 3;
+
+/// The registry with every built-in plugin registered (tyres/, swingarm/).
+PluginRegistry makeBuiltinRegistry();
+
+class VehicleModel {
+ public:
+  /// Builds the Simbody system; loads the scenario's plugin libraries into `registry` first.
+  VehicleModel(const Scenario& scenario, PluginRegistry& registry);
+  /// Same, with the built-in registry.
+  explicit VehicleModel(const Scenario& scenario);
+  VehicleModel(const VehicleModel&) = delete;
+  VehicleModel& operator=(const VehicleModel&) = delete;
+
+  const Scenario& getScenario() const { return scenario_; }
+  const SimTK::MultibodySystem& getSystem() const { return system_; }
+  const SimTK::SimbodyMatterSubsystem& getMatter() const { return matter_; }
+  /// A state at the design pose (upright, at rest), realized to Instance.
+  const SimTK::State& getDefaultState() const { return defaultState_; }
+
+  int getNumQ() const { return nq_; }
+  int getNumU() const { return nq_; }
+  int getNumZ() const { return static_cast<int>(zNames_.size()); }
+  const std::vector<std::string>& getQNames() const { return qNames_; }
+  const std::vector<std::string>& getUNames() const { return uNames_; }
+  const std::vector<std::string>& getZNames() const { return zNames_; }
+  const CoordinateIndices& getIndices() const { return idx_; }
+  /// Coordinates that never enter the equations of straight running: x, y, wheel spin angles.
+  std::vector<int> getCyclicQ() const { return {idx_.x, idx_.y, idx_.rearSpin, idx_.frontSpin}; }
+
+  static std::vector<std::string> getInputNames() { return {"steer_torque", "drive_torque", "roll_torque"}; }
+  /// Sets an input (N m): steer torque acts between front and rear frames, drive torque between
+  /// rear frame and rear wheel, roll torque on the rear frame about ground x.
+  void setInput(SimTK::State& state, Input which, double value) const;
+  double getInput(const SimTK::State& state, Input which) const;
+
+  /// Forward speed: velocity of the rear wheel centre along ground x, m/s.
+  double getForwardSpeed(const SimTK::State& state) const { return state.getU()[idx_.x]; }
+
+  const SimTK::MobilizedBody& getRearFrame() const { return rearFrame_; }
+  const SimTK::MobilizedBody& getFrontFrame() const { return frontFrame_; }
+  const SimTK::MobilizedBody& getRearWheel() const { return rearWheel_; }
+  const SimTK::MobilizedBody& getFrontWheel() const { return frontWheel_; }
+
+ private:
+  void build(PluginRegistry& registry);
+
+  Scenario scenario_;
+  SimTK::MultibodySystem system_;
+  SimTK::SimbodyMatterSubsystem matter_;
+  SimTK::GeneralForceSubsystem forces_;
+  SimTK::MobilizedBody rearFrame_, frontFrame_, rearWheel_, frontWheel_;
+  SimTK::Force::DiscreteForces inputs_;
+  std::vector<std::unique_ptr<ContactModel>> contacts_;
+  SimTK::State defaultState_;
+  int nq_ = 0;
+  CoordinateIndices idx_;
+  std::vector<std::string> qNames_, uNames_, zNames_;
+};
+
+}  // namespace motostab
