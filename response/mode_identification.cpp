@@ -1,0 +1,241 @@
+#include "response/mode_identification.h"
+
+#include <algorithm>
+#include <cmath>
+#include <complex>
+#include <stdexcept>
+#include <string>
+
+#include "io/csv.h"
+#include "response/exponential_fit.h"
+#include "response/matrix_pencil.h"
+
+namespace motostab::response {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+std::string formatTime(double t) { return formatNumber(t, 6); }
+
+// Samples of the window on a uniform grid for the pencil: the samples themselves when already uniform
+// (decimated by an integer factor if too many), else linear interpolation at the median step.
+Eigen::MatrixXd makeUniformSamples(const Eigen::VectorXd& tau, const Eigen::MatrixXd& samples,
+                                   const IdentificationOptions& options, bool& resampled, double& step) {
+  const int n = static_cast<int>(tau.size());
+  std::vector<double> steps(n - 1);
+  for (int i = 0; i + 1 < n; ++i) steps[i] = tau(i + 1) - tau(i);
+  std::vector<double> sorted = steps;
+  std::nth_element(sorted.begin(), sorted.begin() + sorted.size() / 2, sorted.end());
+  const double median = sorted[sorted.size() / 2];
+  const auto [lo, hi] = std::minmax_element(steps.begin(), steps.end());
+  const int cap = std::max(options.maxPencilSamples, 16);
+  if ((*hi - *lo) <= options.uniformTolerance * median) {
+    const int factor = (n + cap - 1) / cap;
+    resampled = false;
+    step = (tau(n - 1) - tau(0)) / (n - 1) * factor;
+    const int m = (n - 1) / factor + 1;
+    Eigen::MatrixXd out(m, samples.cols());
+    for (int i = 0; i < m; ++i) out.row(i) = samples.row(i * factor);
+    return out;
+  }
+  resampled = true;
+  const double span = tau(n - 1) - tau(0);
+  step = std::max(median, span / (cap - 1));
+  const int m = static_cast<int>(std::floor(span / step + 1e-9)) + 1;
+  Eigen::MatrixXd out(m, samples.cols());
+  int j = 0;
+  for (int i = 0; i < m; ++i) {
+    const double t = tau(0) + i * step;
+    while (j + 2 < n && tau(j + 1) < t) ++j;
+    const double w = std::clamp((t - tau(j)) / (tau(j + 1) - tau(j)), 0.0, 1.0);
+    out.row(i) = (1 - w) * samples.row(j) + w * samples.row(j + 1);
+  }
+  return out;
+}
+
+// Continuous poles from the pencil's discrete poles: a pair once (omega > 0), real exponentials with z > 0;
+// poles at z <= 0 (Nyquist, numerically zero) and ones that would overflow in the window are dropped. With an
+// offset, the real pole nearest z = 1 is taken as the offset and removed.
+std::vector<ContinuousPole> toContinuousPoles(const std::vector<std::complex<double>>& discrete, double step,
+                                              double span, bool offset) {
+  std::vector<ContinuousPole> poles;
+  for (const auto& z : discrete) {
+    if (!(std::abs(z) > 1e-12) || !std::isfinite(std::abs(z))) continue;
+    if (z.imag() < 0 || (z.imag() == 0 && z.real() <= 0)) continue;
+    const std::complex<double> lambda = std::log(z) / step;
+    if (lambda.real() * span > 50) continue;
+    poles.push_back({lambda.real(), z.imag() > 0 ? lambda.imag() : 0.0});
+  }
+  if (offset) {
+    auto nearest = poles.end();
+    for (auto it = poles.begin(); it != poles.end(); ++it)
+      if (it->omega == 0 && (nearest == poles.end() || std::abs(it->sigma) < std::abs(nearest->sigma))) nearest = it;
+    if (nearest != poles.end()) poles.erase(nearest);
+  }
+  return poles;
+}
+
+int getOrder(const std::vector<ContinuousPole>& poles) { return getBasisSize(poles, false); }
+
+}  // namespace
+
+IdentificationResult identifyModes(const std::vector<double>& time, const std::vector<std::vector<double>>& signals,
+                                   const IdentificationOptions& options) {
+  if (signals.empty()) throw std::invalid_argument("no signal to identify");
+  for (const auto& s : signals)
+    if (s.size() != time.size())
+      throw std::invalid_argument("signal has " + std::to_string(s.size()) + " samples but time has " +
+                                  std::to_string(time.size()));
+  if (time.empty()) throw std::invalid_argument("no samples");
+  for (size_t i = 0; i < time.size(); ++i) {
+    if (!std::isfinite(time[i])) throw std::invalid_argument("time sample " + std::to_string(i) + " is not finite");
+    if (i > 0 && !(time[i] > time[i - 1]))
+      throw std::invalid_argument("time is not strictly increasing at sample " + std::to_string(i) + " (t = " +
+                                  formatTime(time[i]) + " s)");
+  }
+  if (!(options.windowStart < options.windowEnd))
+    throw std::invalid_argument("window start " + formatTime(options.windowStart) + " s is not before its end " +
+                                formatTime(options.windowEnd) + " s");
+  if (options.maxOrder < 1) throw std::invalid_argument("maximum order must be at least 1");
+  // A window reaching beyond the data is an error (infinite ends mean "from the start" / "to the end").
+  const double slack = 1e-9 * std::max(1.0, std::abs(time.back() - time.front()));
+  if ((std::isfinite(options.windowStart) && options.windowStart < time.front() - slack) ||
+      (std::isfinite(options.windowEnd) && options.windowEnd > time.back() + slack))
+    throw std::invalid_argument("window " + formatTime(options.windowStart) + ":" + formatTime(options.windowEnd) +
+                                " s is outside the data (" + formatTime(time.front()) + " to " +
+                                formatTime(time.back()) + " s)");
+
+  std::vector<int> index;
+  for (size_t i = 0; i < time.size(); ++i)
+    if (time[i] >= options.windowStart && time[i] <= options.windowEnd) index.push_back(static_cast<int>(i));
+  const int n = static_cast<int>(index.size());
+  const int k = static_cast<int>(signals.size());
+  const int maxOrder = options.fixedOrder > 0 ? options.fixedOrder : options.maxOrder;
+  const int needed = std::max(12, 3 * (maxOrder + 2));
+  if (n < needed)
+    throw std::invalid_argument("window has " + std::to_string(n) + " samples; order " + std::to_string(maxOrder) +
+                                " needs at least " + std::to_string(needed));
+
+  IdentificationResult result;
+  result.referenceTime = time[index.front()];
+  result.windowStart = time[index.front()];
+  result.windowEnd = time[index.back()];
+  result.sampleCount = n;
+  Eigen::VectorXd tau(n);
+  Eigen::MatrixXd y(n, k);
+  for (int i = 0; i < n; ++i) {
+    tau(i) = time[index[i]] - result.referenceTime;
+    for (int s = 0; s < k; ++s) y(i, s) = signals[s][index[i]];
+  }
+  // Each signal is scaled by its standard deviation so that all signals weigh alike.
+  Eigen::VectorXd scale(k);
+  for (int s = 0; s < k; ++s) {
+    const double mean = y.col(s).mean();
+    scale(s) = std::sqrt((y.col(s).array() - mean).square().sum() / n);
+    if (!(scale(s) > 0)) throw std::invalid_argument("signal " + std::to_string(s) + " is constant in the window");
+    y.col(s) /= scale(s);
+  }
+  const double span = tau(n - 1);
+  const Eigen::MatrixXd uniform = makeUniformSamples(tau, y, options, result.resampled, result.pencilStep);
+  const int extra = options.fitOffset ? 1 : 0;
+  const int pencilParameter = static_cast<int>(uniform.rows()) / 3;
+  if (pencilParameter < maxOrder + extra + 1)
+    throw std::invalid_argument("too few samples in the window for order " + std::to_string(maxOrder));
+  const PencilDecomposition pencil = calcPencilDecomposition(uniform, pencilParameter);
+  for (int i = 0; i < std::min<int>(static_cast<int>(pencil.singularValues.size()), 2 * (maxOrder + extra) + 2); ++i)
+    result.singularValues.push_back(pencil.singularValues(i));
+
+  // Candidates: every pencil size P (only P = fixedOrder + offset when fixed), each polished and scored by
+  // BIC; the selection is restricted to sizes at a singular-value gap when there is one.
+  const double maxOmega = kPi / result.pencilStep;
+  const double samplesTotal = static_cast<double>(n) * k;
+  const auto& sv = pencil.singularValues;
+  std::vector<ExponentialFit> fits;
+  const int firstSize = options.fixedOrder > 0 ? options.fixedOrder + extra : 1;
+  for (int size = firstSize; size <= maxOrder + extra; ++size) {
+    const auto poles = toContinuousPoles(calcPencilPoles(pencil, size), result.pencilStep, span, options.fitOffset);
+    if (poles.empty() || getOrder(poles) > maxOrder) continue;
+    ExponentialFit fit = options.polish ? polishPoles(calcLinearFit(poles, options.fitOffset, tau, y), tau, y, maxOmega)
+                                        : calcLinearFit(poles, options.fitOffset, tau, y);
+    if (!std::isfinite(fit.residualSumSquares)) continue;
+    int params = getBasisSize(fit.poles, fit.offset) * k;
+    for (const auto& p : fit.poles) params += p.omega > 0 ? 2 : 1;
+    const double rss = std::max(fit.residualSumSquares, 1e-28 * samplesTotal);
+    OrderCandidate c;
+    c.order = getOrder(fit.poles);
+    c.pencilSize = size;
+    c.singularValueRatio = size < sv.size() ? sv(size) / sv(size - 1) : 0.0;
+    c.atGap = c.singularValueRatio < options.gapRatio;
+    c.rSquared = 1 - fit.residualSumSquares / samplesTotal;
+    c.criterion = samplesTotal * std::log(rss / samplesTotal) + params * std::log(samplesTotal);
+    result.candidates.push_back(c);
+    fits.push_back(std::move(fit));
+  }
+  const bool anyGap = std::any_of(result.candidates.begin(), result.candidates.end(),
+                                  [](const OrderCandidate& c) { return c.atGap; });
+  int chosen = -1;
+  double bestCriterion = std::numeric_limits<double>::infinity();
+  for (size_t i = 0; i < fits.size(); ++i) {
+    if (options.fixedOrder <= 0 && anyGap && !result.candidates[i].atGap) continue;
+    if (result.candidates[i].criterion < bestCriterion) {
+      bestCriterion = result.candidates[i].criterion;
+      chosen = static_cast<int>(i);
+    }
+  }
+  if (chosen < 0) throw std::invalid_argument("no model could be fitted to the window");
+  const ExponentialFit& best = fits[chosen];
+
+  // Modes in signal units: a cos + b sin = A cos(omega tau + phi).
+  result.order = getOrder(best.poles);
+  result.offset.assign(k, 0.0);
+  if (best.offset)
+    for (int s = 0; s < k; ++s) result.offset[s] = best.coefficients(0, s) * scale(s);
+  std::vector<std::pair<double, IdentifiedMode>> ranked;
+  int col = best.offset ? 1 : 0;
+  for (const auto& pole : best.poles) {
+    IdentifiedMode mode;
+    mode.real = pole.sigma;
+    mode.imag = pole.omega;
+    mode.frequencyHz = pole.omega / (2 * kPi);
+    mode.dampingRatio = -pole.sigma / std::hypot(pole.sigma, pole.omega);
+    double peak = 0;
+    for (int s = 0; s < k; ++s) {
+      const double a = best.coefficients(col, s), b = pole.omega > 0 ? best.coefficients(col + 1, s) : 0.0;
+      const double amplitude = std::hypot(a, b);
+      mode.amplitude.push_back(amplitude * scale(s));
+      mode.phase.push_back(pole.omega > 0 ? std::atan2(-b, a) : (a >= 0 ? 0.0 : kPi));
+      peak = std::max(peak, amplitude * std::max(1.0, std::exp(pole.sigma * span)));
+    }
+    col += pole.omega > 0 ? 2 : 1;
+    ranked.emplace_back(peak, mode);
+  }
+  std::stable_sort(ranked.begin(), ranked.end(), [](const auto& a, const auto& b) { return a.first > b.first; });
+  for (auto& r : ranked) result.modes.push_back(std::move(r.second));
+
+  const Eigen::MatrixXd residual = y - calcBasis(best.poles, best.offset, tau) * best.coefficients;
+  result.rSquared = 1 - residual.squaredNorm() / samplesTotal;
+  for (int s = 0; s < k; ++s) {
+    const double rms = std::sqrt(residual.col(s).squaredNorm() / n);
+    result.rmsResidual.push_back(rms * scale(s));
+    result.normalisedRmsResidual.push_back(rms);
+  }
+  return result;
+}
+
+std::vector<double> calcModelResponse(const IdentificationResult& result, int signalIndex,
+                                      const std::vector<double>& time) {
+  if (signalIndex < 0 || signalIndex >= static_cast<int>(result.offset.size()))
+    throw std::invalid_argument("signal index " + std::to_string(signalIndex) + " out of range");
+  std::vector<double> out;
+  out.reserve(time.size());
+  for (double t : time) {
+    const double tau = t - result.referenceTime;
+    double v = result.offset[signalIndex];
+    for (const auto& m : result.modes)
+      v += m.amplitude[signalIndex] * std::exp(m.real * tau) * std::cos(m.imag * tau + m.phase[signalIndex]);
+    out.push_back(v);
+  }
+  return out;
+}
+
+}  // namespace motostab::response
