@@ -21,9 +21,14 @@ nlohmann::json makeModesJson(const IdentificationResult& result, const std::vect
   }
   nlohmann::json candidates = nlohmann::json::array();
   for (const auto& c : result.candidates)
-    candidates.push_back({{"order", c.order}, {"r_squared", c.rSquared}, {"bic", c.criterion}});
-  return {{"method", "matrix pencil (Hua & Sarkar 1990) + BIC order selection + variable-projection "
-                     "Levenberg-Marquardt polish"},
+    candidates.push_back({{"order", c.order},
+                          {"pencil_size", c.pencilSize},
+                          {"singular_value_ratio", c.singularValueRatio},
+                          {"at_gap", c.atGap},
+                          {"r_squared", c.rSquared},
+                          {"bic", c.criterion}});
+  return {{"method", "matrix pencil (Hua & Sarkar 1990); order: lowest BIC among pencil sizes at a "
+                     "singular-value gap; variable-projection Levenberg-Marquardt polish on the original samples"},
           {"model", "y_k(t) = offset_k + sum_m amplitude_mk exp(real_m tau) cos(imag_m tau + phase_mk), "
                     "tau = t - reference_time_s; complex pairs listed once (imag > 0)"},
           {"signals", signalNames},
