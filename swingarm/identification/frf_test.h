@@ -1,0 +1,86 @@
+#pragma once
+// Hammer test: H1 FRFs averaged over hits, hit checks, LSCF modal parameters with a stabilisation
+// diagram, half-power quick estimates, and modal (dynamic) twist axes from the 3-point ODS.
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "modal/lscf.h"
+#include "modal/peak_picking.h"
+#include "modal/spectra.h"
+#include "swingarm/identification/plate_motion.h"
+
+namespace motostab::identification {
+
+/// An accelerometer on the plate measuring along y.
+struct FrfChannel {
+  std::string name;    ///< channel name
+  std::string column;  ///< CSV column (default "<name>_mps2")
+  PlatePoint position; ///< m
+};
+
+/// The hammer test description (docs/swingarm-identification.md, "Hammer test").
+struct FrfTest {
+  std::filesystem::path file;
+  std::string frame;
+  PlatePoint forcePoint;
+  std::vector<FrfChannel> channels;
+  std::vector<std::filesystem::path> hits;
+  std::string timeColumn = "time_s", forceColumn = "force_N";
+  // Optional processing settings (key `processing`).
+  double bandMinHz = 0, bandMaxHz = 0;   ///< 0 = automatic (5 bins .. 0.8 Nyquist)
+  int minOrder = 4, maxOrder = 40;
+  double exponentialEndValue = 0.05;
+  bool forceWindow = true;
+  double doubleHitFraction = 0.1;
+  double forceRange = 0, responseRange = 0;  ///< N, m/s^2; 0 = not given
+  double bendingModeHz = 0, torsionModeHz = 0;  ///< mode selection hints; 0 = automatic
+};
+
+/// Reads and checks a hammer test YAML (strict keys; InputError on any problem). Three or more channels
+/// must not be collinear.
+FrfTest readFrfTest(const std::filesystem::path& file);
+
+/// Reads every hit CSV: columns present, time strictly increasing and uniform (5 %), equal lengths and
+/// sampling across hits. InputError naming the file, line and column otherwise.
+std::vector<modal::ImpactRecord> readHits(const FrfTest& test);
+
+/// One identified mode with its uncertainties and modal twist axis.
+struct ModeResult {
+  double frequencyHz = 0, frequencyStderrHz = 0;  ///< undamped natural frequency |lambda|/(2 pi)
+  double dampingRatio = 0, dampingStderr = 0;     ///< viscous ratio zeta
+  double lossFactor = 0, lossFactorStderr = 0;    ///< hysteretic eta = 2 zeta (seed section 3.2)
+  double halfPowerFrequencyHz = 0, halfPowerDampingRatio = 0;  ///< quick estimate (NaN if none)
+  int order = 0, stableCount = 0;
+  bool hasAxis = false;
+  TwistAxis axis;                   ///< from the ODS (rotation in ODS units)
+  double armStderr = 0, betaStderrDeg = 0;
+  double mpc = 0;                   ///< modal phase collinearity of the ODS, 0..1
+  std::string label;                ///< "bending", "torsion" or ""
+};
+
+/// Everything the hammer test yields.
+struct FrfResult {
+  modal::FrfEstimate frf;
+  std::vector<std::string> usedHits, rejectedHits;  ///< rejected: "file: reason"
+  modal::LscfOptions options;
+  std::vector<modal::StabilisationPole> diagram;
+  std::vector<modal::PeakEstimate> peaks;
+  std::vector<ModeResult> modes;
+  std::vector<modal::ModalModel> models;  ///< per channel, for the overlay
+  int bendingIndex = -1, torsionIndex = -1;
+};
+
+/// Runs the chain: hit checks (double hit, overload: rejected), force + exponential windows, H1 and
+/// coherence, LSCF stabilisation diagram and stable-mode selection (uncertainty = jackknife over hits
+/// combined with the scatter over model orders), half-power estimates, ODS twist axes (the ODS at the
+/// bin nearest each damped natural frequency, its quadrature part Im(H1), fitted by the plate plane),
+/// and bending/torsion labels (hints, else the lowest mode whose axis is within 45 deg of normal to x
+/// is bending and the lowest within 45 deg of x is torsion).
+FrfResult identifyFrf(const FrfTest& test, const std::vector<modal::ImpactRecord>& hits);
+
+/// Writes DIR/frf.csv, DIR/modes.csv, DIR/stabilisation.csv, DIR/frf.json and the plots
+/// frf_magnitude_phase, coherence, stabilisation and modal_axes (png + svg).
+void writeFrfOutputs(const FrfTest& test, const FrfResult& result, const std::filesystem::path& dir);
+
+}  // namespace motostab::identification

@@ -1,0 +1,277 @@
+#include "swingarm/identification/mass_properties.h"
+
+#include <cmath>
+#include <nlohmann/json.hpp>
+#include <set>
+#include <sstream>
+
+#include "io/atomic_file.h"
+#include "io/csv.h"
+#include "io/input_error.h"
+#include "io/plot.h"
+#include "swingarm/identification/plate_motion.h"
+#include "swingarm/identification/yaml_input.h"
+
+namespace motostab::identification {
+namespace {
+
+struct MeanStat {
+  double mean = 0, stderr_ = 0;
+};
+
+MeanStat calcMean(const std::vector<double>& v, double floorSd) {
+  MeanStat m;
+  for (double x : v) m.mean += x / v.size();
+  double s = 0;
+  for (double x : v) s += (x - m.mean) * (x - m.mean);
+  const double sd = v.size() > 1 ? std::sqrt(s / (v.size() - 1)) : 0.0;
+  m.stderr_ = std::max(sd, floorSd) / std::sqrt(static_cast<double>(v.size()));
+  return m;
+}
+
+}  // namespace
+
+CogTest readCogTest(const std::filesystem::path& file) {
+  const YamlInput in(file);
+  const YAML::Node& root = in.getRoot();
+  in.checkMap(root, "", {"test", "frame", "load_cells", "readings", "tare", "g_mps2", "load_cell_resolution_N",
+                         "part_origin_m"});
+  in.checkTestKind("cog");
+  CogTest t;
+  t.file = file;
+  t.frame = in.getString(root, "", "frame", "");
+  const YAML::Node cells = in.getChild(root, "", "load_cells");
+  if (!cells.IsSequence()) in.fail(cells, "load_cells", "expected a list of load cells");
+  std::vector<PlatePoint> pts;
+  std::set<std::string> names;
+  for (size_t i = 0; i < cells.size(); ++i) {
+    const std::string p = "load_cells[" + std::to_string(i) + "]";
+    in.checkMap(cells[i], p, {"name", "x", "y"});
+    LoadCell c{in.getString(cells[i], p, "name"), in.getDouble(cells[i], p, "x"), in.getDouble(cells[i], p, "y")};
+    if (!names.insert(c.name).second) in.fail(cells[i], p + ".name", "duplicate load cell name");
+    pts.push_back({c.x, c.y});
+    t.cells.push_back(c);
+  }
+  const std::string why = checkPlaneGeometry(pts);
+  if (!why.empty()) in.fail(cells, "load_cells", "load cells: " + why);
+  t.g = in.getPositive(root, "", "g_mps2", t.g);
+  t.cellResolution = in.getPositive(root, "", "load_cell_resolution_N", t.cellResolution);
+  if (root["part_origin_m"]) {
+    const auto o = in.getNumbers(root, "", "part_origin_m", 3);
+    t.partOrigin = Eigen::Vector3d(o[0], o[1], o[2]);
+  }
+  auto readTable = [&](const std::filesystem::path& csvPath, std::vector<double>& tilt, Eigen::MatrixXd& loads) {
+    const CsvTable csv = readCsv(csvPath);
+    tilt = csv.getColumn("tilt_deg");
+    loads.resize(tilt.size(), t.cells.size());
+    for (size_t j = 0; j < t.cells.size(); ++j) {
+      const auto col = csv.getColumn(t.cells[j].name + "_N");
+      for (size_t i = 0; i < col.size(); ++i) loads(i, j) = col[i];
+    }
+    const int tc = csv.getColumnIndex("tilt_deg") + 1;
+    for (size_t i = 0; i < tilt.size(); ++i)
+      if (tilt[i] < 0 || tilt[i] > 60)
+        throw InputError({csvPath.string(), csv.lineNumbers[i], tc, "tilt_deg"}, "tilt angle outside 0..60 deg");
+  };
+  const auto readings = in.resolvePath(in.getString(root, "", "readings"));
+  readTable(readings, t.tiltDeg, t.loads);
+  std::set<double> angles(t.tiltDeg.begin(), t.tiltDeg.end());
+  if (angles.size() < 2 || *angles.rbegin() == 0)
+    throw InputError({readings.string(), 0, 0, "tilt_deg"}, "need at least two distinct tilt angles, one of them non-zero");
+  if (root["tare"]) {
+    const auto tare = in.resolvePath(in.getString(root, "", "tare"));
+    std::vector<double> tt;
+    Eigen::MatrixXd tl;
+    readTable(tare, tt, tl);
+    if (tt != t.tiltDeg)
+      throw InputError({tare.string(), 0, 0, "tilt_deg"}, "tare rows must have the same tilt angles as the readings");
+    t.loads -= tl;
+  }
+  return t;
+}
+
+CogResult identifyCog(const CogTest& t) {
+  const int n = static_cast<int>(t.tiltDeg.size());
+  Eigen::MatrixXd a(n, 2);
+  Eigen::VectorXd xp(n);
+  std::vector<double> yp, mass;
+  double floorX = 0;
+  for (int i = 0; i < n; ++i) {
+    const double alpha = t.tiltDeg[i] * M_PI / 180, w = t.loads.row(i).sum();
+    if (!(w > 0)) throw InputError({t.file.string(), 0, 0, "readings"}, "load cells sum to zero or less at a tilt");
+    double sx = 0, sy = 0, sxx = 0;
+    for (size_t j = 0; j < t.cells.size(); ++j) {
+      sx += t.cells[j].x * t.loads(i, j);
+      sy += t.cells[j].y * t.loads(i, j);
+    }
+    xp[i] = sx / w;
+    for (const auto& c : t.cells) sxx += (c.x - xp[i]) * (c.x - xp[i]);
+    floorX = std::max(floorX, t.cellResolution / std::sqrt(12.0) * std::sqrt(sxx) / w);
+    yp.push_back(sy / w);
+    mass.push_back(w / (t.g * std::cos(alpha)));
+    a.row(i) << 1.0, -std::tan(alpha);
+  }
+  const Eigen::Vector2d p = (a.transpose() * a).ldlt().solve(a.transpose() * xp);
+  const Eigen::VectorXd r = xp - a * p;
+  CogResult res;
+  res.centreOfPressureX.assign(xp.data(), xp.data() + n);
+  res.residualRms = std::sqrt(r.squaredNorm() / n);
+  const double sigma = std::max(n > 2 ? std::sqrt(r.squaredNorm() / (n - 2)) : 0.0, floorX);
+  const Eigen::Matrix2d cov = sigma * sigma * (a.transpose() * a).inverse();
+  const MeanStat y = calcMean(yp, floorX), m = calcMean(mass, t.cellResolution / std::sqrt(12.0) / t.g);
+  res.mass = m.mean;
+  res.massStderr = m.stderr_;
+  res.cog = Eigen::Vector3d(p[0], y.mean, p[1]) - t.partOrigin;
+  res.cogStderr = Eigen::Vector3d(std::sqrt(cov(0, 0)), y.stderr_, std::sqrt(cov(1, 1)));
+  return res;
+}
+
+void writeCogOutputs(const CogTest& t, const CogResult& r, const std::filesystem::path& dir) {
+  nlohmann::json j;
+  j["test"] = t.file.string();
+  j["frame"] = t.frame;
+  j["mass_kg"] = r.mass;
+  j["mass_kg_stderr"] = r.massStderr;
+  j["cog_m"] = {r.cog[0], r.cog[1], r.cog[2]};
+  j["cog_m_stderr"] = {r.cogStderr[0], r.cogStderr[1], r.cogStderr[2]};
+  j["centre_of_pressure_fit_rms_m"] = r.residualRms;
+  j["method"] = "x_p = x_G - z_G tan(tilt), least squares over all tilt angles (seed section 2.4)";
+  writeFileAtomically(dir / "cog.json", j.dump(2) + "\n");
+  CsvWriter w({"tilt_deg", "tan_tilt", "centre_of_pressure_x_m", "fit_m"});
+  const Eigen::Vector3d g = r.cog + t.partOrigin;
+  for (size_t i = 0; i < t.tiltDeg.size(); ++i) {
+    const double tt = std::tan(t.tiltDeg[i] * M_PI / 180);
+    w.beginRow().add(t.tiltDeg[i]).add(tt).add(r.centreOfPressureX[i]).add(g[0] - g[2] * tt);
+  }
+  writeFileAtomically(dir / "cog_fit.csv", w.getText());
+  renderGnuplot(dir, "cog_fit",
+                "set datafile separator ','\nset key autotitle columnhead\nset grid\nset xlabel 'tan(tilt)'\n"
+                "set ylabel 'centre of pressure x (m)'\nset title 'Tilting rig: x_p = x_G - z_G tan(tilt)'\n"
+                "plot 'cog_fit.csv' using 2:3 with points pt 7 title 'measured', '' using 2:4 with lines title 'fit'\n");
+}
+
+InertiaTest readInertiaTest(const std::filesystem::path& file) {
+  const YamlInput in(file);
+  const YAML::Node& root = in.getRoot();
+  in.checkMap(root, "", {"test", "frame", "pendulum", "g_mps2", "period_resolution_s", "plate_periods_s",
+                         "part_mass_kg", "setups"});
+  in.checkTestKind("inertia");
+  InertiaTest t;
+  t.file = file;
+  const YAML::Node p = in.getChild(root, "", "pendulum");
+  in.checkMap(p, "pendulum", {"wire_length_m", "radius_m", "plate_mass_kg"});
+  t.wireLength = in.getPositive(p, "pendulum", "wire_length_m");
+  t.radius = in.getPositive(p, "pendulum", "radius_m");
+  t.plateMass = in.getPositive(p, "pendulum", "plate_mass_kg");
+  t.g = in.getPositive(root, "", "g_mps2", t.g);
+  t.periodResolution = in.getPositive(root, "", "period_resolution_s", t.periodResolution);
+  t.partMass = in.getPositive(root, "", "part_mass_kg");
+  auto periods = [&](const YAML::Node& map, const std::string& path, const std::string& key) {
+    const auto v = in.getNumbers(map, path, key);
+    if (v.empty()) in.fail(map[key], path.empty() ? key : path + "." + key, "needs at least one period");
+    for (double x : v)
+      if (!(x > 0)) in.fail(map[key], path.empty() ? key : path + "." + key, "periods must be positive");
+    return v;
+  };
+  t.platePeriods = periods(root, "", "plate_periods_s");
+  const YAML::Node s = in.getChild(root, "", "setups");
+  if (!s.IsSequence() || s.size() < 3) in.fail(s, "setups", "expected a list of at least three set-ups");
+  for (size_t i = 0; i < s.size(); ++i) {
+    const std::string path = "setups[" + std::to_string(i) + "]";
+    in.checkMap(s[i], path, {"name", "axis", "cog_offset_m", "periods_s"});
+    PendulumSetup u;
+    u.name = in.getString(s[i], path, "name");
+    const auto ax = in.getNumbers(s[i], path, "axis", 3);
+    u.axis = Eigen::Vector3d(ax[0], ax[1], ax[2]);
+    if (u.axis.norm() < 1e-9) in.fail(s[i]["axis"], path + ".axis", "axis must not be zero");
+    u.axis.normalize();
+    u.cogOffset = in.getPositive(s[i], path, "cog_offset_m", true);
+    u.periods = periods(s[i], path, "periods_s");
+    t.setups.push_back(u);
+  }
+  return t;
+}
+
+double calcTrifilarInertia(double mass, double g, double radius, double wireLength, double period) {
+  return mass * g * radius * radius * period * period / (4 * M_PI * M_PI * wireLength);
+}
+
+InertiaResult identifyInertia(const InertiaTest& t) {
+  InertiaResult r;
+  const double floorT = t.periodResolution / std::sqrt(12.0);
+  auto inertia = [&](double mass, const std::vector<double>& periods, double& stderr_) {
+    const MeanStat T = calcMean(periods, floorT);
+    const double i = calcTrifilarInertia(mass, t.g, t.radius, t.wireLength, T.mean);
+    stderr_ = 2 * i * T.stderr_ / T.mean;
+    return i;
+  };
+  r.plateInertia = inertia(t.plateMass, t.platePeriods, r.plateInertiaStderr);
+  const int n = static_cast<int>(t.setups.size());
+  Eigen::MatrixXd a(n, 6);
+  Eigen::VectorXd b(n), w(n);
+  for (int i = 0; i < n; ++i) {
+    const auto& u = t.setups[i];
+    double se = 0;
+    const double total = inertia(t.plateMass + t.partMass, u.periods, se);
+    const double ip = total - r.plateInertia - t.partMass * u.cogOffset * u.cogOffset;
+    const double sp = std::hypot(se, r.plateInertiaStderr);
+    r.setupInertia.push_back(ip);
+    r.setupInertiaStderr.push_back(sp);
+    const Eigen::Vector3d e = u.axis;
+    // n^T I n = Ixx ex^2 + Iyy ey^2 + Izz ez^2 + 2 Ixy ex ey + 2 Ixz ex ez + 2 Iyz ey ez
+    a.row(i) << e[0] * e[0], e[1] * e[1], e[2] * e[2], 2 * e[0] * e[1], 2 * e[0] * e[2], 2 * e[1] * e[2];
+    b[i] = ip;
+    w[i] = 1.0 / sp;
+  }
+  const Eigen::MatrixXd aw = w.asDiagonal() * a;
+  r.fullTensor = n >= 6 && Eigen::FullPivLU<Eigen::MatrixXd>(aw).rank() == 6;
+  const int nc = r.fullTensor ? 6 : 3;
+  const Eigen::MatrixXd as = aw.leftCols(nc);
+  if (Eigen::FullPivLU<Eigen::MatrixXd>(as).rank() < nc)
+    throw InputError({t.file.string(), 0, 0, "setups"},
+                     "the set-up axes do not determine the moments of inertia (need x, y and z directions)");
+  const Eigen::MatrixXd ninv = (as.transpose() * as).inverse();
+  const Eigen::VectorXd x = ninv * as.transpose() * (w.asDiagonal() * b);
+  Eigen::VectorXd se = ninv.diagonal().cwiseSqrt();
+  const int idx[6][2] = {{0, 0}, {1, 1}, {2, 2}, {0, 1}, {0, 2}, {1, 2}};
+  for (int k = 0; k < nc; ++k) {
+    r.tensor(idx[k][0], idx[k][1]) = r.tensor(idx[k][1], idx[k][0]) = x[k];
+    r.tensorStderr(idx[k][0], idx[k][1]) = r.tensorStderr(idx[k][1], idx[k][0]) = se[k];
+  }
+  return r;
+}
+
+void writeInertiaOutputs(const InertiaTest& t, const InertiaResult& r, const std::filesystem::path& dir) {
+  nlohmann::json j;
+  j["test"] = t.file.string();
+  j["plate_inertia_kg_m2"] = r.plateInertia;
+  j["plate_inertia_kg_m2_stderr"] = r.plateInertiaStderr;
+  const char* names[6] = {"I_xx", "I_yy", "I_zz", "I_xy", "I_xz", "I_yz"};
+  const int idx[6][2] = {{0, 0}, {1, 1}, {2, 2}, {0, 1}, {0, 2}, {1, 2}};
+  for (int k = 0; k < (r.fullTensor ? 6 : 3); ++k) {
+    j[std::string(names[k]) + "_kg_m2"] = r.tensor(idx[k][0], idx[k][1]);
+    j[std::string(names[k]) + "_kg_m2_stderr"] = r.tensorStderr(idx[k][0], idx[k][1]);
+  }
+  j["full_tensor"] = r.fullTensor;
+  j["about"] = "the part's centre of gravity, part frame; products of inertia I_xy = sum(m x y) sign convention "
+               "as entries of the inertia matrix (n^T I n = moment about n)";
+  CsvWriter w({"setup", "axis_x", "axis_y", "axis_z", "inertia_kg_m2", "inertia_kg_m2_stderr", "model_kg_m2"});
+  nlohmann::json js = nlohmann::json::array();
+  for (size_t i = 0; i < t.setups.size(); ++i) {
+    const auto& u = t.setups[i];
+    const double model = u.axis.dot(r.tensor * u.axis);
+    w.beginRow().add(static_cast<double>(i + 1)).add(u.axis[0]).add(u.axis[1]).add(u.axis[2]).add(r.setupInertia[i])
+        .add(r.setupInertiaStderr[i]).add(model);
+    js.push_back({{"name", u.name}, {"inertia_kg_m2", r.setupInertia[i]}, {"inertia_kg_m2_stderr", r.setupInertiaStderr[i]},
+                  {"model_kg_m2", model}});
+  }
+  j["setups"] = js;
+  writeFileAtomically(dir / "inertia.json", j.dump(2) + "\n");
+  writeFileAtomically(dir / "inertia_setups.csv", w.getText());
+  renderGnuplot(dir, "inertia_setups",
+                "set datafile separator ','\nset grid\nset xlabel 'set-up'\nset ylabel 'moment of inertia about CoG (kg m^2)'\n"
+                "set title 'Trifilar pendulum: measured (error bars) and fitted tensor'\nset xrange [0.5:*]\nset offsets 0,0.5,0,0\n"
+                "plot 'inertia_setups.csv' using 1:5:6 with yerrorbars pt 7 title 'measured', '' using 1:7 with points pt 4 ps 2 title 'n^T I n'\n");
+}
+
+}  // namespace motostab::identification
