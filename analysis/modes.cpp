@@ -1,0 +1,138 @@
+#include "analysis/modes.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace motostab {
+
+DofGroup getDofGroup(const std::string& name) {
+  auto starts = [&](const char* p) { return name.rfind(p, 0) == 0; };
+  if (starts("roll")) return DofGroup::Roll;
+  if (starts("steer")) return DofGroup::Steer;
+  if (starts("yaw")) return DofGroup::Yaw;
+  if (name == "y" || name == "vy") return DofGroup::Lateral;
+  if (starts("pitch")) return DofGroup::Pitch;
+  if (name == "height" || name == "vz") return DofGroup::Bounce;
+  if (starts("swingarm")) return DofGroup::Compliance;
+  if (name == "x" || name == "vx" || name.find("wheel_angle") != std::string::npos) return DofGroup::Forward;
+  return DofGroup::Relaxation;
+}
+
+namespace {
+std::string coordinateOf(const LinearState& s) {
+  const std::string& n = s.name;
+  if (n.size() > 5 && n.compare(n.size() - 5, 5, "_rate") == 0) return n.substr(0, n.size() - 5);
+  if (n == "vx") return "x";
+  if (n == "vy") return "y";
+  if (n == "vz") return "height";
+  return n;
+}
+}  // namespace
+
+ModeContent calcModeContent(const LinearModel& lin, int k, double wheelbase) {
+  ModeContent c{};
+  const std::complex<double> lambda = lin.eigenvalues[k];
+  const double rateScale = std::max(1.0, std::abs(lambda));
+  for (size_t i = 0; i < lin.states.size(); ++i) {
+    const LinearState& st = lin.states[i];
+    double mag = std::abs(lin.eigenvectors(i, k));
+    if (st.entry.slot == Slot::U) {
+      if (lin.findState(coordinateOf(st)) >= 0) continue;  // its coordinate counts instead
+      mag /= rateScale;
+    }
+    const DofGroup g = getDofGroup(coordinateOf(st));
+    if (g == DofGroup::Lateral) mag /= wheelbase;
+    c[static_cast<int>(g)] += mag * mag;
+  }
+  double sum = 0;
+  for (double v : c) sum += v;
+  if (sum > 0)
+    for (double& v : c) v /= sum;
+  return c;
+}
+
+double calcMac(const LinearModel& a, int ka, const LinearModel& b, int kb) {
+  std::complex<double> dot = 0;
+  double na = 0, nb = 0;
+  for (size_t i = 0; i < a.states.size(); ++i) {
+    const int j = b.findState(a.states[i].name);
+    if (j < 0) continue;
+    const auto x = a.eigenvectors(i, ka), y = b.eigenvectors(j, kb);
+    dot += std::conj(x) * y;
+    na += std::norm(x);
+    nb += std::norm(y);
+  }
+  return (na > 0 && nb > 0) ? std::norm(dot) / (na * nb) : 0.0;
+}
+
+double calcMatchCost(const LinearModel& a, int ka, const LinearModel& b, int kb) {
+  const auto la = a.eigenvalues[ka], lb = b.eigenvalues[kb];
+  const double scale = 1.0 + 0.5 * (std::abs(la) + std::abs(lb));
+  // Eigenvalue proximity dominates; MAC separates modes that pass close to each other.
+  return std::abs(la - lb) / scale + 0.2 * (1.0 - calcMac(a, ka, b, kb));
+}
+
+int findBestMatch(const LinearModel& a, int ka, const LinearModel& b) {
+  int best = -1;
+  double bestCost = std::numeric_limits<double>::infinity();
+  for (int kb = 0; kb < b.eigenvalues.size(); ++kb) {
+    const double c = calcMatchCost(a, ka, b, kb);
+    if (c < bestCost) bestCost = c, best = kb;
+  }
+  return best;
+}
+
+std::vector<ModeBranch> trackModes(const std::vector<LinearModel>& models, double wheelbase) {
+  std::vector<ModeBranch> branches;
+  if (models.empty()) return branches;
+  const int n = static_cast<int>(models[0].eigenvalues.size());
+  branches.resize(n);
+  for (int k = 0; k < n; ++k) {
+    branches[k].index.push_back(k);
+    branches[k].eigenvalue.push_back(models[0].eigenvalues[k]);
+  }
+  for (size_t s = 1; s < models.size(); ++s) {
+    const LinearModel &prev = models[s - 1], &cur = models[s];
+    if (cur.eigenvalues.size() != n) throw std::runtime_error("trackModes: model size changed with speed");
+    // Greedy assignment on ascending cost.
+    std::vector<std::tuple<double, int, int>> pairs;
+    for (int b = 0; b < n; ++b)
+      for (int k = 0; k < n; ++k) pairs.emplace_back(calcMatchCost(prev, branches[b].index.back(), cur, k), b, k);
+    std::sort(pairs.begin(), pairs.end());
+    std::vector<int> assigned(n, -1);
+    std::vector<bool> taken(n, false);
+    for (const auto& [cost, b, k] : pairs)
+      if (assigned[b] < 0 && !taken[k]) assigned[b] = k, taken[k] = true;
+    for (int b = 0; b < n; ++b) {
+      branches[b].index.push_back(assigned[b]);
+      branches[b].eigenvalue.push_back(cur.eigenvalues[assigned[b]]);
+    }
+  }
+  // Label each branch from its content over the sweep.
+  for (auto& br : branches) {
+    bool oscillatory = false, neutral = true;
+    double roll = 0, steer = 0, highFreqSteer = 0, oscCount = 0;
+    for (size_t s = 0; s < models.size(); ++s) {
+      const std::complex<double> l = br.eigenvalue[s];
+      const ModeContent c = calcModeContent(models[s], br.index[s], wheelbase);
+      const double lateralDynamics = 1.0 - c[int(DofGroup::Forward)] - c[int(DofGroup::Yaw)] - c[int(DofGroup::Lateral)];
+      if (!(std::abs(l) < 1e-6 && lateralDynamics < 1e-3)) neutral = false;
+      roll += c[int(DofGroup::Roll)];
+      steer += c[int(DofGroup::Steer)];
+      if (std::abs(l.imag()) > 1e-9) {
+        oscillatory = true;
+        ++oscCount;
+        if (std::abs(l.imag()) / (2 * M_PI) > 4.0 && c[int(DofGroup::Steer)] > 0.5) highFreqSteer += 1;
+      }
+    }
+    const double n = static_cast<double>(models.size());
+    if (neutral) br.label = "neutral";
+    else if ((roll + steer) / n < 0.3) br.label = "other";
+    else if (oscillatory) br.label = (highFreqSteer > 0.5 * oscCount) ? "wobble" : "weave";
+    else br.label = (roll >= steer) ? "capsize" : "castor";
+  }
+  return branches;
+}
+
+}  // namespace motostab

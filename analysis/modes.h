@@ -1,0 +1,44 @@
+#pragma once
+// Mode content, labelling and tracking across speed.
+#include <array>
+#include <complex>
+#include <string>
+#include <vector>
+
+#include "analysis/linearize.h"
+
+namespace motostab {
+
+/// Degree-of-freedom groups of an eigenvector, as shares of its squared magnitude (sum = 1).
+/// Lateral displacement is made an angle by dividing by the wheelbase (seed sec. 4, Fig. 12).
+enum class DofGroup { Roll, Steer, Yaw, Lateral, Pitch, Bounce, Forward, Compliance, Relaxation };
+constexpr int kNumDofGroups = 9;
+using ModeContent = std::array<double, kNumDofGroups>;
+
+/// The group a linear state belongs to, from its name.
+DofGroup getDofGroup(const std::string& stateName);
+
+/// Content of eigenvector k of `lin`. Rates without a coordinate state count as rate / max(1, |lambda|).
+ModeContent calcModeContent(const LinearModel& lin, int k, double wheelbase);
+
+/// Modal assurance criterion |a^H b|^2 / (|a|^2 |b|^2) over the states both models share.
+double calcMac(const LinearModel& a, int ka, const LinearModel& b, int kb);
+
+/// Labels: weave, capsize, castor, wobble, neutral, other.
+struct ModeBranch {
+  std::string label;
+  std::vector<std::complex<double>> eigenvalue;  ///< per speed of the sweep
+  std::vector<int> index;                         ///< eigenvalue index in that speed's LinearModel
+};
+
+/// Eigenvalues tracked from speed to speed by eigenvector similarity (MAC) and eigenvalue
+/// proximity, then labelled from each branch's content over the whole sweep.
+std::vector<ModeBranch> trackModes(const std::vector<LinearModel>& models, double wheelbase);
+
+/// Cost of matching eigenvalue ka of `a` to kb of `b` (0 = identical).
+double calcMatchCost(const LinearModel& a, int ka, const LinearModel& b, int kb);
+
+/// Index of the eigenvalue of `b` that best continues eigenvalue ka of `a`.
+int findBestMatch(const LinearModel& a, int ka, const LinearModel& b);
+
+}  // namespace motostab

@@ -1,0 +1,83 @@
+#include "analysis/sweep.h"
+
+#include <cmath>
+#include <functional>
+
+namespace motostab {
+
+std::vector<double> makeSpeedGrid(double start, double stop, double step) {
+  std::vector<double> v;
+  const long n = static_cast<long>(std::floor((stop - start) / step + 1e-9));
+  for (long i = 0; i <= n; ++i) v.push_back(start + i * step);
+  return v;
+}
+
+double calcBranchRealPart(const VehicleModel& model, const SweepResult& sweep, const ModeBranch& branch, size_t k,
+                          double v, const SweepOptions& opt) {
+  const TrimResult trim = calcTrim(model, v, opt.trim, &sweep.trims[k]);
+  const LinearModel lin = linearize(model, trim, opt.linearize);
+  return lin.eigenvalues[findBestMatch(sweep.models[k], branch.index[k], lin)].real();
+}
+
+namespace {
+
+// Brent's method (Brent 1973, ch. 4) for f(a) f(b) <= 0.
+double findRoot(const std::function<double(double)>& f, double a, double b, double fa, double fb, double tol) {
+  double c = a, fc = fa, d = b - a, e = d;
+  for (int it = 0; it < 200; ++it) {
+    if (fb * fc > 0) c = a, fc = fa, d = e = b - a;
+    if (std::abs(fc) < std::abs(fb)) a = b, b = c, c = a, fa = fb, fb = fc, fc = fa;
+    const double tol1 = 2 * 2.2e-16 * std::abs(b) + 0.5 * tol, m = 0.5 * (c - b);
+    if (std::abs(m) <= tol1 || fb == 0) return b;
+    if (std::abs(e) >= tol1 && std::abs(fa) > std::abs(fb)) {
+      double p, q, r, s = fb / fa;
+      if (a == c) {
+        p = 2 * m * s, q = 1 - s;
+      } else {
+        q = fa / fc, r = fb / fc;
+        p = s * (2 * m * q * (q - r) - (b - a) * (r - 1));
+        q = (q - 1) * (r - 1) * (s - 1);
+      }
+      if (p > 0) q = -q; else p = -p;
+      if (2 * p < std::min(3 * m * q - std::abs(tol1 * q), std::abs(e * q))) e = d, d = p / q;
+      else d = m, e = m;
+    } else {
+      d = m, e = m;
+    }
+    a = b, fa = fb;
+    b += (std::abs(d) > tol1) ? d : (m > 0 ? tol1 : -tol1);
+    fb = f(b);
+  }
+  return b;
+}
+
+}  // namespace
+
+SweepResult runSweep(const VehicleModel& model, const SweepOptions& opt) {
+  SweepResult out;
+  out.speeds = makeSpeedGrid(opt.start, opt.stop, opt.step);
+  out.trims.reserve(out.speeds.size());
+  out.models.reserve(out.speeds.size());
+  for (size_t k = 0; k < out.speeds.size(); ++k) {
+    out.trims.push_back(calcTrim(model, out.speeds[k], opt.trim, k ? &out.trims[k - 1] : nullptr));
+    out.models.push_back(linearize(model, out.trims.back(), opt.linearize));
+  }
+  out.branches = trackModes(out.models, model.getScenario().geometry.wheelbase);
+
+  for (const ModeBranch& br : out.branches) {
+    if (br.label == "neutral" || br.label == "other") continue;
+    for (size_t k = 0; k + 1 < out.speeds.size(); ++k) {
+      const double f0 = br.eigenvalue[k].real(), f1 = br.eigenvalue[k + 1].real();
+      if (!(f0 * f1 < 0 || (f1 == 0 && f0 != 0))) continue;
+      auto f = [&](double v) { return calcBranchRealPart(model, out, br, k, v, opt); };
+      const double v = findRoot(f, out.speeds[k], out.speeds[k + 1], f0, f1, opt.criticalSpeedTolerance);
+      bool duplicate = false;  // both members of a complex pair cross together
+      for (const auto& c : out.criticalSpeeds)
+        if (c.mode == br.label && std::abs(c.speed - v) < 1e-6) duplicate = true;
+      if (!duplicate) out.criticalSpeeds.push_back({br.label, v, f0 > 0});
+    }
+  }
+  return out;
+}
+
+}  // namespace motostab

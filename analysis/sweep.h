@@ -1,0 +1,44 @@
+#pragma once
+// Linear stability sweep over forward speed: trim, linearise, track and label modes, and find
+// the stability boundaries (critical speeds) by root bracketing.
+#include <string>
+#include <vector>
+
+#include "analysis/modes.h"
+
+namespace motostab {
+
+struct SweepOptions {
+  double start = 0, stop = 10, step = 0.1;  ///< m/s
+  TrimOptions trim;
+  LinearizeOptions linearize;
+  double criticalSpeedTolerance = 1e-9;  ///< m/s
+};
+
+/// A speed where a mode's real part changes sign.
+struct CriticalSpeed {
+  std::string mode;       ///< branch label
+  double speed = 0;       ///< m/s
+  bool stabilising = false;  ///< real part goes from + to - as speed rises
+};
+
+struct SweepResult {
+  std::vector<double> speeds;
+  std::vector<TrimResult> trims;
+  std::vector<LinearModel> models;
+  std::vector<ModeBranch> branches;
+  std::vector<CriticalSpeed> criticalSpeeds;
+};
+
+/// The speeds start, start+step, ..., stop (stop included when it falls on the grid within 1e-9).
+std::vector<double> makeSpeedGrid(double start, double stop, double step);
+
+/// Trims and linearises at every speed (each trim warm-started from the previous one), tracks and
+/// labels modes, and brackets every sign change of a labelled mode's real part to the tolerance.
+SweepResult runSweep(const VehicleModel& model, const SweepOptions& options);
+
+/// Real part of the eigenvalue continuing `branch` from sweep speed index k, at speed v (1/s).
+double calcBranchRealPart(const VehicleModel& model, const SweepResult& sweep, const ModeBranch& branch, size_t k,
+                          double v, const SweepOptions& options);
+
+}  // namespace motostab

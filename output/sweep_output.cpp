@@ -1,0 +1,175 @@
+#include "output/sweep_output.h"
+
+#include <cmath>
+#include <iomanip>
+#include <limits>
+#include <map>
+#include <sstream>
+
+#include "io/atomic_file.h"
+#include "io/csv.h"
+#include "io/plot.h"
+
+namespace motostab {
+
+double calcFrequencyHz(std::complex<double> l) { return l.imag() / (2 * M_PI); }
+
+double calcDampingRatio(std::complex<double> l) {
+  const double mag = std::abs(l);
+  return mag > 0 ? -l.real() / mag : std::numeric_limits<double>::quiet_NaN();
+}
+
+namespace {
+
+const char* kPlottedModes[] = {"weave", "capsize", "castor", "wobble"};
+
+std::string plotModes(const std::string& xcol, const std::string& ycol) {
+  std::string cmd = "  plot ";
+  bool first = true;
+  for (const char* m : kPlottedModes) {
+    cmd += std::string(first ? "" : ", \\\n       ") + "'eigenvalues.csv' using " + xcol + ":(strcol(2) eq '" + m +
+           "' ? " + ycol + " : NaN) with points pt 7 ps 0.4 title '" + m + "'";
+    first = false;
+  }
+  return cmd + "\n";
+}
+
+}  // namespace
+
+nlohmann::json makeSweepSummary(const std::string& name, const SweepResult& sweep) {
+  nlohmann::json j;
+  j["scenario"] = name;
+  j["speeds_mps"] = {{"start", sweep.speeds.front()}, {"stop", sweep.speeds.back()}, {"count", sweep.speeds.size()}};
+  nlohmann::json crit = nlohmann::json::array();
+  std::map<std::string, nlohmann::json> byMode;
+  for (const char* m : kPlottedModes) byMode[m] = nlohmann::json::array();
+  for (const auto& c : sweep.criticalSpeeds) {
+    crit.push_back({{"mode", c.mode}, {"speed_mps", c.speed}, {"direction", c.stabilising ? "stabilising" : "destabilising"}});
+    byMode[c.mode].push_back(c.speed);
+  }
+  j["critical_speeds"] = crit;
+  for (const auto& [mode, speeds] : byMode)
+    j[mode + "_speed_mps"] = speeds.empty() ? nlohmann::json(nullptr) : speeds[0];
+  // Speed ranges of the sweep grid where every labelled mode has a negative real part.
+  nlohmann::json ranges = nlohmann::json::array();
+  double startStable = NAN;
+  for (size_t k = 0; k < sweep.speeds.size(); ++k) {
+    bool stable = true;
+    for (const auto& b : sweep.branches)
+      if (b.label != "neutral" && b.eigenvalue[k].real() >= 0) stable = false;
+    if (stable && std::isnan(startStable)) startStable = sweep.speeds[k];
+    if ((!stable || k + 1 == sweep.speeds.size()) && !std::isnan(startStable)) {
+      ranges.push_back({startStable, stable ? sweep.speeds[k] : sweep.speeds[k - 1]});
+      startStable = NAN;
+    }
+  }
+  j["stable_grid_ranges_mps"] = ranges;
+  return j;
+}
+
+void writeSweepOutputs(const std::filesystem::path& dir, const std::string& name, const SweepResult& sweep) {
+  CsvWriter csv({"speed_mps", "mode", "real", "imag", "frequency_hz", "damping_ratio"});
+  for (size_t k = 0; k < sweep.speeds.size(); ++k)
+    for (const auto& b : sweep.branches) {
+      const auto l = b.eigenvalue[k];
+      csv.beginRow().add(sweep.speeds[k]).add(b.label).add(l.real()).add(l.imag()).add(calcFrequencyHz(l)).add(
+          calcDampingRatio(l));
+    }
+  writeFileAtomically(dir / "eigenvalues.csv", csv.getText());
+  writeFileAtomically(dir / "summary.json", makeSweepSummary(name, sweep).dump(2) + "\n");
+  const std::string common = "  set datafile separator ','\n  set grid\n  set key outside right\n";
+  renderGnuplot(dir, "root_locus",
+                common + "  set title " + gnuplotQuote("Root locus: " + name) +
+                    "\n  set xlabel 'real part (1/s)'\n  set ylabel 'frequency (Hz)'\n" + plotModes("3", "$5"));
+  renderGnuplot(dir, "real_part_vs_speed",
+                common + "  set title " + gnuplotQuote("Real part against speed: " + name) +
+                    "\n  set xlabel 'speed (m/s)'\n  set ylabel 'real part (1/s)'\n  set xzeroaxis lt -1\n" +
+                    plotModes("1", "$3"));
+}
+
+std::string formatSweepTable(const SweepResult& sweep, int rows) {
+  std::ostringstream os;
+  os << std::setw(8) << "v (m/s)";
+  std::vector<const ModeBranch*> shown;
+  for (const auto& b : sweep.branches) {
+    if (b.label == "neutral") continue;
+    bool pairSeen = false;  // show each complex pair once (positive imaginary part)
+    for (const auto* s : shown)
+      if (s->label == b.label && std::abs(s->eigenvalue.back() - std::conj(b.eigenvalue.back())) < 1e-9) pairSeen = true;
+    if (pairSeen) continue;
+    shown.push_back(&b);
+    os << std::setw(26) << b.label;
+  }
+  os << "\n";
+  const size_t n = sweep.speeds.size();
+  const size_t stride = std::max<size_t>(1, (n - 1) / std::max(1, rows - 1));
+  for (size_t k = 0; k < n; k += stride) {
+    os << std::fixed << std::setprecision(2) << std::setw(8) << sweep.speeds[k];
+    for (const auto* b : shown) {
+      const auto l = b->eigenvalue[k];
+      std::ostringstream cell;
+      cell << std::setprecision(4) << std::fixed << l.real();
+      if (std::abs(l.imag()) > 1e-9) cell << " +/- " << std::abs(l.imag()) << "i";
+      os << std::setw(26) << cell.str();
+    }
+    os << "\n";
+  }
+  os << "Critical speeds:\n";
+  if (sweep.criticalSpeeds.empty()) os << "  none in the range\n";
+  for (const auto& c : sweep.criticalSpeeds)
+    os << "  " << std::setw(8) << c.mode << " " << std::setprecision(10) << std::fixed << c.speed << " m/s ("
+       << (c.stabilising ? "stabilising" : "destabilising") << ")\n";
+  return os.str();
+}
+
+void writeLinearModel(const std::filesystem::path& dir, const LinearModel& lin) {
+  std::vector<std::string> names;
+  for (const auto& s : lin.states) names.push_back(s.name);
+  auto matrixCsv = [&](const Eigen::MatrixXd& M, const std::vector<std::string>& cols) {
+    std::vector<std::string> header{"state"};
+    header.insert(header.end(), cols.begin(), cols.end());
+    CsvWriter w(header);
+    for (int i = 0; i < M.rows(); ++i) {
+      w.beginRow().add(names[i]);
+      for (int j = 0; j < M.cols(); ++j) w.add(M(i, j));
+    }
+    return w.getText();
+  };
+  writeFileAtomically(dir / "A.csv", matrixCsv(lin.A, names));
+  writeFileAtomically(dir / "B.csv", matrixCsv(lin.B, lin.inputNames));
+  CsvWriter ev({"index", "real", "imag", "frequency_hz", "damping_ratio"});
+  std::vector<std::string> vecHeader{"state"};
+  for (int k = 0; k < lin.eigenvalues.size(); ++k) {
+    const auto l = lin.eigenvalues[k];
+    ev.beginRow().add(std::to_string(k)).add(l.real()).add(l.imag()).add(calcFrequencyHz(l)).add(calcDampingRatio(l));
+    vecHeader.push_back("re_" + std::to_string(k));
+    vecHeader.push_back("im_" + std::to_string(k));
+  }
+  CsvWriter vec(vecHeader);
+  for (size_t i = 0; i < names.size(); ++i) {
+    vec.beginRow().add(names[i]);
+    for (int k = 0; k < lin.eigenvalues.size(); ++k) vec.add(lin.eigenvectors(i, k).real()).add(lin.eigenvectors(i, k).imag());
+  }
+  writeFileAtomically(dir / "eigenvalues.csv", ev.getText());
+  writeFileAtomically(dir / "eigenvectors.csv", vec.getText());
+  nlohmann::json j;
+  j["speed_mps"] = lin.speed;
+  j["states"] = names;
+  j["inputs"] = lin.inputNames;
+  auto rows = [](const Eigen::MatrixXd& M) {
+    nlohmann::json out = nlohmann::json::array();
+    for (int i = 0; i < M.rows(); ++i) {
+      std::vector<double> row(M.cols());
+      for (int c = 0; c < M.cols(); ++c) row[c] = M(i, c);
+      out.push_back(row);
+    }
+    return out;
+  };
+  j["A"] = rows(lin.A);
+  j["B"] = rows(lin.B);
+  j["eigenvalues"] = nlohmann::json::array();
+  for (int k = 0; k < lin.eigenvalues.size(); ++k) j["eigenvalues"].push_back({lin.eigenvalues[k].real(), lin.eigenvalues[k].imag()});
+  writeFileAtomically(dir / "linear_model.json", j.dump(2) + "\n");
+}
+
+}  // namespace motostab

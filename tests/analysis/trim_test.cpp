@@ -1,0 +1,63 @@
+#include <gtest/gtest.h>
+
+#include "analysis/trim.h"
+#include "scenario/scenario.h"
+#include "tyres/rolling_no_slip.h"
+
+namespace motostab {
+namespace {
+
+const std::string kScenario = std::string(MOTOSTAB_SOURCE_DIR) + "/scenarios/whipple-benchmark.yaml";
+
+TEST(Trim, SymmetricBicycleRunsUpright) {
+  const VehicleModel model(loadScenario(kScenario));
+  const TrimResult t = calcTrim(model, 4.0);
+  const CoordinateIndices& ix = model.getIndices();
+  EXPECT_LT(t.residualNorm, 1e-10);
+  EXPECT_NEAR(t.state.getQ()[ix.roll], 0, 1e-12);
+  EXPECT_NEAR(t.state.getQ()[ix.steer], 0, 1e-12);
+  EXPECT_NEAR(t.state.getQ()[ix.height], 0.3, 1e-12);               // rear wheel radius
+  EXPECT_NEAR(t.state.getU()[ix.rearSpin], 4.0 / 0.3, 1e-10);       // v / r_R
+  EXPECT_NEAR(t.state.getU()[ix.frontSpin], 4.0 / 0.35, 1e-10);     // v / r_F
+}
+
+// Without lateral symmetry the trim must lean the bicycle until the whole centre of mass lies
+// above the line of the contact points (knife-edge wheels, steady straight running).
+TEST(Trim, LaterallyOffsetRiderLeansUntilCentreOfMassIsOverTheContactLine) {
+  const VehicleModel model(loadScenario(kScenario, {"rear_frame.com_m=[0.3, 0.05, 0.9]"}));
+  const TrimResult t = calcTrim(model, 5.0);
+  EXPECT_LT(t.residualNorm, 1e-10);
+  const double roll = t.state.getQ()[model.getIndices().roll];
+  EXPECT_GT(std::abs(roll), 1e-3);
+  model.getSystem().realize(t.state, SimTK::Stage::Position);
+  const SimTK::Vec3 com = model.getMatter().calcSystemMassCenterLocationInGround(t.state);
+  auto contactPoint = [&](const SimTK::MobilizedBody& wheel, double radius) {
+    const SimTK::Transform& X_GW = wheel.getBodyTransform(t.state);
+    return X_GW.p() + calcTorusContact(X_GW.R(), SimTK::Vec3(0), radius, 0).r_CP_G;
+  };
+  const SimTK::Vec3 rear = contactPoint(model.getRearWheel(), 0.3), front = contactPoint(model.getFrontWheel(), 0.35);
+  EXPECT_NEAR(rear[2], 0, 1e-12);
+  EXPECT_NEAR(front[2], 0, 1e-12);
+  // Horizontal cross product of (front - rear) and (com - rear): zero when the CoM is over the line.
+  const double cross = (front[0] - rear[0]) * (com[1] - rear[1]) - (front[1] - rear[1]) * (com[0] - rear[0]);
+  EXPECT_NEAR(cross, 0, 1e-9);
+}
+
+TEST(Trim, FailureNamesSpeedAndResidual) {
+  const VehicleModel model(loadScenario(kScenario));
+  TrimOptions opt;
+  opt.tolerance = -1;  // unreachable
+  opt.maxIterations = 2;
+  try {
+    calcTrim(model, 3.5, opt);
+    FAIL() << "trim cannot succeed";
+  } catch (const TrimError& e) {
+    const std::string m = e.what();
+    EXPECT_NE(m.find("3.5 m/s"), std::string::npos) << m;
+    EXPECT_NE(m.find("residual norm"), std::string::npos) << m;
+    EXPECT_DOUBLE_EQ(e.speed, 3.5);
+  }
+}
+
+}  // namespace
+}  // namespace motostab
