@@ -93,7 +93,8 @@ FrfTest readFrfTest(const std::filesystem::path& file) {
   if (const YAML::Node p = root["processing"]) {
     const std::string pp = "processing";
     in.checkMap(p, pp, {"band_hz", "model_order", "exponential_end_value", "force_window", "double_hit_fraction",
-                        "force_range_N", "response_range_mps2", "bending_mode_hz", "torsion_mode_hz"});
+                        "force_range_N", "response_range_mps2", "bending_mode_hz", "torsion_mode_hz",
+                        "modal_axes_from"});
     if (p["band_hz"]) {
       const auto b = in.getNumbers(p, pp, "band_hz", 2);
       if (!(b[0] >= 0 && b[1] > b[0])) in.fail(p["band_hz"], pp + ".band_hz", "need 0 <= low < high");
@@ -113,6 +114,10 @@ FrfTest readFrfTest(const std::filesystem::path& file) {
     t.responseRange = in.getPositive(p, pp, "response_range_mps2", 0.0);
     t.bendingModeHz = in.getPositive(p, pp, "bending_mode_hz", 0.0);
     t.torsionModeHz = in.getPositive(p, pp, "torsion_mode_hz", 0.0);
+    const std::string from = in.getString(p, pp, "modal_axes_from", "ods");
+    if (from != "ods" && from != "modal_model")
+      in.fail(p["modal_axes_from"], pp + ".modal_axes_from", "expected 'ods' or 'modal_model'");
+    t.axesFromModalModel = from == "modal_model";
   }
   return t;
 }
@@ -209,7 +214,15 @@ FrfResult identifyFrf(const FrfTest& test, const std::vector<modal::ImpactRecord
         m.halfPowerFrequencyHz = p.frequencyHz, m.halfPowerDampingRatio = p.dampingRatio;
     if (axes) {
       const size_t bin = getNearestBin(frf, modes[i].rawLambda.imag() / (2 * M_PI));
-      const Eigen::VectorXd v = calcRealShape(getOds(frf.h1, bin), &m.mpc);
+      // Complex shape of mode i at the channels: the measured ODS at the resonance bin, or the residues of
+      // the modal model (LSFD with all identified poles, so neighbouring modes are removed).
+      auto getShape = [&](const std::vector<std::vector<cd>>& h) {
+        if (!test.axesFromModalModel) return getOds(h, bin);
+        std::vector<cd> u;
+        for (const auto& hc : h) u.push_back(modal::fitModalModel(frf.frequency, hc, o.fMin, o.fMax, rawPoles).residues[i]);
+        return u;
+      };
+      const Eigen::VectorXd v = calcRealShape(getShape(frf.h1), &m.mpc);
       try {
         m.axis = calcTwistAxis(P * v, test.forcePoint);
         m.hasAxis = true;
@@ -223,7 +236,7 @@ FrfResult identifyFrf(const FrfTest& test, const std::vector<modal::ImpactRecord
           use[k] = false;
           std::vector<std::vector<cd>> h;
           modal::calcH1FromSpectra(frf, use, h);
-          const TwistAxis a = calcTwistAxis(P * calcRealShape(getOds(h, bin), nullptr), test.forcePoint);
+          const TwistAxis a = calcTwistAxis(P * calcRealShape(getShape(h), nullptr), test.forcePoint);
           arms.push_back(a.arm);
           betas.push_back(wrapDegrees(a.betaDeg - m.axis.betaDeg));
         }
@@ -321,6 +334,7 @@ void writeFrfOutputs(const FrfTest& test, const FrfResult& r, const std::filesys
   j["band_hz"] = {o.fMin, o.fMax};
   j["model_order"] = {o.minOrder, o.maxOrder};
   j["modes"] = jm;
+  j["modal_axes_from"] = test.axesFromModalModel ? "modal_model" : "ods";
   j["bending_mode"] = r.bendingIndex;
   j["torsion_mode"] = r.torsionIndex;
   writeFileAtomically(dir / "frf.json", j.dump(2) + "\n");
@@ -376,7 +390,7 @@ void writeFrfOutputs(const FrfTest& test, const FrfResult& r, const std::filesys
   if (!axes.empty()) {
     std::vector<PlotMarker> ch;
     for (const auto& c : test.channels) ch.push_back({c.name, c.position});
-    writeAxesPlot(dir, "modal_axes", "Modal twist axes from the ODS at each resonance", ch, test.forcePoint, axes);
+    writeAxesPlot(dir, "modal_axes", test.axesFromModalModel ? "Modal twist axes from the modal-model residues" : "Modal twist axes from the ODS at each resonance", ch, test.forcePoint, axes);
   }
 }
 

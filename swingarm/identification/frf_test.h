@@ -35,6 +35,7 @@ struct FrfTest {
   double doubleHitFraction = 0.1;
   double forceRange = 0, responseRange = 0;  ///< N, m/s^2; 0 = not given
   double bendingModeHz = 0, torsionModeHz = 0;  ///< mode selection hints; 0 = automatic
+  bool axesFromModalModel = false;  ///< modal_axes_from: ods (default) or modal_model (LSFD residues)
 };
 
 /// Reads and checks a hammer test YAML (strict keys; InputError on any problem). Three or more channels
@@ -74,7 +75,8 @@ struct FrfResult {
 /// Runs the chain: hit checks (double hit, overload: rejected), force + exponential windows, H1 and
 /// coherence, LSCF stabilisation diagram and stable-mode selection (uncertainty = jackknife over hits
 /// combined with the scatter over model orders), half-power estimates, ODS twist axes (the ODS at the
-/// bin nearest each damped natural frequency, its quadrature part Im(H1), fitted by the plate plane),
+/// bin nearest each damped natural frequency, its quadrature part Im(H1), fitted by the plate plane; or,
+/// with modal_axes_from: modal_model, the quadrature part of the LSFD residues),
 /// and bending/torsion labels (hints, else the lowest mode whose axis is within 45 deg of normal to x
 /// is bending and the lowest within 45 deg of x is torsion).
 FrfResult identifyFrf(const FrfTest& test, const std::vector<modal::ImpactRecord>& hits);

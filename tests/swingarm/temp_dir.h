@@ -1,0 +1,14 @@
+#pragma once
+// A fresh, empty temporary folder per test.
+#include <unistd.h>
+
+#include <filesystem>
+#include <string>
+
+inline std::filesystem::path makeTempDir(const std::string& name) {
+  const auto dir = std::filesystem::temp_directory_path() /
+                   ("motostab_swingarm_" + name + "_" + std::to_string(::getpid()));
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  return dir;
+}
