@@ -1,1 +1,156 @@
+// Bad input is an InputError naming the file, line and key (issue 4, item 6).
 #include <gtest/gtest.h>
+
+#include <fstream>
+#include <functional>
+
+#include "io/input_error.h"
+#include "swingarm/identification/frf_test.h"
+#include "swingarm/identification/static_test.h"
+#include "temp_dir.h"
+
+namespace {
+
+using namespace motostab::identification;
+using motostab::InputError;
+
+const char* kStaticHead =
+    "test: static\nframe: \"x along the swingarm\"\nforce_point: {x: 0.55, z: 0.0}\n";
+const char* kSensors =
+    "sensors:\n  - {name: L1, x: 0.50, z: 0.04}\n  - {name: L2, x: 0.60, z: 0.04}\n  - {name: L3, x: 0.55, z: -0.05}\n";
+const char* kGoodCsv = "force_N,L1_m,L2_m,L3_m\n0,0.005,0.006,0.007\n1000,0.0059,0.0069,0.0079\n2000,0.0068,0.0078,0.0088\n";
+
+struct Files {
+  std::filesystem::path dir;
+  std::filesystem::path write(const std::string& name, const std::string& text) const {
+    std::ofstream(dir / name) << text;
+    return dir / name;
+  }
+};
+
+InputError catchInputError(const std::function<void()>& f) {
+  try {
+    f();
+  } catch (const InputError& e) {
+    return e;
+  }
+  ADD_FAILURE() << "no InputError";
+  return InputError({}, "none");
+}
+
+TEST(StaticInput, AcceptsTheIssueFormatAsIs) {
+  const Files f{makeTempDir("static_ok")};
+  f.write("static.csv", kGoodCsv);
+  // Verbatim from issue 4, comments included.
+  const auto y = f.write("static.yaml",
+      "test: static\n"
+      "frame: \"x along the swingarm from the pivot towards the hub, z up, y lateral (the force direction); metres\"\n"
+      "force_point: {x: 0.55, z: 0.0}        # where the lateral force is applied (hub)\n"
+      "sensors:                               # laser spots on the reference plate, each measuring y displacement\n"
+      "  - {name: L1, x: 0.50, z: 0.04}\n  - {name: L2, x: 0.60, z: 0.04}\n  - {name: L3, x: 0.55, z: -0.05}\n"
+      "readings: static.csv                   # header: force_N,L1_m,L2_m,L3_m   (a 0 N row is the unloaded plate)\n");
+  const StaticTest t = readStaticTest(y);
+  EXPECT_EQ(t.sensors.size(), 3u);
+  EXPECT_EQ(readStaticReadings(t).force.size(), 3u);
+}
+
+TEST(StaticInput, TooFewSensors) {
+  const Files f{makeTempDir("few")};
+  const auto y = f.write("s.yaml", std::string(kStaticHead) +
+                                       "sensors:\n  - {name: L1, x: 0.50, z: 0.04}\n  - {name: L2, x: 0.60, z: 0.04}\n"
+                                       "readings: s.csv\n");
+  const InputError e = catchInputError([&] { readStaticTest(y); });
+  EXPECT_EQ(e.getLocation().key, "sensors");
+  EXPECT_EQ(e.getLocation().line, 5);
+  EXPECT_NE(e.getReason().find("at least three"), std::string::npos);
+}
+
+TEST(StaticInput, CollinearSensors) {
+  const Files f{makeTempDir("collinear")};
+  const auto y = f.write("s.yaml", std::string(kStaticHead) +
+                                       "sensors:\n  - {name: L1, x: 0.50, z: 0.0}\n  - {name: L2, x: 0.55, z: 0.0}\n"
+                                       "  - {name: L3, x: 0.60, z: 0.0}\nreadings: s.csv\n");
+  const InputError e = catchInputError([&] { readStaticTest(y); });
+  EXPECT_EQ(e.getLocation().key, "sensors");
+  EXPECT_NE(e.getReason().find("collinear"), std::string::npos);
+}
+
+TEST(StaticInput, MissingColumnAndNoUnloadedRow) {
+  const Files f{makeTempDir("columns")};
+  const auto y = f.write("s.yaml", std::string(kStaticHead) + kSensors + "readings: s.csv\n");
+  f.write("s.csv", "force_N,L1_m,L2_m\n0,1,2\n1000,1,2\n2000,1,2\n");
+  InputError e = catchInputError([&] { readStaticReadings(readStaticTest(y)); });
+  EXPECT_EQ(e.getLocation().key, "L3_m");
+  EXPECT_EQ(e.getLocation().file, (f.dir / "s.csv").string());
+  f.write("s.csv", "force_N,L1_m,L2_m,L3_m\n500,1,2,3\n1000,1,2,3\n2000,1,2,3\n");
+  e = catchInputError([&] { readStaticReadings(readStaticTest(y)); });
+  EXPECT_EQ(e.getLocation().key, "force_N");
+  EXPECT_NE(e.getReason().find("unloaded"), std::string::npos);
+}
+
+TEST(StaticInput, UnknownKeyNegativeValueAndWrongKind) {
+  const Files f{makeTempDir("keys")};
+  auto y = f.write("s.yaml", std::string(kStaticHead) + kSensors + "readings: s.csv\nsensor_resolutoin_m: 4e-6\n");
+  InputError e = catchInputError([&] { readStaticTest(y); });
+  EXPECT_EQ(e.getLocation().key, "sensor_resolutoin_m");
+  EXPECT_EQ(e.getLocation().line, 9);
+  y = f.write("s.yaml", std::string(kStaticHead) + kSensors + "readings: s.csv\nsensor_resolution_m: -4e-6\n");
+  e = catchInputError([&] { readStaticTest(y); });
+  EXPECT_EQ(e.getLocation().key, "sensor_resolution_m");
+  EXPECT_EQ(e.getLocation().line, 9);
+  y = f.write("s.yaml", "test: frf\n");
+  e = catchInputError([&] { readStaticTest(y); });
+  EXPECT_EQ(e.getLocation().key, "test");
+  y = f.write("s.yaml", std::string(kStaticHead) + "sensors:\n  - {name: L1, x: 0.5, zz: 0.04}\n");
+  e = catchInputError([&] { readStaticTest(y); });
+  EXPECT_EQ(e.getLocation().key, "sensors[0].zz");
+  EXPECT_EQ(e.getLocation().line, 5);
+}
+
+const char* kFrfYaml =
+    "test: frf\nframe: \"same convention as the static test\"\nforce_point: {x: 0.55, z: 0.0}\n"
+    "channels:                                   # accelerometers on the reference plate, measuring along y\n"
+    "  - {name: A1, x: 0.50, z: 0.04}\n  - {name: A2, x: 0.60, z: 0.04}\n  - {name: A3, x: 0.55, z: -0.05}\n"
+    "hits: [hit1.csv]        # header: time_s,force_N,A1_mps2,A2_mps2,A3_mps2\n";
+
+std::string makeHitCsv(int badRow) {
+  std::string s = "time_s,force_N,A1_mps2,A2_mps2,A3_mps2\n";
+  for (int k = 0; k < 64; ++k) {
+    const double t = (k == badRow ? k - 2 : k) * 1e-3;
+    s += std::to_string(t) + "," + (k == 5 ? "100" : "0") + ",0.1,0.2,0.3\n";
+  }
+  return s;
+}
+
+TEST(FrfInput, NonMonotonicTimeColumn) {
+  const Files f{makeTempDir("time")};
+  const auto y = f.write("frf.yaml", kFrfYaml);
+  f.write("hit1.csv", makeHitCsv(-1));
+  EXPECT_EQ(readHits(readFrfTest(y)).size(), 1u);
+  f.write("hit1.csv", makeHitCsv(20));
+  const InputError e = catchInputError([&] { readHits(readFrfTest(y)); });
+  EXPECT_EQ(e.getLocation().key, "time_s");
+  EXPECT_EQ(e.getLocation().line, 22);  // header is line 1, row k is line k + 2
+  EXPECT_NE(e.getReason().find("not strictly increasing"), std::string::npos);
+}
+
+TEST(FrfInput, MissingChannelColumnCollinearChannelsAndBadProcessing) {
+  const Files f{makeTempDir("frfbad")};
+  std::string csv = makeHitCsv(-1);
+  csv.replace(csv.find("A3_mps2"), 7, "A4_mps2");
+  f.write("hit1.csv", csv);
+  const auto y = f.write("frf.yaml", kFrfYaml);
+  InputError e = catchInputError([&] { readHits(readFrfTest(y)); });
+  EXPECT_EQ(e.getLocation().key, "A3_mps2");
+  auto y2 = f.write("frf2.yaml", std::string("test: frf\nforce_point: {x: 0.55, z: 0.0}\nchannels:\n"
+                                             "  - {name: A1, x: 0.5, z: 0}\n  - {name: A2, x: 0.6, z: 0}\n"
+                                             "  - {name: A3, x: 0.7, z: 0}\nhits: [hit1.csv]\n"));
+  e = catchInputError([&] { readFrfTest(y2); });
+  EXPECT_EQ(e.getLocation().key, "channels");
+  y2 = f.write("frf3.yaml", std::string(kFrfYaml) + "processing:\n  band_hz: [400, 60]\n");
+  e = catchInputError([&] { readFrfTest(y2); });
+  EXPECT_EQ(e.getLocation().key, "processing.band_hz");
+  EXPECT_EQ(e.getLocation().line, 10);
+}
+
+}  // namespace
