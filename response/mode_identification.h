@@ -16,7 +16,7 @@ struct IdentificationOptions {
   int fixedOrder = 0;       ///< if > 0, use the pencil at exactly this order instead of selecting one
   /// Order selection considers only pencil sizes P (order + offset) at a singular-value gap,
   /// s_{P+1} / s_P < gapRatio (all sizes if there is none), and picks the lowest BIC among them.
-  double gapRatio = 0.2;
+  double gapRatio = 0.5;
   bool fitOffset = true;    ///< include a constant offset c_k per signal
   bool polish = true;       ///< refine the poles by nonlinear least squares on the original samples
   int maxPencilSamples = 1500;  ///< cap on the uniform grid for the pencil (a coarser step is used beyond it)
