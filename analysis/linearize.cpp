@@ -55,10 +55,28 @@ LinearModel linearize(const VehicleModel& model, const TrimResult& trim, const L
   const int m = static_cast<int>(err0.size());
   const int mp = s.getNQErr();
   Eigen::MatrixXd G(m, nq + nu);
+  const auto cyclic = model.getCyclicQ();
+  auto isCyclicQ = [&](const StateEntry& e) {
+    return e.slot == Slot::Q && std::find(cyclic.begin(), cyclic.end(), e.index) != cyclic.end();
+  };
   for (int j = 0; j < nq + nu; ++j) {
     const StateEntry e{j < nq ? Slot::Q : Slot::U, j < nq ? j : j - nq};
+    if (isCyclicQ(e) && !opt.computeCyclicColumns) {
+      G.col(j).setZero();
+      continue;
+    }
+    if (e.slot == Slot::U) continue;  // below, exactly
     fn.calcDirectionalDerivative(s, {{e, 1.0}}, stepFor(e), opt.order, errors, col);
     G.col(j) = col;
+  }
+  // The constraint errors are affine in u: one-sided unit differences are exact.
+  for (int j = 0; j < nu; ++j) {
+    const StateEntry e{Slot::U, j};
+    const double base = fn.get(s, e);
+    fn.set(s, e, base + 1.0);
+    fn.calcConstraintErrors(s, col);
+    fn.set(s, e, base);
+    G.col(nq + j) = col - err0;
   }
 
   // Dependent coordinates: heights and pitch first, then the rates that the contact fixes.
@@ -92,6 +110,10 @@ LinearModel linearize(const VehicleModel& model, const TrimResult& trim, const L
   Eigen::MatrixXd A(n, n);
   for (int j = 0; j < n; ++j) {
     const StateEntry& e = lin.states[j].entry;
+    if (isCyclicQ(e) && !opt.computeCyclicColumns) {
+      A.col(j).setZero();
+      continue;
+    }
     std::vector<std::pair<StateEntry, double>> dir{{e, 1.0}};
     if (e.slot != Slot::Z && m > 0) {
       const Eigen::VectorXd dDep = GdepLU.solve(-G.col(rowOf(e)));
@@ -104,20 +126,26 @@ LinearModel linearize(const VehicleModel& model, const TrimResult& trim, const L
     for (int i = 0; i < n; ++i) A(i, j) = col[rowOf(lin.states[i].entry)];
   }
   lin.inputNames = VehicleModel::getInputNames();
+  // Accelerations are affine in the generalized input forces: a one-sided unit difference is exact.
   Eigen::MatrixXd B(n, kNumInputs);
+  Eigen::VectorXd y0, y1;
+  fn.calcYDot(s, y0);
   for (int k = 0; k < kNumInputs; ++k) {
-    fn.calcDirectionalDerivative(s, {{{Slot::Input, k}, 1.0}}, 1.0, 2, yDot, col);
-    for (int i = 0; i < n; ++i) B(i, k) = col[rowOf(lin.states[i].entry)];
+    const StateEntry in{Slot::Input, k};
+    const double base = fn.get(s, in);
+    fn.set(s, in, base + 1.0);
+    fn.calcYDot(s, y1);
+    fn.set(s, in, base);
+    for (int i = 0; i < n; ++i) B(i, k) = y1[rowOf(lin.states[i].entry)] - y0[rowOf(lin.states[i].entry)];
   }
 
   // Remove cyclic coordinates; yaw too when no kept row depends on it (rolling constraints).
   std::vector<int> remove;
-  const auto cyc = model.getCyclicQ();
   int yawCol = -1;
   for (int j = 0; j < n; ++j) {
     const StateEntry& e = lin.states[j].entry;
     if (e.slot != Slot::Q) continue;
-    if (std::find(cyc.begin(), cyc.end(), e.index) != cyc.end()) remove.push_back(j);
+    if (isCyclicQ(e)) remove.push_back(j);
     if (e.index == ix.yaw) yawCol = j;
   }
   if (yawCol >= 0) {
@@ -131,6 +159,7 @@ LinearModel linearize(const VehicleModel& model, const TrimResult& trim, const L
   for (int j = 0; j < n; ++j)
     if (std::find(remove.begin(), remove.end(), j) == remove.end()) keep.push_back(j);
   for (int j : remove) {
+    if (isCyclicQ(lin.states[j].entry) && !opt.computeCyclicColumns) continue;
     Eigen::VectorXd kept(keep.size());
     for (size_t a = 0; a < keep.size(); ++a) kept[a] = A(keep[a], j);
     lin.removedColumns.push_back({lin.states[j].name, kept});

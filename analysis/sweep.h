@@ -9,6 +9,13 @@
 namespace motostab {
 
 struct SweepOptions {
+  /// Sweeps use second-order differences (step 1e-5): 3e-10 worst eigenvalue error on the Whipple
+  /// benchmark against 1.2e-11 for the fourth-order default, at half the cost.
+  SweepOptions() {
+    linearize.computeCyclicColumns = false;
+    linearize.order = 2;
+    linearize.step = 1e-5;
+  }
   double start = 0, stop = 10, step = 0.1;  ///< m/s
   TrimOptions trim;
   LinearizeOptions linearize;

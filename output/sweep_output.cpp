@@ -23,12 +23,16 @@ namespace {
 
 const char* kPlottedModes[] = {"weave", "capsize", "castor", "wobble"};
 
-std::string plotModes(const std::string& xcol, const std::string& ycol) {
+// Plots each labelled mode present in the sweep from eigenvalues.csv.
+std::string plotModes(const SweepResult& sweep, const std::string& xcol, const std::string& ycol) {
   std::string cmd = "  plot ";
   bool first = true;
   for (const char* m : kPlottedModes) {
+    bool present = false;
+    for (const auto& b : sweep.branches) present = present || b.label == m;
+    if (!present) continue;
     cmd += std::string(first ? "" : ", \\\n       ") + "'eigenvalues.csv' using " + xcol + ":(strcol(2) eq '" + m +
-           "' ? " + ycol + " : NaN) with points pt 7 ps 0.4 title '" + m + "'";
+           "' ? " + ycol + " : NaN) with points pt 7 ps 0.5 title '" + m + "'";
     first = false;
   }
   return cmd + "\n";
@@ -80,11 +84,11 @@ void writeSweepOutputs(const std::filesystem::path& dir, const std::string& name
   const std::string common = "  set datafile separator ','\n  set grid\n  set key outside right\n";
   renderGnuplot(dir, "root_locus",
                 common + "  set title " + gnuplotQuote("Root locus: " + name) +
-                    "\n  set xlabel 'real part (1/s)'\n  set ylabel 'frequency (Hz)'\n" + plotModes("3", "$5"));
+                    "\n  set xlabel 'real part (1/s)'\n  set ylabel 'frequency (Hz)'\n" + plotModes(sweep, "3", "$5"));
   renderGnuplot(dir, "real_part_vs_speed",
                 common + "  set title " + gnuplotQuote("Real part against speed: " + name) +
                     "\n  set xlabel 'speed (m/s)'\n  set ylabel 'real part (1/s)'\n  set xzeroaxis lt -1\n" +
-                    plotModes("1", "$3"));
+                    plotModes(sweep, "1", "$3"));
 }
 
 std::string formatSweepTable(const SweepResult& sweep, int rows) {

@@ -99,11 +99,11 @@ class RollingConstraint : public SimTK::Constraint::Custom::Implementation {
     const TorusContact c = contact(getBodyRotationFromState(s, wheel_), w);
     return A_GW[1] + A_GW[0] % c.r_CP_G + w % c.rDot_CP_G;
   }
+  // Constraint force f_G at the contact point of the wheel; the reaction on Ground does no work.
   void applyContactForce(const State& s, const Vec3& f_G, Array_<SpatialVec, ConstrainedBodyIndex>& F) const {
-    const Vec3 p_WP = ~getBodyRotationFromState(s, wheel_) * r_CP(s);
-    addInStationForce(s, wheel_, p_WP, f_G, F);
-    const Vec3 p_GP = getBodyOriginLocationFromState(s, wheel_) + r_CP(s);
-    addInStationForce(s, ground_, p_GP, -f_G, F);
+    const SimTK::Rotation& R_GW = getBodyRotationFromState(s, wheel_);
+    const Vec3 r = contact(R_GW, Vec3(0)).r_CP_G;
+    F[wheel_] += SpatialVec(r % f_G, f_G);
   }
 
   double radius_, crown_;

@@ -1,0 +1,62 @@
+// Issue 2 speed figures: one Whipple sweep over 0-10 m/s in 0.01 m/s steps (1001 speeds), and the
+// cost of one realize to Acceleration after a q, u or z change.
+#include <benchmark/benchmark.h>
+
+#include "analysis/sweep.h"
+#include "scenario/scenario.h"
+
+namespace {
+
+const std::string kWhipple = std::string(MOTOSTAB_SOURCE_DIR) + "/scenarios/whipple-benchmark.yaml";
+
+void BM_WhippleSweep1001(benchmark::State& st) {
+  const motostab::VehicleModel model(motostab::loadScenario(kWhipple));
+  motostab::SweepOptions opt;
+  opt.start = 0, opt.stop = 10, opt.step = 0.01;
+  for (auto _ : st) {
+    auto r = motostab::runSweep(model, opt);
+    benchmark::DoNotOptimize(r.criticalSpeeds.data());
+  }
+}
+BENCHMARK(BM_WhippleSweep1001)->Unit(benchmark::kMillisecond)->Iterations(3);
+
+void BM_TrimAndLinearizeOneSpeed(benchmark::State& st) {
+  const motostab::VehicleModel model(motostab::loadScenario(kWhipple));
+  const motostab::TrimResult t = motostab::calcTrim(model, 5.0);
+  for (auto _ : st) {
+    const motostab::TrimResult t2 = motostab::calcTrim(model, 5.0, {}, &t);
+    auto lin = motostab::linearize(model, t2);
+    benchmark::DoNotOptimize(lin.A.data());
+  }
+}
+BENCHMARK(BM_TrimAndLinearizeOneSpeed)->Unit(benchmark::kMicrosecond);
+
+void BM_RealizeAccelerationAfterQChange(benchmark::State& st) {
+  const motostab::VehicleModel model(motostab::loadScenario(kWhipple));
+  SimTK::State s = motostab::calcTrim(model, 5.0).state;
+  const int roll = model.getIndices().roll;
+  double d = 1e-6;
+  for (auto _ : st) {
+    s.updQ()[roll] = (d = -d);
+    model.getSystem().realize(s, SimTK::Stage::Acceleration);
+    benchmark::DoNotOptimize(s.getUDot()[0]);
+  }
+}
+BENCHMARK(BM_RealizeAccelerationAfterQChange)->Unit(benchmark::kMicrosecond);
+
+void BM_RealizeAccelerationAfterUChange(benchmark::State& st) {
+  const motostab::VehicleModel model(motostab::loadScenario(kWhipple));
+  SimTK::State s = motostab::calcTrim(model, 5.0).state;
+  const int roll = model.getIndices().roll;
+  double d = 1e-6;
+  for (auto _ : st) {
+    s.updU()[roll] = (d = -d);
+    model.getSystem().realize(s, SimTK::Stage::Acceleration);
+    benchmark::DoNotOptimize(s.getUDot()[0]);
+  }
+}
+BENCHMARK(BM_RealizeAccelerationAfterUChange)->Unit(benchmark::kMicrosecond);
+
+}  // namespace
+
+BENCHMARK_MAIN();
