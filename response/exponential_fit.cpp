@@ -1,6 +1,7 @@
 #include "response/exponential_fit.h"
 
 #include <cmath>
+#include <limits>
 
 namespace motostab::response {
 namespace {

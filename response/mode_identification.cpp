@@ -82,10 +82,14 @@ int getOrder(const std::vector<ContinuousPole>& poles) { return getBasisSize(pol
 IdentificationResult identifyModes(const std::vector<double>& time, const std::vector<std::vector<double>>& signals,
                                    const IdentificationOptions& options) {
   if (signals.empty()) throw std::invalid_argument("no signal to identify");
-  for (const auto& s : signals)
-    if (s.size() != time.size())
-      throw std::invalid_argument("signal has " + std::to_string(s.size()) + " samples but time has " +
-                                  std::to_string(time.size()));
+  for (size_t k = 0; k < signals.size(); ++k) {
+    if (signals[k].size() != time.size())
+      throw std::invalid_argument("signal " + std::to_string(k) + " has " + std::to_string(signals[k].size()) +
+                                  " samples but time has " + std::to_string(time.size()));
+    for (size_t i = 0; i < time.size(); ++i)
+      if (!std::isfinite(signals[k][i]))
+        throw std::invalid_argument("signal " + std::to_string(k) + " sample " + std::to_string(i) + " is not finite");
+  }
   if (time.empty()) throw std::invalid_argument("no samples");
   for (size_t i = 0; i < time.size(); ++i) {
     if (!std::isfinite(time[i])) throw std::invalid_argument("time sample " + std::to_string(i) + " is not finite");
