@@ -24,13 +24,13 @@ double calcMedian(std::vector<double> v) {
   return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
 }
 
-double calcStdDev(const std::vector<double>& v) {
+// Robust standard deviation: 1.4826 x median absolute deviation (poorly converged low orders are outliers).
+double calcRobustSpread(const std::vector<double>& v) {
   if (v.size() < 2) return 0;
-  double m = 0, s = 0;
-  for (double x : v) m += x;
-  m /= v.size();
-  for (double x : v) s += (x - m) * (x - m);
-  return std::sqrt(s / (v.size() - 1));
+  const double med = calcMedian(v);
+  std::vector<double> dev;
+  for (double x : v) dev.push_back(std::abs(x - med));
+  return 1.4826 * calcMedian(dev);
 }
 
 }  // namespace
@@ -174,8 +174,8 @@ std::vector<ModalEstimate> selectStableModes(const std::vector<StabilisationPole
     ModalEstimate m;
     m.frequencyHz = calcMedian(f);
     m.dampingRatio = calcMedian(z);
-    m.frequencyScatterHz = calcStdDev(f);
-    m.dampingScatter = calcStdDev(z);
+    m.frequencyScatterHz = calcRobustSpread(f);
+    m.dampingScatter = calcRobustSpread(z);
     m.count = static_cast<int>(perOrder.size());
     const StabilisationPole* rep = nullptr;
     for (const auto& [order, p] : perOrder)
@@ -205,10 +205,11 @@ std::vector<std::pair<double, double>> calcJackknifeStdErr(const FrfEstimate& fr
       auto it = cache.find(modes[m].order);
       if (it == cache.end()) it = cache.emplace(modes[m].order, est.calcRawPoles(modes[m].order)).first;
       double bestF = nan, bestZ = nan;
+      const double tol = std::max(options.clusterTolerance * modes[m].frequencyHz, 2 * frf.df);
       for (const cd raw : it->second) {
         const cd c = raw + options.windowDecayRate;
         const double f = calcNaturalFrequencyHz(c);
-        if (std::abs(f - modes[m].frequencyHz) < 0.02 * modes[m].frequencyHz &&
+        if (std::abs(f - modes[m].frequencyHz) < tol &&
             (std::isnan(bestF) || std::abs(f - modes[m].frequencyHz) < std::abs(bestF - modes[m].frequencyHz)))
           bestF = f, bestZ = calcDampingRatio(c);
       }

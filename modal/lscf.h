@@ -38,7 +38,7 @@ struct StabilisationPole {
 /// A mode selected from the stabilisation diagram.
 struct ModalEstimate {
   double frequencyHz = 0, dampingRatio = 0;  ///< medians over the stable cluster
-  double frequencyScatterHz = 0, dampingScatter = 0;  ///< standard deviations over model orders
+  double frequencyScatterHz = 0, dampingScatter = 0;  ///< robust (1.4826 MAD) spread over model orders
   int count = 0;                             ///< stable poles in the cluster
   int order = 0;                             ///< model order of the representative pole
   std::complex<double> rawLambda;            ///< representative pole of the windowed FRF, 1/s
@@ -72,7 +72,7 @@ std::vector<ModalEstimate> selectStableModes(const std::vector<StabilisationPole
 
 /// Jackknife (leave-one-hit-out) standard errors of frequency (Hz) and damping ratio of `modes`, using
 /// the per-hit spectra kept in `frf` and LSCF at each mode's order. Needs >= 3 hits; NaN otherwise or if
-/// a mode is not found again within 2 % in a resample.
+/// a mode is not found again within max(clusterTolerance * f, 2 df) in a resample.
 std::vector<std::pair<double, double>> calcJackknifeStdErr(const FrfEstimate& frf, const LscfOptions& options,
                                                            const std::vector<ModalEstimate>& modes);
 
