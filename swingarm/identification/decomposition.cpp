@@ -1,6 +1,7 @@
 #include "swingarm/identification/decomposition.h"
 
 #include <cmath>
+#include <cstdio>
 #include <sstream>
 #include <stdexcept>
 

@@ -1,6 +1,7 @@
 #include "swingarm/identification/frf_test.h"
 
 #include <cmath>
+#include <cstdio>
 #include <limits>
 #include <nlohmann/json.hpp>
 #include <set>

@@ -1,6 +1,7 @@
 #include "swingarm/identification/static_test.h"
 
 #include <cmath>
+#include <cstdio>
 #include <nlohmann/json.hpp>
 #include <set>
 
