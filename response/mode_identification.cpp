@@ -77,10 +77,9 @@ std::vector<ContinuousPole> toContinuousPoles(const std::vector<std::complex<dou
 
 int getOrder(const std::vector<ContinuousPole>& poles) { return getBasisSize(poles, false); }
 
-}  // namespace
-
-IdentificationResult identifyModes(const std::vector<double>& time, const std::vector<std::vector<double>>& signals,
-                                   const IdentificationOptions& options) {
+// Throws std::invalid_argument unless the samples and the window can be fitted.
+void checkInput(const std::vector<double>& time, const std::vector<std::vector<double>>& signals,
+                const IdentificationOptions& options) {
   if (signals.empty()) throw std::invalid_argument("no signal to identify");
   for (size_t k = 0; k < signals.size(); ++k) {
     if (signals[k].size() != time.size())
@@ -108,6 +107,44 @@ IdentificationResult identifyModes(const std::vector<double>& time, const std::v
     throw std::invalid_argument("window " + formatTime(options.windowStart) + ":" + formatTime(options.windowEnd) +
                                 " s is outside the data (" + formatTime(time.front()) + " to " +
                                 formatTime(time.back()) + " s)");
+}
+
+// The result's order, offsets and modes in signal units (a cos + b sin = A cos(omega tau + phi)), sorted by
+// their largest contribution in the window relative to the signal's standard deviation `scale`.
+void setModes(const ExponentialFit& best, const Eigen::VectorXd& scale, double span, IdentificationResult& result) {
+  result.order = getOrder(best.poles);
+  const int k = static_cast<int>(scale.size());
+  result.offset.assign(k, 0.0);
+  if (best.offset)
+    for (int s = 0; s < k; ++s) result.offset[s] = best.coefficients(0, s) * scale(s);
+  std::vector<std::pair<double, IdentifiedMode>> ranked;
+  int col = best.offset ? 1 : 0;
+  for (const auto& pole : best.poles) {
+    IdentifiedMode mode;
+    mode.real = pole.sigma;
+    mode.imag = pole.omega;
+    mode.frequencyHz = pole.omega / (2 * kPi);
+    mode.dampingRatio = -pole.sigma / std::hypot(pole.sigma, pole.omega);
+    double peak = 0;
+    for (int s = 0; s < k; ++s) {
+      const double a = best.coefficients(col, s), b = pole.omega > 0 ? best.coefficients(col + 1, s) : 0.0;
+      const double amplitude = std::hypot(a, b);
+      mode.amplitude.push_back(amplitude * scale(s));
+      mode.phase.push_back(pole.omega > 0 ? std::atan2(-b, a) : (a >= 0 ? 0.0 : kPi));
+      peak = std::max(peak, amplitude * std::max(1.0, std::exp(pole.sigma * span)));
+    }
+    col += pole.omega > 0 ? 2 : 1;
+    ranked.emplace_back(peak, mode);
+  }
+  std::stable_sort(ranked.begin(), ranked.end(), [](const auto& a, const auto& b) { return a.first > b.first; });
+  for (auto& r : ranked) result.modes.push_back(std::move(r.second));
+}
+
+}  // namespace
+
+IdentificationResult identifyModes(const std::vector<double>& time, const std::vector<std::vector<double>>& signals,
+                                   const IdentificationOptions& options) {
+  checkInput(time, signals, options);
 
   std::vector<int> index;
   for (size_t i = 0; i < time.size(); ++i)
@@ -189,33 +226,7 @@ IdentificationResult identifyModes(const std::vector<double>& time, const std::v
   if (chosen < 0) throw std::invalid_argument("no model could be fitted to the window");
   const ExponentialFit& best = fits[chosen];
 
-  // Modes in signal units: a cos + b sin = A cos(omega tau + phi).
-  result.order = getOrder(best.poles);
-  result.offset.assign(k, 0.0);
-  if (best.offset)
-    for (int s = 0; s < k; ++s) result.offset[s] = best.coefficients(0, s) * scale(s);
-  std::vector<std::pair<double, IdentifiedMode>> ranked;
-  int col = best.offset ? 1 : 0;
-  for (const auto& pole : best.poles) {
-    IdentifiedMode mode;
-    mode.real = pole.sigma;
-    mode.imag = pole.omega;
-    mode.frequencyHz = pole.omega / (2 * kPi);
-    mode.dampingRatio = -pole.sigma / std::hypot(pole.sigma, pole.omega);
-    double peak = 0;
-    for (int s = 0; s < k; ++s) {
-      const double a = best.coefficients(col, s), b = pole.omega > 0 ? best.coefficients(col + 1, s) : 0.0;
-      const double amplitude = std::hypot(a, b);
-      mode.amplitude.push_back(amplitude * scale(s));
-      mode.phase.push_back(pole.omega > 0 ? std::atan2(-b, a) : (a >= 0 ? 0.0 : kPi));
-      peak = std::max(peak, amplitude * std::max(1.0, std::exp(pole.sigma * span)));
-    }
-    col += pole.omega > 0 ? 2 : 1;
-    ranked.emplace_back(peak, mode);
-  }
-  std::stable_sort(ranked.begin(), ranked.end(), [](const auto& a, const auto& b) { return a.first > b.first; });
-  for (auto& r : ranked) result.modes.push_back(std::move(r.second));
-
+  setModes(best, scale, span, result);
   const Eigen::MatrixXd residual = y - calcBasis(best.poles, best.offset, tau) * best.coefficients;
   result.rSquared = 1 - residual.squaredNorm() / samplesTotal;
   for (int s = 0; s < k; ++s) {
