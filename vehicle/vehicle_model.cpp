@@ -1,6 +1,8 @@
 #include "vehicle/vehicle_model.h"
 
+#include "swingarm/compliance/swingarm_compliance.h"
 #include "tyres/rolling_no_slip.h"
+#include "vehicle/aerodynamics.h"
 
 namespace motostab {
 
@@ -13,6 +15,7 @@ using SimTK::Vec3;
 PluginRegistry makeBuiltinRegistry() {
   PluginRegistry registry;
   registerRollingNoSlip(registry);
+  registerSwingarmModels(registry);
   return registry;
 }
 
@@ -33,26 +36,20 @@ SimTK::Body::Rigid makeWheel(const WheelSpec& w) {
       w.mass, Vec3(0), SimTK::Inertia(w.diametralInertia, w.axialInertia, w.diametralInertia)));
 }
 
-// Pin about axis n through point p: frames with z along n, so q = 0 is the design pose.
-MobilizedBody::Pin addPin(MobilizedBody& parent, const Vec3& p_P, const SimTK::Body& body, const Vec3& p_C,
-                          const Vec3& n) {
-  const Rotation R(UnitVec3(n), SimTK::ZAxis);
-  return MobilizedBody::Pin(parent, Transform(R, p_P), body, Transform(R, p_C));
-}
-
 }  // namespace
 
-VehicleModel::VehicleModel(const Scenario& scenario, PluginRegistry& registry)
+VehicleModel::VehicleModel(const Scenario& scenario, PluginRegistry& registry,
+                           const std::vector<ModelExtension>& extensions)
     : scenario_(scenario), matter_(system_), forces_(system_) {
-  build(registry);
+  build(registry, extensions);
 }
 
 VehicleModel::VehicleModel(const Scenario& scenario) : scenario_(scenario), matter_(system_), forces_(system_) {
   PluginRegistry registry = makeBuiltinRegistry();
-  build(registry);
+  build(registry, {});
 }
 
-void VehicleModel::build(PluginRegistry& registry) {
+void VehicleModel::build(PluginRegistry& registry, const std::vector<ModelExtension>& extensions) {
   const Scenario& s = scenario_;
   for (size_t i = 0; i < s.plugins.size(); ++i)
     registry.loadLibrary(s.plugins[i], {s.sourceFile, 0, 0, "plugins[" + std::to_string(i) + "]"});
@@ -67,13 +64,29 @@ void VehicleModel::build(PluginRegistry& registry) {
   const Rotation R_perm(SimTK::Mat33(0, 1, 0, 0, 0, 1, 1, 0, 0), true);
   rearFrame_ = MobilizedBody::Bushing(matter_.Ground(), Transform(R_perm, Vec3(0)), makeBody(s.rearFrame, pRearHub_D),
                                       Transform(R_perm, Vec3(0)));
-  rearWheel_ = addPin(rearFrame_, Vec3(0), makeWheel(s.rearWheel), Vec3(0), Vec3(0, 1, 0));
+  // Rear wheel: on the rear frame, or on the swingarm's hub carrier.
+  std::vector<std::pair<std::string, MobilizedBody>> compliance;
+  if (s.hasSwingarm) {
+    auto swingarmModel = registry.createSwingarmModel(s.swingarm);
+    const SwingarmFrame f = calcSwingarmFrame(s);
+    const Rotation R_RS(SimTK::Mat33(f.x[0], f.y[0], f.z[0], f.x[1], f.y[1], f.z[1], f.x[2], f.y[2], f.z[2]), true);
+    const SwingarmSite site{rearFrame_, Transform(R_RS, toVec3(f.origin) - pRearHub_D), Vec3(f.length, 0, 0),
+                            makeBody(s.swingarm.body, Vec3(0))};
+    BuildContext swingarmCtx{system_, matter_, forces_, s.gravity};
+    const SwingarmAssembly arm = swingarmModel->addSwingarm(swingarmCtx, site);
+    MobilizedBody carrier = arm.hubCarrier;
+    rearWheel_ = addPinAtDesignPose(carrier, arm.X_CH, makeWheel(s.rearWheel), Vec3(0), Vec3(0, 1, 0));
+    compliance = arm.coordinates;
+    swingarm_ = std::move(swingarmModel);
+  } else {
+    rearWheel_ = addPinAtDesignPose(rearFrame_, Transform(), makeWheel(s.rearWheel), Vec3(0), Vec3(0, 1, 0));
+  }
   // Steer axis through the ground point (w + c, 0, 0), tilted back by lambda.
   const Vec3 steerAxis(-std::sin(lambda), 0, std::cos(lambda));
   const Vec3 pSteer_D(w + c, 0, 0);
-  frontFrame_ = addPin(rearFrame_, pSteer_D - pRearHub_D, makeBody(s.frontFrame, pFrontHub_D), pSteer_D - pFrontHub_D,
-                       steerAxis);
-  frontWheel_ = addPin(frontFrame_, Vec3(0), makeWheel(s.frontWheel), Vec3(0), Vec3(0, 1, 0));
+  frontFrame_ = addPinAtDesignPose(rearFrame_, Transform(pFrontHub_D - pRearHub_D), makeBody(s.frontFrame, pFrontHub_D),
+                                   pSteer_D - pFrontHub_D, steerAxis);
+  frontWheel_ = addPinAtDesignPose(frontFrame_, Transform(), makeWheel(s.frontWheel), Vec3(0), Vec3(0, 1, 0));
 
   SimTK::Force::Gravity(forces_, matter_, -SimTK::ZAxis, s.gravity);
   inputs_ = SimTK::Force::DiscreteForces(forces_, matter_);
@@ -87,6 +100,9 @@ void VehicleModel::build(PluginRegistry& registry) {
     for (const auto& n : contact->getStateNames(*site)) zNames_.push_back(n);
   }
   contacts_.push_back(std::move(contact));
+  if (s.hasAerodynamics) addAerodynamicDrag(ctx, rearFrame_, s.aerodynamics, toVec3(s.aerodynamics.centreOfPressure) - pRearHub_D);
+  for (const auto& extend : extensions)
+    for (const auto& n : extend(ctx, *this)) zNames_.push_back(n);
 
   defaultState_ = system_.realizeTopology();
   system_.realizeModel(defaultState_);
@@ -115,6 +131,11 @@ void VehicleModel::build(PluginRegistry& registry) {
   qNames_[idx_.steer] = "steer";
   qNames_[idx_.rearSpin] = "rear_wheel_angle";
   qNames_[idx_.frontSpin] = "front_wheel_angle";
+  for (const auto& [name, mobod] : compliance) {
+    const int q = mobod.getFirstQIndex(defaultState_);
+    qNames_[q] = name;
+    idx_.compliance.push_back(q);
+  }
   for (const auto& n : qNames_) uNames_.push_back(n + "_rate");
   uNames_[idx_.x] = "vx";
   uNames_[idx_.y] = "vy";

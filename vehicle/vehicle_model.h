@@ -5,6 +5,7 @@
 //   q = yaw, roll, pitch (body-fixed z-x-y of the rear frame), height, x, y of the rear wheel centre,
 //       then steer, rear and front wheel spin angles. Every u is the corresponding qdot.
 // Signs: roll > 0 leans right, yaw > 0 turns left, steer > 0 steers left, pitch > 0 nose down.
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -19,6 +20,7 @@ namespace motostab {
 struct CoordinateIndices {
   int yaw = -1, roll = -1, pitch = -1, height = -1, x = -1, y = -1;
   int steer = -1, rearSpin = -1, frontSpin = -1;
+  std::vector<int> compliance;  ///< swingarm compliance coordinates, if any
 };
 
 /// Model inputs: generalized forces the trim may solve for and B is taken against.
@@ -28,10 +30,17 @@ constexpr int kNumInputs = 3;
 /// The registry with every built-in plugin registered (tyres/, swingarm/).
 PluginRegistry makeBuiltinRegistry();
 
+class VehicleModel;
+
+/// Adds elements (perturbation forces, controllers) to a model while it is assembled, after the
+/// bodies and contacts and before Simbody's topology is realized. Returns the names of any z
+/// states it allocates, in allocation order.
+using ModelExtension = std::function<std::vector<std::string>(BuildContext& context, const VehicleModel& model)>;
+
 class VehicleModel {
  public:
   /// Builds the Simbody system; loads the scenario's plugin libraries into `registry` first.
-  VehicleModel(const Scenario& scenario, PluginRegistry& registry);
+  VehicleModel(const Scenario& scenario, PluginRegistry& registry, const std::vector<ModelExtension>& extensions = {});
   /// Same, with the built-in registry.
   explicit VehicleModel(const Scenario& scenario);
   VehicleModel(const VehicleModel&) = delete;
@@ -68,7 +77,7 @@ class VehicleModel {
   const SimTK::MobilizedBody& getFrontWheel() const { return frontWheel_; }
 
  private:
-  void build(PluginRegistry& registry);
+  void build(PluginRegistry& registry, const std::vector<ModelExtension>& extensions);
 
   Scenario scenario_;
   SimTK::MultibodySystem system_;
@@ -77,6 +86,7 @@ class VehicleModel {
   SimTK::MobilizedBody rearFrame_, frontFrame_, rearWheel_, frontWheel_;
   SimTK::Force::DiscreteForces inputs_;
   std::vector<std::unique_ptr<ContactModel>> contacts_;
+  std::unique_ptr<SwingarmModel> swingarm_;
   SimTK::State defaultState_;
   int nq_ = 0;
   CoordinateIndices idx_;
