@@ -239,7 +239,7 @@ std::complex<double> ModalModel::evaluate(double f) const {
 }
 
 ModalModel fitModalModel(const std::vector<double>& frequency, const std::vector<cd>& h, double fMin, double fMax,
-                         const std::vector<cd>& rawPoles) {
+                         const std::vector<cd>& rawPoles, bool relativeWeighting) {
   const auto bins = getBandBins(frequency, fMin, fMax);
   const int np = static_cast<int>(rawPoles.size()), nc = 2 * np + 2;
   if (bins.size() * 2 < static_cast<size_t>(nc)) throw std::invalid_argument("LSFD: too few bins for the poles");
@@ -256,9 +256,10 @@ ModalModel fitModalModel(const std::vector<double>& frequency, const std::vector
     }
     col[2 * np] = 1.0;
     col[2 * np + 1] = -1.0 / (w * w);
-    for (int j = 0; j < nc; ++j) A(2 * i, j) = col[j].real(), A(2 * i + 1, j) = col[j].imag();
-    b[2 * i] = h[bins[i]].real();
-    b[2 * i + 1] = h[bins[i]].imag();
+    const double wt = relativeWeighting ? 1.0 / std::max(std::abs(h[bins[i]]), 1e-300) : 1.0;
+    for (int j = 0; j < nc; ++j) A(2 * i, j) = wt * col[j].real(), A(2 * i + 1, j) = wt * col[j].imag();
+    b[2 * i] = wt * h[bins[i]].real();
+    b[2 * i + 1] = wt * h[bins[i]].imag();
   }
   const Eigen::VectorXd scale = A.colwise().norm().transpose().cwiseMax(1e-300);
   const Eigen::VectorXd x = (A * scale.cwiseInverse().asDiagonal()).colPivHouseholderQr().solve(b).cwiseQuotient(scale);

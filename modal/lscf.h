@@ -85,8 +85,11 @@ struct ModalModel {
   std::complex<double> evaluate(double frequencyHz) const;
 };
 
-/// LSFD fit of `h` (one channel) over [fMin, fMax] with the given raw poles.
+/// LSFD fit of `h` (one channel) over [fMin, fMax] with the given raw poles. Unweighted (absolute error:
+/// best residues near the peaks), or with relativeWeighting each bin weighted by 1/|H| (the model then
+/// follows the FRF on a log scale, for plots).
 ModalModel fitModalModel(const std::vector<double>& frequency, const std::vector<std::complex<double>>& h,
-                         double fMin, double fMax, const std::vector<std::complex<double>>& rawPoles);
+                         double fMin, double fMax, const std::vector<std::complex<double>>& rawPoles,
+                         bool relativeWeighting = false);
 
 }  // namespace motostab::modal

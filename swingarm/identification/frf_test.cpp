@@ -188,7 +188,8 @@ FrfResult identifyFrf(const FrfTest& test, const std::vector<modal::ImpactRecord
                                         frf.windowDecayRate);
   std::vector<cd> rawPoles;
   for (const auto& m : modes) rawPoles.push_back(m.rawLambda);
-  for (const auto& h : frf.h1) res.models.push_back(modal::fitModalModel(frf.frequency, h, o.fMin, o.fMax, rawPoles));
+  for (const auto& h : frf.h1)
+    res.models.push_back(modal::fitModalModel(frf.frequency, h, o.fMin, o.fMax, rawPoles, true));
 
   std::vector<PlatePoint> pts;
   for (const auto& c : test.channels) pts.push_back(c.position);

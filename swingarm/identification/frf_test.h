@@ -68,7 +68,7 @@ struct FrfResult {
   std::vector<modal::StabilisationPole> diagram;
   std::vector<modal::PeakEstimate> peaks;
   std::vector<ModeResult> modes;
-  std::vector<modal::ModalModel> models;  ///< per channel, for the overlay
+  std::vector<modal::ModalModel> models;  ///< per channel, 1/|H|-weighted LSFD, for the overlay
   int bendingIndex = -1, torsionIndex = -1;
 };
 
