@@ -187,6 +187,14 @@ std::vector<ModalEstimate> selectStableModes(const std::vector<StabilisationPole
   return modes;
 }
 
+double calcJackknifeSpread(const std::vector<double>& v) {
+  if (v.size() < 2) return 0;
+  double mean = 0, s = 0;
+  for (double x : v) mean += x / v.size();
+  for (double x : v) s += (x - mean) * (x - mean);
+  return std::sqrt((v.size() - 1.0) / v.size() * s);
+}
+
 std::vector<std::pair<double, double>> calcJackknifeStdErr(const FrfEstimate& frf, const LscfOptions& options,
                                                            const std::vector<ModalEstimate>& modes) {
   const double nan = std::numeric_limits<double>::quiet_NaN();
@@ -217,14 +225,7 @@ std::vector<std::pair<double, double>> calcJackknifeStdErr(const FrfEstimate& fr
     }
   }
   for (size_t m = 0; m < modes.size(); ++m) {
-    if (fs[m].size() != nHits) continue;
-    auto jack = [&](const std::vector<double>& v) {
-      double mean = 0, s = 0;
-      for (double x : v) mean += x / v.size();
-      for (double x : v) s += (x - mean) * (x - mean);
-      return std::sqrt((v.size() - 1.0) / v.size() * s);
-    };
-    out[m] = {jack(fs[m]), jack(zs[m])};
+    if (fs[m].size() == nHits) out[m] = {calcJackknifeSpread(fs[m]), calcJackknifeSpread(zs[m])};
   }
   return out;
 }

@@ -70,6 +70,9 @@ std::vector<StabilisationPole> calcStabilisationDiagram(const LscfEstimator& est
 /// Clusters poles stable in frequency and damping; a cluster at enough orders is a mode.
 std::vector<ModalEstimate> selectStableModes(const std::vector<StabilisationPole>& diagram, const LscfOptions& options);
 
+/// Jackknife standard error from leave-one-out estimates: sqrt((n-1)/n sum (x_i - mean)^2).
+double calcJackknifeSpread(const std::vector<double>& leaveOneOutEstimates);
+
 /// Jackknife (leave-one-hit-out) standard errors of frequency (Hz) and damping ratio of `modes`, using
 /// the per-hit spectra kept in `frf` and LSCF at each mode's order. Needs >= 3 hits; NaN otherwise or if
 /// a mode is not found again within max(clusterTolerance * f, 2 df) in a resample.

@@ -44,12 +44,6 @@ std::vector<cd> getOds(const std::vector<std::vector<cd>>& h, size_t bin) {
   return u;
 }
 
-double calcJackknifeSpread(const std::vector<double>& v) {
-  double m = 0, s = 0;
-  for (double x : v) m += x / v.size();
-  for (double x : v) s += (x - m) * (x - m);
-  return std::sqrt((v.size() - 1.0) / v.size() * s);
-}
 
 }  // namespace
 
@@ -242,8 +236,8 @@ FrfResult identifyFrf(const FrfTest& test, const std::vector<modal::ImpactRecord
           arms.push_back(a.arm);
           betas.push_back(wrapDegrees(a.betaDeg - m.axis.betaDeg));
         }
-        m.armStderr = calcJackknifeSpread(arms);
-        m.betaStderrDeg = calcJackknifeSpread(betas);
+        m.armStderr = modal::calcJackknifeSpread(arms);
+        m.betaStderrDeg = modal::calcJackknifeSpread(betas);
       }
     }
     res.modes.push_back(m);

@@ -5,6 +5,7 @@
 
 #include "swingarm/identification/static_test.h"
 #include "swingarm/identification/virtual_rig.h"
+#include "rig_truth.h"
 
 namespace {
 
@@ -46,19 +47,6 @@ TEST(StaticTwistAxis, RecoversAnalyticRotationExactly) {
     // Per-level planes: loaded minus unloaded is the rotation at that load (dx = theta sin(beta)).
     EXPECT_NEAR(s.levels[2].plane[1] - s.levels[0].plane[1], 1000 * rotPerN * std::sin(beta * kDeg), 1e-12);
   }
-}
-
-struct RigTruth {
-  double beta, aTw, kLat, kTw;
-};
-
-// Truth of the virtual rig from seed eq. 6-9 (vector sum of the two rotations) and eq. 5 (y_lat).
-RigTruth calcRigTruth(const VirtualSwingarm& rig) {
-  const double ub = rig.armB / rig.kB, ut = rig.armT / rig.kT;
-  const double wx = ub * std::cos(rig.betaBDeg * kDeg) + ut * std::cos(rig.betaTDeg * kDeg);
-  const double wz = ub * std::sin(rig.betaBDeg * kDeg) + ut * std::sin(rig.betaTDeg * kDeg);
-  const double y = rig.armB * ub + rig.armT * ut, theta = std::hypot(wx, wz);
-  return {std::atan2(wz, wx) / kDeg, y / theta, 1 / y, (y / theta) / theta};
 }
 
 std::vector<double> makeLoadCycle() {

@@ -10,24 +10,13 @@
 
 #include "swingarm/identification/decomposition.h"
 #include "swingarm/identification/virtual_rig.h"
+#include "rig_truth.h"
 #include "temp_dir.h"
 
 namespace {
 
 using namespace motostab::identification;
 constexpr double kDeg = M_PI / 180;
-
-struct Truth {
-  double beta, aTw, kTw;
-};
-
-Truth calcTruth(const VirtualSwingarm& rig) {
-  const double ub = rig.armB / rig.kB, ut = rig.armT / rig.kT;
-  const double wx = ub * std::cos(rig.betaBDeg * kDeg) + ut * std::cos(rig.betaTDeg * kDeg);
-  const double wz = ub * std::sin(rig.betaBDeg * kDeg) + ut * std::sin(rig.betaTDeg * kDeg);
-  const double y = rig.armB * ub + rig.armT * ut, theta = std::hypot(wx, wz);
-  return {std::atan2(wz, wx) / kDeg, y / theta, y / (theta * theta)};
-}
 
 struct Errors {
   double beta, kTw, fB, fT, zB, zT, kB, kT, cTw;  // deg or relative
@@ -57,7 +46,7 @@ RoundTrip runRoundTrip(const std::string& name, double noiseFactor, std::uint64_
   r.stat = identifyStatic(r.staticTest, readStaticReadings(r.staticTest));
   r.frf = identifyFrf(r.frfTest, readHits(r.frfTest));
   r.id = identifySwingarm(r.stat, r.frf);
-  const Truth t = calcTruth(rig);
+  const RigTruth t = calcRigTruth(rig);
   const double cB = rig.kB * rig.zetaB / (M_PI * rig.fB), cT = rig.kT * rig.zetaT / (M_PI * rig.fT);
   const double rb = rig.armB * t.kTw / (rig.kB * t.aTw), rt = rig.armT * t.kTw / (rig.kT * t.aTw);
   const double cTw = cB * rb * rb + cT * rt * rt;  // seed eq. 25 with the true values
