@@ -14,6 +14,8 @@ namespace motostab::response {
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
+// Residual ratio by which a fit without the allowed offset must beat the fit with it.
+constexpr double kOffsetPreference = 10;
 
 std::string formatTime(double t) { return formatNumber(t, 6); }
 
@@ -54,10 +56,9 @@ Eigen::MatrixXd makeUniformSamples(const Eigen::VectorXd& tau, const Eigen::Matr
 }
 
 // Continuous poles from the pencil's discrete poles: a pair once (omega > 0), real exponentials with z > 0;
-// poles at z <= 0 (Nyquist, numerically zero) and ones that would overflow in the window are dropped. With an
-// offset, the real pole nearest z = 1 is taken as the offset and removed.
+// poles at z <= 0 (Nyquist, numerically zero) and ones that would overflow in the window are dropped.
 std::vector<ContinuousPole> toContinuousPoles(const std::vector<std::complex<double>>& discrete, double step,
-                                              double span, bool offset) {
+                                              double span) {
   std::vector<ContinuousPole> poles;
   for (const auto& z : discrete) {
     if (!(std::abs(z) > 1e-12) || !std::isfinite(std::abs(z))) continue;
@@ -66,13 +67,17 @@ std::vector<ContinuousPole> toContinuousPoles(const std::vector<std::complex<dou
     if (lambda.real() * span > 50) continue;
     poles.push_back({lambda.real(), z.imag() > 0 ? lambda.imag() : 0.0});
   }
-  if (offset) {
-    auto nearest = poles.end();
-    for (auto it = poles.begin(); it != poles.end(); ++it)
-      if (it->omega == 0 && (nearest == poles.end() || std::abs(it->sigma) < std::abs(nearest->sigma))) nearest = it;
-    if (nearest != poles.end()) poles.erase(nearest);
-  }
   return poles;
+}
+
+// Removes the real pole nearest z = 1 (the offset's pole); false if there is no real pole.
+bool removeOffsetPole(std::vector<ContinuousPole>& poles) {
+  auto nearest = poles.end();
+  for (auto it = poles.begin(); it != poles.end(); ++it)
+    if (it->omega == 0 && (nearest == poles.end() || std::abs(it->sigma) < std::abs(nearest->sigma))) nearest = it;
+  if (nearest == poles.end()) return false;
+  poles.erase(nearest);
+  return true;
 }
 
 int getOrder(const std::vector<ContinuousPole>& poles) { return getBasisSize(poles, false); }
@@ -186,40 +191,59 @@ IdentificationResult identifyModes(const std::vector<double>& time, const std::v
   for (int i = 0; i < std::min<int>(static_cast<int>(pencil.singularValues.size()), 2 * (maxOrder + extra) + 2); ++i)
     result.singularValues.push_back(pencil.singularValues(i));
 
-  // Candidates: every pencil size P (only P = fixedOrder + offset when fixed), each polished and scored by
-  // BIC; the selection is restricted to sizes at a singular-value gap when there is one.
+  // Candidates: for every pencil size P, the P poles without offset or, if an offset is allowed, the offset
+  // with P-1 poles (the real pole nearest z = 1 taken as the offset; kept unless the fit without offset is
+  // kOffsetPreference times better). Both have P components, as many as the leading singular values. Each is
+  // polished and scored by BIC. Selection: the lowest BIC among sizes at a
+  // singular-value gap (all sizes if there is none), or among candidates of the fixed order.
   const double maxOmega = kPi / result.pencilStep;
   const double samplesTotal = static_cast<double>(n) * k;
   const auto& sv = pencil.singularValues;
   std::vector<ExponentialFit> fits;
-  const int firstSize = options.fixedOrder > 0 ? options.fixedOrder + extra : 1;
-  for (int size = firstSize; size <= maxOrder + extra; ++size) {
-    const auto poles = toContinuousPoles(calcPencilPoles(pencil, size), result.pencilStep, span, options.fitOffset);
-    if (poles.empty() || getOrder(poles) > maxOrder) continue;
-    ExponentialFit fit = options.polish ? polishPoles(calcLinearFit(poles, options.fitOffset, tau, y), tau, y, maxOmega)
-                                        : calcLinearFit(poles, options.fitOffset, tau, y);
-    if (!std::isfinite(fit.residualSumSquares)) continue;
-    int params = getBasisSize(fit.poles, fit.offset) * k;
-    for (const auto& p : fit.poles) params += p.omega > 0 ? 2 : 1;
-    const double rss = std::max(fit.residualSumSquares, 1e-28 * samplesTotal);
-    OrderCandidate c;
-    c.order = getOrder(fit.poles);
-    c.pencilSize = size;
-    c.singularValueRatio = size < sv.size() ? sv(size) / sv(size - 1) : 0.0;
-    c.atGap = c.singularValueRatio < options.gapRatio;
-    c.rSquared = 1 - fit.residualSumSquares / samplesTotal;
-    c.criterion = samplesTotal * std::log(rss / samplesTotal) + params * std::log(samplesTotal);
-    result.candidates.push_back(c);
-    fits.push_back(std::move(fit));
+  for (int size = 1; size <= maxOrder + extra; ++size) {
+    const auto all = toContinuousPoles(calcPencilPoles(pencil, size), result.pencilStep, span);
+    std::vector<std::pair<std::vector<ContinuousPole>, bool>> variants{{all, false}};
+    if (options.fitOffset) {
+      auto poles = all;
+      if (removeOffsetPole(poles)) variants.emplace_back(poles, true);
+    }
+    std::vector<ExponentialFit> sizeFits;
+    for (const auto& [poles, offset] : variants) {
+      if (poles.empty() || getOrder(poles) > maxOrder) continue;
+      ExponentialFit fit = options.polish ? polishPoles(calcLinearFit(poles, offset, tau, y), tau, y, maxOmega)
+                                          : calcLinearFit(poles, offset, tau, y);
+      if (std::isfinite(fit.residualSumSquares)) sizeFits.push_back(std::move(fit));
+    }
+    // An allowed offset is preferred: the fit without it must be 10x better (it then has a real mode).
+    if (sizeFits.size() == 2) {
+      const bool keepOffset = sizeFits[0].residualSumSquares * kOffsetPreference > sizeFits[1].residualSumSquares;
+      sizeFits.erase(sizeFits.begin() + (keepOffset ? 0 : 1));
+    }
+    for (auto& fit : sizeFits) {
+      int params = getBasisSize(fit.poles, fit.offset) * k;
+      for (const auto& p : fit.poles) params += p.omega > 0 ? 2 : 1;
+      const double rss = std::max(fit.residualSumSquares, 1e-28 * samplesTotal);
+      OrderCandidate c;
+      c.order = getOrder(fit.poles);
+      c.offset = fit.offset;
+      c.pencilSize = size;
+      c.singularValueRatio = size < sv.size() ? sv(size) / sv(size - 1) : 0.0;
+      c.atGap = c.singularValueRatio < options.gapRatio;
+      c.rSquared = 1 - fit.residualSumSquares / samplesTotal;
+      c.criterion = samplesTotal * std::log(rss / samplesTotal) + params * std::log(samplesTotal);
+      result.candidates.push_back(c);
+      fits.push_back(std::move(fit));
+    }
   }
   const bool anyGap = std::any_of(result.candidates.begin(), result.candidates.end(),
                                   [](const OrderCandidate& c) { return c.atGap; });
   int chosen = -1;
   double bestCriterion = std::numeric_limits<double>::infinity();
   for (size_t i = 0; i < fits.size(); ++i) {
-    if (options.fixedOrder <= 0 && anyGap && !result.candidates[i].atGap) continue;
-    if (result.candidates[i].criterion < bestCriterion) {
-      bestCriterion = result.candidates[i].criterion;
+    const auto& c = result.candidates[i];
+    if (options.fixedOrder > 0 ? c.order != options.fixedOrder : anyGap && !c.atGap) continue;
+    if (c.criterion < bestCriterion) {
+      bestCriterion = c.criterion;
       chosen = static_cast<int>(i);
     }
   }

@@ -13,7 +13,7 @@ struct IdentificationOptions {
   double windowStart = -std::numeric_limits<double>::infinity();  ///< s; samples with t < windowStart are ignored
   double windowEnd = std::numeric_limits<double>::infinity();     ///< s; samples with t > windowEnd are ignored
   int maxOrder = 10;        ///< largest model order tried (complex pair counts 2, real exponential 1; offset excluded)
-  int fixedOrder = 0;       ///< if > 0, use the pencil at exactly this order instead of selecting one
+  int fixedOrder = 0;       ///< if > 0, the best candidate of exactly this order instead of order selection
   /// Order selection considers only pencil sizes P (order + offset) at a singular-value gap,
   /// s_{P+1} / s_P < gapRatio (all sizes if there is none), and picks the lowest BIC among them.
   double gapRatio = 0.5;
@@ -36,7 +36,8 @@ struct IdentifiedMode {
 /// One candidate model considered during order selection.
 struct OrderCandidate {
   int order = 0;              ///< model order of the fitted poles (complex pair 2, real 1)
-  int pencilSize = 0;         ///< pencil truncation P (order + 1 with an offset)
+  bool offset = false;        ///< fitted with a constant offset (P - 1 poles) or without (P poles)
+  int pencilSize = 0;         ///< pencil truncation P (components: poles + offset)
   double singularValueRatio = 0;  ///< s_{P+1} / s_P of the Hankel matrix
   bool atGap = false;         ///< singularValueRatio < gapRatio: eligible for selection
   double rSquared = 0;        ///< coefficient of determination on the window samples

@@ -23,6 +23,7 @@ nlohmann::json makeModesJson(const IdentificationResult& result, const std::vect
   for (const auto& c : result.candidates)
     candidates.push_back({{"order", c.order},
                           {"pencil_size", c.pencilSize},
+                          {"offset", c.offset},
                           {"singular_value_ratio", c.singularValueRatio},
                           {"at_gap", c.atGap},
                           {"r_squared", c.rSquared},
