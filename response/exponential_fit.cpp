@@ -134,7 +134,7 @@ ExponentialFit polishPoles(const ExponentialFit& start, const Eigen::VectorXd& t
           p = trial;
           mu = std::max(mu / 3, 1e-12);
           improved = true;
-          if (gain < 1e-14 || step.norm() < 1e-13 * (1 + p.norm())) return best;
+          if (gain < 1e-12 || step.norm() < 1e-13 * (1 + p.norm())) return best;
           break;
         }
       }

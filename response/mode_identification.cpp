@@ -16,6 +16,8 @@ namespace {
 constexpr double kPi = 3.14159265358979323846;
 // Residual ratio by which a fit without the allowed offset must beat the fit with it.
 constexpr double kOffsetPreference = 10;
+// Levenberg-Marquardt iterations for each candidate; the chosen one is then polished to convergence.
+constexpr int kCandidateIterations = 40;
 
 std::string formatTime(double t) { return formatNumber(t, 6); }
 
@@ -210,8 +212,8 @@ IdentificationResult identifyModes(const std::vector<double>& time, const std::v
     std::vector<ExponentialFit> sizeFits;
     for (const auto& [poles, offset] : variants) {
       if (poles.empty() || getOrder(poles) > maxOrder) continue;
-      ExponentialFit fit = options.polish ? polishPoles(calcLinearFit(poles, offset, tau, y), tau, y, maxOmega)
-                                          : calcLinearFit(poles, offset, tau, y);
+      ExponentialFit fit = calcLinearFit(poles, offset, tau, y);
+      if (options.polish) fit = polishPoles(fit, tau, y, maxOmega, kCandidateIterations);
       if (std::isfinite(fit.residualSumSquares)) sizeFits.push_back(std::move(fit));
     }
     // An allowed offset is preferred: the fit without it must be 10x better (it then has a real mode).
@@ -248,7 +250,7 @@ IdentificationResult identifyModes(const std::vector<double>& time, const std::v
     }
   }
   if (chosen < 0) throw std::invalid_argument("no model could be fitted to the window");
-  const ExponentialFit& best = fits[chosen];
+  const ExponentialFit best = options.polish ? polishPoles(fits[chosen], tau, y, maxOmega) : fits[chosen];
 
   setModes(best, scale, span, result);
   const Eigen::MatrixXd residual = y - calcBasis(best.poles, best.offset, tau) * best.coefficients;
