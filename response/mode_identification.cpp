@@ -162,7 +162,7 @@ IdentificationResult identifyModes(const std::vector<double>& time, const std::v
   const int needed = std::max(12, 3 * (maxOrder + 2));
   if (n < needed)
     throw std::invalid_argument("window has " + std::to_string(n) + " samples; order " + std::to_string(maxOrder) +
-                                " needs at least " + std::to_string(needed));
+                                " needs at least " + std::to_string(needed) + " (lower the maximum order)");
 
   IdentificationResult result;
   result.referenceTime = time[index.front()];
@@ -196,8 +196,8 @@ IdentificationResult identifyModes(const std::vector<double>& time, const std::v
   // Candidates: for every pencil size P, the P poles without offset or, if an offset is allowed, the offset
   // with P-1 poles (the real pole nearest z = 1 taken as the offset; kept unless the fit without offset is
   // kOffsetPreference times better). Both have P components, as many as the leading singular values. Each is
-  // polished and scored by BIC. Selection: the lowest BIC among sizes at a
-  // singular-value gap (all sizes if there is none), or among candidates of the fixed order.
+  // polished and scored by BIC. Selection: the lowest BIC among sizes at a singular-value gap (all sizes if
+  // there is none), or among candidates of the fixed order.
   const double maxOmega = kPi / result.pencilStep;
   const double samplesTotal = static_cast<double>(n) * k;
   const auto& sv = pencil.singularValues;
