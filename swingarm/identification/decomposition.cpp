@@ -141,9 +141,9 @@ void writeSwingarmOutputs(const SwingarmIdentification& id, const StaticTest& st
     if (!shared) sensors.push_back({c.name + " (acc.)", c.position});
   }
   char t[3][96];
-  std::snprintf(t[0], 96, "static twist axis, k_tw %.4g Nm/rad", id.twist.stiffness.value);
-  std::snprintf(t[1], 96, "bending axis, k_b %.4g Nm/rad", id.bending.stiffness.value);
-  std::snprintf(t[2], 96, "torsion axis, k_t %.4g Nm/rad", id.torsion.stiffness.value);
+  std::snprintf(t[0], 96, "static twist axis, k_{tw} %.4g Nm/rad", id.twist.stiffness.value);
+  std::snprintf(t[1], 96, "bending axis, k_{b} %.4g Nm/rad", id.bending.stiffness.value);
+  std::snprintf(t[2], 96, "torsion axis, k_{t} %.4g Nm/rad", id.torsion.stiffness.value);
   writeAxesPlot(dir, "swingarm_axes", "Static and modal twist axes (seed Fig. 3, 5, 8)", sensors, stat.forcePoint,
                 {{t[0], id.twist.point, id.twist.direction},
                  {t[1], id.bending.point, id.bending.direction},

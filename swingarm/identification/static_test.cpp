@@ -167,7 +167,7 @@ void writeStaticOutputs(const StaticTest& test, const StaticResult& r, const std
   std::vector<PlotMarker> sensors;
   for (const auto& s : test.sensors) sensors.push_back({s.name, s.position});
   char title[160];
-  std::snprintf(title, sizeof title, "Static twist axis: beta = %.2f deg, a_tw = %.4f m, k_tw = %.4g Nm/rad",
+  std::snprintf(title, sizeof title, "Static twist axis: {/Symbol b} = %.2f deg, a_{tw} = %.4f m, k_{tw} = %.4g Nm/rad",
                 r.betaDeg, r.aTw, r.kTw);
   writeAxesPlot(dir, "static_axis", title, sensors, test.forcePoint, {{"static twist axis", r.axis.point, r.axis.direction}});
 }

@@ -1,13 +1,11 @@
 #pragma once
-// A fresh, empty temporary folder per test.
-#include <unistd.h>
-
+// A fresh, empty temporary folder per test name (emptied on every run, so runs leave one copy behind).
 #include <filesystem>
 #include <string>
 
 inline std::filesystem::path makeTempDir(const std::string& name) {
   const auto dir = std::filesystem::temp_directory_path() /
-                   ("motostab_swingarm_" + name + "_" + std::to_string(::getpid()));
+                   ("motostab_swingarm_" + name);
   std::filesystem::remove_all(dir);
   std::filesystem::create_directories(dir);
   return dir;
