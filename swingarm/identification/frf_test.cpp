@@ -203,6 +203,9 @@ FrfResult identifyFrf(const FrfTest& test, const std::vector<modal::ImpactRecord
     m.order = modes[i].order;
     m.stableCount = modes[i].count;
     m.halfPowerFrequencyHz = m.halfPowerDampingRatio = kNaN;
+    const size_t peakBin = getNearestBin(frf, modes[i].rawLambda.imag() / (2 * M_PI));
+    m.coherence = 1;
+    for (const auto& c : frf.coherence) m.coherence = std::min(m.coherence, c[peakBin]);
     for (const auto& p : res.peaks)
       if (std::abs(p.frequencyHz - m.frequencyHz) < 3 * frf.df &&
           (std::isnan(m.halfPowerFrequencyHz) ||
@@ -290,17 +293,19 @@ void writeFrfOutputs(const FrfTest& test, const FrfResult& r, const std::filesys
   // Modes.
   CsvWriter mw({"frequency_hz", "frequency_hz_stderr", "damping_ratio", "damping_ratio_stderr", "loss_factor",
                 "loss_factor_stderr", "half_power_frequency_hz", "half_power_damping_ratio", "arm_m", "arm_m_stderr",
-                "beta_deg", "beta_deg_stderr", "mpc", "model_order", "stable_poles"});
+                "beta_deg", "beta_deg_stderr", "mpc", "model_order", "stable_poles", "coherence"});
   json jm = json::array();
   for (const auto& m : r.modes) {
     mw.beginRow().add(m.frequencyHz).add(m.frequencyStderrHz).add(m.dampingRatio).add(m.dampingStderr)
         .add(m.lossFactor).add(m.lossFactorStderr).add(m.halfPowerFrequencyHz).add(m.halfPowerDampingRatio)
         .add(m.hasAxis ? m.axis.arm : kNaN).add(m.armStderr).add(m.hasAxis ? m.axis.betaDeg : kNaN)
-        .add(m.betaStderrDeg).add(m.mpc).add(static_cast<double>(m.order)).add(static_cast<double>(m.stableCount));
+        .add(m.betaStderrDeg).add(m.mpc).add(static_cast<double>(m.order)).add(static_cast<double>(m.stableCount))
+        .add(m.coherence);
     json e{{"frequency_hz", m.frequencyHz}, {"frequency_hz_stderr", m.frequencyStderrHz},
            {"damping_ratio", m.dampingRatio}, {"damping_ratio_stderr", m.dampingStderr},
            {"loss_factor", m.lossFactor}, {"loss_factor_stderr", m.lossFactorStderr},
-           {"model_order", m.order}, {"stable_poles", m.stableCount}, {"label", m.label}};
+           {"model_order", m.order}, {"stable_poles", m.stableCount}, {"label", m.label},
+           {"coherence_at_resonance", m.coherence}};
     e["half_power"] = {{"frequency_hz", std::isnan(m.halfPowerFrequencyHz) ? json() : json(m.halfPowerFrequencyHz)},
                        {"damping_ratio", std::isnan(m.halfPowerDampingRatio) ? json() : json(m.halfPowerDampingRatio)}};
     if (m.hasAxis)

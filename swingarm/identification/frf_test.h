@@ -57,6 +57,7 @@ struct ModeResult {
   TwistAxis axis;                   ///< from the ODS (rotation in ODS units)
   double armStderr = 0, betaStderrDeg = 0;
   double mpc = 0;                   ///< modal phase collinearity of the ODS, 0..1
+  double coherence = 0;             ///< lowest channel coherence at the resonance bin
   std::string label;                ///< "bending", "torsion" or ""
 };
 

@@ -79,6 +79,21 @@ TEST(VirtualRig, RoundTripRecoversTruthAtRealisticNoise) {
     EXPECT_LT(r.err.cTw, 0.10);
     EXPECT_EQ(r.frf.modes[r.frf.bendingIndex].label, "bending");
     EXPECT_TRUE(r.frf.rejectedHits.empty());
+    // The stated standard errors cover the actual errors (z-score below 4; jackknife over 3 hits is coarse).
+    const VirtualSwingarm rig;
+    const RigTruth t = calcRigTruth(rig);
+    const auto& b = r.id.bending;
+    const auto& tor = r.id.torsion;
+    std::printf("  z: beta %.2f k_tw %.2f f_b %.2f f_t %.2f zeta_b %.2f zeta_t %.2f\n",
+                (r.stat.betaDeg - t.beta) / r.stat.betaStderrDeg, (r.stat.kTw - t.kTw) / r.stat.kTwStderr,
+                (b.frequencyHz.value - rig.fB) / b.frequencyHz.stderr_, (tor.frequencyHz.value - rig.fT) / tor.frequencyHz.stderr_,
+                (b.dampingRatio.value - rig.zetaB) / b.dampingRatio.stderr_, (tor.dampingRatio.value - rig.zetaT) / tor.dampingRatio.stderr_);
+    EXPECT_LT(std::abs(r.stat.betaDeg - t.beta), 4 * r.stat.betaStderrDeg);
+    EXPECT_LT(std::abs(r.stat.kTw - t.kTw), 4 * r.stat.kTwStderr);
+    EXPECT_LT(std::abs(b.frequencyHz.value - rig.fB), 4 * b.frequencyHz.stderr_);
+    EXPECT_LT(std::abs(tor.frequencyHz.value - rig.fT), 4 * tor.frequencyHz.stderr_);
+    EXPECT_LT(std::abs(b.dampingRatio.value - rig.zetaB), 4 * b.dampingRatio.stderr_);
+    EXPECT_LT(std::abs(tor.dampingRatio.value - rig.zetaT), 4 * tor.dampingRatio.stderr_);
   }
 }
 
