@@ -1,6 +1,7 @@
 #include "swingarm/identification/yaml_input.h"
 
 #include <cmath>
+#include <set>
 
 namespace motostab::identification {
 namespace {
@@ -30,8 +31,10 @@ void YamlInput::fail(const YAML::Node& node, const std::string& key, const std::
 void YamlInput::checkMap(const YAML::Node& node, const std::string& path,
                          std::initializer_list<const char*> allowed) const {
   if (!node.IsMap()) fail(node, path, "expected a map");
+  std::set<std::string> seen;
   for (const auto& kv : node) {
     const std::string k = kv.first.as<std::string>();
+    if (!seen.insert(k).second) fail(kv.first, join(path, k), "duplicate key");
     bool ok = false;
     std::string list;
     for (const char* a : allowed) {

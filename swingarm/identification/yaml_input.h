@@ -26,7 +26,7 @@ class YamlInput {
   /// Throws an InputError at `node`.
   [[noreturn]] void fail(const YAML::Node& node, const std::string& key, const std::string& message) const;
 
-  /// `node` must be a map whose keys are all in `allowed`.
+  /// `node` must be a map whose keys are all in `allowed`, each at most once.
   void checkMap(const YAML::Node& node, const std::string& path, std::initializer_list<const char*> allowed) const;
   /// A required child (error names the missing key at the parent's location).
   YAML::Node getChild(const YAML::Node& map, const std::string& path, const std::string& key) const;

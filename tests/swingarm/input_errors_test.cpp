@@ -98,6 +98,10 @@ TEST(StaticInput, UnknownKeyNegativeValueAndWrongKind) {
   e = catchInputError([&] { readStaticTest(y); });
   EXPECT_EQ(e.getLocation().key, "sensor_resolution_m");
   EXPECT_EQ(e.getLocation().line, 9);
+  y = f.write("s.yaml", std::string(kStaticHead) + kSensors + "readings: s.csv\nreadings: t.csv\n");
+  e = catchInputError([&] { readStaticTest(y); });
+  EXPECT_EQ(e.getLocation().key, "readings");
+  EXPECT_EQ(e.getLocation().line, 9);
   y = f.write("s.yaml", "test: frf\n");
   e = catchInputError([&] { readStaticTest(y); });
   EXPECT_EQ(e.getLocation().key, "test");
