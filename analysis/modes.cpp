@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <map>
 
 namespace motostab {
 
@@ -37,12 +38,14 @@ ModeContent calcModeContent(const LinearModel& lin, int k, double wheelbase) {
   for (size_t i = 0; i < lin.states.size(); ++i) {
     const LinearState& st = lin.states[i];
     double mag = std::abs(lin.eigenvectors(i, k));
+    const DofGroup g = getDofGroup(coordinateOf(st));
     if (st.entry.slot == Slot::U) {
       if (lin.findState(coordinateOf(st)) >= 0) continue;  // its coordinate counts instead
+      // Wheel spin follows pitch and tyre slip; it says nothing about the mode's character.
+      if (st.name.find("wheel_angle") != std::string::npos) continue;
       mag /= rateScale;
     }
-    const DofGroup g = getDofGroup(coordinateOf(st));
-    if (g == DofGroup::Lateral) mag /= wheelbase;
+    if (g == DofGroup::Lateral || g == DofGroup::Forward) mag /= wheelbase;
     c[static_cast<int>(g)] += mag * mag;
   }
   double sum = 0;
@@ -83,6 +86,90 @@ int findBestMatch(const LinearModel& a, int ka, const LinearModel& b) {
   return best;
 }
 
+
+namespace {
+
+// Share of each compliance coordinate (swingarm_*) in eigenvector k.
+std::map<std::string, double> calcComplianceShares(const LinearModel& lin, int k) {
+  std::map<std::string, double> out;
+  for (size_t i = 0; i < lin.states.size(); ++i)
+    if (lin.states[i].entry.slot == Slot::Q && lin.states[i].name.rfind("swingarm_", 0) == 0)
+      out[lin.states[i].name] += std::norm(lin.eigenvectors(i, k));
+  return out;
+}
+
+struct BranchStats {
+  ModeContent content{};        // mean over speeds
+  double oscillatory = 0;       // fraction of speeds with a complex eigenvalue
+  double wobbleLike = 0;        // fraction of oscillatory speeds: steer-led and above 4 Hz
+  bool neutral = true;
+  std::map<std::string, double> compliance;
+};
+
+BranchStats calcBranchStats(const std::vector<LinearModel>& models, double wheelbase, const ModeBranch& br) {
+  BranchStats st;
+  const double n = static_cast<double>(models.size());
+  double osc = 0;
+  for (size_t s = 0; s < models.size(); ++s) {
+    const std::complex<double> l = br.eigenvalue[s];
+    const ModeContent c = calcModeContent(models[s], br.index[s], wheelbase);
+    for (int g = 0; g < kNumDofGroups; ++g) st.content[g] += c[g] / n;
+    const double inPlaneOrLateral = 1.0 - c[int(DofGroup::Forward)] - c[int(DofGroup::Yaw)] - c[int(DofGroup::Lateral)];
+    if (!(std::abs(l) < 1e-6 && inPlaneOrLateral < 1e-3)) st.neutral = false;
+    for (const auto& [name, share] : calcComplianceShares(models[s], br.index[s])) st.compliance[name] += share;
+    if (std::abs(l.imag()) > 1e-9 * std::max(1.0, std::abs(l))) {
+      ++osc;
+      const double steer = c[int(DofGroup::Steer)];
+      if (std::abs(l.imag()) / (2 * M_PI) > 4.0 && steer > 0.4 && steer > c[int(DofGroup::Roll)]) st.wobbleLike += 1;
+    }
+  }
+  st.oscillatory = osc / n;
+  st.wobbleLike = osc > 0 ? st.wobbleLike / osc : 0;
+  return st;
+}
+
+}  // namespace
+
+// Labels from content (seed sec. 4 mode names): neutral, swingarm_*, bounce, pitch, relaxation,
+// wobble, weave, capsize, castor, other. Weave and wobble keep only their best pair, capsize and
+// castor their best branch; the rest become `other`.
+void labelBranches(const std::vector<LinearModel>& models, double wheelbase, std::vector<ModeBranch>& branches) {
+  std::map<std::string, std::vector<std::pair<double, size_t>>> candidates;
+  for (size_t b = 0; b < branches.size(); ++b) {
+    ModeBranch& br = branches[b];
+    const BranchStats st = calcBranchStats(models, wheelbase, br);
+    const ModeContent& c = st.content;
+    const double roll = c[int(DofGroup::Roll)], steer = c[int(DofGroup::Steer)];
+    const double lateral = roll + steer + c[int(DofGroup::Yaw)] + c[int(DofGroup::Lateral)];
+    const double inPlane = c[int(DofGroup::Bounce)] + c[int(DofGroup::Pitch)];
+    const bool oscillatory = st.oscillatory >= 0.5;
+    br.label = "other";
+    if (st.neutral) {
+      br.label = "neutral";
+    } else if (c[int(DofGroup::Compliance)] > 0.15 && oscillatory) {
+      const auto top = std::max_element(st.compliance.begin(), st.compliance.end(),
+                                        [](const auto& a, const auto& b) { return a.second < b.second; });
+      br.label = top->first;
+    } else if (oscillatory && inPlane > 0.5) {
+      br.label = c[int(DofGroup::Bounce)] >= c[int(DofGroup::Pitch)] ? "bounce" : "pitch";
+    } else if (oscillatory && st.wobbleLike > 0.5) {
+      candidates["wobble"].push_back({steer, b});
+    } else if (c[int(DofGroup::Relaxation)] > 0.5) {
+      br.label = "relaxation";
+    } else if (oscillatory && lateral > 0.3) {
+      candidates["weave"].push_back({lateral, b});
+    } else if (!oscillatory && lateral > 0.3) {
+      if (roll >= steer) candidates["capsize"].push_back({roll, b});
+      else candidates["castor"].push_back({steer, b});
+    }
+  }
+  for (auto& [label, list] : candidates) {
+    std::sort(list.begin(), list.end(), [](const auto& a, const auto& b) { return a.first > b.first; });
+    const size_t keep = (label == "weave" || label == "wobble") ? 2 : 1;
+    for (size_t i = 0; i < list.size(); ++i) branches[list[i].second].label = i < keep ? label : "other";
+  }
+}
+
 std::vector<ModeBranch> trackModes(const std::vector<LinearModel>& models, double wheelbase) {
   std::vector<ModeBranch> branches;
   if (models.empty()) return branches;
@@ -109,29 +196,7 @@ std::vector<ModeBranch> trackModes(const std::vector<LinearModel>& models, doubl
       branches[b].eigenvalue.push_back(cur.eigenvalues[assigned[b]]);
     }
   }
-  // Label each branch from its content over the sweep.
-  for (auto& br : branches) {
-    bool oscillatory = false, neutral = true;
-    double roll = 0, steer = 0, highFreqSteer = 0, oscCount = 0;
-    for (size_t s = 0; s < models.size(); ++s) {
-      const std::complex<double> l = br.eigenvalue[s];
-      const ModeContent c = calcModeContent(models[s], br.index[s], wheelbase);
-      const double lateralDynamics = 1.0 - c[int(DofGroup::Forward)] - c[int(DofGroup::Yaw)] - c[int(DofGroup::Lateral)];
-      if (!(std::abs(l) < 1e-6 && lateralDynamics < 1e-3)) neutral = false;
-      roll += c[int(DofGroup::Roll)];
-      steer += c[int(DofGroup::Steer)];
-      if (std::abs(l.imag()) > 1e-9) {
-        oscillatory = true;
-        ++oscCount;
-        if (std::abs(l.imag()) / (2 * M_PI) > 4.0 && c[int(DofGroup::Steer)] > 0.5) highFreqSteer += 1;
-      }
-    }
-    const double n = static_cast<double>(models.size());
-    if (neutral) br.label = "neutral";
-    else if ((roll + steer) / n < 0.3) br.label = "other";
-    else if (oscillatory) br.label = (highFreqSteer > 0.5 * oscCount) ? "wobble" : "weave";
-    else br.label = (roll >= steer) ? "capsize" : "castor";
-  }
+  labelBranches(models, wheelbase, branches);
   return branches;
 }
 

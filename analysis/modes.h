@@ -18,13 +18,15 @@ using ModeContent = std::array<double, kNumDofGroups>;
 /// The group a linear state belongs to, from its name.
 DofGroup getDofGroup(const std::string& stateName);
 
-/// Content of eigenvector k of `lin`. Rates without a coordinate state count as rate / max(1, |lambda|).
+/// Content of eigenvector k of `lin`. Rates without a coordinate state count as rate / max(1, |lambda|);
+/// wheel spin rates are left out; lateral and forward displacements are divided by the wheelbase.
 ModeContent calcModeContent(const LinearModel& lin, int k, double wheelbase);
 
 /// Modal assurance criterion |a^H b|^2 / (|a|^2 |b|^2) over the states both models share.
 double calcMac(const LinearModel& a, int ka, const LinearModel& b, int kb);
 
-/// Labels: weave, capsize, castor, wobble, neutral, other.
+/// A mode followed across speed. Labels: weave, capsize, castor, wobble, swingarm_bending,
+/// swingarm_torsion, swingarm_twist, bounce, pitch, relaxation, neutral, other.
 struct ModeBranch {
   std::string label;
   std::vector<std::complex<double>> eigenvalue;  ///< per speed of the sweep
@@ -34,6 +36,9 @@ struct ModeBranch {
 /// Eigenvalues tracked from speed to speed by eigenvector similarity (MAC) and eigenvalue
 /// proximity, then labelled from each branch's content over the whole sweep.
 std::vector<ModeBranch> trackModes(const std::vector<LinearModel>& models, double wheelbase);
+
+/// Sets each branch's label from its mean content over the sweep (see modes.cpp for the rules).
+void labelBranches(const std::vector<LinearModel>& models, double wheelbase, std::vector<ModeBranch>& branches);
 
 /// Cost of matching eigenvalue ka of `a` to kb of `b` (0 = identical).
 double calcMatchCost(const LinearModel& a, int ka, const LinearModel& b, int kb);

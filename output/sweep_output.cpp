@@ -96,7 +96,10 @@ std::string formatSweepTable(const SweepResult& sweep, int rows) {
   os << std::setw(8) << "v (m/s)";
   std::vector<const ModeBranch*> shown;
   for (const auto& b : sweep.branches) {
-    if (b.label == "neutral") continue;
+    // The table shows the handling and structural modes; eigenvalues.csv has every mode.
+    const bool shownLabel = b.label == "weave" || b.label == "wobble" || b.label == "capsize" || b.label == "castor" ||
+                            b.label.rfind("swingarm_", 0) == 0;
+    if (!shownLabel) continue;
     bool pairSeen = false;  // show each complex pair once (positive imaginary part)
     for (const auto* s : shown)
       if (s->label == b.label && std::abs(s->eigenvalue.back() - std::conj(b.eigenvalue.back())) < 1e-9) pairSeen = true;

@@ -8,10 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "simbody/internal/GeneralForceSubsystem.h"
-#include "simbody/internal/MobilizedBody.h"
-#include "simbody/internal/MultibodySystem.h"
-#include "simbody/internal/SimbodyMatterSubsystem.h"
+#include "Simbody.h"
 
 #include "scenario/scenario.h"
 #include "scenario/yaml_map.h"
@@ -46,8 +43,37 @@ class ContactModel {
   virtual std::vector<std::string> getStateNames(const WheelSite& wheel) const { return {}; }
 };
 
-/// Makes a contact model from its scenario parameters; must call params.finish() after reading.
+/// Makes a contact model from its scenario parameters (the `contact` mapping; `model` is consumed).
 using ContactModelFactory = std::function<std::unique_ptr<ContactModel>(YamlMap& params)>;
+
+/// Where a swingarm model is attached: the rear frame, the swingarm frame S in the rear-frame
+/// body frame (origin at the pivot, x towards the rear hub, z up), the hub in S, and the swingarm
+/// body (mass properties in S).
+struct SwingarmSite {
+  SimTK::MobilizedBody rearFrame;
+  SimTK::Transform X_RS;
+  SimTK::Vec3 p_SH;
+  SimTK::Body::Rigid body;
+};
+
+/// What a swingarm model built: the body that carries the rear wheel, the hub frame in it (axes
+/// parallel to the design frame at the design pose), and its named one-DOF compliance mobilizers.
+struct SwingarmAssembly {
+  SimTK::MobilizedBody hubCarrier;
+  SimTK::Transform X_CH;
+  std::vector<std::pair<std::string, SimTK::MobilizedBody>> coordinates;
+};
+
+/// The common interface of swingarm compliance models (seed sec. 4: rigid, bending, torsion, twist).
+class SwingarmModel {
+ public:
+  virtual ~SwingarmModel() = default;
+  virtual SwingarmAssembly addSwingarm(BuildContext& context, const SwingarmSite& site) = 0;
+};
+
+/// Makes a swingarm model from the scenario's `swingarm` mapping (pivot, mass properties and
+/// `compliance` are consumed by the loader; the plugin reads its own keys).
+using SwingarmModelFactory = std::function<std::unique_ptr<SwingarmModel>(YamlMap& params)>;
 
 /// Plugins registered by name. Names are unique across built-in and loaded plugins.
 class PluginRegistry {
@@ -57,13 +83,25 @@ class PluginRegistry {
   /// Creates the contact model a scenario names; an unknown name is an InputError at spec.path.model.
   std::unique_ptr<ContactModel> createContactModel(const PluginSpec& spec) const;
   std::vector<std::string> getContactModelNames() const;
+  /// Registers a swingarm compliance model; a duplicate name throws std::runtime_error.
+  void addSwingarmModel(const std::string& name, SwingarmModelFactory factory);
+  /// Creates the model named by `swingarm.compliance`; unknown names are InputErrors there.
+  std::unique_ptr<SwingarmModel> createSwingarmModel(const SwingarmSpec& spec) const;
+  std::vector<std::string> getSwingarmModelNames() const;
   /// Loads a plugin library and calls its entry point; failures are InputErrors at `where`.
   void loadLibrary(const std::string& path, const InputLocation& where);
 
  private:
+  void checkUnique(const std::string& name) const;
   std::map<std::string, ContactModelFactory> contactModels_;
+  std::map<std::string, SwingarmModelFactory> swingarmModels_;
   std::string loadingLibrary_;  ///< set while a library registers, for messages
 };
+
+/// A revolute joint about axis n_C (unit, child-body frame) through point p_C (child frame), with
+/// q = 0 at the design pose, where the child body frame sits at X_PC0 in the parent body frame.
+SimTK::MobilizedBody::Pin addPinAtDesignPose(SimTK::MobilizedBody& parent, const SimTK::Transform& X_PC0,
+                                             const SimTK::Body& body, const SimTK::Vec3& p_C, const SimTK::Vec3& n_C);
 
 }  // namespace motostab
 

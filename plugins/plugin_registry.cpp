@@ -6,32 +6,67 @@
 
 namespace motostab {
 
-void PluginRegistry::addContactModel(const std::string& name, ContactModelFactory factory) {
-  if (contactModels_.count(name)) {
+namespace {
+template <class Map>
+std::vector<std::string> namesOf(const Map& m) {
+  std::vector<std::string> names;
+  for (const auto& kv : m) names.push_back(kv.first);
+  return names;
+}
+std::string joinNames(const std::vector<std::string>& names) {
+  std::string out;
+  for (const auto& n : names) out += (out.empty() ? "" : ", ") + n;
+  return out;
+}
+}  // namespace
+
+void PluginRegistry::checkUnique(const std::string& name) const {
+  if (contactModels_.count(name) || swingarmModels_.count(name))
     throw std::runtime_error("plugin name '" + name + "' is registered twice" +
                              (loadingLibrary_.empty() ? "" : " (by " + loadingLibrary_ + ")"));
-  }
+}
+
+void PluginRegistry::addContactModel(const std::string& name, ContactModelFactory factory) {
+  checkUnique(name);
   contactModels_[name] = std::move(factory);
 }
 
-std::vector<std::string> PluginRegistry::getContactModelNames() const {
-  std::vector<std::string> names;
-  for (const auto& kv : contactModels_) names.push_back(kv.first);
-  return names;
+void PluginRegistry::addSwingarmModel(const std::string& name, SwingarmModelFactory factory) {
+  checkUnique(name);
+  swingarmModels_[name] = std::move(factory);
+}
+
+std::vector<std::string> PluginRegistry::getContactModelNames() const { return namesOf(contactModels_); }
+std::vector<std::string> PluginRegistry::getSwingarmModelNames() const { return namesOf(swingarmModels_); }
+
+std::unique_ptr<SwingarmModel> PluginRegistry::createSwingarmModel(const SwingarmSpec& spec) const {
+  YamlMap params(spec.params, spec.file, "swingarm");
+  const auto it = swingarmModels_.find(spec.compliance);
+  if (it == swingarmModels_.end())
+    params.fail("compliance", "unknown swingarm compliance plugin '" + spec.compliance + "' (known: " +
+                                  joinNames(getSwingarmModelNames()) + ")");
+  for (const char* k : {"pivot_m", "mass_kg", "com_m", "inertia_kgm2", "compliance"}) params.markUsed(k);
+  auto model = it->second(params);
+  params.finish();
+  return model;
 }
 
 std::unique_ptr<ContactModel> PluginRegistry::createContactModel(const PluginSpec& spec) const {
   YamlMap params(spec.params, spec.file, spec.path);
   const auto it = contactModels_.find(spec.model);
   if (it == contactModels_.end()) {
-    std::string known;
-    for (const auto& n : getContactModelNames()) known += (known.empty() ? "" : ", ") + n;
-    params.fail("model", "unknown contact plugin '" + spec.model + "' (known: " + known + ")");
+    params.fail("model", "unknown contact plugin '" + spec.model + "' (known: " + joinNames(getContactModelNames()) + ")");
   }
   params.markUsed("model");
   auto model = it->second(params);
   params.finish();
   return model;
+}
+
+SimTK::MobilizedBody::Pin addPinAtDesignPose(SimTK::MobilizedBody& parent, const SimTK::Transform& X_PC0,
+                                             const SimTK::Body& body, const SimTK::Vec3& p_C, const SimTK::Vec3& n_C) {
+  const SimTK::Transform X_CM(SimTK::Rotation(SimTK::UnitVec3(n_C), SimTK::ZAxis), p_C);
+  return SimTK::MobilizedBody::Pin(parent, X_PC0 * X_CM, body, X_CM);
 }
 
 void PluginRegistry::loadLibrary(const std::string& path, const InputLocation& where) {

@@ -84,9 +84,11 @@ Scenario loadScenario(const std::string& file, const std::vector<std::string>& o
   {
     YamlMap g = m.getMap("geometry");
     s.geometry.wheelbase = g.getPositive("wheelbase_m");
-    s.geometry.trail = g.getDouble("trail_m");
     s.geometry.steerAxisTilt = g.getDouble("steer_axis_tilt_deg") * M_PI / 180.0;
     if (std::abs(s.geometry.steerAxisTilt) >= M_PI / 2) g.fail("steer_axis_tilt_deg", "must lie in (-90, 90) degrees");
+    if (g.has("trail_m") == g.has("normal_trail_m")) g.fail("", "give exactly one of trail_m and normal_trail_m");
+    s.geometry.trail = g.has("trail_m") ? g.getDouble("trail_m")
+                                        : g.getDouble("normal_trail_m") / std::cos(s.geometry.steerAxisTilt);
     g.finish();
   }
   s.rearFrame = readBody(m.getMap("rear_frame"));
@@ -99,6 +101,29 @@ Scenario loadScenario(const std::string& file, const std::vector<std::string>& o
     s.contact.params = c.getNode();
     s.contact.file = file;
     s.contact.path = "contact";
+  }
+  if (m.has("swingarm")) {
+    YamlMap sw = m.getMap("swingarm");
+    s.hasSwingarm = true;
+    s.swingarm.pivot = sw.getVec3("pivot_m");
+    s.swingarm.body.mass = sw.getPositive("mass_kg");
+    s.swingarm.body.com = sw.getVec3("com_m");
+    s.swingarm.body.inertia = readInertia(sw.getMap("inertia_kgm2"));
+    s.swingarm.compliance = sw.getString("compliance");
+    s.swingarm.params = sw.getNode();
+    s.swingarm.file = file;
+    for (const char* k : {"pivot_m", "mass_kg", "com_m", "inertia_kgm2", "compliance"}) sw.markUsed(k);
+    const double dx = s.swingarm.pivot[0], dz = s.swingarm.pivot[2] - s.rearWheel.radius;
+    if (dx <= 0 || std::hypot(dx, dz) < 1e-3) sw.fail("pivot_m", "the pivot must lie ahead of the rear wheel centre");
+    // The compliance plugin reads and checks the rest of this mapping.
+  }
+  if (m.has("aerodynamics")) {
+    YamlMap a = m.getMap("aerodynamics");
+    s.hasAerodynamics = true;
+    s.aerodynamics.dragArea = a.getNonNegative("drag_area_m2");
+    s.aerodynamics.airDensity = a.getPositive("air_density_kgpm3");
+    s.aerodynamics.centreOfPressure = a.getVec3("centre_of_pressure_m");
+    a.finish();
   }
   if (m.has("plugins")) s.plugins = m.getStringList("plugins");
   m.finish();
@@ -115,7 +140,29 @@ MassSummary calcMassSummary(const Scenario& s) {
   add(s.frontFrame.mass, s.frontFrame.com);
   add(s.rearWheel.mass, {0, 0, s.rearWheel.radius});
   add(s.frontWheel.mass, {s.geometry.wheelbase, 0, s.frontWheel.radius});
+  if (s.hasSwingarm) {
+    const SwingarmFrame f = calcSwingarmFrame(s);
+    Vec3d c = f.origin;
+    for (int i = 0; i < 3; ++i) c[i] += f.x[i] * s.swingarm.body.com[0] + f.y[i] * s.swingarm.body.com[1] + f.z[i] * s.swingarm.body.com[2];
+    add(s.swingarm.body.mass, c);
+  }
   return out;
+}
+
+SwingarmFrame calcSwingarmFrame(const Scenario& s) {
+  SwingarmFrame f;
+  f.origin = s.swingarm.pivot;
+  const double dx = -s.swingarm.pivot[0], dz = s.rearWheel.radius - s.swingarm.pivot[2];
+  f.length = std::hypot(dx, dz);
+  f.x = {dx / f.length, 0, dz / f.length};
+  f.z = {-f.x[2], 0, f.x[0]};  // x rotated by +90 deg about -y: up for a rearward x
+  if (f.z[2] < 0) f.z = {-f.z[0], 0, -f.z[2]};
+  f.y = {f.z[1] * f.x[2] - f.z[2] * f.x[1], f.z[2] * f.x[0] - f.z[0] * f.x[2], f.z[0] * f.x[1] - f.z[1] * f.x[0]};
+  return f;
+}
+
+double calcForkOffset(const Scenario& s) {
+  return s.frontWheel.radius * std::sin(s.geometry.steerAxisTilt) - calcNormalTrail(s.geometry);
 }
 
 double calcNormalTrail(const GeometrySpec& g) { return g.trail * std::cos(g.steerAxisTilt); }

@@ -45,6 +45,23 @@ struct GeometrySpec {
   double steerAxisTilt = 0;
 };
 
+/// The swingarm between rear frame and rear wheel (seed sec. 2.4 and 4). Its own frame S: origin at
+/// the pivot, x towards the rear hub, z up in the vehicle's plane of symmetry.
+struct SwingarmSpec {
+  Vec3d pivot{0, 0, 0};     ///< pivot in D, m
+  BodySpec body;            ///< mass; com and inertia in S (seed Table 1)
+  std::string compliance;   ///< compliance plugin name: rigid, bending, torsion, twist, bending+torsion
+  YAML::Node params;        ///< the whole swingarm mapping, for the compliance plugin
+  std::string file;
+};
+
+/// Aerodynamic drag on the rear frame: F = -1/2 rho CdA |v| v at the centre of pressure.
+struct AerodynamicsSpec {
+  double dragArea = 0;      ///< Cd A, m^2
+  double airDensity = 1.2;  ///< kg/m^3
+  Vec3d centreOfPressure{0, 0, 0};  ///< in D, m
+};
+
 /// A plugin selected by name with its own parameters (validated by the plugin itself).
 struct PluginSpec {
   std::string model;
@@ -69,6 +86,10 @@ struct Scenario {
   BodySpec frontFrame;                  ///< fork and handlebar
   WheelSpec rearWheel, frontWheel;
   PluginSpec contact;                   ///< contact/tyre model for both wheels
+  bool hasSwingarm = false;
+  SwingarmSpec swingarm;
+  bool hasAerodynamics = false;
+  AerodynamicsSpec aerodynamics;
   std::vector<std::string> plugins;     ///< shared libraries to load before building
 };
 
@@ -89,6 +110,15 @@ MassSummary calcMassSummary(const Scenario& scenario);
 
 /// Normal trail c cos(lambda), m.
 double calcNormalTrail(const GeometrySpec& geometry);
+/// Fork offset: distance from the front wheel centre to the steer axis, r_F sin(lambda) - c cos(lambda), m.
+double calcForkOffset(const Scenario& scenario);
+/// Transform from the swingarm frame S to the design frame D (needs hasSwingarm).
+struct SwingarmFrame {
+  Vec3d origin;        ///< pivot in D
+  Vec3d x, y, z;       ///< axes of S in D
+  double length = 0;   ///< pivot to rear hub, m
+};
+SwingarmFrame calcSwingarmFrame(const Scenario& scenario);
 
 /// Static vertical wheel loads (N) of the upright vehicle at rest: {rear, front}.
 std::array<double, 2> calcStaticWheelLoads(const Scenario& scenario);

@@ -1,6 +1,7 @@
 #include "vehicle/vehicle_model.h"
 
 #include "swingarm/compliance/swingarm_compliance.h"
+#include "tyres/relaxation_linear.h"
 #include "tyres/rolling_no_slip.h"
 #include "vehicle/aerodynamics.h"
 
@@ -15,6 +16,7 @@ using SimTK::Vec3;
 PluginRegistry makeBuiltinRegistry() {
   PluginRegistry registry;
   registerRollingNoSlip(registry);
+  registerRelaxationLinear(registry);
   registerSwingarmModels(registry);
   return registry;
 }

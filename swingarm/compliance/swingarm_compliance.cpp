@@ -1,0 +1,126 @@
+#include "swingarm/compliance/swingarm_compliance.h"
+
+namespace motostab {
+
+using SimTK::MobilizedBody;
+using SimTK::Transform;
+using SimTK::Vec3;
+
+ComplianceAxis makeAxisFromArm(const Vec3& p_SH, double arm, double beta, double k, double c) {
+  return {p_SH + arm * Vec3(-std::sin(beta), 0, std::cos(beta)), Vec3(std::cos(beta), 0, std::sin(beta)), k, c};
+}
+
+namespace {
+
+// One axis as written in the scenario: {arm_m, beta_deg} or {point_m, direction} in S, with
+// stiffness and damping scaled by the swingarm's stiffness_scale and damping_scale.
+struct AxisSpec {
+  bool explicitAxis = false;
+  Vec3 point, direction;
+  double arm = 0, beta = 0, stiffness = 0, damping = 0;
+  ComplianceAxis toAxis(const Vec3& p_SH) const {
+    return explicitAxis ? ComplianceAxis{point, direction, stiffness, damping}
+                        : makeAxisFromArm(p_SH, arm, beta, stiffness, damping);
+  }
+};
+
+AxisSpec readAxis(YamlMap m, double kScale, double cScale) {
+  AxisSpec a;
+  a.stiffness = m.getPositive("stiffness_Nm_per_rad") * kScale;
+  a.damping = m.getNonNegative("damping_Nms_per_rad") * cScale;
+  if (m.has("point_m") || m.has("direction")) {
+    const auto p = m.getVec3("point_m");
+    const auto d = m.getVec3("direction");
+    a.explicitAxis = true;
+    a.point = Vec3(p[0], p[1], p[2]);
+    a.direction = Vec3(d[0], d[1], d[2]);
+    if (a.direction.norm() < 1e-9) m.fail("direction", "must not be zero");
+    a.direction /= a.direction.norm();
+  } else {
+    a.arm = m.getDouble("arm_m");
+    a.beta = m.getDouble("beta_deg") * M_PI / 180;
+  }
+  // The uncertainties the identification writes beside the values are accepted.
+  for (const char* extra : {"stiffness_Nm_per_rad_stderr", "damping_Nms_per_rad_stderr", "arm_m_stderr", "beta_deg_stderr"})
+    if (m.has(extra)) m.getNonNegative(extra);
+  m.finish();
+  return a;
+}
+
+// Adds a revolute compliance joint about `axis` (in S) with its spring and damper; the child's
+// body frame coincides with S at the design pose, whose pose in the parent is X_PS.
+MobilizedBody::Pin addComplianceJoint(BuildContext& ctx, MobilizedBody& parent, const Transform& X_PS,
+                                      const SimTK::Body& body, const ComplianceAxis& axis) {
+  MobilizedBody::Pin pin = addPinAtDesignPose(parent, X_PS, body, axis.point_S, axis.direction_S);
+  SimTK::Force::MobilityLinearSpring(ctx.forces, pin, SimTK::MobilizerQIndex(0), axis.stiffness, 0.0);
+  SimTK::Force::MobilityLinearDamper(ctx.forces, pin, SimTK::MobilizerUIndex(0), axis.damping);
+  return pin;
+}
+
+Transform hubFrame(const SwingarmSite& site) { return Transform(~site.X_RS.R(), site.p_SH); }
+
+class RigidSwingarm : public SwingarmModel {
+ public:
+  SwingarmAssembly addSwingarm(BuildContext&, const SwingarmSite& site) override {
+    MobilizedBody parent = site.rearFrame;
+    MobilizedBody::Weld arm(parent, site.X_RS, site.body, Transform());
+    return {arm, hubFrame(site), {}};
+  }
+};
+
+// One or two compliance DOFs in series, from the rear frame to the hub.
+class CompliantSwingarm : public SwingarmModel {
+ public:
+  CompliantSwingarm(std::vector<std::pair<std::string, AxisSpec>> axes) : axes_(std::move(axes)) {}
+  SwingarmAssembly addSwingarm(BuildContext& ctx, const SwingarmSite& site) override {
+    SwingarmAssembly out;
+    MobilizedBody parent = site.rearFrame;
+    Transform X_PS = site.X_RS;
+    for (size_t i = 0; i < axes_.size(); ++i) {
+      // The first joint carries the swingarm's mass; later ones a massless hub carrier.
+      const SimTK::Body body = i == 0 ? SimTK::Body(site.body) : SimTK::Body(SimTK::Body::Massless());
+      MobilizedBody::Pin pin = addComplianceJoint(ctx, parent, X_PS, body, axes_[i].second.toAxis(site.p_SH));
+      out.coordinates.push_back({"swingarm_" + axes_[i].first, pin});
+      parent = pin;
+      X_PS = Transform();
+    }
+    out.hubCarrier = parent;
+    out.X_CH = hubFrame(site);
+    return out;
+  }
+
+ private:
+  std::vector<std::pair<std::string, AxisSpec>> axes_;
+};
+
+// Every axis mapping present is validated; the model uses those it names.
+SwingarmModelFactory makeFactory(std::vector<std::string> axisNames) {
+  return [axisNames](YamlMap& m) -> std::unique_ptr<SwingarmModel> {
+    const double kScale = m.getDouble("stiffness_scale", 1.0), cScale = m.getDouble("damping_scale", 1.0);
+    if (!(kScale > 0)) m.fail("stiffness_scale", "must be positive");
+    if (cScale < 0) m.fail("damping_scale", "must not be negative");
+    std::vector<std::pair<std::string, AxisSpec>> present;
+    for (const char* key : {"bending", "torsion", "twist"})
+      if (m.has(key)) present.push_back({key, readAxis(m.getMap(key), kScale, cScale)});
+    std::vector<std::pair<std::string, AxisSpec>> axes;
+    for (const auto& name : axisNames) {
+      auto it = std::find_if(present.begin(), present.end(), [&](const auto& p) { return p.first == name; });
+      if (it == present.end()) m.fail("", "compliance '" + name + "' needs a '" + name + "' axis mapping");
+      axes.push_back(*it);
+    }
+    if (axes.empty()) return std::make_unique<RigidSwingarm>();
+    return std::make_unique<CompliantSwingarm>(axes);
+  };
+}
+
+}  // namespace
+
+void registerSwingarmModels(PluginRegistry& registry) {
+  registry.addSwingarmModel("rigid", makeFactory({}));
+  registry.addSwingarmModel("bending", makeFactory({"bending"}));
+  registry.addSwingarmModel("torsion", makeFactory({"torsion"}));
+  registry.addSwingarmModel("twist", makeFactory({"twist"}));
+  registry.addSwingarmModel("bending+torsion", makeFactory({"bending", "torsion"}));
+}
+
+}  // namespace motostab
