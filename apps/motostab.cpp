@@ -9,6 +9,7 @@ int main(int argc, char** argv) {
   app.require_subcommand(1);
   motostab::cli::registerScenarioCommands(app);
   motostab::cli::registerStabilityCommands(app);
+  motostab::cli::registerSimulateCommands(app);
   CLI::App* identify = app.add_subcommand("identify", "Identify model parameters from lab tests or responses");
   identify->require_subcommand(1);
   motostab::cli::registerSwingarmIdentifyCommands(*identify);

@@ -1,0 +1,364 @@
+#include "simulation/simulation.h"
+
+#include <algorithm>
+#include <cctype>
+#include <chrono>
+#include <memory>
+#include <sstream>
+
+#include "analysis/state_function.h"
+#include "io/input_error.h"
+
+namespace motostab::simulation {
+
+using SimTK::State;
+using SimTK::Vec3;
+
+namespace {
+
+/// Rear wheel centre velocity along the heading (yaw) direction, m/s.
+double calcHeadingSpeed(const VehicleModel& model, const State& s) {
+  const CoordinateIndices& ix = model.getIndices();
+  const double yaw = s.getQ()[ix.yaw];
+  return std::cos(yaw) * s.getU()[ix.x] + std::sin(yaw) * s.getU()[ix.y];
+}
+
+// Time-varying perturbation forces and the PI speed controller as one Force::Custom element.
+// Pulses switch on and off only between integration segments (a discrete variable holds the
+// segment index), so no integrator step straddles a discontinuity.
+class PerturbationForce : public SimTK::Force::Custom::Implementation {
+ public:
+  PerturbationForce(SimTK::GeneralForceSubsystem& forces, const VehicleModel& model, std::vector<Perturbation> pulses,
+                    std::vector<double> segmentStarts, bool speedControl, double kp, double ki, double targetSpeed)
+      : forces_(forces), model_(model), pulses_(std::move(pulses)), segmentStarts_(std::move(segmentStarts)),
+        speedControl_(speedControl), kp_(kp), ki_(ki), targetSpeed_(targetSpeed) {}
+
+  void realizeTopology(State& s) const override {
+    segmentIndex_ = forces_.allocateDiscreteVariable(s, SimTK::Stage::Dynamics, new SimTK::Value<int>(0));
+    if (speedControl_) zIndex_ = forces_.allocateZ(s, SimTK::Vector(1, 0.0));
+  }
+
+  void setSegment(State& s, int k) const {
+    SimTK::Value<int>::updDowncast(forces_.updDiscreteVariable(s, segmentIndex_)) = k;
+  }
+
+  /// Sum of the active pulses of `kind` (on `body` for lateral forces, "" = any body).
+  double calcPulses(const State& s, PerturbationKind kind, const std::string& body = "") const {
+    const int k = SimTK::Value<int>::downcast(forces_.getDiscreteVariable(s, segmentIndex_));
+    const double t0 = segmentStarts_[k];  // pulses are constant in on/off state over a segment
+    double sum = 0;
+    for (const auto& p : pulses_)
+      if (p.kind == kind && (body.empty() || p.body == body) && p.start <= t0 && t0 < p.start + p.duration)
+        sum += p.calcPulseValue(s.getTime());
+    return sum;
+  }
+
+  /// Controller part of the drive torque, N m (0 without speed control).
+  double calcControlTorque(const State& s) const {
+    if (!speedControl_) return 0;
+    return kp_ * (targetSpeed_ - calcHeadingSpeed(model_, s)) + ki_ * forces_.getZ(s)[zIndex_];
+  }
+
+  void calcForce(const State& s, SimTK::Vector_<SimTK::SpatialVec>& bodyForces, SimTK::Vector_<Vec3>&,
+                 SimTK::Vector& mobilityForces) const override {
+    const double tau = calcPulses(s, PerturbationKind::SteerTorque);
+    if (tau != 0) model_.getFrontFrame().applyOneMobilityForce(s, 0, tau, mobilityForces);
+    for (const char* name : {"rear_frame", "front_frame", "rear_wheel", "front_wheel"}) {
+      const double f = calcPulses(s, PerturbationKind::LateralForce, name);
+      if (f == 0) continue;
+      const SimTK::MobilizedBody& b = getBody(name);
+      b.applyForceToBodyPoint(s, b.getBodyMassCenterStation(s), Vec3(0, f, 0), bodyForces);
+    }
+    if (speedControl_) {
+      model_.getRearWheel().applyOneMobilityForce(s, 0, calcControlTorque(s), mobilityForces);
+      forces_.updZDot(s)[zIndex_] = targetSpeed_ - calcHeadingSpeed(model_, s);
+    }
+  }
+  SimTK::Real calcPotentialEnergy(const State&) const override { return 0; }
+
+ private:
+  const SimTK::MobilizedBody& getBody(const std::string& name) const {
+    if (name == "rear_frame") return model_.getRearFrame();
+    if (name == "front_frame") return model_.getFrontFrame();
+    if (name == "rear_wheel") return model_.getRearWheel();
+    return model_.getFrontWheel();
+  }
+
+  SimTK::GeneralForceSubsystem& forces_;
+  const VehicleModel& model_;  // complete by the time forces are evaluated
+  std::vector<Perturbation> pulses_;
+  std::vector<double> segmentStarts_;
+  bool speedControl_;
+  double kp_, ki_, targetSpeed_;
+  mutable SimTK::DiscreteVariableIndex segmentIndex_;
+  mutable SimTK::ZIndex zIndex_;
+};
+
+std::unique_ptr<SimTK::Integrator> makeIntegrator(IntegratorKind kind, const SimTK::MultibodySystem& system) {
+  switch (kind) {
+    case IntegratorKind::RungeKuttaMerson: return std::make_unique<SimTK::RungeKuttaMersonIntegrator>(system);
+    case IntegratorKind::RungeKutta3: return std::make_unique<SimTK::RungeKutta3Integrator>(system);
+    case IntegratorKind::CPodes: return std::make_unique<SimTK::CPodesIntegrator>(system);
+    case IntegratorKind::Verlet: return std::make_unique<SimTK::VerletIntegrator>(system);
+  }
+  throw std::logic_error("unknown integrator");
+}
+
+std::string toLower(std::string s) {
+  std::transform(s.begin(), s.end(), s.begin(), [](unsigned char c) { return std::tolower(c); });
+  return s;
+}
+
+void checkOptions(const SimulationOptions& o) {
+  auto bad = [](const std::string& key, const std::string& why) { throw InputError({"", 0, 0, key}, why); };
+  if (!(o.speed >= 0) || !std::isfinite(o.speed)) bad("--speed", "must be a finite speed >= 0 m/s");
+  if (!(o.duration > 0) || !std::isfinite(o.duration)) bad("--duration", "must be > 0 s");
+  if (!(o.outputStep > 0)) bad("--output-step", "must be > 0 s");
+  if (!(o.accuracy > 0 && o.accuracy < 1)) bad("--accuracy", "must be in (0, 1)");
+  if (!(o.fallRollLimit > 0)) bad("--fall-limit", "must be > 0");
+}
+
+}  // namespace
+
+IntegratorKind parseIntegratorKind(const std::string& name) {
+  const std::string n = toLower(name);
+  if (n == "rkm" || n == "rungekuttamerson") return IntegratorKind::RungeKuttaMerson;
+  if (n == "rk3" || n == "rungekutta3") return IntegratorKind::RungeKutta3;
+  if (n == "cpodes") return IntegratorKind::CPodes;
+  if (n == "verlet") return IntegratorKind::Verlet;
+  throw InputError({"", 0, 0, "--integrator"},
+                   "unknown integrator '" + name + "' (RungeKuttaMerson, RungeKutta3, CPodes, Verlet)");
+}
+
+std::string getIntegratorName(IntegratorKind kind) {
+  switch (kind) {
+    case IntegratorKind::RungeKuttaMerson: return "RungeKuttaMerson";
+    case IntegratorKind::RungeKutta3: return "RungeKutta3";
+    case IntegratorKind::CPodes: return "CPodes";
+    case IntegratorKind::Verlet: return "Verlet";
+  }
+  return "?";
+}
+
+SpeedControl parseSpeedControl(const std::string& name) {
+  const std::string n = toLower(name);
+  if (n == "none") return SpeedControl::None;
+  if (n == "pi") return SpeedControl::PI;
+  throw InputError({"", 0, 0, "--speed-control"}, "unknown speed control '" + name + "' (none or pi)");
+}
+
+int SimulationResult::getColumnIndex(const std::string& name) const {
+  for (size_t j = 0; j < columns.size(); ++j)
+    if (columns[j] == name) return static_cast<int>(j);
+  throw std::out_of_range("simulation result has no column '" + name + "'");
+}
+
+std::vector<double> SimulationResult::getColumn(const std::string& name) const {
+  const int j = getColumnIndex(name);
+  std::vector<double> out;
+  out.reserve(rows.size());
+  for (const auto& r : rows) out.push_back(r[j]);
+  return out;
+}
+
+void checkPerturbations(const VehicleModel& model, const std::vector<Perturbation>& perturbations) {
+  const std::string& contact = model.getScenario().contact.model;
+  for (const auto& p : perturbations) {
+    if (p.kind != PerturbationKind::RoadStep) continue;
+    // Hook: a force-based tyre plugin will take the lateral road displacement of its wheel as an
+    // input (docs/simulation.md, "Road input"); no contact model offers that input yet.
+    if (contact == "rolling_no_slip")
+      throw InputError({"", 0, 0, "--perturb"}, "'" + p.spec + "': needs a force-based tyre model; the contact model "
+                                                "'rolling_no_slip' is a rolling constraint without lateral compliance");
+    throw InputError({"", 0, 0, "--perturb"},
+                     "'" + p.spec + "': the contact model '" + contact + "' takes no road displacement input");
+  }
+}
+
+void applyInitialRates(const VehicleModel& model, State& s, const std::vector<Perturbation>& perturbations) {
+  const CoordinateIndices& ix = model.getIndices();
+  double dRoll = 0, dSteer = 0;
+  for (const auto& p : perturbations) {
+    if (p.kind == PerturbationKind::RollRate) dRoll += p.amplitude;
+    if (p.kind == PerturbationKind::SteerRate) dSteer += p.amplitude;
+  }
+  if (dRoll == 0 && dSteer == 0) return;
+  s.updU()[ix.roll] += dRoll;
+  s.updU()[ix.steer] += dSteer;
+
+  // Velocity errors are affine in u: unit differences give their exact Jacobian G.
+  const StateFunction fn(model);
+  Eigen::VectorXd err0, err;
+  fn.calcConstraintErrors(s, err0);
+  const int mp = s.getNQErr(), mv = static_cast<int>(err0.size()) - mp, nu = model.getNumU();
+  if (mv == 0) return;
+  Eigen::MatrixXd G(mv, nu);
+  for (int j = 0; j < nu; ++j) {
+    const double base = s.getU()[j];
+    s.updU()[j] = base + 1.0;
+    fn.calcConstraintErrors(s, err);
+    s.updU()[j] = base;
+    G.col(j) = (err - err0).tail(mv);
+  }
+  // Dependent rates, greedily in priority order keeping full rank; roll, steer and x rates stay.
+  std::vector<int> priority{ix.height, ix.pitch, ix.rearSpin, ix.frontSpin, ix.y, ix.yaw};
+  for (int j = 0; j < nu; ++j)
+    if (j != ix.roll && j != ix.steer && j != ix.x && std::find(priority.begin(), priority.end(), j) == priority.end())
+      priority.push_back(j);
+  std::vector<int> dep;
+  for (int c : priority) {
+    if (static_cast<int>(dep.size()) == mv) break;
+    Eigen::MatrixXd sub(mv, dep.size() + 1);
+    for (size_t k = 0; k < dep.size(); ++k) sub.col(k) = G.col(dep[k]);
+    sub.col(dep.size()) = G.col(c);
+    Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr(sub);
+    qr.setThreshold(1e-9);
+    if (qr.rank() == static_cast<int>(dep.size()) + 1) dep.push_back(c);
+  }
+  if (static_cast<int>(dep.size()) != mv)
+    throw std::runtime_error("initial rates: the velocity constraints cannot be solved for the dependent rates");
+  Eigen::MatrixXd Gdep(mv, mv);
+  for (int k = 0; k < mv; ++k) Gdep.col(k) = G.col(dep[k]);
+  const Eigen::VectorXd du = Gdep.partialPivLu().solve(-err0.tail(mv));
+  for (int k = 0; k < mv; ++k) s.updU()[dep[k]] += du[k];
+  fn.calcConstraintErrors(s, err);
+  if (err.tail(mv).lpNorm<Eigen::Infinity>() > 1e-9)
+    throw std::runtime_error("initial rates: velocity constraint error remains after the solve");
+}
+
+SimulationResult runSimulation(const Scenario& scenario, const SimulationOptions& options) {
+  PluginRegistry registry = makeBuiltinRegistry();
+  return runSimulation(scenario, registry, options);
+}
+
+SimulationResult runSimulation(const Scenario& scenario, PluginRegistry& registry, const SimulationOptions& opt) {
+  checkOptions(opt);
+  // The trim runs on the bare model: the controller's integral state would make it singular.
+  PluginRegistry trimRegistry = registry;  // a library must not register twice in one registry
+  const VehicleModel trimModel(scenario, trimRegistry);
+  checkPerturbations(trimModel, opt.perturbations);
+  const TrimResult trim = calcTrim(trimModel, opt.speed, opt.trim);
+
+  std::vector<Perturbation> pulses;
+  std::vector<double> segmentStarts{0.0};
+  for (const auto& p : opt.perturbations)
+    if (p.isPulse()) {
+      pulses.push_back(p);
+      for (double t : p.getSwitchTimes())
+        if (t > 0 && t < opt.duration) segmentStarts.push_back(t);
+    }
+  std::sort(segmentStarts.begin(), segmentStarts.end());
+  segmentStarts.erase(std::unique(segmentStarts.begin(), segmentStarts.end()), segmentStarts.end());
+
+  const bool control = opt.speedControl == SpeedControl::PI;
+  const double massRadius = calcMassSummary(scenario).mass * scenario.rearWheel.radius;
+  const PerturbationForce* force = nullptr;
+  ModelExtension extension = [&](BuildContext& ctx, const VehicleModel& m) {
+    auto* impl = new PerturbationForce(ctx.forces, m, pulses, segmentStarts, control, opt.speedGainP * massRadius,
+                                       opt.speedGainI * massRadius, opt.speed);
+    SimTK::Force::Custom(ctx.forces, impl);  // the subsystem owns impl
+    force = impl;
+    return control ? std::vector<std::string>{"speed_control_integral"} : std::vector<std::string>{};
+  };
+  const VehicleModel model(scenario, registry, {extension});
+  const SimTK::MultibodySystem& system = model.getSystem();
+
+  // Initial state: the trim, then the rate offsets.
+  State s = model.getDefaultState();
+  s.updQ() = trim.state.getQ();
+  s.updU() = trim.state.getU();
+  for (int i = 0; i < trimModel.getNumZ(); ++i) s.updZ()[i] = trim.state.getZ()[i];
+  for (Input in : {Input::SteerTorque, Input::DriveTorque, Input::RollTorque})
+    model.setInput(s, in, trimModel.getInput(trim.state, in));
+  s.setTime(0);
+  force->setSegment(s, 0);
+
+  SimulationResult res;
+  res.columns.push_back("time");
+  res.numQ = model.getNumQ();
+  for (const auto& n : model.getQNames()) res.columns.push_back(n);
+  for (const auto& n : model.getUNames()) res.columns.push_back(n);
+  for (const auto& n : model.getZNames()) res.columns.push_back(n);
+  for (const char* n : {"steer_torque", "drive_torque", "lateral_force", "forward_speed", "energy"})
+    res.columns.push_back(n);
+  auto makeRow = [&](const State& st) {
+    State w = st;
+    system.realize(w, SimTK::Stage::Dynamics);
+    std::vector<double> row{w.getTime()};
+    for (int i = 0; i < w.getNQ(); ++i) row.push_back(w.getQ()[i]);
+    for (int i = 0; i < w.getNU(); ++i) row.push_back(w.getU()[i]);
+    for (int i = 0; i < w.getNZ(); ++i) row.push_back(w.getZ()[i]);
+    row.push_back(model.getInput(w, Input::SteerTorque) + force->calcPulses(w, PerturbationKind::SteerTorque));
+    row.push_back(model.getInput(w, Input::DriveTorque) + force->calcControlTorque(w));
+    row.push_back(force->calcPulses(w, PerturbationKind::LateralForce));
+    row.push_back(calcHeadingSpeed(model, w));
+    row.push_back(system.calcEnergy(w));
+    return row;
+  };
+  res.trimRow = makeRow(s);
+  applyInitialRates(model, s, opt.perturbations);
+
+  const int rollColumn = res.getColumnIndex("roll");
+  auto record = [&](const State& st) {
+    res.rows.push_back(makeRow(st));
+    res.endTime = st.getTime();
+    const double roll = res.rows.back()[rollColumn];
+    for (double v : res.rows.back())
+      if (!std::isfinite(v)) {
+        res.status = SimulationStatus::Failed;
+        res.message = "the state became non-finite at t = " + std::to_string(st.getTime()) + " s";
+        return false;
+      }
+    if (std::abs(roll) > opt.fallRollLimit) {
+      std::ostringstream os;
+      os << "fell: |roll| = " << std::abs(roll) * 180 / M_PI << " deg exceeds the limit "
+         << opt.fallRollLimit * 180 / M_PI << " deg at t = " << st.getTime() << " s";
+      res.status = SimulationStatus::Fell;
+      res.message = os.str();
+      return false;
+    }
+    if (opt.progress) opt.progress(st.getTime());
+    return true;
+  };
+
+  const auto wall0 = std::chrono::steady_clock::now();
+  std::unique_ptr<SimTK::Integrator> integ;
+  try {
+    integ = makeIntegrator(opt.integrator, system);
+    integ->setAccuracy(opt.accuracy);
+    integ->setConstraintTolerance(opt.constraintTolerance > 0 ? opt.constraintTolerance : opt.accuracy);
+    integ->setProjectEveryStep(opt.projectEveryStep);
+    integ->initialize(s);
+    bool running = record(integ->getState());
+    int segment = 0, nextReport = 1;
+    const int reports = static_cast<int>(std::ceil(opt.duration / opt.outputStep - 1e-9));
+    while (running && nextReport <= reports) {
+      const double tReport = std::min(nextReport * opt.outputStep, opt.duration);
+      const double tEvent = segment + 1 < static_cast<int>(segmentStarts.size()) ? segmentStarts[segment + 1]
+                                                                                 : SimTK::Infinity;
+      // Simbody returns at a scheduled event even when the step passed a report time, so report
+      // times are scheduled too while an event is pending (exact steps to reports until the last pulse).
+      const auto status = integ->stepTo(tReport, std::isfinite(tEvent) ? std::min(tEvent, tReport) : tEvent);
+      if (status == SimTK::Integrator::EndOfSimulation)
+        throw std::runtime_error("the integrator ended the simulation at t = " + std::to_string(integ->getTime()));
+      if (integ->getAdvancedTime() >= tEvent) {  // switch pulses on or off (samples are right-continuous)
+        force->setSegment(integ->updAdvancedState(), ++segment);
+        integ->reinitialize(SimTK::Stage::Dynamics, false);
+      }
+      if (integ->getTime() >= tReport - 1e-12 * std::max(1.0, tReport)) {
+        running = record(integ->getState());
+        ++nextReport;
+      }
+    }
+  } catch (const std::exception& e) {
+    res.status = SimulationStatus::Failed;
+    std::ostringstream os;
+    os << "integration failed after t = " << res.endTime << " s: " << e.what();
+    res.message = os.str();
+  }
+  res.wallSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
+  if (integ) res.steps = integ->getNumStepsTaken();
+  return res;
+}
+
+}  // namespace motostab::simulation
