@@ -1,0 +1,41 @@
+// An example third-party plugin: a contact model `example_vertical_spring` that only supports the
+// wheels vertically (a linear spring under the wheel centre). Build it as a shared library and list
+// it in a scenario: `plugins: [path/to/libmotostab_example_plugin.so]` (see docs/plugins.md).
+#include "plugins/plugin_api.h"
+
+namespace {
+
+class VerticalSpring : public SimTK::Force::Custom::Implementation {
+ public:
+  VerticalSpring(const SimTK::MobilizedBody& wheel, double radius, double stiffness)
+      : wheel_(wheel), radius_(radius), k_(stiffness) {}
+  void calcForce(const SimTK::State& s, SimTK::Vector_<SimTK::SpatialVec>& bodyForces, SimTK::Vector_<SimTK::Vec3>&,
+                 SimTK::Vector&) const override {
+    const double deflection = radius_ - wheel_.getBodyOriginLocation(s)[2];
+    if (deflection > 0) wheel_.applyBodyForce(s, SimTK::SpatialVec(SimTK::Vec3(0), SimTK::Vec3(0, 0, k_ * deflection)), bodyForces);
+  }
+  SimTK::Real calcPotentialEnergy(const SimTK::State&) const override { return 0; }
+
+ private:
+  SimTK::MobilizedBody wheel_;
+  double radius_, k_;
+};
+
+class VerticalSpringContact : public motostab::ContactModel {
+ public:
+  explicit VerticalSpringContact(double k) : k_(k) {}
+  void addWheel(motostab::BuildContext& ctx, const motostab::WheelSite& w) override {
+    SimTK::Force::Custom(ctx.forces, new VerticalSpring(w.wheel, w.radius, k_));
+  }
+
+ private:
+  double k_;
+};
+
+}  // namespace
+
+MOTOSTAB_PLUGIN_ENTRY {
+  registry.addContactModel("example_vertical_spring", [](motostab::YamlMap& params) -> std::unique_ptr<motostab::ContactModel> {
+    return std::make_unique<VerticalSpringContact>(params.getPositive("stiffness_N_per_m"));
+  });
+}
