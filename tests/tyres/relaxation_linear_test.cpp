@@ -1,0 +1,75 @@
+// The relaxation_linear tyre in the stiff limit: with cornering, longitudinal and radial stiffness
+// scaled up, relaxation length to zero and no tyre moments, the benchmark bicycle on tyres must
+// approach the benchmark bicycle rolling without slip, Meijaard et al. (2007) Table 2.
+#include <gtest/gtest.h>
+
+#include <complex>
+
+#include "analysis/linearize.h"
+
+namespace motostab {
+namespace {
+
+const std::string kWhipple = std::string(MOTOSTAB_SOURCE_DIR) + "/scenarios/whipple-benchmark.yaml";
+
+std::string tyres(double scale) {
+  std::ostringstream t;
+  t.precision(17);
+  // Radial damping near critical for a quarter of the bicycle's mass keeps the bounce modes damped.
+  const double kr = 1e5 * scale, cr = 2 * std::sqrt(kr * 25.0);
+  t << "{cornering_stiffness_per_rad: " << 20 * scale << ", camber_stiffness_per_rad: 1.0, self_aligning_stiffness_m_per_rad: 0,"
+    << " twisting_stiffness_m_per_rad: 0, relaxation_length_m: 0, radial_stiffness_N_per_m: " << kr
+    << ", radial_damping_Ns_per_m: " << cr << ", longitudinal_stiffness: " << 20 * scale << "}";
+  return "contact={model: relaxation_linear, front: " + t.str() + ", rear: " + t.str() + "}";
+}
+
+// Largest distance from each Table 2 eigenvalue at v to the nearest eigenvalue of `lin`.
+double worstError(const LinearModel& lin, const std::vector<std::complex<double>>& reference) {
+  double worst = 0;
+  for (const auto& r : reference) {
+    double best = INFINITY;
+    for (int k = 0; k < lin.eigenvalues.size(); ++k) best = std::min(best, std::abs(lin.eigenvalues[k] - r));
+    worst = std::max(worst, best);
+  }
+  return worst;
+}
+
+TEST(RelaxationLinear, StiffTyresConvergeToTheWhippleBenchmark) {
+  // Meijaard et al. (2007) Table 2 at 5 m/s: weave pair, capsize, castor.
+  const std::vector<std::complex<double>> ref5 = {{-0.77534188219585, 4.46486771378823}, {-0.77534188219585, -4.46486771378823},
+                                                  {-0.32286642900409, 0}, {-14.07838969279820, 0}};
+  double previous = INFINITY;
+  TrimOptions opt;
+  opt.tolerance = 1e-8;  // stiff springs (up to 1e9 N/m) put the round-off floor near 1e-10
+  for (double scale : {1.0, 10.0, 100.0, 1000.0, 10000.0}) {
+    const VehicleModel model(loadScenario(kWhipple, {tyres(scale)}));
+    const TrimResult trim = calcTrim(model, 5.0, opt);
+    // Perturbations must stay well inside the static tyre deflection (about 4e-3/scale m) for the
+    // differences to see a smooth contact force.
+    LinearizeOptions lin;
+    lin.step = 1e-4 / scale;
+    const double err = worstError(linearize(model, trim, lin), ref5);
+    std::cout << "stiffness scale " << scale << ": worst |delta lambda| = " << err << "\n";
+    EXPECT_LT(err, previous) << "error must shrink as the tyres stiffen";
+    previous = err;
+  }
+  EXPECT_LT(previous, 1e-3);
+}
+
+TEST(RelaxationLinear, TrimHasNoSlipOrLeanWhenSymmetric) {
+  const VehicleModel model(loadScenario(std::string(MOTOSTAB_SOURCE_DIR) + "/scenarios/enduro.yaml"));
+  const TrimResult trim = calcTrim(model, 20.0);
+  EXPECT_LT(trim.residualNorm, 1e-10);
+  const CoordinateIndices& ix = model.getIndices();
+  for (int q : {ix.roll, ix.steer, ix.yaw}) EXPECT_NEAR(trim.state.getQ()[q], 0.0, 1e-12) << model.getQNames()[q];
+  for (int z = 0; z < model.getNumZ(); ++z) EXPECT_NEAR(trim.state.getZ()[z], 0.0, 1e-12) << model.getZNames()[z];
+  // Drag at 20 m/s, 1/2 rho CdA v^2, is carried by the drive torque through the rear tyre: the
+  // torque equals drag times the height of the rear hub above the rear contact point, to within the
+  // tyre's radial deflection and the small pitch of the trimmed vehicle.
+  const Scenario& s = model.getScenario();
+  const double drag = 0.5 * s.aerodynamics.airDensity * s.aerodynamics.dragArea * 400.0;
+  EXPECT_NEAR(model.getInput(trim.state, Input::DriveTorque), drag * s.rearWheel.radius, 0.02 * drag * s.rearWheel.radius);
+}
+
+}  // namespace
+}  // namespace motostab
