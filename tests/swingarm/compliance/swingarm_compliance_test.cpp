@@ -1,0 +1,119 @@
+// Swingarm compliance plugins on the enduro motorcycle (seed sec. 4).
+#include <gtest/gtest.h>
+
+#include <complex>
+
+#include "analysis/sweep.h"
+#include "swingarm/compliance/swingarm_compliance.h"
+
+namespace motostab {
+namespace {
+
+const std::string kEnduro = std::string(MOTOSTAB_SOURCE_DIR) + "/scenarios/enduro.yaml";
+
+// The weave eigenvalue (upper half plane) at v, found by tracking from a nearby labelled sweep.
+std::complex<double> weaveAt(const std::vector<std::string>& overrides, double v) {
+  const VehicleModel model(loadScenario(kEnduro, overrides));
+  SweepOptions opt;
+  opt.start = v - 2, opt.stop = v, opt.step = 1;
+  const SweepResult s = runSweep(model, opt);
+  for (const auto& b : s.branches)
+    if (b.label == "weave" && b.eigenvalue.back().imag() > 0) return b.eigenvalue.back();
+  ADD_FAILURE() << "no weave found";
+  return 0;
+}
+
+TEST(SwingarmCompliance, InfiniteStiffnessConvergesToRigid) {
+  const std::complex<double> rigid = weaveAt({"swingarm.compliance=rigid"}, 20.0);
+  for (const char* model : {"torsion", "bending", "twist"}) {
+    double previous = INFINITY;
+    for (double scale : {1.0, 100.0, 10000.0}) {
+      const auto w = weaveAt({std::string("swingarm.compliance=") + model,
+                              "swingarm.stiffness_scale=" + std::to_string(scale)}, 20.0);
+      const double err = std::abs(w - rigid);
+      EXPECT_LT(err, previous) << model << " scale " << scale;
+      previous = err;
+    }
+    EXPECT_LT(previous, 1e-4 * std::abs(rigid)) << model;
+  }
+}
+
+// J about the compliance axis, from the scenario's mass properties alone: the swingarm and the
+// rear wheel turn about the axis together (spin locked).
+double calcInertiaAboutAxis(const Scenario& s, const ComplianceAxis& axis) {
+  const SwingarmFrame f = calcSwingarmFrame(s);
+  const SimTK::Mat33 R_DS(f.x[0], f.y[0], f.z[0], f.x[1], f.y[1], f.z[1], f.x[2], f.y[2], f.z[2]);
+  const SimTK::Vec3 d = R_DS * axis.direction_S;
+  const SimTK::Vec3 p = SimTK::Vec3(f.origin[0], f.origin[1], f.origin[2]) + R_DS * axis.point_S;
+  auto about = [&](double m, const SimTK::Vec3& c, const SimTK::Mat33& I) {
+    const SimTK::Vec3 r = c - p, rPerp = r - (~r * d) * d;
+    return ~d * (I * d) + m * rPerp.normSqr();
+  };
+  const InertiaSpec& a = s.swingarm.body.inertia;
+  const SimTK::Mat33 I_S(a.xx, a.xy, a.xz, a.xy, a.yy, a.yz, a.xz, a.yz, a.zz);
+  const auto& com = s.swingarm.body.com;
+  const SimTK::Vec3 origin(f.origin[0], f.origin[1], f.origin[2]);
+  const double Jarm = about(s.swingarm.body.mass, origin + R_DS * SimTK::Vec3(com[0], com[1], com[2]), R_DS * I_S * ~R_DS);
+  const WheelSpec& w = s.rearWheel;
+  const SimTK::Mat33 Iw(w.diametralInertia, 0, 0, 0, w.axialInertia, 0, 0, 0, w.diametralInertia);
+  return Jarm + about(w.mass, SimTK::Vec3(0, 0, w.radius), Iw);
+}
+
+TEST(SwingarmCompliance, LockedVehicleOscillatesAtSqrtKOverJ) {
+  for (const char* model : {"bending", "torsion", "twist"}) {
+    const Scenario s = loadScenario(kEnduro, {std::string("swingarm.compliance=") + model, "gravity_mps2=0"});
+    const VehicleModel vm(s);
+    ASSERT_EQ(vm.getIndices().compliance.size(), 1u);
+    const int qc = vm.getIndices().compliance[0];
+    // Lift the vehicle off the ground and lock every other mobilizer.
+    SimTK::State st = vm.getDefaultState();
+    st.updQ()[vm.getIndices().height] += 1.0;
+    const SimTK::SimbodyMatterSubsystem& matter = vm.getMatter();
+    for (SimTK::MobilizedBodyIndex b(1); b < matter.getNumBodies(); ++b) {
+      const SimTK::MobilizedBody& mb = matter.getMobilizedBody(b);
+      if (mb.getNumU(st) > 0 && mb.getFirstQIndex(st) != qc) mb.lock(st, SimTK::Motion::Position);
+    }
+    const double q0 = 1e-4;
+    st.updQ()[qc] = q0;
+    vm.getSystem().realize(st, SimTK::Stage::Acceleration);
+    // J q'' = -k q with no damping force at rest.
+    YamlMap axisMap = loadYamlFile(kEnduro).getMap("swingarm").getMap(model);
+    const double k = axisMap.getDouble("stiffness_Nm_per_rad");
+    const SwingarmFrame f = calcSwingarmFrame(s);
+    const ComplianceAxis axis = makeAxisFromArm(SimTK::Vec3(f.length, 0, 0), axisMap.getDouble("arm_m"),
+                                                axisMap.getDouble("beta_deg") * M_PI / 180, k, 0);
+    const double J = calcInertiaAboutAxis(s, axis);
+    const double omegaModel = std::sqrt(-st.getUDot()[qc] / q0);
+    EXPECT_NEAR(omegaModel, std::sqrt(k / J), 1e-6 * std::sqrt(k / J)) << model;
+    std::cout << model << ": J = " << J << " kg m^2, sqrt(k/J)/2pi = " << std::sqrt(k / J) / (2 * M_PI) << " Hz\n";
+  }
+}
+
+TEST(SwingarmCompliance, CyclicColumnsAreZeroAndSymmetricTrimIsUpright) {
+  const VehicleModel model(loadScenario(kEnduro, {"swingarm.compliance=bending+torsion"}));
+  const TrimResult trim = calcTrim(model, 25.0);
+  EXPECT_LT(trim.residualNorm, 1e-10);
+  for (int q : model.getIndices().compliance) EXPECT_NEAR(trim.state.getQ()[q], 0, 1e-12);
+  EXPECT_NEAR(trim.state.getQ()[model.getIndices().roll], 0, 1e-12);
+  const LinearModel lin = linearize(model, trim);
+  ASSERT_GE(lin.removedColumns.size(), 4u);
+  for (const auto& [name, col] : lin.removedColumns) EXPECT_LT(col.lpNorm<Eigen::Infinity>(), 1e-8) << name;
+}
+
+// A compliance axis with a lateral tilt breaks the lateral symmetry: the trim needs small roll,
+// steer and compliance deflections and a steer torque, and must still converge.
+TEST(SwingarmCompliance, TiltedAxisTrimsWithSmallLateralStates) {
+  const VehicleModel model(loadScenario(kEnduro, {"swingarm.compliance=torsion",
+                                                  "swingarm.torsion={point_m: [0.56, 0, 0.014], direction: [1, 0.2, 0], "
+                                                  "stiffness_Nm_per_rad: 55200, damping_Nms_per_rad: 0.49}"}));
+  const TrimResult trim = calcTrim(model, 25.0);
+  EXPECT_LT(trim.residualNorm, 1e-10);
+  const CoordinateIndices& ix = model.getIndices();
+  const double roll = trim.state.getQ()[ix.roll], twist = trim.state.getQ()[ix.compliance[0]];
+  EXPECT_GT(std::abs(roll) + std::abs(twist), 1e-9);
+  EXPECT_LT(std::abs(roll), 0.05);
+  EXPECT_LT(std::abs(twist), 0.01);
+}
+
+}  // namespace
+}  // namespace motostab
