@@ -153,7 +153,8 @@ LinearModel linearize(const VehicleModel& model, const TrimResult& trim, const L
     for (int i = 0; i < n; ++i)
       if (std::find(remove.begin(), remove.end(), i) == remove.end())
         yawInfluence = std::max(yawInfluence, std::abs(A(i, yawCol)));
-    if (yawInfluence < opt.zeroColumnTolerance * std::max(1.0, A.lpNorm<Eigen::Infinity>())) remove.push_back(yawCol);
+    const bool dead = yawInfluence < opt.zeroColumnTolerance * std::max(1.0, A.lpNorm<Eigen::Infinity>());
+    if (opt.removeYaw == 1 || (opt.removeYaw < 0 && dead)) remove.push_back(yawCol);
   }
   std::vector<int> keep;
   for (int j = 0; j < n; ++j)

@@ -15,6 +15,9 @@ struct LinearizeOptions {
   /// Differentiate along the cyclic coordinates too (to verify that their columns vanish); sweeps
   /// skip them, which the test suite justifies.
   bool computeCyclicColumns = true;
+  /// Yaw is removed when no kept row depends on it (-1, automatic), always (1) or never (0).
+  /// Sweeps fix it so that every speed has the same states.
+  int removeYaw = -1;
 };
 
 /// One state of the linear model.

@@ -58,9 +58,16 @@ SweepResult runSweep(const VehicleModel& model, const SweepOptions& opt) {
   out.speeds = makeSpeedGrid(opt.start, opt.stop, opt.step);
   out.trims.reserve(out.speeds.size());
   out.models.reserve(out.speeds.size());
+  // The states must not change with speed: decide on yaw once, away from standstill.
+  SweepOptions fixed = opt;
+  if (fixed.linearize.removeYaw < 0) {
+    const double vRef = std::max(1.0, opt.stop);
+    const LinearModel ref = linearize(model, calcTrim(model, vRef, opt.trim), opt.linearize);
+    fixed.linearize.removeYaw = ref.findState("yaw") < 0 ? 1 : 0;
+  }
   for (size_t k = 0; k < out.speeds.size(); ++k) {
     out.trims.push_back(calcTrim(model, out.speeds[k], opt.trim, k ? &out.trims[k - 1] : nullptr));
-    out.models.push_back(linearize(model, out.trims.back(), opt.linearize));
+    out.models.push_back(linearize(model, out.trims.back(), fixed.linearize));
   }
   out.branches = trackModes(out.models, model.getScenario().geometry.wheelbase);
 
@@ -69,7 +76,7 @@ SweepResult runSweep(const VehicleModel& model, const SweepOptions& opt) {
     for (size_t k = 0; k + 1 < out.speeds.size(); ++k) {
       const double f0 = br.eigenvalue[k].real(), f1 = br.eigenvalue[k + 1].real();
       if (!(f0 * f1 < 0 || (f1 == 0 && f0 != 0))) continue;
-      auto f = [&](double v) { return calcBranchRealPart(model, out, br, k, v, opt); };
+      auto f = [&](double v) { return calcBranchRealPart(model, out, br, k, v, fixed); };
       const double v = findRoot(f, out.speeds[k], out.speeds[k + 1], f0, f1, opt.criticalSpeedTolerance);
       bool duplicate = false;  // both members of a complex pair cross together
       for (const auto& c : out.criticalSpeeds)

@@ -1,8 +1,10 @@
 // motostab sweep | linearize: scenario -> model -> trim -> linearise -> modes -> outputs.
+#include <cmath>
 #include <iostream>
 
 #include "apps/commands.h"
 #include "apps/common_options.h"
+#include "output/study_report.h"
 #include "output/sweep_output.h"
 
 namespace motostab::cli {
@@ -54,6 +56,45 @@ void registerStabilityCommands(CLI::App& app) {
     std::cout << "Trim at " << linArgs->speed << " m/s: residual " << trim.residualNorm << " after " << trim.iterations
               << " iterations; " << lm.states.size() << " states. Wrote " << linArgs->out
               << "/{A.csv, B.csv, eigenvalues.csv, eigenvectors.csv, linear_model.json}\n";
+  });
+
+  struct StudyArgs {
+    std::string scenario, speeds, out;
+    std::vector<std::string> overrides;
+    std::vector<std::string> variants{"rigid", "bending", "torsion", "twist"};
+    double stiffnessScale = 0.5, dampingScale = 1.0 / std::sqrt(2.0);
+    std::vector<double> shapeSpeeds{10.0, 18.5, 30.0};
+    int threads = 2;
+  };
+  auto st = std::make_shared<StudyArgs>();
+  CLI::App* study = app.add_subcommand("study", "Swingarm study of seed sec. 4: rigid/bending/torsion/twist sweeps, Figs. 9-12, report");
+  study->add_option("scenario", st->scenario, "Motorcycle scenario with a swingarm section")->required()->check(CLI::ExistingFile);
+  study->add_option("--speeds", st->speeds, "START:STOP:STEP in m/s (default: the scenario's speeds_mps)");
+  study->add_option("--out", st->out, "Output folder (default: SCENARIO-study)");
+  study->add_option("--set", st->overrides, "Override a scenario value for every variant");
+  study->add_option("--compare", st->variants, "Compliance variants to compare")->delimiter(',');
+  study->add_option("--stiffness-scale", st->stiffnessScale, "Stiffness factor of the second set (seed Fig. 11: 0.5)");
+  study->add_option("--damping-scale", st->dampingScale, "Damping factor of the second set (seed: 1/sqrt(2))");
+  study->add_option("--shape-speeds", st->shapeSpeeds, "Speeds of the weave mode-shape compass plots, m/s")->delimiter(',');
+  study->add_option("--threads", st->threads, "Variants swept in parallel");
+  study->callback([st]() {
+    const Scenario scenario = loadScenario(st->scenario, st->overrides);
+    StudyOptions opt;
+    opt.sweep.start = scenario.speeds.start;
+    opt.sweep.stop = scenario.speeds.stop;
+    opt.sweep.step = scenario.speeds.step;
+    if (!st->speeds.empty()) parseSpeedRange(st->speeds, opt.sweep.start, opt.sweep.stop, opt.sweep.step);
+    opt.variants = st->variants;
+    opt.stiffnessScale = st->stiffnessScale;
+    opt.dampingScale = st->dampingScale;
+    opt.shapeSpeeds = st->shapeSpeeds;
+    opt.overrides = st->overrides;
+    opt.threads = st->threads;
+    const StudyResult result = runStudy(st->scenario, opt);
+    const std::string out = st->out.empty() ? scenario.name + "-study" : st->out;
+    writeStudyOutputs(out, result, opt);
+    std::cout << makeStudyReport(result, opt) << "\nWrote " << out
+              << "/{report.md, study_modes.csv, weave_shapes.csv, fig09..fig12 (.gp/.png/.svg), nominal/, halved/}\n";
   });
 }
 

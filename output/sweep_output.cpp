@@ -71,7 +71,7 @@ nlohmann::json makeSweepSummary(const std::string& name, const SweepResult& swee
   return j;
 }
 
-void writeSweepOutputs(const std::filesystem::path& dir, const std::string& name, const SweepResult& sweep) {
+void writeSweepData(const std::filesystem::path& dir, const std::string& name, const SweepResult& sweep) {
   CsvWriter csv({"speed_mps", "mode", "real", "imag", "frequency_hz", "damping_ratio"});
   for (size_t k = 0; k < sweep.speeds.size(); ++k)
     for (const auto& b : sweep.branches) {
@@ -81,6 +81,10 @@ void writeSweepOutputs(const std::filesystem::path& dir, const std::string& name
     }
   writeFileAtomically(dir / "eigenvalues.csv", csv.getText());
   writeFileAtomically(dir / "summary.json", makeSweepSummary(name, sweep).dump(2) + "\n");
+}
+
+void writeSweepOutputs(const std::filesystem::path& dir, const std::string& name, const SweepResult& sweep) {
+  writeSweepData(dir, name, sweep);
   const std::string common = "  set datafile separator ','\n  set grid\n  set key outside right\n";
   renderGnuplot(dir, "root_locus",
                 common + "  set title " + gnuplotQuote("Root locus: " + name) +

@@ -12,6 +12,9 @@ namespace motostab {
 double calcFrequencyHz(std::complex<double> lambda);
 double calcDampingRatio(std::complex<double> lambda);
 
+/// DIR/eigenvalues.csv and DIR/summary.json only.
+void writeSweepData(const std::filesystem::path& dir, const std::string& scenarioName, const SweepResult& sweep);
+
 /// DIR/eigenvalues.csv (speed_mps,mode,real,imag,frequency_hz,damping_ratio; 17 digits),
 /// DIR/summary.json (critical speeds), and the root-locus and real-part plots with their scripts.
 void writeSweepOutputs(const std::filesystem::path& dir, const std::string& scenarioName, const SweepResult& sweep);
