@@ -42,10 +42,13 @@ class PerturbationForce : public SimTK::Force::Custom::Implementation {
     SimTK::Value<int>::updDowncast(forces_.updDiscreteVariable(s, segmentIndex_)) = k;
   }
 
+  int getSegment(const State& s) const {
+    return SimTK::Value<int>::downcast(forces_.getDiscreteVariable(s, segmentIndex_));
+  }
+
   /// Sum of the active pulses of `kind` (on `body` for lateral forces, "" = any body).
   double calcPulses(const State& s, PerturbationKind kind, const std::string& body = "") const {
-    const int k = SimTK::Value<int>::downcast(forces_.getDiscreteVariable(s, segmentIndex_));
-    const double t0 = segmentStarts_[k];  // pulses are constant in on/off state over a segment
+    const double t0 = segmentStarts_[getSegment(s)];  // pulses are constant in on/off state over a segment
     double sum = 0;
     for (const auto& p : pulses_)
       if (p.kind == kind && (body.empty() || p.body == body) && p.start <= t0 && t0 < p.start + p.duration)
@@ -281,8 +284,13 @@ SimulationResult runSimulation(const Scenario& scenario, PluginRegistry& registr
   for (const auto& n : model.getZNames()) res.columns.push_back(n);
   for (const char* n : {"steer_torque", "drive_torque", "lateral_force", "forward_speed", "energy"})
     res.columns.push_back(n);
+  State w = s;  // working copy for the outputs: assigning q, u, z costs less than copying a State
   auto makeRow = [&](const State& st) {
-    State w = st;
+    w.setTime(st.getTime());
+    w.updQ() = st.getQ();
+    w.updU() = st.getU();
+    w.updZ() = st.getZ();
+    force->setSegment(w, force->getSegment(st));
     system.realize(w, SimTK::Stage::Dynamics);
     std::vector<double> row{w.getTime()};
     for (int i = 0; i < w.getNQ(); ++i) row.push_back(w.getQ()[i]);

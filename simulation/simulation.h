@@ -38,7 +38,7 @@ struct SimulationOptions {
   IntegratorKind integrator = IntegratorKind::RungeKuttaMerson;
   double accuracy = 1e-6;            ///< integrator relative accuracy
   double constraintTolerance = 0;    ///< constraint projection tolerance; <= 0: equal to accuracy
-  bool projectEveryStep = true;      ///< project onto the constraints after every step
+  bool projectEveryStep = false;     ///< project onto the constraints after every step
   double fallRollLimit = M_PI / 3;   ///< |roll| beyond this ends the run as a fall, rad (60 deg)
   TrimOptions trim;
   /// Called after every output sample with the simulated time (s); for progress bars.
