@@ -2,6 +2,8 @@
 
 #include <cmath>
 #include <functional>
+#include <future>
+#include <memory>
 
 namespace motostab {
 
@@ -65,9 +67,32 @@ SweepResult runSweep(const VehicleModel& model, const SweepOptions& opt) {
     const LinearModel ref = linearize(model, calcTrim(model, vRef, opt.trim), opt.linearize);
     fixed.linearize.removeYaw = ref.findState("yaw") < 0 ? 1 : 0;
   }
-  for (size_t k = 0; k < out.speeds.size(); ++k) {
-    out.trims.push_back(calcTrim(model, out.speeds[k], opt.trim, k ? &out.trims[k - 1] : nullptr));
-    out.models.push_back(linearize(model, out.trims.back(), fixed.linearize));
+  const size_t n = out.speeds.size();
+  out.trims.resize(n);
+  out.models.resize(n);
+  // Contiguous blocks of speeds, one per worker, each a warm-started chain.
+  auto runBlock = [&](const VehicleModel& m, size_t begin, size_t end) {
+    for (size_t k = begin; k < end; ++k) {
+      out.trims[k] = calcTrim(m, out.speeds[k], opt.trim, k > begin ? &out.trims[k - 1] : nullptr);
+      out.models[k] = linearize(m, out.trims[k], fixed.linearize);
+    }
+  };
+  const size_t workers = std::max<size_t>(1, std::min<size_t>(opt.threads, n));
+  if (workers == 1) {
+    runBlock(model, 0, n);
+  } else {
+    std::vector<std::future<void>> jobs;
+    std::vector<std::unique_ptr<VehicleModel>> copies(workers);
+    for (size_t w = 0; w < workers; ++w) {
+      const size_t begin = n * w / workers, end = n * (w + 1) / workers;
+      jobs.push_back(std::async(std::launch::async, [&, w, begin, end]() {
+        if (w == 0) return runBlock(model, begin, end);
+        copies[w] = std::make_unique<VehicleModel>(model.getScenario());
+        runBlock(*copies[w], begin, end);
+        // States made by another model's system are valid for this one: same topology.
+      }));
+    }
+    for (auto& j : jobs) j.get();
   }
   out.branches = trackModes(out.models, model.getScenario().geometry.wheelbase);
 

@@ -1,6 +1,6 @@
 #include <gtest/gtest.h>
 
-#include "analysis/trim.h"
+#include "analysis/sweep.h"
 #include "scenario/scenario.h"
 #include "tyres/rolling_no_slip.h"
 
@@ -57,6 +57,30 @@ TEST(Trim, FailureNamesSpeedAndResidual) {
     EXPECT_NE(m.find("residual norm"), std::string::npos) << m;
     EXPECT_DOUBLE_EQ(e.speed, 3.5);
   }
+}
+
+}  // namespace
+}  // namespace motostab
+
+namespace motostab {
+namespace {
+
+// Splitting the speeds between workers changes only the trims' warm starts.
+TEST(Sweep, ParallelSweepMatchesSerial) {
+  const VehicleModel model(loadScenario(std::string(MOTOSTAB_SOURCE_DIR) + "/scenarios/enduro.yaml", {"swingarm.compliance=torsion"}));
+  SweepOptions serial;
+  serial.start = 5, serial.stop = 30, serial.step = 1;
+  SweepOptions parallel = serial;
+  parallel.threads = 2;
+  const SweepResult a = runSweep(model, serial), b = runSweep(model, parallel);
+  ASSERT_EQ(a.branches.size(), b.branches.size());
+  for (size_t i = 0; i < a.branches.size(); ++i) {
+    EXPECT_EQ(a.branches[i].label, b.branches[i].label);
+    for (size_t k = 0; k < a.speeds.size(); ++k)
+      EXPECT_LT(std::abs(a.branches[i].eigenvalue[k] - b.branches[i].eigenvalue[k]), 1e-7 * (1 + std::abs(a.branches[i].eigenvalue[k])));
+  }
+  ASSERT_EQ(a.criticalSpeeds.size(), b.criticalSpeeds.size());
+  for (size_t i = 0; i < a.criticalSpeeds.size(); ++i) EXPECT_NEAR(a.criticalSpeeds[i].speed, b.criticalSpeeds[i].speed, 1e-8);
 }
 
 }  // namespace

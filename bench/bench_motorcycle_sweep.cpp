@@ -1,0 +1,39 @@
+// Issue 3 speed figures: the enduro `twist` model over 0-40 m/s at 0.1 m/s (401 speeds), serial and
+// on two threads, and one realize to Acceleration for the (2n+1)-realize cost ratio.
+#include <benchmark/benchmark.h>
+
+#include "analysis/sweep.h"
+#include "scenario/scenario.h"
+
+namespace {
+
+const std::string kEnduro = std::string(MOTOSTAB_SOURCE_DIR) + "/scenarios/enduro.yaml";
+
+void BM_EnduroTwistSweep401(benchmark::State& st) {
+  const motostab::VehicleModel model(motostab::loadScenario(kEnduro, {"swingarm.compliance=twist"}));
+  motostab::SweepOptions opt;
+  opt.start = 0, opt.stop = 40, opt.step = 0.1;
+  opt.threads = static_cast<int>(st.range(0));
+  for (auto _ : st) {
+    auto r = motostab::runSweep(model, opt);
+    benchmark::DoNotOptimize(r.criticalSpeeds.data());
+  }
+}
+BENCHMARK(BM_EnduroTwistSweep401)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->Iterations(3)->UseRealTime();
+
+void BM_EnduroTwistRealize(benchmark::State& st) {
+  const motostab::VehicleModel model(motostab::loadScenario(kEnduro, {"swingarm.compliance=twist"}));
+  SimTK::State s = motostab::calcTrim(model, 20.0).state;
+  const int roll = model.getIndices().roll;
+  double d = 1e-6;
+  for (auto _ : st) {
+    s.updQ()[roll] = (d = -d);
+    model.getSystem().realize(s, SimTK::Stage::Acceleration);
+    benchmark::DoNotOptimize(s.getUDot()[0]);
+  }
+}
+BENCHMARK(BM_EnduroTwistRealize)->Unit(benchmark::kMicrosecond);
+
+}  // namespace
+
+BENCHMARK_MAIN();
