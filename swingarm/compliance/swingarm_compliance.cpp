@@ -1,5 +1,8 @@
 #include "swingarm/compliance/swingarm_compliance.h"
 
+#include <algorithm>
+#include <filesystem>
+
 namespace motostab {
 
 using SimTK::MobilizedBody;
@@ -24,11 +27,15 @@ struct AxisSpec {
   }
 };
 
-AxisSpec readAxis(YamlMap m, double kScale, double cScale) {
-  AxisSpec a;
-  a.stiffness = m.getPositive("stiffness_Nm_per_rad") * kScale;
-  a.damping = m.getNonNegative("damping_Nms_per_rad") * cScale;
-  if (m.has("point_m") || m.has("direction")) {
+// The axis geometry: {arm_m, beta_deg} (relative to the hub) or {point_m, direction} (in S). The
+// identification's fragment nests it under `axis:` and gives both; arm and beta are used then.
+void readAxisGeometry(YamlMap& m, AxisSpec& a) {
+  if (m.has("arm_m") || m.has("beta_deg")) {
+    a.arm = m.getDouble("arm_m");
+    a.beta = m.getDouble("beta_deg") * M_PI / 180;
+    for (const char* k : {"point_m", "direction"})
+      if (m.has(k)) m.getVec3(k);
+  } else {
     const auto p = m.getVec3("point_m");
     const auto d = m.getVec3("direction");
     a.explicitAxis = true;
@@ -36,13 +43,27 @@ AxisSpec readAxis(YamlMap m, double kScale, double cScale) {
     a.direction = Vec3(d[0], d[1], d[2]);
     if (a.direction.norm() < 1e-9) m.fail("direction", "must not be zero");
     a.direction /= a.direction.norm();
-  } else {
-    a.arm = m.getDouble("arm_m");
-    a.beta = m.getDouble("beta_deg") * M_PI / 180;
   }
-  // The uncertainties the identification writes beside the values are accepted.
-  for (const char* extra : {"stiffness_Nm_per_rad_stderr", "damping_Nms_per_rad_stderr", "arm_m_stderr", "beta_deg_stderr"})
-    if (m.has(extra)) m.getNonNegative(extra);
+  for (const char* k : {"arm_m_stderr", "beta_deg_stderr"})
+    if (m.has(k)) m.getNonNegative(k);
+}
+
+AxisSpec readAxis(YamlMap m, double kScale, double cScale) {
+  AxisSpec a;
+  a.stiffness = m.getPositive("stiffness_Nm_per_rad") * kScale;
+  a.damping = m.getNonNegative("damping_Nms_per_rad") * cScale;
+  if (m.has("axis")) {
+    YamlMap axis = m.getMap("axis");
+    readAxisGeometry(axis, a);
+    axis.finish();
+  } else {
+    readAxisGeometry(m, a);
+  }
+  // Informational values the identification writes beside the model (docs/swingarm-identification.md).
+  for (const char* k : {"stiffness_Nm_per_rad_stderr", "damping_Nms_per_rad_stderr", "reduced_stiffness_Nm_per_rad",
+                        "reduced_stiffness_Nm_per_rad_stderr", "frequency_hz", "frequency_hz_stderr", "damping_ratio",
+                        "damping_ratio_stderr"})
+    if (m.has(k)) m.getNonNegative(k);
   m.finish();
   return a;
 }
@@ -102,6 +123,20 @@ SwingarmModelFactory makeFactory(std::vector<std::string> axisNames) {
     std::vector<std::pair<std::string, AxisSpec>> present;
     for (const char* key : {"bending", "torsion", "twist"})
       if (m.has(key)) present.push_back({key, readAxis(m.getMap(key), kScale, cScale)});
+    if (m.has("identification")) m.markUsed("identification");  // provenance only
+    // Axes written by `motostab identify swingarm`, used unchanged (path relative to the scenario).
+    if (m.has("axes_from")) {
+      std::filesystem::path file = m.getString("axes_from");
+      if (file.is_relative()) file = std::filesystem::path(m.getFile()).parent_path() / file;
+      YamlMap fragment = loadYamlFile(file.string());
+      if (fragment.has("identification")) fragment.markUsed("identification");
+      for (const char* key : {"bending", "torsion", "twist"}) {
+        const bool inline_ = std::any_of(present.begin(), present.end(), [&](const auto& p) { return p.first == key; });
+        if (fragment.has(key) && !inline_) present.push_back({key, readAxis(fragment.getMap(key), kScale, cScale)});
+        else if (fragment.has(key)) fragment.markUsed(key);
+      }
+      fragment.finish();
+    }
     std::vector<std::pair<std::string, AxisSpec>> axes;
     for (const auto& name : axisNames) {
       auto it = std::find_if(present.begin(), present.end(), [&](const auto& p) { return p.first == name; });

@@ -117,3 +117,55 @@ TEST(SwingarmCompliance, TiltedAxisTrimsWithSmallLateralStates) {
 
 }  // namespace
 }  // namespace motostab
+
+#include <fstream>
+
+#include "swingarm/identification/decomposition.h"
+
+namespace motostab {
+namespace {
+
+// The fragment `motostab identify swingarm` writes is accepted unchanged (axes_from) and builds the
+// same model as the same values typed inline (seed Table 3 and 5, swingarm 2, with the enduro
+// scenario's beta).
+TEST(SwingarmCompliance, IdentificationFragmentIsUsedUnchanged) {
+  identification::SwingarmIdentification id;
+  auto fill = [](identification::LumpedModel& m, double arm, double betaDeg, double k, double c) {
+    m.arm.value = arm, m.betaDeg.value = betaDeg, m.stiffness.value = k, m.damping.value = c;
+    const double b = betaDeg * M_PI / 180;
+    m.direction = Eigen::Vector2d(std::cos(b), std::sin(b));
+    m.point = Eigen::Vector2d(0.5625 - arm * std::sin(b), arm * std::cos(b));
+  };
+  fill(id.bending, 0.388, 90.0, 94200, 2.25);
+  fill(id.torsion, 0.014, 0.0, 55200, 0.49);
+  fill(id.twist, 0.375, 86.48, 87600, 2.09);
+  const auto file = std::filesystem::temp_directory_path() / "motostab_identified_swingarm.yaml";
+  std::ofstream(file) << identification::formatSwingarmYaml(id, "static.yaml", "frf.yaml", {0.5625, 0});
+  for (const char* model : {"bending", "torsion", "twist"}) {
+    const std::string sel = std::string("swingarm.compliance=") + model;
+    const std::string axis = std::string("swingarm.") + model;
+    const std::string values = model == std::string("bending") ? "{arm_m: 0.388, beta_deg: 90.0, stiffness_Nm_per_rad: 94200, damping_Nms_per_rad: 2.25}"
+                               : model == std::string("torsion") ? "{arm_m: 0.014, beta_deg: 0.0, stiffness_Nm_per_rad: 55200, damping_Nms_per_rad: 0.49}"
+                                                                 : "{arm_m: 0.375, beta_deg: 86.48, stiffness_Nm_per_rad: 87600, damping_Nms_per_rad: 2.09}";
+    const VehicleModel inlineModel(loadScenario(kEnduro, {sel, axis + "=" + values}));
+    // Remove the inline axes so that the fragment supplies them.
+    YAML::Node tree = YAML::LoadFile(kEnduro);
+    for (const char* k : {"bending", "torsion", "twist"}) tree["swingarm"].remove(k);
+    tree["swingarm"]["axes_from"] = file.string();
+    tree["swingarm"]["compliance"] = model;
+    const auto scenarioFile = std::filesystem::temp_directory_path() / "motostab_enduro_from_fragment.yaml";
+    std::ofstream(scenarioFile) << tree;
+    const VehicleModel fromFragment(loadScenario(scenarioFile.string()));
+    const LinearModel a = linearize(inlineModel, calcTrim(inlineModel, 20.0));
+    const LinearModel b = linearize(fromFragment, calcTrim(fromFragment, 20.0));
+    ASSERT_EQ(a.eigenvalues.size(), b.eigenvalues.size());
+    for (int k = 0; k < a.eigenvalues.size(); ++k) {
+      double best = INFINITY;
+      for (int j = 0; j < b.eigenvalues.size(); ++j) best = std::min(best, std::abs(a.eigenvalues[k] - b.eigenvalues[j]));
+      EXPECT_LT(best, 1e-6 * (1 + std::abs(a.eigenvalues[k]))) << model;
+    }
+  }
+}
+
+}  // namespace
+}  // namespace motostab
