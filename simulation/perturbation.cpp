@@ -20,7 +20,7 @@ std::vector<std::string> splitFields(const std::string& text) {
 }
 
 [[noreturn]] void fail(const std::string& spec, const std::string& why) {
-  throw InputError({"", 0, 0, "--perturb"}, "'" + spec + "': " + why + "\n  expected one of:\n" + getPerturbationSyntax());
+  throw InputError({"command line", 0, 0, "--perturb"}, "'" + spec + "': " + why + "\n  expected one of:\n" + getPerturbationSyntax());
 }
 
 double parseNumber(const std::string& spec, const std::string& field, const std::string& what) {

@@ -113,7 +113,7 @@ std::string toLower(std::string s) {
 }
 
 void checkOptions(const SimulationOptions& o) {
-  auto bad = [](const std::string& key, const std::string& why) { throw InputError({"", 0, 0, key}, why); };
+  auto bad = [](const std::string& key, const std::string& why) { throw InputError({"command line", 0, 0, key}, why); };
   if (!(o.speed >= 0) || !std::isfinite(o.speed)) bad("--speed", "must be a finite speed >= 0 m/s");
   if (!(o.duration > 0) || !std::isfinite(o.duration)) bad("--duration", "must be > 0 s");
   if (!(o.outputStep > 0)) bad("--output-step", "must be > 0 s");
@@ -129,7 +129,7 @@ IntegratorKind parseIntegratorKind(const std::string& name) {
   if (n == "rk3" || n == "rungekutta3") return IntegratorKind::RungeKutta3;
   if (n == "cpodes") return IntegratorKind::CPodes;
   if (n == "verlet") return IntegratorKind::Verlet;
-  throw InputError({"", 0, 0, "--integrator"},
+  throw InputError({"command line", 0, 0, "--integrator"},
                    "unknown integrator '" + name + "' (RungeKuttaMerson, RungeKutta3, CPodes, Verlet)");
 }
 
@@ -147,7 +147,7 @@ SpeedControl parseSpeedControl(const std::string& name) {
   const std::string n = toLower(name);
   if (n == "none") return SpeedControl::None;
   if (n == "pi") return SpeedControl::PI;
-  throw InputError({"", 0, 0, "--speed-control"}, "unknown speed control '" + name + "' (none or pi)");
+  throw InputError({"command line", 0, 0, "--speed-control"}, "unknown speed control '" + name + "' (none or pi)");
 }
 
 int SimulationResult::getColumnIndex(const std::string& name) const {
@@ -171,9 +171,9 @@ void checkPerturbations(const VehicleModel& model, const std::vector<Perturbatio
     // Hook: a force-based tyre plugin will take the lateral road displacement of its wheel as an
     // input (docs/simulation.md, "Road input"); no contact model offers that input yet.
     if (contact == "rolling_no_slip")
-      throw InputError({"", 0, 0, "--perturb"}, "'" + p.spec + "': needs a force-based tyre model; the contact model "
+      throw InputError({"command line", 0, 0, "--perturb"}, "'" + p.spec + "': needs a force-based tyre model; the contact model "
                                                 "'rolling_no_slip' is a rolling constraint without lateral compliance");
-    throw InputError({"", 0, 0, "--perturb"},
+    throw InputError({"command line", 0, 0, "--perturb"},
                      "'" + p.spec + "': the contact model '" + contact + "' takes no road displacement input");
   }
 }

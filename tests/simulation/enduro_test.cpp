@@ -9,6 +9,7 @@
 #include <iostream>
 
 #include "analysis/linearize.h"
+#include "io/input_error.h"
 #include "simulation/simulation.h"
 #include "simulation/simulation_output.h"
 
@@ -119,6 +120,44 @@ TEST(SimulationEnduro, IdentifiedWeaveAndWobbleMatchLinearEigenvalues) {
       EXPECT_LT(std::abs(found->dampingRatio - dampingRatio(ref)), 0.01) << name << ", v = " << v;
     }
   }
+}
+
+// The relaxation_linear tyre is force-based but has no road input yet: road-step is refused by name.
+TEST(SimulationEnduro, RoadStepIsRefusedUntilTyresTakeRoadInput) {
+  SimulationOptions o;
+  o.speed = 20;
+  o.perturbations = {parsePerturbation("road-step:rear_wheel:0.01:0.5")};
+  try {
+    runSimulation(getEnduroTorsion(), o);
+    ADD_FAILURE() << "road-step accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("'relaxation_linear' takes no road displacement input"), std::string::npos)
+        << e.what();
+  }
+}
+
+// Speed control with force-based tyres: after a lateral push at 20 m/s the PI controller brings the forward
+// speed back to the target while the motorcycle returns upright.
+TEST(SimulationEnduro, SpeedControlHoldsSpeedAfterPush) {
+  SimulationOptions o;
+  o.speed = 20;
+  o.duration = 20;
+  o.outputStep = 0.02;
+  o.perturbations = {parsePerturbation("lateral-force:rear_frame:500:0.2:0.2:halfsine")};
+  const SimulationResult r = runSimulation(getEnduroTorsion(), o);
+  ASSERT_EQ(r.status, SimulationStatus::Completed) << r.message;
+  double maxRoll = 0, minSpeed = 1e9;
+  for (size_t k = 0; k < r.rows.size(); ++k) {
+    maxRoll = std::max(maxRoll, std::abs(getDeviation(r, k, "roll")));
+    minSpeed = std::min(minSpeed, r.rows[k][r.getColumnIndex("forward_speed")]);
+  }
+  const double finalSpeed = r.rows.back()[r.getColumnIndex("forward_speed")];
+  std::cout << "enduro 20 m/s push: max |roll - trim| " << maxRoll << " rad, min speed " << minSpeed
+            << " m/s, final speed " << finalSpeed << " m/s, final roll " << getDeviation(r, r.rows.size() - 1, "roll")
+            << "\n";
+  EXPECT_GT(maxRoll, 1e-3);
+  EXPECT_NEAR(finalSpeed, 20, 1e-4);
+  EXPECT_LT(std::abs(getDeviation(r, r.rows.size() - 1, "roll")), 1e-5);
 }
 
 }  // namespace

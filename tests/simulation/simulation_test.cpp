@@ -72,6 +72,15 @@ TEST(SimulationRobustness, SelfStableRunSettlesToTrim) {
     EXPECT_NEAR(getLast(r, name), getTrim(r, name), 2e-5) << name;
   EXPECT_NEAR(getLast(r, "forward_speed"), 5, 1e-5);
   EXPECT_NEAR(getLast(r, "steer_torque"), getTrim(r, "steer_torque"), 1e-9);
+
+  // Coasting, the same pulses leave the forward speed changed (no drag, energy conserved apart from the
+  // pulses' work): the controller above did restore it.
+  o.speedControl = SpeedControl::None;
+  o.duration = 20;
+  const SimulationResult coast = runSimulation(getWhipple(), o);
+  ASSERT_EQ(coast.status, SimulationStatus::Completed) << coast.message;
+  std::cout << "coasting: final speed " << getLast(coast, "forward_speed") << " m/s\n";
+  EXPECT_GT(std::abs(getLast(coast, "forward_speed") - 5), 1e-3);
 }
 
 // At 2 m/s the benchmark's weave is unstable (Meijaard et al. 2007, Fig. 3): a lean kick grows until the
