@@ -284,15 +284,14 @@ SimulationResult runSimulation(const Scenario& scenario, PluginRegistry& registr
   for (const auto& n : model.getZNames()) res.columns.push_back(n);
   for (const char* n : {"steer_torque", "drive_torque", "lateral_force", "forward_speed", "energy"})
     res.columns.push_back(n);
-  State w = s;  // working copy for the outputs: assigning q, u, z costs less than copying a State
-  auto makeRow = [&](const State& st) {
-    w.setTime(st.getTime());
-    w.updQ() = st.getQ();
-    w.updU() = st.getU();
-    w.updZ() = st.getZ();
-    force->setSegment(w, force->getSegment(st));
+  // Outputs are evaluated on one working State (assigning y costs less than copying a State).
+  State w = s;
+  auto makeRow = [&](double t, const SimTK::Vector& y, int segment) {
+    w.setTime(t);
+    w.updY() = y;
+    force->setSegment(w, segment);
     system.realize(w, SimTK::Stage::Dynamics);
-    std::vector<double> row{w.getTime()};
+    std::vector<double> row{t};
     for (int i = 0; i < w.getNQ(); ++i) row.push_back(w.getQ()[i]);
     for (int i = 0; i < w.getNU(); ++i) row.push_back(w.getU()[i]);
     for (int i = 0; i < w.getNZ(); ++i) row.push_back(w.getZ()[i]);
@@ -303,29 +302,29 @@ SimulationResult runSimulation(const Scenario& scenario, PluginRegistry& registr
     row.push_back(system.calcEnergy(w));
     return row;
   };
-  res.trimRow = makeRow(s);
+  res.trimRow = makeRow(0, s.getY(), 0);
   applyInitialRates(model, s, opt.perturbations);
 
   const int rollColumn = res.getColumnIndex("roll");
-  auto record = [&](const State& st) {
-    res.rows.push_back(makeRow(st));
-    res.endTime = st.getTime();
+  auto record = [&](double t, const SimTK::Vector& y, int segment) {
+    res.rows.push_back(makeRow(t, y, segment));
+    res.endTime = t;
     const double roll = res.rows.back()[rollColumn];
     for (double v : res.rows.back())
       if (!std::isfinite(v)) {
         res.status = SimulationStatus::Failed;
-        res.message = "the state became non-finite at t = " + std::to_string(st.getTime()) + " s";
+        res.message = "the state became non-finite at t = " + std::to_string(t) + " s";
         return false;
       }
     if (std::abs(roll) > opt.fallRollLimit) {
       std::ostringstream os;
       os << "fell: |roll| = " << std::abs(roll) * 180 / M_PI << " deg exceeds the limit "
-         << opt.fallRollLimit * 180 / M_PI << " deg at t = " << st.getTime() << " s";
+         << opt.fallRollLimit * 180 / M_PI << " deg at t = " << t << " s";
       res.status = SimulationStatus::Fell;
       res.message = os.str();
       return false;
     }
-    if (opt.progress) opt.progress(st.getTime());
+    if (opt.progress) opt.progress(t);
     return true;
   };
 
@@ -336,25 +335,48 @@ SimulationResult runSimulation(const Scenario& scenario, PluginRegistry& registr
     integ->setAccuracy(opt.accuracy);
     integ->setConstraintTolerance(opt.constraintTolerance > 0 ? opt.constraintTolerance : opt.accuracy);
     integ->setProjectEveryStep(opt.projectEveryStep);
+    // Samples come from cubic Hermite interpolation of y between internal steps (y and ydot at both
+    // ends; the same order as the integrator's own interpolation, without its State copies).
+    integ->setReturnEveryInternalStep(true);
     integ->initialize(s);
-    bool running = record(integ->getState());
     int segment = 0, nextReport = 1;
     const int reports = static_cast<int>(std::ceil(opt.duration / opt.outputStep - 1e-9));
+    auto getReportTime = [&](int k) { return std::min(k * opt.outputStep, opt.duration); };
+    auto getDerivative = [&](const State& st) {
+      system.realize(st, SimTK::Stage::Acceleration);
+      return SimTK::Vector(st.getYDot());
+    };
+    double t0 = integ->getAdvancedTime();
+    SimTK::Vector y0 = integ->getAdvancedState().getY(), yd0 = getDerivative(integ->getAdvancedState());
+    bool running = record(t0, y0, segment);
+    SimTK::Vector y(y0.size());
     while (running && nextReport <= reports) {
-      const double tReport = std::min(nextReport * opt.outputStep, opt.duration);
       const double tEvent = segment + 1 < static_cast<int>(segmentStarts.size()) ? segmentStarts[segment + 1]
                                                                                  : SimTK::Infinity;
-      // Simbody returns at a scheduled event even when the step passed a report time, so report
-      // times are scheduled too while an event is pending (exact steps to reports until the last pulse).
-      const auto status = integ->stepTo(tReport, std::isfinite(tEvent) ? std::min(tEvent, tReport) : tEvent);
+      const auto status = integ->stepTo(opt.duration, tEvent);
       if (status == SimTK::Integrator::EndOfSimulation)
         throw std::runtime_error("the integrator ended the simulation at t = " + std::to_string(integ->getTime()));
-      if (integ->getAdvancedTime() >= tEvent) {  // switch pulses on or off (samples are right-continuous)
+      const double t1 = integ->getAdvancedTime();
+      if (!(t1 > t0)) continue;
+      const SimTK::Vector y1 = integ->getAdvancedState().getY();
+      const SimTK::Vector yd1 = getDerivative(integ->getAdvancedState());
+      const double h = t1 - t0, eps = 1e-12 * std::max(1.0, t1);
+      // Samples strictly inside the step (a sample at t1 waits for a pulse switch at t1).
+      for (double tr; running && nextReport <= reports && (tr = getReportTime(nextReport)) < t1 - eps; ++nextReport) {
+        const double x = (tr - t0) / h, x2 = x * x, x3 = x2 * x;
+        for (int i = 0; i < y.size(); ++i)
+          y[i] = (2 * x3 - 3 * x2 + 1) * y0[i] + (x3 - 2 * x2 + x) * h * yd0[i] + (3 * x2 - 2 * x3) * y1[i] +
+                 (x3 - x2) * h * yd1[i];
+        running = record(tr, y, segment);
+      }
+      t0 = t1, y0 = y1, yd0 = yd1;
+      if (t1 >= tEvent) {  // switch pulses on or off (samples are right-continuous)
         force->setSegment(integ->updAdvancedState(), ++segment);
         integ->reinitialize(SimTK::Stage::Dynamics, false);
+        yd0 = getDerivative(integ->getAdvancedState());
       }
-      if (integ->getTime() >= tReport - 1e-12 * std::max(1.0, tReport)) {
-        running = record(integ->getState());
+      if (running && nextReport <= reports && getReportTime(nextReport) <= t1 + eps) {
+        running = record(getReportTime(nextReport), y1, segment);
         ++nextReport;
       }
     }
