@@ -86,7 +86,9 @@ Scenario loadScenario(const std::string& file, const std::vector<std::string>& o
     s.geometry.wheelbase = g.getPositive("wheelbase_m");
     s.geometry.steerAxisTilt = g.getDouble("steer_axis_tilt_deg") * M_PI / 180.0;
     if (std::abs(s.geometry.steerAxisTilt) >= M_PI / 2) g.fail("steer_axis_tilt_deg", "must lie in (-90, 90) degrees");
-    if (g.has("trail_m") == g.has("normal_trail_m")) g.fail("", "give exactly one of trail_m and normal_trail_m");
+    if (!g.has("trail_m") && !g.has("normal_trail_m"))
+      g.fail("", "missing key 'geometry.trail_m' (or 'geometry.normal_trail_m')");
+    if (g.has("trail_m") && g.has("normal_trail_m")) g.fail("normal_trail_m", "give only one of trail_m and normal_trail_m");
     s.geometry.trail = g.has("trail_m") ? g.getDouble("trail_m")
                                         : g.getDouble("normal_trail_m") / std::cos(s.geometry.steerAxisTilt);
     g.finish();
