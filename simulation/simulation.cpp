@@ -284,6 +284,7 @@ SimulationResult runSimulation(const Scenario& scenario, PluginRegistry& registr
   for (const auto& n : model.getZNames()) res.columns.push_back(n);
   for (const char* n : {"steer_torque", "drive_torque", "lateral_force", "forward_speed", "energy"})
     res.columns.push_back(n);
+  for (const auto& c : opt.extraOutputs) res.columns.push_back(c.name);
   // Outputs are evaluated on one working State (assigning y costs less than copying a State).
   State w = s;
   auto makeRow = [&](double t, const SimTK::Vector& y, int segment) {
@@ -300,6 +301,7 @@ SimulationResult runSimulation(const Scenario& scenario, PluginRegistry& registr
     row.push_back(force->calcPulses(w, PerturbationKind::LateralForce));
     row.push_back(calcHeadingSpeed(model, w));
     row.push_back(system.calcEnergy(w));
+    for (const auto& c : opt.extraOutputs) row.push_back(c.calc(model, w));
     return row;
   };
   res.trimRow = makeRow(0, s.getY(), 0);

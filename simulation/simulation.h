@@ -25,6 +25,13 @@ std::string getIntegratorName(IntegratorKind kind);
 
 SpeedControl parseSpeedControl(const std::string& name);  ///< "none" or "pi"; InputError otherwise
 
+/// An extra output column evaluated on every sample (state realized to Dynamics), e.g. a tyre force
+/// once contact plugins expose them. Units are the channel's own.
+struct OutputChannel {
+  std::string name;
+  std::function<double(const VehicleModel& model, const SimTK::State& state)> calc;
+};
+
 struct SimulationOptions {
   double speed = 5;          ///< trim (and target) forward speed, m/s
   double duration = 10;      ///< simulated time, s
@@ -41,6 +48,8 @@ struct SimulationOptions {
   bool projectEveryStep = false;     ///< project onto the constraints after every step
   double fallRollLimit = M_PI / 3;   ///< |roll| beyond this ends the run as a fall, rad (60 deg)
   TrimOptions trim;
+  /// Extra columns appended after the standard ones, in this order.
+  std::vector<OutputChannel> extraOutputs;
   /// Called after every output sample with the simulated time (s); for progress bars.
   std::function<void(double time)> progress;
 };
@@ -54,7 +63,7 @@ enum class SimulationStatus {
 /// Sampled time histories. Columns: time (s); every q (rad, m) and u (rad/s, m/s) by model name;
 /// every z by name; steer_torque (total applied, N m); drive_torque (total, N m); lateral_force
 /// (sum of lateral-force pulses, N); forward_speed (rear wheel centre along the heading, m/s);
-/// energy (kinetic + gravitational, J).
+/// energy (kinetic + gravitational, J); then SimulationOptions::extraOutputs.
 struct SimulationResult {
   SimulationStatus status = SimulationStatus::Completed;
   std::string message;                      ///< why a run ended early (fall or failure), else empty

@@ -208,6 +208,17 @@ TEST(SimulationOutput, WritesTimeseriesPlotAndModes) {
   for (const char* n : {"time", "steer_torque", "drive_torque", "forward_speed", "energy"})
     EXPECT_NO_THROW(r.getColumnIndex(n)) << n;
 
+  // Extra output channels are evaluated on the sampled state.
+  o.extraOutputs = {{"front_wheel_centre_z", [](const VehicleModel& m, const SimTK::State& st) {
+                       return m.getFrontWheel().getBodyOriginLocation(st)[2];
+                     }}};
+  const SimulationResult withExtra = runSimulation(getWhipple(), o);
+  ASSERT_EQ(withExtra.status, SimulationStatus::Completed);
+  EXPECT_EQ(withExtra.columns.back(), "front_wheel_centre_z");
+  for (const auto& row : withExtra.rows)  // knife-edge front wheel centre height: r cos(lean of the wheel plane)
+    EXPECT_LE(row.back(), 0.35 + 1e-9);
+  EXPECT_NEAR(withExtra.rows.front().back(), 0.35, 1e-9);  // upright at the trim
+
   const auto dir = std::filesystem::temp_directory_path() / "motostab_sim_output_test";
   std::filesystem::remove_all(dir);
   writeTimeseries(dir, r);
