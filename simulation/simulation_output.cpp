@@ -36,7 +36,7 @@ void writeResponsePlot(const std::filesystem::path& dir, const SimulationResult&
   for (const auto& p : panels) {
     const int col = result.getColumnIndex(p.column) + 1;
     const bool angle = p.label.find("deg") != std::string::npos;
-    body += "  set ylabel " + gnuplotQuote(p.label) + "\n  plot 'timeseries.csv' skip 1 using 1:($" +
+    body += "  set ylabel " + gnuplotQuote(p.label) + " noenhanced\n  plot 'timeseries.csv' skip 1 using 1:($" +
             std::to_string(col) + (angle ? "*180/pi" : "") + ") with lines lw 2\n";
   }
   body += "  unset multiplot\n";
