@@ -3,6 +3,7 @@
 #include <benchmark/benchmark.h>
 
 #include "analysis/sweep.h"
+#include "bench/realize_loop.h"
 #include "scenario/scenario.h"
 
 namespace {
@@ -23,14 +24,7 @@ BENCHMARK(BM_EnduroTwistSweep401)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)
 
 void BM_EnduroTwistRealize(benchmark::State& st) {
   const motostab::VehicleModel model(motostab::loadScenario(kEnduro, {"swingarm.compliance=twist"}));
-  SimTK::State s = motostab::calcTrim(model, 20.0).state;
-  const int roll = model.getIndices().roll;
-  double d = 1e-6;
-  for (auto _ : st) {
-    s.updQ()[roll] = (d = -d);
-    model.getSystem().realize(s, SimTK::Stage::Acceleration);
-    benchmark::DoNotOptimize(s.getUDot()[0]);
-  }
+  motostab::bench::runRealizeLoop(st, model, motostab::calcTrim(model, 20.0).state, motostab::Slot::Q, model.getIndices().roll);
 }
 BENCHMARK(BM_EnduroTwistRealize)->Unit(benchmark::kMicrosecond);
 

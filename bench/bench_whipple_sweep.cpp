@@ -3,6 +3,7 @@
 #include <benchmark/benchmark.h>
 
 #include "analysis/sweep.h"
+#include "bench/realize_loop.h"
 #include "scenario/scenario.h"
 
 namespace {
@@ -33,27 +34,13 @@ BENCHMARK(BM_TrimAndLinearizeOneSpeed)->Unit(benchmark::kMicrosecond);
 
 void BM_RealizeAccelerationAfterQChange(benchmark::State& st) {
   const motostab::VehicleModel model(motostab::loadScenario(kWhipple));
-  SimTK::State s = motostab::calcTrim(model, 5.0).state;
-  const int roll = model.getIndices().roll;
-  double d = 1e-6;
-  for (auto _ : st) {
-    s.updQ()[roll] = (d = -d);
-    model.getSystem().realize(s, SimTK::Stage::Acceleration);
-    benchmark::DoNotOptimize(s.getUDot()[0]);
-  }
+  motostab::bench::runRealizeLoop(st, model, motostab::calcTrim(model, 5.0).state, motostab::Slot::Q, model.getIndices().roll);
 }
 BENCHMARK(BM_RealizeAccelerationAfterQChange)->Unit(benchmark::kMicrosecond);
 
 void BM_RealizeAccelerationAfterUChange(benchmark::State& st) {
   const motostab::VehicleModel model(motostab::loadScenario(kWhipple));
-  SimTK::State s = motostab::calcTrim(model, 5.0).state;
-  const int roll = model.getIndices().roll;
-  double d = 1e-6;
-  for (auto _ : st) {
-    s.updU()[roll] = (d = -d);
-    model.getSystem().realize(s, SimTK::Stage::Acceleration);
-    benchmark::DoNotOptimize(s.getUDot()[0]);
-  }
+  motostab::bench::runRealizeLoop(st, model, motostab::calcTrim(model, 5.0).state, motostab::Slot::U, model.getIndices().roll);
 }
 BENCHMARK(BM_RealizeAccelerationAfterUChange)->Unit(benchmark::kMicrosecond);
 
