@@ -41,6 +41,9 @@ class ContactModel {
   virtual void addWheel(BuildContext& context, const WheelSite& wheel) = 0;
   /// Names of auxiliary states (z) this model allocates, in allocation order, per wheel.
   virtual std::vector<std::string> getStateNames(const WheelSite& wheel) const { return {}; }
+  /// Applies a step of the road's lateral position under `wheel` (m, towards +y) to the state, as
+  /// at the instant the wheel meets it. Returns false if the model has no road input.
+  virtual bool applyLateralRoadStep(SimTK::State& state, const WheelSite& wheel, double offset) const { return false; }
 };
 
 /// Makes a contact model from its scenario parameters (the `contact` mapping; `model` is consumed).

@@ -168,14 +168,21 @@ void checkPerturbations(const VehicleModel& model, const std::vector<Perturbatio
   const std::string& contact = model.getScenario().contact.model;
   for (const auto& p : perturbations) {
     if (p.kind != PerturbationKind::RoadStep) continue;
-    // Hook: a force-based tyre plugin will take the lateral road displacement of its wheel as an
-    // input (docs/simulation.md, "Road input"); no contact model offers that input yet.
+    SimTK::State probe = model.getDefaultState();
+    if (model.applyLateralRoadStep(probe, p.body, p.amplitude)) continue;
     if (contact == "rolling_no_slip")
       throw InputError({"command line", 0, 0, "--perturb"}, "'" + p.spec + "': needs a force-based tyre model; the contact model "
                                                 "'rolling_no_slip' is a rolling constraint without lateral compliance");
     throw InputError({"command line", 0, 0, "--perturb"},
-                     "'" + p.spec + "': the contact model '" + contact + "' takes no road displacement input");
+                     "'" + p.spec + "': the contact model '" + contact + "' takes no road displacement input under " + p.body +
+                         " (a relaxation_linear tyre needs a relaxation length > 0)");
   }
+}
+
+// Applies the road steps that start at time t (s).
+void applyRoadSteps(const VehicleModel& model, State& s, const std::vector<Perturbation>& perturbations, double t) {
+  for (const auto& p : perturbations)
+    if (p.kind == PerturbationKind::RoadStep && std::abs(p.start - t) < 1e-12) model.applyLateralRoadStep(s, p.body, p.amplitude);
 }
 
 void applyInitialRates(const VehicleModel& model, State& s, const std::vector<Perturbation>& perturbations) {
@@ -250,6 +257,8 @@ SimulationResult runSimulation(const Scenario& scenario, PluginRegistry& registr
       for (double t : p.getSwitchTimes())
         if (t > 0 && t < opt.duration) segmentStarts.push_back(t);
     }
+  for (const auto& p : opt.perturbations)
+    if (p.kind == PerturbationKind::RoadStep && p.start > 0 && p.start < opt.duration) segmentStarts.push_back(p.start);
   std::sort(segmentStarts.begin(), segmentStarts.end());
   segmentStarts.erase(std::unique(segmentStarts.begin(), segmentStarts.end()), segmentStarts.end());
 
@@ -306,6 +315,7 @@ SimulationResult runSimulation(const Scenario& scenario, PluginRegistry& registr
   };
   res.trimRow = makeRow(0, s.getY(), 0);
   applyInitialRates(model, s, opt.perturbations);
+  applyRoadSteps(model, s, opt.perturbations, 0.0);
 
   const int rollColumn = res.getColumnIndex("roll");
   auto record = [&](double t, const SimTK::Vector& y, int segment) {
@@ -374,11 +384,12 @@ SimulationResult runSimulation(const Scenario& scenario, PluginRegistry& registr
       t0 = t1, y0 = y1, yd0 = yd1;
       if (t1 >= tEvent) {  // switch pulses on or off (samples are right-continuous)
         force->setSegment(integ->updAdvancedState(), ++segment);
-        integ->reinitialize(SimTK::Stage::Dynamics, false);
+        applyRoadSteps(model, integ->updAdvancedState(), opt.perturbations, segmentStarts[segment]);
+        integ->reinitialize(SimTK::Stage::Position, false);
         yd0 = getDerivative(integ->getAdvancedState());
       }
       if (running && nextReport <= reports && getReportTime(nextReport) <= t1 + eps) {
-        running = record(getReportTime(nextReport), y1, segment);
+        running = record(getReportTime(nextReport), integ->getAdvancedState().getY(), segment);  // after any road step
         ++nextReport;
       }
     }

@@ -1,5 +1,7 @@
 #include "tyres/relaxation_linear.h"
 
+#include <map>
+
 #include "tyres/rolling_no_slip.h"
 
 namespace motostab {
@@ -67,6 +69,14 @@ class LinearTyreForce : public SimTK::Force::Custom::Implementation {
     bodyForces[wheel_.getMobilizedBodyIndex()] += SpatialVec(c.r_CP_G % F + Mz * n, F);
   }
 
+  // The lagged slip is the carcass's lateral deflection over the relaxation length (stretched
+  // string): a road that moves by `offset` under the contact moves the patch with it.
+  bool applyRoadStep(State& s, double offset) const {
+    if (!zIndex_.isValid()) return false;
+    forces_.updZ(s)[zIndex_] += offset / p_.relaxationLength;
+    return true;
+  }
+
   SimTK::Real calcPotentialEnergy(const State& s) const override {
     const SimTK::Transform& X_GW = wheel_.getBodyTransform(s);
     const double d = -(X_GW.p()[2] + calcTorusContact(X_GW.R(), Vec3(0), R_, rho_).r_CP_G[2]);
@@ -85,7 +95,13 @@ class RelaxationLinear : public ContactModel {
  public:
   RelaxationLinear(const LinearTyreParameters& front, const LinearTyreParameters& rear) : front_(front), rear_(rear) {}
   void addWheel(BuildContext& ctx, const WheelSite& w) override {
-    SimTK::Force::Custom(ctx.forces, new LinearTyreForce(ctx.forces, w, paramsFor(w)));
+    auto* force = new LinearTyreForce(ctx.forces, w, paramsFor(w));
+    SimTK::Force::Custom(ctx.forces, force);  // the subsystem owns the force
+    forces_[w.name] = force;
+  }
+  bool applyLateralRoadStep(SimTK::State& s, const WheelSite& w, double offset) const override {
+    const auto it = forces_.find(w.name);
+    return it != forces_.end() && it->second->applyRoadStep(s, offset);
   }
   std::vector<std::string> getStateNames(const WheelSite& w) const override {
     if (paramsFor(w).relaxationLength <= 0) return {};
@@ -95,6 +111,7 @@ class RelaxationLinear : public ContactModel {
  private:
   const LinearTyreParameters& paramsFor(const WheelSite& w) const { return w.name == "front_wheel" ? front_ : rear_; }
   LinearTyreParameters front_, rear_;
+  std::map<std::string, const LinearTyreForce*> forces_;
 };
 
 }  // namespace

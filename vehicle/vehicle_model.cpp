@@ -97,6 +97,7 @@ void VehicleModel::build(PluginRegistry& registry, const std::vector<ModelExtens
   BuildContext ctx{system_, matter_, forces_, s.gravity};
   const WheelSite rear{"rear_wheel", rearWheel_, rR, s.rearWheel.crownRadius, loads[0]};
   const WheelSite front{"front_wheel", frontWheel_, rF, s.frontWheel.crownRadius, loads[1]};
+  wheelSites_ = {rear, front};
   for (const WheelSite* site : {&rear, &front}) {
     contact->addWheel(ctx, *site);
     for (const auto& n : contact->getStateNames(*site)) zNames_.push_back(n);
@@ -145,6 +146,12 @@ void VehicleModel::build(PluginRegistry& registry, const std::vector<ModelExtens
 
   defaultState_.updQ()[idx_.height] = rR;
   system_.realize(defaultState_, SimTK::Stage::Instance);
+}
+
+bool VehicleModel::applyLateralRoadStep(SimTK::State& state, const std::string& wheel, double offset) const {
+  for (const WheelSite& site : wheelSites_)
+    if (site.name == wheel) return contacts_.front()->applyLateralRoadStep(state, site, offset);
+  return false;
 }
 
 void VehicleModel::setInput(SimTK::State& state, Input which, double value) const {

@@ -68,6 +68,10 @@ class VehicleModel {
   void setInput(SimTK::State& state, Input which, double value) const;
   double getInput(const SimTK::State& state, Input which) const;
 
+  /// Steps the road's lateral position under "rear_wheel" or "front_wheel" by `offset` (m) in the
+  /// state; false when the contact model has no road input (e.g. a rolling constraint).
+  bool applyLateralRoadStep(SimTK::State& state, const std::string& wheel, double offset) const;
+
   /// Forward speed: velocity of the rear wheel centre along ground x, m/s.
   double getForwardSpeed(const SimTK::State& state) const { return state.getU()[idx_.x]; }
 
@@ -87,6 +91,7 @@ class VehicleModel {
   SimTK::Force::DiscreteForces inputs_;
   std::vector<std::unique_ptr<ContactModel>> contacts_;
   std::unique_ptr<SwingarmModel> swingarm_;
+  std::vector<WheelSite> wheelSites_;
   SimTK::State defaultState_;
   int nq_ = 0;
   CoordinateIndices idx_;
