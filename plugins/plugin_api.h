@@ -44,6 +44,10 @@ class ContactModel {
   /// Applies a step of the road's lateral position under `wheel` (m, towards +y) to the state, as
   /// at the instant the wheel meets it. Returns false if the model has no road input.
   virtual bool applyLateralRoadStep(SimTK::State& state, const WheelSite& wheel, double offset) const { return false; }
+  /// Names (with units) of the quantities calcOutputs reports for a wheel, e.g. forces and slips.
+  virtual std::vector<std::string> getOutputNames(const WheelSite& wheel) const { return {}; }
+  /// Their values in a state realized to Velocity.
+  virtual std::vector<double> calcOutputs(const SimTK::State& state, const WheelSite& wheel) const { return {}; }
 };
 
 /// Makes a contact model from its scenario parameters (the `contact` mapping; `model` is consumed).

@@ -293,6 +293,7 @@ SimulationResult runSimulation(const Scenario& scenario, PluginRegistry& registr
   for (const auto& n : model.getZNames()) res.columns.push_back(n);
   for (const char* n : {"steer_torque", "drive_torque", "lateral_force", "forward_speed", "energy"})
     res.columns.push_back(n);
+  for (const auto& n : model.getContactOutputNames()) res.columns.push_back(n);
   for (const auto& c : opt.extraOutputs) res.columns.push_back(c.name);
   // Outputs are evaluated on one working State (assigning y costs less than copying a State).
   State w = s;
@@ -310,6 +311,7 @@ SimulationResult runSimulation(const Scenario& scenario, PluginRegistry& registr
     row.push_back(force->calcPulses(w, PerturbationKind::LateralForce));
     row.push_back(calcHeadingSpeed(model, w));
     row.push_back(system.calcEnergy(w));
+    for (double v : model.calcContactOutputs(w)) row.push_back(v);
     for (const auto& c : opt.extraOutputs) row.push_back(c.calc(model, w));
     return row;
   };

@@ -35,8 +35,13 @@ class LinearTyreForce : public SimTK::Force::Custom::Implementation {
     if (p_.relaxationLength > 0) zIndex_ = forces_.allocateZ(s, SimTK::Vector(1, 0.0));
   }
 
-  void calcForce(const State& s, SimTK::Vector_<SpatialVec>& bodyForces, SimTK::Vector_<Vec3>&,
-                 SimTK::Vector&) const override {
+  // Contact quantities of a state realized to Velocity; the lagged slip's derivative beside them.
+  struct Quantities {
+    Vec3 r_CP, F_G;
+    double Fx = 0, Fy = 0, Fz = 0, Mz = 0, alpha = 0, kappa = 0, camber = 0, slipDot = 0;
+  };
+  Quantities calcQuantities(const State& s) const {
+    Quantities out;
     const SimTK::Transform& X_GW = wheel_.getBodyTransform(s);
     const Vec3& w = wheel_.getBodyAngularVelocity(s);
     const Vec3& vC = wheel_.getBodyOriginVelocity(s);
@@ -44,7 +49,7 @@ class LinearTyreForce : public SimTK::Force::Custom::Implementation {
     const Vec3 n(0, 0, 1);
     const double deflection = -(X_GW.p()[2] + c.r_CP_G[2]);
     const double deflectionRate = -(vC[2] + c.rDot_CP_G[2]);
-    const double Fz = deflection > 0 ? std::max(0.0, p_.radialStiffness * deflection + p_.radialDamping * deflectionRate) : 0.0;
+    out.Fz = deflection > 0 ? std::max(0.0, p_.radialStiffness * deflection + p_.radialDamping * deflectionRate) : 0.0;
 
     const Vec3 a = X_GW.R().y().asVec3();
     Vec3 eL = a % n;
@@ -53,20 +58,30 @@ class LinearTyreForce : public SimTK::Force::Custom::Implementation {
     const Vec3 vP = vC + w % c.r_CP_G;
     const double vx = ~vC * eL;
     const double V = std::sqrt(vx * vx + kSlipSpeedFloor * kSlipSpeedFloor);
-    const double kappa = -(~vP * eL) / V, alpha = -(~vP * eT) / V;
-    const double phi = -std::asin(std::max(-1.0, std::min(1.0, ~a * n)));
-    const double slipSteady = alpha + p_.camberStiffness / p_.corneringStiffness * phi;
+    out.kappa = -(~vP * eL) / V;
+    out.alpha = -(~vP * eT) / V;
+    out.camber = -std::asin(std::max(-1.0, std::min(1.0, ~a * n)));
+    const double slipSteady = out.alpha + p_.camberStiffness / p_.corneringStiffness * out.camber;
     double slip = slipSteady;
     if (zIndex_.isValid()) {
       slip = forces_.getZ(s)[zIndex_];
-      forces_.updZDot(s)[zIndex_] = V / p_.relaxationLength * (slipSteady - slip);
+      out.slipDot = V / p_.relaxationLength * (slipSteady - slip);
     }
-    const double mu = p_.corneringStiffness * slip;
-    const Vec3 F = Fz * (p_.longitudinalStiffness * kappa * eL + mu * eT) + Fz * n;
     // The slip part of the lagged state drives the self-aligning moment too (alpha lagged as Fy).
-    const double alphaLagged = slip - p_.camberStiffness / p_.corneringStiffness * phi;
-    const double Mz = Fz * (p_.selfAligningStiffness * alphaLagged + p_.twistingStiffness * phi);
-    bodyForces[wheel_.getMobilizedBodyIndex()] += SpatialVec(c.r_CP_G % F + Mz * n, F);
+    const double alphaLagged = slip - p_.camberStiffness / p_.corneringStiffness * out.camber;
+    out.Fx = out.Fz * p_.longitudinalStiffness * out.kappa;
+    out.Fy = out.Fz * p_.corneringStiffness * slip;
+    out.Mz = out.Fz * (p_.selfAligningStiffness * alphaLagged + p_.twistingStiffness * out.camber);
+    out.r_CP = c.r_CP_G;
+    out.F_G = out.Fx * eL + out.Fy * eT + out.Fz * n;
+    return out;
+  }
+
+  void calcForce(const State& s, SimTK::Vector_<SpatialVec>& bodyForces, SimTK::Vector_<Vec3>&,
+                 SimTK::Vector&) const override {
+    const Quantities q = calcQuantities(s);
+    if (zIndex_.isValid()) forces_.updZDot(s)[zIndex_] = q.slipDot;
+    bodyForces[wheel_.getMobilizedBodyIndex()] += SpatialVec(q.r_CP % q.F_G + q.Mz * Vec3(0, 0, 1), q.F_G);
   }
 
   // The lagged slip is the carcass's lateral deflection over the relaxation length (stretched
@@ -98,6 +113,14 @@ class RelaxationLinear : public ContactModel {
     auto* force = new LinearTyreForce(ctx.forces, w, paramsFor(w));
     SimTK::Force::Custom(ctx.forces, force);  // the subsystem owns the force
     forces_[w.name] = force;
+  }
+  std::vector<std::string> getOutputNames(const WheelSite& w) const override {
+    const std::string t = w.name == "front_wheel" ? "front_tyre_" : "rear_tyre_";
+    return {t + "Fx_N", t + "Fy_N", t + "Fz_N", t + "Mz_Nm", t + "slip_angle_rad", t + "slip_ratio", t + "camber_rad"};
+  }
+  std::vector<double> calcOutputs(const SimTK::State& s, const WheelSite& w) const override {
+    const auto q = forces_.at(w.name)->calcQuantities(s);
+    return {q.Fx, q.Fy, q.Fz, q.Mz, q.alpha, q.kappa, q.camber};
   }
   bool applyLateralRoadStep(SimTK::State& s, const WheelSite& w, double offset) const override {
     const auto it = forces_.find(w.name);

@@ -154,6 +154,20 @@ bool VehicleModel::applyLateralRoadStep(SimTK::State& state, const std::string& 
   return false;
 }
 
+std::vector<std::string> VehicleModel::getContactOutputNames() const {
+  std::vector<std::string> out;
+  for (const WheelSite& site : wheelSites_)
+    for (const auto& n : contacts_.front()->getOutputNames(site)) out.push_back(n);
+  return out;
+}
+
+std::vector<double> VehicleModel::calcContactOutputs(const SimTK::State& state) const {
+  std::vector<double> out;
+  for (const WheelSite& site : wheelSites_)
+    for (double v : contacts_.front()->calcOutputs(state, site)) out.push_back(v);
+  return out;
+}
+
 void VehicleModel::setInput(SimTK::State& state, Input which, double value) const {
   switch (which) {
     case Input::SteerTorque:

@@ -72,6 +72,11 @@ class VehicleModel {
   /// state; false when the contact model has no road input (e.g. a rolling constraint).
   bool applyLateralRoadStep(SimTK::State& state, const std::string& wheel, double offset) const;
 
+  /// Named contact outputs of both wheels (tyre forces, slips; none for rolling constraints).
+  std::vector<std::string> getContactOutputNames() const;
+  /// Their values, state realized to Velocity.
+  std::vector<double> calcContactOutputs(const SimTK::State& state) const;
+
   /// Forward speed: velocity of the rear wheel centre along ground x, m/s.
   double getForwardSpeed(const SimTK::State& state) const { return state.getU()[idx_.x]; }
 

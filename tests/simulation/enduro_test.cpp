@@ -143,6 +143,9 @@ TEST(SimulationEnduro, RoadStepDeflectsTheTyreByOffsetOverSigma) {
   // Over one 1 ms sample the slip relaxes by at most V/sigma * dt * |slip|; the jump dominates.
   EXPECT_NEAR(slip[k] - slip[k - 1], 0.01 / sigma, 0.02 * 0.01 / sigma);
   EXPECT_NEAR(slip[k - 1], 0, 1e-5);  // nothing moved before the step (integrator accuracy 1e-6)
+  // The tyre's own output column follows its state: Fy = Fz k_alpha s (Table 6 k_alpha, rear 11.8).
+  const auto Fy = r.getColumn("rear_tyre_Fy_N"), Fz = r.getColumn("rear_tyre_Fz_N");
+  EXPECT_NEAR(Fy[k + 1], Fz[k + 1] * 11.8 * slip[k + 1], 1e-9 * Fz[k + 1]);
   double peak = 0;
   for (double v : roll) peak = std::max(peak, std::abs(v));
   EXPECT_GT(peak, 1e-4);
