@@ -110,7 +110,8 @@ LinearModel linearize(const VehicleModel& model, const TrimResult& trim, const L
   Eigen::MatrixXd A(n, n);
   for (int j = 0; j < n; ++j) {
     const StateEntry& e = lin.states[j].entry;
-    if (isCyclicQ(e) && !opt.computeCyclicColumns) {
+    const bool knownDeadYaw = e.slot == Slot::Q && e.index == ix.yaw && opt.removeYaw == 1;
+    if ((isCyclicQ(e) && !opt.computeCyclicColumns) || knownDeadYaw) {
       A.col(j).setZero();
       continue;
     }
@@ -127,10 +128,10 @@ LinearModel linearize(const VehicleModel& model, const TrimResult& trim, const L
   }
   lin.inputNames = VehicleModel::getInputNames();
   // Accelerations are affine in the generalized input forces: a one-sided unit difference is exact.
-  Eigen::MatrixXd B(n, kNumInputs);
+  Eigen::MatrixXd B(n, opt.computeB ? kNumInputs : 0);
   Eigen::VectorXd y0, y1;
-  fn.calcYDot(s, y0);
-  for (int k = 0; k < kNumInputs; ++k) {
+  if (opt.computeB) fn.calcYDot(s, y0);
+  for (int k = 0; k < B.cols(); ++k) {
     const StateEntry in{Slot::Input, k};
     const double base = fn.get(s, in);
     fn.set(s, in, base + 1.0);
@@ -166,7 +167,7 @@ LinearModel linearize(const VehicleModel& model, const TrimResult& trim, const L
     lin.removedColumns.push_back({lin.states[j].name, kept});
   }
   lin.A.resize(keep.size(), keep.size());
-  lin.B.resize(keep.size(), kNumInputs);
+  lin.B.resize(keep.size(), B.cols());
   std::vector<LinearState> kept;
   for (size_t a = 0; a < keep.size(); ++a) {
     kept.push_back(lin.states[keep[a]]);

@@ -18,6 +18,8 @@ struct LinearizeOptions {
   /// Yaw is removed when no kept row depends on it (-1, automatic), always (1) or never (0).
   /// Sweeps fix it so that every speed has the same states.
   int removeYaw = -1;
+  /// Compute B (sweeps do not need it: B is then empty).
+  bool computeB = true;
 };
 
 /// One state of the linear model.

@@ -146,7 +146,8 @@ void labelBranches(const std::vector<LinearModel>& models, double wheelbase, std
     br.label = "other";
     if (st.neutral) {
       br.label = "neutral";
-    } else if (c[int(DofGroup::Compliance)] > 0.15 && oscillatory) {
+    } else if (oscillatory && c[int(DofGroup::Compliance)] > 0.5 * (1.0 - c[int(DofGroup::Relaxation)])) {
+      // Compliance leads the mechanical content (tyre lag states excluded).
       const auto top = std::max_element(st.compliance.begin(), st.compliance.end(),
                                         [](const auto& a, const auto& b) { return a.second < b.second; });
       br.label = top->first;

@@ -15,6 +15,7 @@ struct SweepOptions {
     linearize.computeCyclicColumns = false;
     linearize.order = 2;
     linearize.step = 1e-5;
+    linearize.computeB = false;
   }
   double start = 0, stop = 10, step = 0.1;  ///< m/s
   TrimOptions trim;
