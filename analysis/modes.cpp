@@ -59,7 +59,9 @@ double calcMac(const LinearModel& a, int ka, const LinearModel& b, int kb) {
   std::complex<double> dot = 0;
   double na = 0, nb = 0;
   for (size_t i = 0; i < a.states.size(); ++i) {
-    const int j = b.findState(a.states[i].name);
+    // Same layout at the same speed grid is the rule; look names up only when it differs.
+    const int j = (i < b.states.size() && b.states[i].name == a.states[i].name) ? static_cast<int>(i)
+                                                                                : b.findState(a.states[i].name);
     if (j < 0) continue;
     const auto x = a.eigenvectors(i, ka), y = b.eigenvectors(j, kb);
     dot += std::conj(x) * y;

@@ -96,18 +96,45 @@ SweepResult runSweep(const VehicleModel& model, const SweepOptions& opt) {
   }
   out.branches = trackModes(out.models, model.getScenario().geometry.wheelbase);
 
+  // Every sign change of a labelled mode's real part, refined by Brent's method; crossings are
+  // independent, so workers share them (each with its own model).
+  struct Crossing {
+    const ModeBranch* branch;
+    size_t k;
+    double speed = 0;
+  };
+  std::vector<Crossing> crossings;
   for (const ModeBranch& br : out.branches) {
     if (br.label == "neutral" || br.label == "other") continue;
-    for (size_t k = 0; k + 1 < out.speeds.size(); ++k) {
+    for (size_t k = 0; k + 1 < n; ++k) {
       const double f0 = br.eigenvalue[k].real(), f1 = br.eigenvalue[k + 1].real();
-      if (!(f0 * f1 < 0 || (f1 == 0 && f0 != 0))) continue;
-      auto f = [&](double v) { return calcBranchRealPart(model, out, br, k, v, fixed); };
-      const double v = findRoot(f, out.speeds[k], out.speeds[k + 1], f0, f1, opt.criticalSpeedTolerance);
-      bool duplicate = false;  // both members of a complex pair cross together
-      for (const auto& c : out.criticalSpeeds)
-        if (c.mode == br.label && std::abs(c.speed - v) < 1e-6) duplicate = true;
-      if (!duplicate) out.criticalSpeeds.push_back({br.label, v, f0 > 0});
+      // One member of a complex pair stands for both.
+      if ((f0 * f1 < 0 || (f1 == 0 && f0 != 0)) && br.eigenvalue[k].imag() >= 0) crossings.push_back({&br, k});
     }
+  }
+  auto refine = [&](const VehicleModel& m, Crossing& c) {
+    const double f0 = c.branch->eigenvalue[c.k].real(), f1 = c.branch->eigenvalue[c.k + 1].real();
+    auto f = [&](double v) { return calcBranchRealPart(m, out, *c.branch, c.k, v, fixed); };
+    c.speed = findRoot(f, out.speeds[c.k], out.speeds[c.k + 1], f0, f1, opt.criticalSpeedTolerance);
+  };
+  const size_t refiners = std::max<size_t>(1, std::min<size_t>(opt.threads, crossings.size()));
+  if (refiners == 1) {
+    for (auto& c : crossings) refine(model, c);
+  } else {
+    std::vector<std::future<void>> jobs;
+    for (size_t w = 0; w < refiners; ++w)
+      jobs.push_back(std::async(std::launch::async, [&, w]() {
+        std::unique_ptr<VehicleModel> own;
+        if (w > 0) own = std::make_unique<VehicleModel>(model.getScenario());
+        for (size_t i = w; i < crossings.size(); i += refiners) refine(w > 0 ? *own : model, crossings[i]);
+      }));
+    for (auto& j : jobs) j.get();
+  }
+  for (const auto& c : crossings) {
+    bool duplicate = false;  // both members of a complex pair cross together
+    for (const auto& e : out.criticalSpeeds)
+      if (e.mode == c.branch->label && std::abs(e.speed - c.speed) < 1e-6) duplicate = true;
+    if (!duplicate) out.criticalSpeeds.push_back({c.branch->label, c.speed, c.branch->eigenvalue[c.k].real() > 0});
   }
   return out;
 }
