@@ -11,10 +11,7 @@ int LinearModel::findState(const std::string& name) const {
   return -1;
 }
 
-namespace {
-
-// Greedy choice of dependent columns of G (rows) in priority order, keeping G_dep full rank.
-std::vector<int> chooseDependent(const Eigen::MatrixXd& G, const std::vector<int>& priority) {
+std::vector<int> chooseDependentColumns(const Eigen::MatrixXd& G, const std::vector<int>& priority) {
   std::vector<int> dep;
   const int m = static_cast<int>(G.rows());
   for (int c : priority) {
@@ -28,6 +25,8 @@ std::vector<int> chooseDependent(const Eigen::MatrixXd& G, const std::vector<int
   }
   return dep;
 }
+
+namespace {
 
 std::vector<int> withPriority(const std::vector<int>& first, int n) {
   std::vector<int> out;
@@ -82,8 +81,8 @@ LinearModel linearize(const VehicleModel& model, const TrimResult& trim, const L
   // Dependent coordinates: heights and pitch first, then the rates that the contact fixes.
   std::vector<int> depQ, depU;
   if (m > 0) {
-    depQ = chooseDependent(G.topLeftCorner(mp, nq), withPriority({ix.height, ix.pitch}, nq));
-    depU = chooseDependent(G.bottomRightCorner(m - mp, nu),
+    depQ = chooseDependentColumns(G.topLeftCorner(mp, nq), withPriority({ix.height, ix.pitch}, nq));
+    depU = chooseDependentColumns(G.bottomRightCorner(m - mp, nu),
                            withPriority({ix.height, ix.pitch, ix.rearSpin, ix.frontSpin, ix.y, ix.yaw}, nu));
     if (static_cast<int>(depQ.size()) != mp || static_cast<int>(depU.size()) != m - mp)
       throw std::runtime_error("linearize: constraints are redundant or singular at the trim");

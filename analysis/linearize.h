@@ -43,6 +43,10 @@ struct LinearModel {
   int findState(const std::string& name) const;
 };
 
+/// Greedy choice of dependent columns of G in `priority` order, keeping them linearly independent
+/// (QR rank, threshold 1e-9), until there are as many as G has rows.
+std::vector<int> chooseDependentColumns(const Eigen::MatrixXd& G, const std::vector<int>& priority);
+
 /// Linearises `model` about `trim` (seed eq. 26) and computes eigenvalues and eigenvectors.
 LinearModel linearize(const VehicleModel& model, const TrimResult& trim, const LinearizeOptions& options = {});
 

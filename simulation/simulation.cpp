@@ -6,6 +6,7 @@
 #include <memory>
 #include <sstream>
 
+#include "analysis/linearize.h"
 #include "analysis/state_function.h"
 #include "io/input_error.h"
 
@@ -215,16 +216,7 @@ void applyInitialRates(const VehicleModel& model, State& s, const std::vector<Pe
   for (int j = 0; j < nu; ++j)
     if (j != ix.roll && j != ix.steer && j != ix.x && std::find(priority.begin(), priority.end(), j) == priority.end())
       priority.push_back(j);
-  std::vector<int> dep;
-  for (int c : priority) {
-    if (static_cast<int>(dep.size()) == mv) break;
-    Eigen::MatrixXd sub(mv, dep.size() + 1);
-    for (size_t k = 0; k < dep.size(); ++k) sub.col(k) = G.col(dep[k]);
-    sub.col(dep.size()) = G.col(c);
-    Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr(sub);
-    qr.setThreshold(1e-9);
-    if (qr.rank() == static_cast<int>(dep.size()) + 1) dep.push_back(c);
-  }
+  const std::vector<int> dep = chooseDependentColumns(G, priority);
   if (static_cast<int>(dep.size()) != mv)
     throw std::runtime_error("initial rates: the velocity constraints cannot be solved for the dependent rates");
   Eigen::MatrixXd Gdep(mv, mv);
