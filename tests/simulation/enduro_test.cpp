@@ -14,6 +14,7 @@
 #include "io/input_error.h"
 #include "simulation/simulation.h"
 #include "simulation/simulation_output.h"
+#include "tests/simulation/linear_reference.h"
 
 namespace motostab::simulation {
 namespace {
@@ -24,15 +25,7 @@ const Scenario& getEnduroTorsion() {
   return s;
 }
 
-LinearModel linearizeAt(double speed) {
-  const VehicleModel model(getEnduroTorsion());
-  return linearize(model, calcTrim(model, speed));
-}
-
-double getDeviation(const SimulationResult& r, size_t k, const std::string& name) {
-  const int j = r.getColumnIndex(name);
-  return r.rows[k][j] - r.trimRow[j];
-}
+LinearModel linearizeAt(double speed) { return linearizeScenarioAt(getEnduroTorsion(), speed); }
 
 // Issue 5 sec. 3: roll, steer and swingarm torsion follow exp(A t) x0 to 1e-4 relative over 2 s at 3 speeds.
 TEST(SimulationEnduro, SmallPerturbationFollowsMatrixExponential) {
@@ -47,18 +40,11 @@ TEST(SimulationEnduro, SmallPerturbationFollowsMatrixExponential) {
     o.perturbations = {parsePerturbation("roll-rate:1e-4"), parsePerturbation("steer-rate:-2e-4")};
     const SimulationResult r = runSimulation(getEnduroTorsion(), o);
     ASSERT_EQ(r.status, SimulationStatus::Completed) << r.message;
-    const int n = static_cast<int>(lin.states.size());
-    Eigen::VectorXd x0(n);
-    for (int i = 0; i < n; ++i) x0[i] = getDeviation(r, 0, lin.states[i].name);
+    const Eigen::VectorXd x0 = readInitialDeviation(r, lin);
     for (const std::string name : {"roll", "steer", "swingarm_torsion"}) {
-      const int i = lin.findState(name);
-      ASSERT_GE(i, 0) << name;
-      double maxErr = 0, maxRef = 0;
-      for (size_t k = 0; k < r.rows.size(); ++k) {
-        const double ref = (lin.A * r.rows[k][0]).exp().row(i).dot(x0);
-        maxErr = std::max(maxErr, std::abs(getDeviation(r, k, name) - ref));
-        maxRef = std::max(maxRef, std::abs(ref));
-      }
+      ASSERT_GE(lin.findState(name), 0) << name;
+      double maxRef = 0;
+      const double maxErr = calcRelativeDeviationFromLinear(r, lin, x0, name, maxRef) * maxRef;
       std::cout << "enduro torsion v = " << v << " m/s, " << name << ": max |nonlinear - linear| / max |linear| = "
                 << maxErr / maxRef << " (max |linear| " << maxRef << ", " << r.steps << " steps)\n";
       // The torsion angle is tiny (about 2e-7 rad): its error reaches the integrator's absolute floor, so it

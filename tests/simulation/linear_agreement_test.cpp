@@ -11,6 +11,7 @@
 
 #include "analysis/linearize.h"
 #include "simulation/simulation.h"
+#include "tests/simulation/linear_reference.h"
 #include "simulation/simulation_output.h"
 
 namespace motostab::simulation {
@@ -21,16 +22,7 @@ const Scenario& getWhipple() {
   return s;
 }
 
-LinearModel linearizeAt(double speed) {
-  const VehicleModel model(getWhipple());
-  return linearize(model, calcTrim(model, speed));
-}
-
-// Deviation of column `name` from the trim at sample k.
-double getDeviation(const SimulationResult& r, size_t k, const std::string& name) {
-  const int j = r.getColumnIndex(name);
-  return r.rows[k][j] - r.trimRow[j];
-}
+LinearModel linearizeAt(double speed) { return linearizeScenarioAt(getWhipple(), speed); }
 
 // (a) For a small initial roll- and steer-rate offset, roll and steer follow exp(A t) x0 over 2 s.
 // x0 is read from the simulation's first sample by state name (roll, steer, roll_rate, vx, steer_rate).
@@ -48,21 +40,12 @@ TEST(SimulationLinear, SmallPerturbationFollowsMatrixExponential) {
     ASSERT_EQ(r.status, SimulationStatus::Completed) << r.message;
     ASSERT_EQ(r.rows.size(), 201u);
 
-    const int n = static_cast<int>(lin.states.size());
-    Eigen::VectorXd x0(n);
-    for (int i = 0; i < n; ++i) x0[i] = getDeviation(r, 0, lin.states[i].name);
+    const Eigen::VectorXd x0 = readInitialDeviation(r, lin);
     ASSERT_NEAR(x0[lin.findState("roll_rate")], 1e-4, 1e-15);
     ASSERT_NEAR(x0[lin.findState("steer_rate")], -2e-4, 1e-15);
     for (const std::string name : {"roll", "steer"}) {
-      const int i = lin.findState(name);
-      double maxErr = 0, maxRef = 0;
-      for (size_t k = 0; k < r.rows.size(); ++k) {
-        const double t = r.rows[k][0];
-        const Eigen::MatrixXd expAt = (lin.A * t).exp();
-        const double ref = expAt.row(i).dot(x0);
-        maxErr = std::max(maxErr, std::abs(getDeviation(r, k, name) - ref));
-        maxRef = std::max(maxRef, std::abs(ref));
-      }
+      double maxRef = 0;
+      const double maxErr = calcRelativeDeviationFromLinear(r, lin, x0, name, maxRef) * maxRef;
       std::cout << "v = " << v << " m/s, " << name << ": max |nonlinear - linear| / max |linear| = " << maxErr / maxRef
                 << " (max |linear| " << maxRef << ")\n";
       EXPECT_LT(maxErr / maxRef, 1e-4) << "v = " << v << ", " << name;
