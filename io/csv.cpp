@@ -10,15 +10,6 @@
 namespace motostab {
 namespace {
 
-std::vector<std::string> splitCells(const std::string& line) {
-  std::vector<std::string> cells;
-  std::string cell;
-  std::stringstream ss(line);
-  while (std::getline(ss, cell, ',')) cells.push_back(cell);
-  if (!line.empty() && line.back() == ',') cells.push_back("");
-  return cells;
-}
-
 std::string trim(const std::string& s) {
   const auto b = s.find_first_not_of(" \t\r");
   if (b == std::string::npos) return "";
@@ -27,6 +18,15 @@ std::string trim(const std::string& s) {
 }
 
 }  // namespace
+
+std::vector<std::string> splitFields(const std::string& text, char separator) {
+  std::vector<std::string> out;
+  std::string part;
+  std::stringstream ss(text);
+  while (std::getline(ss, part, separator)) out.push_back(part);
+  if (!text.empty() && text.back() == separator) out.push_back("");
+  return out;
+}
 
 int CsvTable::getColumnIndex(const std::string& name) const {
   for (size_t j = 0; j < header.size(); ++j)
@@ -55,7 +55,7 @@ CsvTable readCsv(const std::filesystem::path& path) {
     ++lineNo;
     const std::string t = trim(line);
     if (t.empty() || t[0] == '#') continue;
-    auto cells = splitCells(t);
+    auto cells = splitFields(t, ',');
     if (table.header.empty()) {
       for (auto& c : cells) table.header.push_back(trim(c));
       continue;

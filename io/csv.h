@@ -24,6 +24,9 @@ struct CsvTable {
 /// cell is an InputError naming the file, line and column name.
 CsvTable readCsv(const std::filesystem::path& path);
 
+/// Splits `text` at every `separator`; a trailing separator yields a trailing empty field.
+std::vector<std::string> splitFields(const std::string& text, char separator);
+
 /// Formats a number with `significantDigits` (17 round-trips a double exactly).
 std::string formatNumber(double value, int significantDigits = 17);
 

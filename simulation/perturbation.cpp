@@ -4,20 +4,12 @@
 #include <cstdlib>
 #include <sstream>
 
+#include "io/csv.h"
 #include "io/input_error.h"
 
 namespace motostab::simulation {
 
 namespace {
-
-std::vector<std::string> splitFields(const std::string& text) {
-  std::vector<std::string> out;
-  std::string part;
-  std::stringstream ss(text);
-  while (std::getline(ss, part, ':')) out.push_back(part);
-  if (!text.empty() && text.back() == ':') out.push_back("");
-  return out;
-}
 
 [[noreturn]] void fail(const std::string& spec, const std::string& why) {
   throw InputError({"command line", 0, 0, "--perturb"}, "'" + spec + "': " + why + "\n  expected one of:\n" + getPerturbationSyntax());
@@ -76,7 +68,7 @@ std::vector<double> Perturbation::getSwitchTimes() const {
 }
 
 Perturbation parsePerturbation(const std::string& spec) {
-  const auto f = splitFields(spec);
+  const auto f = splitFields(spec, ':');
   if (f.empty() || f[0].empty()) fail(spec, "empty perturbation");
   Perturbation p;
   p.spec = spec;

@@ -31,13 +31,7 @@ LinearModel linearizeAt(double speed) { return linearizeScenarioAt(getEnduroTors
 TEST(SimulationEnduro, SmallPerturbationFollowsMatrixExponential) {
   for (double v : {10.0, 20.0, 30.0}) {
     const LinearModel lin = linearizeAt(v);
-    SimulationOptions o;
-    o.speed = v;
-    o.duration = 2;
-    o.outputStep = 0.01;
-    o.speedControl = SpeedControl::None;
-    o.accuracy = 1e-10;
-    o.perturbations = {parsePerturbation("roll-rate:1e-4"), parsePerturbation("steer-rate:-2e-4")};
+    const SimulationOptions o = makeSmallRateKick(v, 1e-10);
     const SimulationResult r = runSimulation(getEnduroTorsion(), o);
     ASSERT_EQ(r.status, SimulationStatus::Completed) << r.message;
     const Eigen::VectorXd x0 = readInitialDeviation(r, lin);

@@ -29,13 +29,7 @@ LinearModel linearizeAt(double speed) { return linearizeScenarioAt(getWhipple(),
 TEST(SimulationLinear, SmallPerturbationFollowsMatrixExponential) {
   for (double v : {3.0, 5.0, 7.0}) {
     const LinearModel lin = linearizeAt(v);
-    SimulationOptions o;
-    o.speed = v;
-    o.duration = 2;
-    o.outputStep = 0.01;
-    o.speedControl = SpeedControl::None;
-    o.accuracy = 1e-11;
-    o.perturbations = {parsePerturbation("roll-rate:1e-4"), parsePerturbation("steer-rate:-2e-4")};
+    const SimulationOptions o = makeSmallRateKick(v, 1e-11);
     const SimulationResult r = runSimulation(getWhipple(), o);
     ASSERT_EQ(r.status, SimulationStatus::Completed) << r.message;
     ASSERT_EQ(r.rows.size(), 201u);

@@ -7,6 +7,7 @@
 #include <cmath>
 
 #include "analysis/linearize.h"
+#include "simulation/perturbation.h"
 #include "simulation/simulation.h"
 
 namespace motostab::simulation {
@@ -14,6 +15,19 @@ namespace motostab::simulation {
 inline LinearModel linearizeScenarioAt(const Scenario& scenario, double speed) {
   const VehicleModel model(scenario);
   return linearize(model, calcTrim(model, speed));
+}
+
+/// A 2 s coasting run from the trim at `speed` (m/s) after a small roll- and steer-rate kick
+/// (1e-4 and -2e-4 rad/s), sampled every 10 ms, at integrator accuracy `accuracy`.
+inline SimulationOptions makeSmallRateKick(double speed, double accuracy) {
+  SimulationOptions o;
+  o.speed = speed;
+  o.duration = 2;
+  o.outputStep = 0.01;
+  o.speedControl = SpeedControl::None;
+  o.accuracy = accuracy;
+  o.perturbations = {parsePerturbation("roll-rate:1e-4"), parsePerturbation("steer-rate:-2e-4")};
+  return o;
 }
 
 /// Deviation of column `name` from the trim at sample k.
