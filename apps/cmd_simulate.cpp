@@ -15,7 +15,7 @@ namespace motostab::cli {
 namespace {
 
 struct SimulateArgs {
-  std::string scenario, out, speedControl = "pi", integrator = "RungeKuttaMerson";
+  std::string scenario, out, speedControl = "pi", integrator = "auto";
   std::vector<std::string> perturb, overrides;
   double fallLimitDeg = 60;
   bool identify = false;
@@ -71,7 +71,7 @@ void runSimulate(SimulateArgs a) {
 
   writeTimeseries(out, result);  // complete, also after a fall or a failure
   std::cout << "Simulated " << result.endTime << " s of " << scenario.name << " at " << o.speed << " m/s in "
-            << result.wallSeconds << " s wall (" << result.steps << " steps, "
+            << result.wallSeconds << " s wall (" << result.steps << " " << result.integrator << " steps, "
             << result.endTime / std::max(result.wallSeconds, 1e-9) << "x real time)\n";
   if (result.status != simulation::SimulationStatus::Completed) std::cout << result.message << "\n";
   std::cout << "Wrote " << (out / "timeseries.csv").string() << "\n";
@@ -102,7 +102,7 @@ void registerSimulateCommands(CLI::App& app) {
   cmd->add_option("--out", a->out, "Output folder (default: <scenario name>-simulation)");
   cmd->add_option("--speed-control", a->speedControl, "none (coast) or pi (drive-torque PI controller)")
       ->capture_default_str();
-  cmd->add_option("--integrator", a->integrator, "RungeKuttaMerson, RungeKutta3, CPodes or Verlet")
+  cmd->add_option("--integrator", a->integrator, "auto (ROS34PW2 without constraints, else RungeKuttaMerson), ROS34PW2, RungeKuttaMerson, RungeKutta3, CPodes or Verlet")
       ->capture_default_str();
   cmd->add_option("--accuracy", a->options.accuracy, "Integrator relative accuracy")->capture_default_str();
   cmd->add_option("--output-step", a->options.outputStep, "Sampling interval of the outputs, s")

@@ -98,21 +98,6 @@ class PerturbationForce : public SimTK::Force::Custom::Implementation {
   mutable SimTK::ZIndex zIndex_;
 };
 
-std::unique_ptr<SimTK::Integrator> makeIntegrator(IntegratorKind kind, const SimTK::MultibodySystem& system) {
-  switch (kind) {
-    case IntegratorKind::RungeKuttaMerson: return std::make_unique<SimTK::RungeKuttaMersonIntegrator>(system);
-    case IntegratorKind::RungeKutta3: return std::make_unique<SimTK::RungeKutta3Integrator>(system);
-    case IntegratorKind::CPodes: return std::make_unique<SimTK::CPodesIntegrator>(system);
-    case IntegratorKind::Verlet: return std::make_unique<SimTK::VerletIntegrator>(system);
-  }
-  throw std::logic_error("unknown integrator");
-}
-
-std::string toLower(std::string s) {
-  std::transform(s.begin(), s.end(), s.begin(), [](unsigned char c) { return std::tolower(c); });
-  return s;
-}
-
 void checkOptions(const SimulationOptions& o) {
   auto bad = [](const std::string& key, const std::string& why) { throw InputError({"command line", 0, 0, key}, why); };
   if (!(o.speed >= 0) || !std::isfinite(o.speed)) bad("--speed", "must be a finite speed >= 0 m/s");
@@ -124,28 +109,8 @@ void checkOptions(const SimulationOptions& o) {
 
 }  // namespace
 
-IntegratorKind parseIntegratorKind(const std::string& name) {
-  const std::string n = toLower(name);
-  if (n == "rkm" || n == "rungekuttamerson") return IntegratorKind::RungeKuttaMerson;
-  if (n == "rk3" || n == "rungekutta3") return IntegratorKind::RungeKutta3;
-  if (n == "cpodes") return IntegratorKind::CPodes;
-  if (n == "verlet") return IntegratorKind::Verlet;
-  throw InputError({"command line", 0, 0, "--integrator"},
-                   "unknown integrator '" + name + "' (RungeKuttaMerson, RungeKutta3, CPodes, Verlet)");
-}
-
-std::string getIntegratorName(IntegratorKind kind) {
-  switch (kind) {
-    case IntegratorKind::RungeKuttaMerson: return "RungeKuttaMerson";
-    case IntegratorKind::RungeKutta3: return "RungeKutta3";
-    case IntegratorKind::CPodes: return "CPodes";
-    case IntegratorKind::Verlet: return "Verlet";
-  }
-  return "?";
-}
-
 SpeedControl parseSpeedControl(const std::string& name) {
-  const std::string n = toLower(name);
+  const std::string n = toLowerCase(name);
   if (n == "none") return SpeedControl::None;
   if (n == "pi") return SpeedControl::PI;
   throw InputError({"command line", 0, 0, "--speed-control"}, "unknown speed control '" + name + "' (none or pi)");
@@ -335,37 +300,37 @@ SimulationResult runSimulation(const Scenario& scenario, PluginRegistry& registr
   };
 
   const auto wall0 = std::chrono::steady_clock::now();
-  std::unique_ptr<SimTK::Integrator> integ;
+  StepperOptions so;
+  so.kind = opt.integrator;
+  so.accuracy = opt.accuracy;
+  so.constraintTolerance = opt.constraintTolerance;
+  so.projectEveryStep = opt.projectEveryStep;
+  so.maxStep = opt.maxStep;
+  if (resolveIntegratorKind(so.kind, s) == IntegratorKind::Rosenbrock && hasConstraints(s))
+    throw InputError({"command line", 0, 0, "--integrator"},
+                     "ROS34PW2 integrates models without constraints only (force-based tyres); this model has "
+                     "rolling constraints: use auto or RungeKuttaMerson");
+  std::unique_ptr<Stepper> integ;
   try {
-    integ = makeIntegrator(opt.integrator, system);
-    integ->setAccuracy(opt.accuracy);
-    integ->setConstraintTolerance(opt.constraintTolerance > 0 ? opt.constraintTolerance : opt.accuracy);
-    integ->setProjectEveryStep(opt.projectEveryStep);
+    integ = makeStepper(system, s, so);
+    res.integrator = integ->getName();
     // Samples come from cubic Hermite interpolation of y between internal steps (y and ydot at both
-    // ends; the same order as the integrator's own interpolation, without its State copies).
-    integ->setReturnEveryInternalStep(true);
-    integ->initialize(s);
+    // ends; the same order as Simbody's own interpolation, without its State copies).
     int segment = 0, nextReport = 1;
     const int reports = static_cast<int>(std::ceil(opt.duration / opt.outputStep - 1e-9));
     auto getReportTime = [&](int k) { return std::min(k * opt.outputStep, opt.duration); };
-    auto getDerivative = [&](const State& st) {
-      system.realize(st, SimTK::Stage::Acceleration);
-      return SimTK::Vector(st.getYDot());
-    };
-    double t0 = integ->getAdvancedTime();
-    SimTK::Vector y0 = integ->getAdvancedState().getY(), yd0 = getDerivative(integ->getAdvancedState());
+    double t0 = integ->getTime();
+    SimTK::Vector y0 = integ->getY(), yd0 = integ->getYDot();
     bool running = record(t0, y0, segment);
     SimTK::Vector y(y0.size());
     while (running && nextReport <= reports) {
       const double tEvent = segment + 1 < static_cast<int>(segmentStarts.size()) ? segmentStarts[segment + 1]
                                                                                  : SimTK::Infinity;
-      const auto status = integ->stepTo(opt.duration, tEvent);
-      if (status == SimTK::Integrator::EndOfSimulation)
-        throw std::runtime_error("the integrator ended the simulation at t = " + std::to_string(integ->getTime()));
-      const double t1 = integ->getAdvancedTime();
+      integ->step(opt.duration, tEvent);
+      const double t1 = integ->getTime();
       if (!(t1 > t0)) continue;
-      const SimTK::Vector y1 = integ->getAdvancedState().getY();
-      const SimTK::Vector yd1 = getDerivative(integ->getAdvancedState());
+      const SimTK::Vector& y1 = integ->getY();
+      const SimTK::Vector& yd1 = integ->getYDot();
       const double h = t1 - t0, eps = 1e-12 * std::max(1.0, t1);
       // Samples strictly inside the step (a sample at t1 waits for a pulse switch at t1).
       for (double tr; running && nextReport <= reports && (tr = getReportTime(nextReport)) < t1 - eps; ++nextReport) {
@@ -377,13 +342,13 @@ SimulationResult runSimulation(const Scenario& scenario, PluginRegistry& registr
       }
       t0 = t1, y0 = y1, yd0 = yd1;
       if (t1 >= tEvent) {  // switch pulses on or off (samples are right-continuous)
-        force->setSegment(integ->updAdvancedState(), ++segment);
-        applyRoadSteps(model, integ->updAdvancedState(), opt.perturbations, segmentStarts[segment]);
-        integ->reinitialize(SimTK::Stage::Position, false);
-        yd0 = getDerivative(integ->getAdvancedState());
+        force->setSegment(integ->updState(), ++segment);
+        applyRoadSteps(model, integ->updState(), opt.perturbations, segmentStarts[segment]);
+        integ->reinitialize();
+        y0 = integ->getY(), yd0 = integ->getYDot();
       }
       if (running && nextReport <= reports && getReportTime(nextReport) <= t1 + eps) {
-        running = record(getReportTime(nextReport), integ->getAdvancedState().getY(), segment);  // after any road step
+        running = record(getReportTime(nextReport), integ->getY(), segment);  // after any road step
         ++nextReport;
       }
     }
@@ -394,7 +359,7 @@ SimulationResult runSimulation(const Scenario& scenario, PluginRegistry& registr
     res.message = os.str();
   }
   res.wallSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
-  if (integ) res.steps = integ->getNumStepsTaken();
+  if (integ) res.steps = integ->getNumSteps();
   return res;
 }
 

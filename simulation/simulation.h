@@ -8,6 +8,7 @@
 
 #include "analysis/trim.h"
 #include "simulation/perturbation.h"
+#include "simulation/stepper.h"
 
 namespace motostab::simulation {
 
@@ -15,13 +16,6 @@ enum class SpeedControl {
   None,  ///< coast: no drive torque beyond the trim's
   PI     ///< drive torque = trim torque + Kp e + Ki integral(e), e = target - forward speed
 };
-
-enum class IntegratorKind { RungeKuttaMerson, RungeKutta3, CPodes, Verlet };
-
-/// "rkm" / "RungeKuttaMerson", "rk3" / "RungeKutta3", "cpodes" / "CPodes", "verlet" / "Verlet"
-/// (case-insensitive). Throws InputError (key "--integrator") on an unknown name.
-IntegratorKind parseIntegratorKind(const std::string& name);
-std::string getIntegratorName(IntegratorKind kind);
 
 SpeedControl parseSpeedControl(const std::string& name);  ///< "none" or "pi"; InputError otherwise
 
@@ -42,10 +36,11 @@ struct SimulationOptions {
   /// Ki = gainI m r (N m per m). gainP is a time constant of about 1 s on a bicycle.
   double speedGainP = 1.0;   ///< 1/s
   double speedGainI = 0.25;  ///< 1/s^2
-  IntegratorKind integrator = IntegratorKind::RungeKuttaMerson;
+  IntegratorKind integrator = IntegratorKind::Auto;
   double accuracy = 1e-6;            ///< integrator relative accuracy
   double constraintTolerance = 0;    ///< constraint projection tolerance; <= 0: equal to accuracy
   bool projectEveryStep = false;     ///< project onto the constraints after every step
+  double maxStep = 0.05;             ///< largest internal step, s
   double fallRollLimit = M_PI / 3;   ///< |roll| beyond this ends the run as a fall, rad (60 deg)
   TrimOptions trim;
   /// Extra columns appended after the standard ones, in this order.
@@ -73,6 +68,7 @@ struct SimulationResult {
   std::vector<double> trimRow;              ///< the trim in the same columns (time 0, no perturbation)
   double endTime = 0;                       ///< last sample time, s
   int steps = 0;                            ///< integrator steps taken
+  std::string integrator;                   ///< the integrator used (Auto resolved)
   double wallSeconds = 0;                   ///< wall-clock time of the integration, s
 
   /// Index of a named column; throws std::out_of_range naming it if absent.

@@ -75,6 +75,8 @@ TEST(SimulationPerturbation, MalformedSpecsAreErrorsNamingTheSpec) {
 
 TEST(SimulationPerturbation, OptionNamesAreChecked) {
   EXPECT_EQ(parseIntegratorKind("rungekuttamerson"), IntegratorKind::RungeKuttaMerson);
+  EXPECT_EQ(parseIntegratorKind("Auto"), IntegratorKind::Auto);
+  EXPECT_EQ(parseIntegratorKind("ROS34PW2"), IntegratorKind::Rosenbrock);
   EXPECT_EQ(parseIntegratorKind("CPodes"), IntegratorKind::CPodes);
   EXPECT_EQ(parseIntegratorKind("rk3"), IntegratorKind::RungeKutta3);
   EXPECT_EQ(parseIntegratorKind("Verlet"), IntegratorKind::Verlet);

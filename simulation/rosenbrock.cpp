@@ -1,0 +1,142 @@
+#include "simulation/rosenbrock.h"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+#include <stdexcept>
+
+namespace motostab::simulation {
+
+const RosenbrockTableau& getRos34pw2Tableau() {
+  static const RosenbrockTableau tab = [] {
+    RosenbrockTableau t;
+    t.gamma = 4.3586652150845900e-01;
+    t.alpha.setZero();
+    t.gammaOff.setZero();
+    t.alpha(1, 0) = 8.7173304301691801e-01;
+    t.alpha(2, 0) = 8.4457060015369423e-01;
+    t.alpha(2, 1) = -1.1299064236484185e-01;
+    t.alpha(3, 2) = 1.0;
+    t.gammaOff(1, 0) = -8.7173304301691801e-01;
+    t.gammaOff(2, 0) = -9.0338057013044082e-01;
+    t.gammaOff(2, 1) = 5.4180672388095326e-02;
+    t.gammaOff(3, 0) = 2.4212380706095346e-01;
+    t.gammaOff(3, 1) = -1.2232505839045147e+00;
+    t.gammaOff(3, 2) = 5.4526025533510214e-01;
+    t.b << 2.4212380706095346e-01, -1.2232505839045147e+00, 1.5452602553351020e+00, 4.3586652150845900e-01;
+    t.bHat << 3.7810903145819369e-01, -9.6042292212423178e-02, 5.0e-01, 2.1793326075422950e-01;
+    return t;
+  }();
+  return tab;
+}
+
+RosenbrockStepper::RosenbrockStepper(Rhs rhs, RosenbrockOptions options) : rhs_(std::move(rhs)), opt_(std::move(options)) {
+  if (!(opt_.relativeTolerance > 0)) throw std::invalid_argument("Rosenbrock: relative tolerance must be > 0");
+  if (!(opt_.maxStep > 0 && opt_.initialStep > 0)) throw std::invalid_argument("Rosenbrock: steps must be > 0");
+}
+
+void RosenbrockStepper::callRhs(double t, const Eigen::VectorXd& y, Eigen::VectorXd& ydot) {
+  ++numRhs_;
+  rhs_(t, y, ydot);
+}
+
+void RosenbrockStepper::calcJacobian(double t, const Eigen::VectorXd& y, const Eigen::VectorXd& f0, Eigen::MatrixXd& J) {
+  const int n = static_cast<int>(y.size());
+  J.resize(n, n);
+  Eigen::VectorXd yp = y, fp(n);
+  for (int j = 0; j < n; ++j) {
+    const double d = 1e-7 * std::max(1.0, std::abs(y[j]));
+    yp[j] = y[j] + d;
+    callRhs(t, yp, fp);
+    J.col(j) = (fp - f0) / d;
+    yp[j] = y[j];
+  }
+  ++numJacobians_;
+}
+
+void RosenbrockStepper::initialize(double t, const Eigen::VectorXd& y) {
+  t_ = t;
+  y_ = y;
+  f_.resize(y.size());
+  callRhs(t_, y_, f_);
+  calcJacobian(t_, y_, f_, J_);
+  jacobianTime_ = t_;
+  h_ = std::min(opt_.initialStep, opt_.maxStep);
+  previousError_ = 1;
+}
+
+double RosenbrockStepper::calcErrorNorm(const Eigen::VectorXd& err, const Eigen::VectorXd& y0,
+                                        const Eigen::VectorXd& y1) const {
+  double sum = 0;
+  const bool perComponent = opt_.absoluteTolerance.size() == err.size();
+  for (int i = 0; i < err.size(); ++i) {
+    const double atol = perComponent ? opt_.absoluteTolerance[i] : opt_.relativeTolerance;
+    const double sc = atol + opt_.relativeTolerance * std::max(std::abs(y0[i]), std::abs(y1[i]));
+    sum += (err[i] / sc) * (err[i] / sc);
+  }
+  return std::sqrt(sum / std::max<Eigen::Index>(1, err.size()));
+}
+
+void RosenbrockStepper::step(double tStop) {
+  const RosenbrockTableau& tab = getRos34pw2Tableau();
+  const int n = static_cast<int>(y_.size());
+  Eigen::VectorXd k[4], ys(n), fs(n), acc(n), y1(n), err(n);
+  for (auto& ki : k) ki.resize(n);
+  for (;;) {
+    if (t_ - jacobianTime_ > opt_.jacobianMaxAge) {
+      calcJacobian(t_, y_, f_, J_);
+      jacobianTime_ = t_;
+    }
+    const double remaining = tStop - t_;
+    double h = std::min(h_, opt_.maxStep);
+    const bool last = h >= remaining * (1 - 1e-12);
+    if (last) h = remaining;
+    const Eigen::PartialPivLU<Eigen::MatrixXd> lu(Eigen::MatrixXd::Identity(n, n) - (h * tab.gamma) * J_);
+    k[0] = lu.solve(h * f_);
+    for (int i = 1; i < 4; ++i) {
+      ys = y_;
+      acc.setZero();
+      double c = 0;
+      for (int j = 0; j < i; ++j) {
+        if (tab.alpha(i, j) != 0) ys += tab.alpha(i, j) * k[j];
+        acc += tab.gammaOff(i, j) * k[j];
+        c += tab.alpha(i, j);
+      }
+      callRhs(t_ + c * h, ys, fs);
+      k[i] = lu.solve(h * fs + h * (J_ * acc));
+    }
+    y1 = y_;
+    err.setZero();
+    for (int i = 0; i < 4; ++i) {
+      y1 += tab.b[i] * k[i];
+      err += (tab.b[i] - tab.bHat[i]) * k[i];
+    }
+    const double e = y1.allFinite() ? calcErrorNorm(err, y_, y1) : HUGE_VAL;
+    if (e <= 1) {
+      t_ = last ? tStop : t_ + h;
+      y_ = y1;
+      callRhs(t_, y_, f_);
+      if (!f_.allFinite()) throw std::runtime_error("Rosenbrock: the derivative became non-finite");
+      ++numSteps_;
+      // Gustafsson-style PI control on the order-2 estimate (local error ~ h^3).
+      double factor = 0.9 * std::pow(std::max(e, 1e-10), -0.7 / 3) * std::pow(std::max(previousError_, 1e-10), 0.4 / 3);
+      factor = std::clamp(factor, 0.2, 5.0);
+      if (!last || h >= h_) h_ = h * factor;
+      previousError_ = e;
+      return;
+    }
+    ++numRejected_;
+    if (jacobianTime_ < t_) {  // a stale J may be the cause: refresh before shrinking further
+      calcJacobian(t_, y_, f_, J_);
+      jacobianTime_ = t_;
+    }
+    h_ = h * (std::isfinite(e) ? std::clamp(0.9 * std::pow(e, -1.0 / 3), 0.2, 0.9) : 0.2);
+    if (h_ < opt_.minStep) {
+      std::ostringstream os;
+      os << "Rosenbrock: step size " << h_ << " s below the minimum at t = " << t_ << " s";
+      throw std::runtime_error(os.str());
+    }
+  }
+}
+
+}  // namespace motostab::simulation
