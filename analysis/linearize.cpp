@@ -58,7 +58,7 @@ LinearModel linearize(const VehicleModel& model, const TrimResult& trim, const L
   auto isCyclicQ = [&](const StateEntry& e) {
     return e.slot == Slot::Q && std::find(cyclic.begin(), cyclic.end(), e.index) != cyclic.end();
   };
-  for (int j = 0; j < nq + nu; ++j) {
+  for (int j = 0; j < nq + nu && m > 0; ++j) {  // no constraints: G has no rows
     const StateEntry e{j < nq ? Slot::Q : Slot::U, j < nq ? j : j - nq};
     if (isCyclicQ(e) && !opt.computeCyclicColumns) {
       G.col(j).setZero();
@@ -69,7 +69,7 @@ LinearModel linearize(const VehicleModel& model, const TrimResult& trim, const L
     G.col(j) = col;
   }
   // The constraint errors are affine in u: one-sided unit differences are exact.
-  for (int j = 0; j < nu; ++j) {
+  for (int j = 0; j < nu && m > 0; ++j) {
     const StateEntry e{Slot::U, j};
     const double base = fn.get(s, e);
     fn.set(s, e, base + 1.0);

@@ -50,11 +50,17 @@ TrimResult calcTrim(const VehicleModel& model, double speed, const TrimOptions& 
   }
   for (int i : model.getCyclicQ()) s.updQ()[i] = 0;
   model.setInput(s, Input::RollTorque, 0);
+  // Predictor: linear extrapolation along the warm start's secant (residual O(dv^2), not O(dv)).
+  if (warm && warm->unknownsPerSpeed.size() == n)
+    for (int j = 0; j < n; ++j)
+      fn.set(s, unknowns[j], fn.get(warm->state, unknowns[j]) + warm->unknownsPerSpeed[j] * (speed - oldSpeed));
 
   Eigen::VectorXd r, rTrial, col;
   fn.calcTrimResidual(s, r);
   Eigen::MatrixXd J;
   bool jacobianIsCurrent = false;  // computed at the current iterate
+  Eigen::CompleteOrthogonalDecomposition<Eigen::MatrixXd> decomposition;
+  bool factored = false;           // decomposition holds J
   if (warm && warm->jacobian.cols() == n) J = warm->jacobian;
   auto computeJacobian = [&]() {
     J.resize(r.size(), n);
@@ -66,6 +72,8 @@ TrimResult calcTrim(const VehicleModel& model, double speed, const TrimOptions& 
       J.col(j) = col;
     }
     jacobianIsCurrent = true;
+    factored = false;
+    ++res.jacobianEvaluations;
   };
 
   int it = 0;
@@ -74,7 +82,8 @@ TrimResult calcTrim(const VehicleModel& model, double speed, const TrimOptions& 
   while (norm > opt.tolerance && it < opt.maxIterations) {
     ++it;
     if (J.size() == 0) computeJacobian();
-    const Eigen::VectorXd dx = J.completeOrthogonalDecomposition().solve(-r);
+    if (!factored) decomposition.compute(J), factored = true;
+    const Eigen::VectorXd dx = decomposition.solve(-r);
     for (int j = 0; j < n; ++j) x0[j] = fn.get(s, unknowns[j]);
     double step = 1.0, trialNorm = INFINITY;
     for (int ls = 0; ls < 30; ++ls, step *= 0.5) {
@@ -101,6 +110,11 @@ TrimResult calcTrim(const VehicleModel& model, double speed, const TrimOptions& 
   if (!(norm <= opt.tolerance)) throw TrimError(speed, norm, it);
   if (J.size() == 0) computeJacobian();
   res.jacobian = J;
+  if (warm && std::abs(speed - oldSpeed) > 1e-12) {
+    res.unknownsPerSpeed.resize(n);
+    for (int j = 0; j < n; ++j)
+      res.unknownsPerSpeed[j] = (fn.get(s, unknowns[j]) - fn.get(warm->state, unknowns[j])) / (speed - oldSpeed);
+  }
   return res;
 }
 

@@ -20,7 +20,11 @@ struct TrimResult {
   double speed = 0;           ///< m/s
   double residualNorm = 0;    ///< infinity norm of [udot; zdot; qerr; uerr]
   int iterations = 0;
+  int jacobianEvaluations = 0;  ///< finite-difference Jacobians computed (2 realizations per unknown each)
   Eigen::MatrixXd jacobian;   ///< d residual / d unknowns at the solution (reusable as a warm start)
+  /// Secant slope d(unknowns)/d(speed) from the warm start to this trim (getTrimUnknowns order,
+  /// their units per m/s); empty without a warm start. The next warm start extrapolates with it.
+  Eigen::VectorXd unknownsPerSpeed;
 };
 
 /// A trim that did not converge: names the speed and the residual.
@@ -34,8 +38,8 @@ class TrimError : public std::runtime_error {
 /// spin rates, every z, and the steer and drive torques.
 std::vector<StateEntry> getTrimUnknowns(const VehicleModel& model);
 
-/// Trims `model` at `speed` (m/s). `warmStart` (a trim at a nearby speed) speeds it up and lets its
-/// Jacobian be reused. Throws TrimError on failure.
+/// Trims `model` at `speed` (m/s). `warmStart` (a trim at a nearby speed) speeds it up: its unknowns,
+/// extrapolated along its secant slope, start the iteration, and its Jacobian is reused. Throws TrimError on failure.
 TrimResult calcTrim(const VehicleModel& model, double speed, const TrimOptions& options = {},
                     const TrimResult* warmStart = nullptr);
 
