@@ -16,6 +16,7 @@ DofGroup getDofGroup(const std::string& name) {
   if (starts("pitch")) return DofGroup::Pitch;
   if (name == "height" || name == "vz") return DofGroup::Bounce;
   if (starts("swingarm")) return DofGroup::Compliance;
+  if (starts("suspension")) return DofGroup::Suspension;
   if (name == "x" || name == "vx" || name.find("wheel_angle") != std::string::npos) return DofGroup::Forward;
   return DofGroup::Relaxation;
 }
@@ -91,6 +92,9 @@ int findBestMatch(const LinearModel& a, int ka, const LinearModel& b) {
 
 namespace {
 
+// Share of the in-plane content above which the rear suspension coordinate makes a mode rear_hop.
+constexpr double kRearHopShare = 0.9;
+
 // Share of each compliance coordinate (swingarm_*) in eigenvector k.
 std::map<std::string, double> calcComplianceShares(const LinearModel& lin, int k) {
   std::map<std::string, double> out;
@@ -132,7 +136,8 @@ BranchStats calcBranchStats(const std::vector<LinearModel>& models, double wheel
 
 }  // namespace
 
-// Labels from content (seed sec. 4 mode names): neutral, swingarm_*, bounce, pitch, relaxation,
+// Labels from content (seed sec. 4 mode names): neutral, swingarm_*, bounce, pitch, rear_hop (rear
+// wheel hop: the rear suspension angle carries over 90 % of the in-plane content), relaxation,
 // wobble, weave, capsize, castor, other. Weave and wobble keep only their best pair, capsize and
 // castor their best branch; the rest become `other`.
 void labelBranches(const std::vector<LinearModel>& models, double wheelbase, std::vector<ModeBranch>& branches) {
@@ -143,7 +148,9 @@ void labelBranches(const std::vector<LinearModel>& models, double wheelbase, std
     const ModeContent& c = st.content;
     const double roll = c[int(DofGroup::Roll)], steer = c[int(DofGroup::Steer)];
     const double lateral = roll + steer + c[int(DofGroup::Yaw)] + c[int(DofGroup::Lateral)];
-    const double inPlane = c[int(DofGroup::Bounce)] + c[int(DofGroup::Pitch)];
+    const double bounce = c[int(DofGroup::Bounce)], pitch = c[int(DofGroup::Pitch)];
+    const double suspension = c[int(DofGroup::Suspension)];
+    const double inPlane = bounce + pitch + suspension;
     const bool oscillatory = st.oscillatory >= 0.5;
     br.label = "other";
     if (st.neutral) {
@@ -154,7 +161,9 @@ void labelBranches(const std::vector<LinearModel>& models, double wheelbase, std
                                         [](const auto& a, const auto& b) { return a.second < b.second; });
       br.label = top->first;
     } else if (oscillatory && inPlane > 0.5) {
-      br.label = c[int(DofGroup::Bounce)] >= c[int(DofGroup::Pitch)] ? "bounce" : "pitch";
+      // Wheel hop: the arm swings on spring and tyre while the rear frame hardly moves. In the
+      // sprung modes the suspension deflects as much as the frame moves (up to about 80 %).
+      br.label = suspension > kRearHopShare * inPlane ? "rear_hop" : bounce >= pitch ? "bounce" : "pitch";
     } else if (oscillatory && st.wobbleLike > 0.5) {
       candidates["wobble"].push_back({steer, b});
     } else if (c[int(DofGroup::Relaxation)] > 0.5) {

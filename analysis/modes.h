@@ -11,8 +11,8 @@ namespace motostab {
 
 /// Degree-of-freedom groups of an eigenvector, as shares of its squared magnitude (sum = 1).
 /// Lateral displacement is made an angle by dividing by the wheelbase (seed sec. 4, Fig. 12).
-enum class DofGroup { Roll, Steer, Yaw, Lateral, Pitch, Bounce, Forward, Compliance, Relaxation };
-constexpr int kNumDofGroups = 9;
+enum class DofGroup { Roll, Steer, Yaw, Lateral, Pitch, Bounce, Forward, Compliance, Relaxation, Suspension };
+constexpr int kNumDofGroups = 10;
 using ModeContent = std::array<double, kNumDofGroups>;
 
 /// The group a linear state belongs to, from its name.
@@ -26,7 +26,7 @@ ModeContent calcModeContent(const LinearModel& lin, int k, double wheelbase);
 double calcMac(const LinearModel& a, int ka, const LinearModel& b, int kb);
 
 /// A mode followed across speed. Labels: weave, capsize, castor, wobble, swingarm_bending,
-/// swingarm_torsion, swingarm_twist, bounce, pitch, relaxation, neutral, other.
+/// swingarm_torsion, swingarm_twist, bounce, pitch, rear_hop, relaxation, neutral, other.
 struct ModeBranch {
   std::string label;
   std::vector<std::complex<double>> eigenvalue;  ///< per speed of the sweep

@@ -53,9 +53,11 @@ class ContactModel {
 /// Makes a contact model from its scenario parameters (the `contact` mapping; `model` is consumed).
 using ContactModelFactory = std::function<std::unique_ptr<ContactModel>(YamlMap& params)>;
 
-/// Where a swingarm model is attached: the rear frame, the swingarm frame S in the rear-frame
-/// body frame (origin at the pivot, x towards the rear hub, z up), the hub in S, and the swingarm
-/// body (mass properties in S).
+/// Where a swingarm model is attached: the body it hangs from (the rear frame, or the massless
+/// suspension link turning about the pivot when the scenario has a rear suspension), the swingarm
+/// frame S in that body's frame (origin at the pivot, x towards the rear hub, z up; the parent's
+/// axes are the design frame's at the design pose), the hub in S, and the swingarm body (mass
+/// properties in S).
 struct SwingarmSite {
   SimTK::MobilizedBody rearFrame;
   SimTK::Transform X_RS;

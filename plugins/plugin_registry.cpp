@@ -45,7 +45,7 @@ std::unique_ptr<SwingarmModel> PluginRegistry::createSwingarmModel(const Swingar
   if (it == swingarmModels_.end())
     params.fail("compliance", "unknown swingarm compliance plugin '" + spec.compliance + "' (known: " +
                                   joinNames(getSwingarmModelNames()) + ")");
-  for (const char* k : {"pivot_m", "mass_kg", "com_m", "inertia_kgm2", "compliance"}) params.markUsed(k);
+  for (const auto& k : getSwingarmLoaderKeys()) params.markUsed(k);
   auto model = it->second(params);
   params.finish();
   return model;

@@ -46,7 +46,40 @@ WheelSpec readWheel(YamlMap m) {
   return w;
 }
 
+// One suspension quantity, given about the pivot (key `pivot`) or referred to the wheel (key
+// `wheel`, converted with lever^2); exactly one of the two keys.
+double readPivotOrWheel(YamlMap& m, const std::string& pivot, const std::string& wheel, double lever, bool positive) {
+  const std::string path = m.getPath() + ".";
+  if (m.has(pivot) && m.has(wheel)) m.fail(wheel, "give only one of " + pivot + " and " + wheel);
+  if (!m.has(pivot) && !m.has(wheel)) m.fail("", "missing key '" + path + wheel + "' (or '" + path + pivot + "')");
+  const std::string key = m.has(pivot) ? pivot : wheel;
+  const double v = positive ? m.getPositive(key) : m.getNonNegative(key);
+  return key == pivot ? v : v * lever * lever;
+}
+
+SuspensionSpec readSuspension(YamlMap m, double lever) {
+  SuspensionSpec su;
+  su.stiffness = readPivotOrWheel(m, "stiffness_Nm_per_rad", "wheel_rate_N_per_m", lever, true);
+  su.damping = readPivotOrWheel(m, "damping_Nms_per_rad", "damping_Ns_per_m", lever, false);
+  m.finish();
+  return su;
+}
+
+// Centre of mass of the swingarm in D, m.
+Vec3d calcSwingarmCom(const Scenario& s) {
+  const SwingarmFrame f = calcSwingarmFrame(s);
+  const Vec3d& c_S = s.swingarm.body.com;
+  Vec3d c = f.origin;
+  for (int i = 0; i < 3; ++i) c[i] += f.x[i] * c_S[0] + f.y[i] * c_S[1] + f.z[i] * c_S[2];
+  return c;
+}
+
 }  // namespace
+
+const std::vector<std::string>& getSwingarmLoaderKeys() {
+  static const std::vector<std::string> keys{"pivot_m", "mass_kg", "com_m", "inertia_kgm2", "compliance", "suspension"};
+  return keys;
+}
 
 std::string checkInertia(const InertiaSpec& I) {
   Eigen::Matrix3d M;
@@ -114,9 +147,13 @@ Scenario loadScenario(const std::string& file, const std::vector<std::string>& o
     s.swingarm.compliance = sw.getString("compliance");
     s.swingarm.params = sw.getNode();
     s.swingarm.file = file;
-    for (const char* k : {"pivot_m", "mass_kg", "com_m", "inertia_kgm2", "compliance"}) sw.markUsed(k);
     const double dx = s.swingarm.pivot[0], dz = s.swingarm.pivot[2] - s.rearWheel.radius;
     if (dx <= 0 || std::hypot(dx, dz) < 1e-3) sw.fail("pivot_m", "the pivot must lie ahead of the rear wheel centre");
+    if (sw.has("suspension")) {
+      s.swingarm.hasSuspension = true;
+      s.swingarm.suspension = readSuspension(sw.getMap("suspension"), calcSuspensionLever(s));
+    }
+    for (const auto& k : getSwingarmLoaderKeys()) sw.markUsed(k);
     // The compliance plugin reads and checks the rest of this mapping.
   }
   if (m.has("aerodynamics")) {
@@ -142,12 +179,7 @@ MassSummary calcMassSummary(const Scenario& s) {
   add(s.frontFrame.mass, s.frontFrame.com);
   add(s.rearWheel.mass, {0, 0, s.rearWheel.radius});
   add(s.frontWheel.mass, {s.geometry.wheelbase, 0, s.frontWheel.radius});
-  if (s.hasSwingarm) {
-    const SwingarmFrame f = calcSwingarmFrame(s);
-    Vec3d c = f.origin;
-    for (int i = 0; i < 3; ++i) c[i] += f.x[i] * s.swingarm.body.com[0] + f.y[i] * s.swingarm.body.com[1] + f.z[i] * s.swingarm.body.com[2];
-    add(s.swingarm.body.mass, c);
-  }
+  if (s.hasSwingarm) add(s.swingarm.body.mass, calcSwingarmCom(s));
   return out;
 }
 
@@ -174,6 +206,16 @@ std::array<double, 2> calcStaticWheelLoads(const Scenario& s) {
   const double weight = ms.mass * s.gravity;
   const double front = weight * ms.com[0] / s.geometry.wheelbase;
   return {weight - front, front};
+}
+
+double calcSuspensionLever(const Scenario& s) { return s.swingarm.pivot[0]; }  // the hub is at x = 0
+
+double calcStaticPivotMoment(const Scenario& s) {
+  // M_y = -(x - x_pivot) F_z for a vertical force F_z at x: rear tyre load at the contact point
+  // (x = 0), wheel weight at the hub (x = 0), swingarm weight at its centre of mass.
+  const double xP = s.swingarm.pivot[0], g = s.gravity;
+  const double rearLoad = calcStaticWheelLoads(s)[0];
+  return xP * (rearLoad - s.rearWheel.mass * g) + (calcSwingarmCom(s)[0] - xP) * s.swingarm.body.mass * g;
 }
 
 }  // namespace motostab

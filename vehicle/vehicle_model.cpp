@@ -38,6 +38,18 @@ SimTK::Body::Rigid makeWheel(const WheelSpec& w) {
       w.mass, Vec3(0), SimTK::Inertia(w.diametralInertia, w.axialInertia, w.diametralInertia)));
 }
 
+// The rear suspension: a massless link on a pin about the design y axis through the pivot (at
+// p_RP in the rear frame; q > 0 lifts the hub), its body frame parallel to the design frame at
+// q = 0. The spring's free angle is set so that it carries the static pivot moment at q = 0.
+MobilizedBody::Pin addSuspension(BuildContext& ctx, MobilizedBody& rearFrame, const Vec3& p_RP, const Scenario& s) {
+  MobilizedBody::Pin link = addPinAtDesignPose(rearFrame, Transform(p_RP), SimTK::Body::Massless(), Vec3(0), Vec3(0, 1, 0));
+  const SuspensionSpec& su = s.swingarm.suspension;
+  const double freeAngle = -calcStaticPivotMoment(s) / su.stiffness;
+  SimTK::Force::MobilityLinearSpring(ctx.forces, link, SimTK::MobilizerQIndex(0), su.stiffness, freeAngle);
+  SimTK::Force::MobilityLinearDamper(ctx.forces, link, SimTK::MobilizerUIndex(0), su.damping);
+  return link;
+}
+
 }  // namespace
 
 VehicleModel::VehicleModel(const Scenario& scenario, PluginRegistry& registry,
@@ -68,13 +80,20 @@ void VehicleModel::build(PluginRegistry& registry, const std::vector<ModelExtens
                                       Transform(R_perm, Vec3(0)));
   // Rear wheel: on the rear frame, or on the swingarm's hub carrier.
   std::vector<std::pair<std::string, MobilizedBody>> compliance;
+  MobilizedBody suspension;
   if (s.hasSwingarm) {
     auto swingarmModel = registry.createSwingarmModel(s.swingarm);
     const SwingarmFrame f = calcSwingarmFrame(s);
     const Rotation R_RS(SimTK::Mat33(f.x[0], f.y[0], f.z[0], f.x[1], f.y[1], f.z[1], f.x[2], f.y[2], f.z[2]), true);
-    const SwingarmSite site{rearFrame_, Transform(R_RS, toVec3(f.origin) - pRearHub_D), Vec3(f.length, 0, 0),
-                            makeBody(s.swingarm.body, Vec3(0))};
     BuildContext swingarmCtx{system_, matter_, forces_, s.gravity};
+    // The swingarm hangs from the rear frame, or from the suspension link (compliance in series).
+    MobilizedBody armParent = rearFrame_;
+    Vec3 p_PS = toVec3(f.origin) - pRearHub_D;
+    if (s.swingarm.hasSuspension) {
+      suspension = armParent = addSuspension(swingarmCtx, rearFrame_, p_PS, s);
+      p_PS = Vec3(0);
+    }
+    const SwingarmSite site{armParent, Transform(R_RS, p_PS), Vec3(f.length, 0, 0), makeBody(s.swingarm.body, Vec3(0))};
     const SwingarmAssembly arm = swingarmModel->addSwingarm(swingarmCtx, site);
     MobilizedBody carrier = arm.hubCarrier;
     rearWheel_ = addPinAtDesignPose(carrier, arm.X_CH, makeWheel(s.rearWheel), Vec3(0), Vec3(0, 1, 0));
@@ -134,6 +153,10 @@ void VehicleModel::build(PluginRegistry& registry, const std::vector<ModelExtens
   qNames_[idx_.steer] = "steer";
   qNames_[idx_.rearSpin] = "rear_wheel_angle";
   qNames_[idx_.frontSpin] = "front_wheel_angle";
+  if (!suspension.isEmptyHandle()) {
+    idx_.suspension = suspension.getFirstQIndex(defaultState_);
+    qNames_[idx_.suspension] = "suspension_pitch";
+  }
   for (const auto& [name, mobod] : compliance) {
     const int q = mobod.getFirstQIndex(defaultState_);
     qNames_[q] = name;

@@ -3,7 +3,9 @@
 // Bushing mobilizer, front frame on a revolute steer axis, two wheels on revolute spin joints, and
 // a contact plugin per wheel. Coordinates (ground: x forward, y left, z up):
 //   q = yaw, roll, pitch (body-fixed z-x-y of the rear frame), height, x, y of the rear wheel centre,
-//       then steer, rear and front wheel spin angles. Every u is the corresponding qdot.
+//       then steer, rear and front wheel spin angles, and, with a swingarm, the optional rear
+//       suspension angle `suspension_pitch` and the compliance coordinates `swingarm_*`.
+//       Every u is the corresponding qdot.
 // Signs: roll > 0 leans right, yaw > 0 turns left, steer > 0 steers left, pitch > 0 nose down.
 #include <functional>
 #include <memory>
@@ -21,6 +23,7 @@ struct CoordinateIndices {
   int yaw = -1, roll = -1, pitch = -1, height = -1, x = -1, y = -1;
   int steer = -1, rearSpin = -1, frontSpin = -1;
   std::vector<int> compliance;  ///< swingarm compliance coordinates, if any
+  int suspension = -1;          ///< rear suspension angle about the pivot (rad, > 0 lifts the hub), if any
 };
 
 /// Model inputs: generalized forces the trim may solve for and B is taken against.

@@ -21,9 +21,12 @@ std::string readText(const std::string& path) {
   return ss.str();
 }
 
-// Writes the benchmark scenario with one textual replacement and returns the path.
-std::string variant(const std::string& name, const std::string& from, const std::string& to) {
-  std::string text = readText(kScenario);
+const std::string kEnduro = std::string(MOTOSTAB_SOURCE_DIR) + "/scenarios/enduro.yaml";
+
+// Writes the benchmark (or `base`) scenario with one textual replacement and returns the path.
+std::string variant(const std::string& name, const std::string& from, const std::string& to,
+                    const std::string& base = kScenario) {
+  std::string text = readText(base);
   const auto pos = text.find(from);
   EXPECT_NE(pos, std::string::npos) << from;
   text.replace(pos, from.size(), to);
@@ -114,6 +117,50 @@ TEST(Scenario, OverrideReplacesValue) {
   const Scenario s = loadScenario(kScenario, {"geometry.trail_m=0.1"});
   EXPECT_DOUBLE_EQ(s.geometry.trail, 0.1);
   EXPECT_THROW(loadScenario(kScenario, {"geometry.trail_m.x=0.1"}), InputError);
+}
+
+// The enduro with a rear suspension mapping `fields` after its compliance line.
+std::string suspensionVariant(const std::string& name, const std::string& fields) {
+  return variant(name, "  compliance: rigid", "  compliance: rigid\n  suspension: {" + fields + "}", kEnduro);
+}
+
+TEST(Scenario, SuspensionNegativeWheelRate) {
+  expectError(suspensionVariant("susp_rate", "wheel_rate_N_per_m: -20000, damping_Ns_per_m: 1500"),
+              "wheel_rate_N_per_m: -20000", "swingarm.suspension.wheel_rate_N_per_m", "must be positive");
+}
+
+TEST(Scenario, SuspensionNegativeDamping) {
+  expectError(suspensionVariant("susp_damping", "stiffness_Nm_per_rad: 6000, damping_Nms_per_rad: -1"),
+              "damping_Nms_per_rad: -1", "swingarm.suspension.damping_Nms_per_rad", "must not be negative");
+}
+
+TEST(Scenario, SuspensionUnknownKey) {
+  expectError(suspensionVariant("susp_unknown", "wheel_rate_N_per_m: 20000, damping_Ns_per_m: 1500, preload_N: 10"),
+              "preload_N", "swingarm.suspension.preload_N", "unknown key");
+}
+
+TEST(Scenario, SuspensionMissingStiffness) {
+  expectError(suspensionVariant("susp_missing", "damping_Ns_per_m: 1500"), "suspension:",
+              "swingarm.suspension.wheel_rate_N_per_m", "missing key");
+}
+
+TEST(Scenario, SuspensionStiffnessGivenTwice) {
+  expectError(suspensionVariant("susp_twice", "wheel_rate_N_per_m: 2, stiffness_Nm_per_rad: 1, damping_Ns_per_m: 0"),
+              "stiffness_Nm_per_rad", "swingarm.suspension.wheel_rate_N_per_m", "give only one");
+}
+
+// Wheel-referred values are referred to the pivot by the horizontal pivot-to-hub distance (the
+// enduro's pivot_m[0] = 0.5502 m); pivot values are taken unchanged.
+TEST(Scenario, SuspensionWheelRateConversion) {
+  const Scenario none = loadScenario(kEnduro);
+  EXPECT_FALSE(none.swingarm.hasSuspension);
+  const Scenario wheel = loadScenario(kEnduro, {"swingarm.suspension={wheel_rate_N_per_m: 20000, damping_Ns_per_m: 1500}"});
+  ASSERT_TRUE(wheel.swingarm.hasSuspension);
+  EXPECT_NEAR(wheel.swingarm.suspension.stiffness, 20000 * 0.5502 * 0.5502, 1e-9);
+  EXPECT_NEAR(wheel.swingarm.suspension.damping, 1500 * 0.5502 * 0.5502, 1e-12);
+  const Scenario pivot = loadScenario(kEnduro, {"swingarm.suspension={stiffness_Nm_per_rad: 6000, damping_Nms_per_rad: 400}"});
+  EXPECT_DOUBLE_EQ(pivot.swingarm.suspension.stiffness, 6000);
+  EXPECT_DOUBLE_EQ(pivot.swingarm.suspension.damping, 400);
 }
 
 // Derived quantities against hand calculation from Meijaard et al. (2007) Table 1.
