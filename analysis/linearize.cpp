@@ -39,6 +39,31 @@ std::vector<int> withPriority(const std::vector<int>& first, int n) {
 
 }  // namespace
 
+Eigen::MatrixXd calcTrimJacobian(const VehicleModel& model, const LinearModel& lin) {
+  const SimTK::State& s = model.getDefaultState();
+  if (s.getNQErr() + s.getNUErr() > 0 || lin.B.cols() != kNumInputs) return {};
+  std::vector<int> rows;  // residual rows: every udot, then every zdot
+  for (const auto* names : {&model.getUNames(), &model.getZNames()})
+    for (const auto& name : *names) {
+      rows.push_back(lin.findState(name));
+      if (rows.back() < 0) return {};
+    }
+  const auto unknowns = getTrimUnknowns(model);
+  Eigen::MatrixXd J = Eigen::MatrixXd::Zero(rows.size(), unknowns.size());
+  for (size_t j = 0; j < unknowns.size(); ++j) {
+    const StateEntry& e = unknowns[j];
+    if (e.slot == Slot::Input) {
+      for (size_t i = 0; i < rows.size(); ++i) J(i, j) = lin.B(rows[i], e.index);
+      continue;
+    }
+    const auto& names = e.slot == Slot::Q ? model.getQNames() : e.slot == Slot::U ? model.getUNames() : model.getZNames();
+    const int c = lin.findState(names[e.index]);
+    if (c >= 0)
+      for (size_t i = 0; i < rows.size(); ++i) J(i, j) = lin.A(rows[i], c);
+  }
+  return J;
+}
+
 LinearModel linearize(const VehicleModel& model, const TrimResult& trim, const LinearizeOptions& opt) {
   const StateFunction fn(model);
   const CoordinateIndices& ix = model.getIndices();

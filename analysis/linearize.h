@@ -47,6 +47,11 @@ struct LinearModel {
 /// (QR rank, threshold 1e-9), until there are as many as G has rows.
 std::vector<int> chooseDependentColumns(const Eigen::MatrixXd& G, const std::vector<int>& priority);
 
+/// The trim's Newton Jacobian d[udot; zdot]/d(getTrimUnknowns) read off A and B (the block of
+/// A and B), for models without constraints whose linearisation kept every u and z and has B; columns
+/// of removed coordinates are zero. Empty when that does not hold (then the trim differentiates).
+Eigen::MatrixXd calcTrimJacobian(const VehicleModel& model, const LinearModel& lin);
+
 /// Linearises `model` about `trim` (seed eq. 26) and computes eigenvalues and eigenvectors.
 LinearModel linearize(const VehicleModel& model, const TrimResult& trim, const LinearizeOptions& options = {});
 

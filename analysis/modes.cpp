@@ -32,28 +32,66 @@ std::string coordinateOf(const LinearState& s) {
 }
 }  // namespace
 
-ModeContent calcModeContent(const LinearModel& lin, int k, double wheelbase) {
-  ModeContent c{};
-  const std::complex<double> lambda = lin.eigenvalues[k];
-  const double rateScale = std::max(1.0, std::abs(lambda));
-  for (size_t i = 0; i < lin.states.size(); ++i) {
+namespace {
+
+bool hasSameStates(const LinearModel& a, const LinearModel& b) {
+  if (a.states.size() != b.states.size()) return false;
+  for (size_t i = 0; i < a.states.size(); ++i)
+    if (a.states[i].name != b.states[i].name) return false;
+  return true;
+}
+
+// What each state of a linear model contributes to mode content: its group and how to weigh it.
+struct StateWeights {
+  std::vector<int> group;         // DofGroup, or -1: skipped (a rate whose coordinate is kept, wheel spin)
+  std::vector<char> isRate;       // divided by max(1, |lambda|)
+  std::vector<char> perWheelbase; // lateral and forward displacements, divided by the wheelbase
+  std::vector<int> compliance;    // indices of swingarm_* coordinates
+};
+
+StateWeights calcStateWeights(const LinearModel& lin) {
+  StateWeights w;
+  const size_t n = lin.states.size();
+  w.group.resize(n);
+  w.isRate.resize(n);
+  w.perWheelbase.resize(n);
+  for (size_t i = 0; i < n; ++i) {
     const LinearState& st = lin.states[i];
+    const std::string coordinate = coordinateOf(st);
+    const DofGroup g = getDofGroup(coordinate);
+    w.group[i] = static_cast<int>(g);
+    w.isRate[i] = st.entry.slot == Slot::U;
+    w.perWheelbase[i] = g == DofGroup::Lateral || g == DofGroup::Forward;
+    // A rate whose coordinate is kept counts through it; wheel spin follows pitch and tyre slip and
+    // says nothing about the mode's character.
+    if (st.entry.slot == Slot::U && (lin.findState(coordinate) >= 0 || st.name.find("wheel_angle") != std::string::npos))
+      w.group[i] = -1;
+    if (st.entry.slot == Slot::Q && st.name.rfind("swingarm_", 0) == 0) w.compliance.push_back(static_cast<int>(i));
+  }
+  return w;
+}
+
+ModeContent calcModeContent(const LinearModel& lin, int k, double wheelbase, const StateWeights& w) {
+  ModeContent c{};
+  const double rateScale = std::max(1.0, std::abs(lin.eigenvalues[k]));
+  for (size_t i = 0; i < w.group.size(); ++i) {
+    if (w.group[i] < 0) continue;
     double mag = std::abs(lin.eigenvectors(i, k));
-    const DofGroup g = getDofGroup(coordinateOf(st));
-    if (st.entry.slot == Slot::U) {
-      if (lin.findState(coordinateOf(st)) >= 0) continue;  // its coordinate counts instead
-      // Wheel spin follows pitch and tyre slip; it says nothing about the mode's character.
-      if (st.name.find("wheel_angle") != std::string::npos) continue;
-      mag /= rateScale;
-    }
-    if (g == DofGroup::Lateral || g == DofGroup::Forward) mag /= wheelbase;
-    c[static_cast<int>(g)] += mag * mag;
+    if (w.isRate[i]) mag /= rateScale;
+    if (w.perWheelbase[i]) mag /= wheelbase;
+    c[w.group[i]] += mag * mag;
   }
   double sum = 0;
   for (double v : c) sum += v;
   if (sum > 0)
     for (double& v : c) v /= sum;
   return c;
+}
+
+}  // namespace
+
+ModeContent calcModeContent(const LinearModel& lin, int k, double wheelbase) {
+  return calcModeContent(lin, k, wheelbase, calcStateWeights(lin));
 }
 
 double calcMac(const LinearModel& a, int ka, const LinearModel& b, int kb) {
@@ -72,11 +110,14 @@ double calcMac(const LinearModel& a, int ka, const LinearModel& b, int kb) {
   return (na > 0 && nb > 0) ? std::norm(dot) / (na * nb) : 0.0;
 }
 
-double calcMatchCost(const LinearModel& a, int ka, const LinearModel& b, int kb) {
-  const auto la = a.eigenvalues[ka], lb = b.eigenvalues[kb];
+double calcMatchCost(std::complex<double> la, std::complex<double> lb, double mac) {
   const double scale = 1.0 + 0.5 * (std::abs(la) + std::abs(lb));
   // Eigenvalue proximity dominates; MAC separates modes that pass close to each other.
-  return std::abs(la - lb) / scale + 0.2 * (1.0 - calcMac(a, ka, b, kb));
+  return std::abs(la - lb) / scale + 0.2 * (1.0 - mac);
+}
+
+double calcMatchCost(const LinearModel& a, int ka, const LinearModel& b, int kb) {
+  return calcMatchCost(a.eigenvalues[ka], b.eigenvalues[kb], calcMac(a, ka, b, kb));
 }
 
 int findBestMatch(const LinearModel& a, int ka, const LinearModel& b) {
@@ -95,13 +136,9 @@ namespace {
 // Share of the in-plane content above which the rear suspension coordinate makes a mode rear_hop.
 constexpr double kRearHopShare = 0.9;
 
-// Share of each compliance coordinate (swingarm_*) in eigenvector k.
-std::map<std::string, double> calcComplianceShares(const LinearModel& lin, int k) {
-  std::map<std::string, double> out;
-  for (size_t i = 0; i < lin.states.size(); ++i)
-    if (lin.states[i].entry.slot == Slot::Q && lin.states[i].name.rfind("swingarm_", 0) == 0)
-      out[lin.states[i].name] += std::norm(lin.eigenvectors(i, k));
-  return out;
+// Share of each compliance coordinate (swingarm_*) in eigenvector k, added to `out`.
+void addComplianceShares(const LinearModel& lin, int k, const StateWeights& w, std::map<std::string, double>& out) {
+  for (int i : w.compliance) out[lin.states[i].name] += std::norm(lin.eigenvectors(i, k));
 }
 
 struct BranchStats {
@@ -112,17 +149,18 @@ struct BranchStats {
   std::map<std::string, double> compliance;
 };
 
-BranchStats calcBranchStats(const std::vector<LinearModel>& models, double wheelbase, const ModeBranch& br) {
+BranchStats calcBranchStats(const std::vector<LinearModel>& models, const std::vector<const StateWeights*>& weights,
+                            double wheelbase, const ModeBranch& br) {
   BranchStats st;
   const double n = static_cast<double>(models.size());
   double osc = 0;
   for (size_t s = 0; s < models.size(); ++s) {
     const std::complex<double> l = br.eigenvalue[s];
-    const ModeContent c = calcModeContent(models[s], br.index[s], wheelbase);
+    const ModeContent c = calcModeContent(models[s], br.index[s], wheelbase, *weights[s]);
     for (int g = 0; g < kNumDofGroups; ++g) st.content[g] += c[g] / n;
     const double inPlaneOrLateral = 1.0 - c[int(DofGroup::Forward)] - c[int(DofGroup::Yaw)] - c[int(DofGroup::Lateral)];
     if (!(std::abs(l) < 1e-6 && inPlaneOrLateral < 1e-3)) st.neutral = false;
-    for (const auto& [name, share] : calcComplianceShares(models[s], br.index[s])) st.compliance[name] += share;
+    addComplianceShares(models[s], br.index[s], *weights[s], st.compliance);
     if (std::abs(l.imag()) > 1e-9 * std::max(1.0, std::abs(l))) {
       ++osc;
       const double steer = c[int(DofGroup::Steer)];
@@ -141,10 +179,19 @@ BranchStats calcBranchStats(const std::vector<LinearModel>& models, double wheel
 // wobble, weave, capsize, castor, other. Weave and wobble keep only their best pair, capsize and
 // castor their best branch; the rest become `other`.
 void labelBranches(const std::vector<LinearModel>& models, double wheelbase, std::vector<ModeBranch>& branches) {
+  // State weights once per state layout (a sweep has one).
+  std::vector<StateWeights> layouts;
+  std::vector<const StateWeights*> weights(models.size());
+  std::vector<size_t> layoutOf;
+  for (size_t s = 0; s < models.size(); ++s) {
+    if (s == 0 || !hasSameStates(models[s], models[s - 1])) layouts.push_back(calcStateWeights(models[s]));
+    layoutOf.push_back(layouts.size() - 1);
+  }
+  for (size_t s = 0; s < models.size(); ++s) weights[s] = &layouts[layoutOf[s]];
   std::map<std::string, std::vector<std::pair<double, size_t>>> candidates;
   for (size_t b = 0; b < branches.size(); ++b) {
     ModeBranch& br = branches[b];
-    const BranchStats st = calcBranchStats(models, wheelbase, br);
+    const BranchStats st = calcBranchStats(models, weights, wheelbase, br);
     const ModeContent& c = st.content;
     const double roll = c[int(DofGroup::Roll)], steer = c[int(DofGroup::Steer)];
     const double lateral = roll + steer + c[int(DofGroup::Yaw)] + c[int(DofGroup::Lateral)];
@@ -194,10 +241,25 @@ std::vector<ModeBranch> trackModes(const std::vector<LinearModel>& models, doubl
   for (size_t s = 1; s < models.size(); ++s) {
     const LinearModel &prev = models[s - 1], &cur = models[s];
     if (cur.eigenvalues.size() != n) throw std::runtime_error("trackModes: model size changed with speed");
-    // Greedy assignment on ascending cost.
+    // Greedy assignment on ascending cost. With the same state layout (a sweep's rule) every MAC
+    // comes from one product of the unit eigenvector matrices.
+    const bool sameLayout = hasSameStates(prev, cur);
+    Eigen::MatrixXd mac;
+    if (sameLayout) {
+      const Eigen::MatrixXcd dot = prev.eigenvectors.adjoint() * cur.eigenvectors;
+      const Eigen::VectorXd np = prev.eigenvectors.colwise().squaredNorm(), nc = cur.eigenvectors.colwise().squaredNorm();
+      mac = dot.cwiseAbs2().array() / (np * nc.transpose()).array();
+    }
     std::vector<std::tuple<double, int, int>> pairs;
-    for (int b = 0; b < n; ++b)
-      for (int k = 0; k < n; ++k) pairs.emplace_back(calcMatchCost(prev, branches[b].index.back(), cur, k), b, k);
+    pairs.reserve(n * n);
+    for (int b = 0; b < n; ++b) {
+      const int kp = branches[b].index.back();
+      for (int k = 0; k < n; ++k) {
+        const auto la = prev.eigenvalues[kp], lb = cur.eigenvalues[k];
+        const double cost = sameLayout ? calcMatchCost(la, lb, mac(kp, k)) : calcMatchCost(prev, kp, cur, k);
+        pairs.emplace_back(cost, b, k);
+      }
+    }
     std::sort(pairs.begin(), pairs.end());
     std::vector<int> assigned(n, -1);
     std::vector<bool> taken(n, false);

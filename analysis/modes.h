@@ -42,6 +42,8 @@ void labelBranches(const std::vector<LinearModel>& models, double wheelbase, std
 
 /// Cost of matching eigenvalue ka of `a` to kb of `b` (0 = identical).
 double calcMatchCost(const LinearModel& a, int ka, const LinearModel& b, int kb);
+/// The same cost from the two eigenvalues (1/s) and their MAC (0..1).
+double calcMatchCost(std::complex<double> la, std::complex<double> lb, double mac);
 
 /// Index of the eigenvalue of `b` that best continues eigenvalue ka of `a`.
 int findBestMatch(const LinearModel& a, int ka, const LinearModel& b);

@@ -71,10 +71,16 @@ SweepResult runSweep(const VehicleModel& model, const SweepOptions& opt) {
   out.trims.resize(n);
   out.models.resize(n);
   // Contiguous blocks of speeds, one per worker, each a warm-started chain.
+  // Without constraints the next speed's trim Jacobian is read off this speed's A and B (B costs
+  // four realizations at the Dynamics stage; a differentiated trim Jacobian costs two per unknown).
+  const SimTK::State& s0 = model.getDefaultState();
+  if (s0.getNQErr() + s0.getNUErr() == 0) fixed.linearize.computeB = true;
   auto runBlock = [&](const VehicleModel& m, size_t begin, size_t end) {
     for (size_t k = begin; k < end; ++k) {
       out.trims[k] = calcTrim(m, out.speeds[k], opt.trim, k > begin ? &out.trims[k - 1] : nullptr);
       out.models[k] = linearize(m, out.trims[k], fixed.linearize);
+      Eigen::MatrixXd J = calcTrimJacobian(m, out.models[k]);
+      if (J.size() > 0) out.trims[k].jacobian = std::move(J);
     }
   };
   const size_t workers = std::max<size_t>(1, std::min<size_t>(opt.threads, n));
