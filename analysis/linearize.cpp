@@ -39,9 +39,10 @@ std::vector<int> withPriority(const std::vector<int>& first, int n) {
 
 }  // namespace
 
-Eigen::MatrixXd calcTrimJacobian(const VehicleModel& model, const LinearModel& lin) {
+Eigen::MatrixXd calcTrimJacobian(const VehicleModel& model, const LinearModel& lin, const Eigen::MatrixXd& previous) {
   const SimTK::State& s = model.getDefaultState();
-  if (s.getNQErr() + s.getNUErr() > 0 || lin.B.cols() != kNumInputs) return {};
+  const bool hasB = lin.B.cols() == kNumInputs;
+  if (s.getNQErr() + s.getNUErr() > 0) return {};
   std::vector<int> rows;  // residual rows: every udot, then every zdot
   for (const auto* names : {&model.getUNames(), &model.getZNames()})
     for (const auto& name : *names) {
@@ -49,11 +50,13 @@ Eigen::MatrixXd calcTrimJacobian(const VehicleModel& model, const LinearModel& l
       if (rows.back() < 0) return {};
     }
   const auto unknowns = getTrimUnknowns(model);
-  Eigen::MatrixXd J = Eigen::MatrixXd::Zero(rows.size(), unknowns.size());
+  const Eigen::Index nr = static_cast<Eigen::Index>(rows.size()), nx = static_cast<Eigen::Index>(unknowns.size());
+  if (!hasB && (previous.rows() != nr || previous.cols() != nx)) return {};
+  Eigen::MatrixXd J = Eigen::MatrixXd::Zero(nr, nx);
   for (size_t j = 0; j < unknowns.size(); ++j) {
     const StateEntry& e = unknowns[j];
     if (e.slot == Slot::Input) {
-      for (size_t i = 0; i < rows.size(); ++i) J(i, j) = lin.B(rows[i], e.index);
+      for (size_t i = 0; i < rows.size(); ++i) J(i, j) = hasB ? lin.B(rows[i], e.index) : previous(i, j);
       continue;
     }
     const auto& names = e.slot == Slot::Q ? model.getQNames() : e.slot == Slot::U ? model.getUNames() : model.getZNames();

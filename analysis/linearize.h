@@ -48,9 +48,11 @@ struct LinearModel {
 std::vector<int> chooseDependentColumns(const Eigen::MatrixXd& G, const std::vector<int>& priority);
 
 /// The trim's Newton Jacobian d[udot; zdot]/d(getTrimUnknowns) read off A and B (the block of
-/// A and B), for models without constraints whose linearisation kept every u and z and has B; columns
-/// of removed coordinates are zero. Empty when that does not hold (then the trim differentiates).
-Eigen::MatrixXd calcTrimJacobian(const VehicleModel& model, const LinearModel& lin);
+/// A and B), for models without constraints whose linearisation kept every u and z; columns of removed
+/// coordinates are zero. Without B the input columns (M^-1 times a unit mobility force: configuration
+/// only, so nearly speed-independent) are copied from `previous`, a trim Jacobian of the same model.
+/// Empty when neither holds (then the trim differentiates).
+Eigen::MatrixXd calcTrimJacobian(const VehicleModel& model, const LinearModel& lin, const Eigen::MatrixXd& previous = {});
 
 /// Linearises `model` about `trim` (seed eq. 26) and computes eigenvalues and eigenvectors.
 LinearModel linearize(const VehicleModel& model, const TrimResult& trim, const LinearizeOptions& options = {});

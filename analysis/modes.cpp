@@ -136,10 +136,6 @@ namespace {
 // Share of the in-plane content above which the rear suspension coordinate makes a mode rear_hop.
 constexpr double kRearHopShare = 0.9;
 
-// Share of each compliance coordinate (swingarm_*) in eigenvector k, added to `out`.
-void addComplianceShares(const LinearModel& lin, int k, const StateWeights& w, std::map<std::string, double>& out) {
-  for (int i : w.compliance) out[lin.states[i].name] += std::norm(lin.eigenvectors(i, k));
-}
 
 struct BranchStats {
   ModeContent content{};        // mean over speeds
@@ -154,19 +150,33 @@ BranchStats calcBranchStats(const std::vector<LinearModel>& models, const std::v
   BranchStats st;
   const double n = static_cast<double>(models.size());
   double osc = 0;
+  const StateWeights* shareLayout = nullptr;
+  size_t shareModel = 0;  // a model with shareLayout, for the names
+  std::vector<double> shares;
+  auto flushShares = [&]() {
+    for (size_t c = 0; c < shares.size(); ++c) st.compliance[models[shareModel].states[shareLayout->compliance[c]].name] += shares[c];
+    shares.clear();
+  };
   for (size_t s = 0; s < models.size(); ++s) {
     const std::complex<double> l = br.eigenvalue[s];
     const ModeContent c = calcModeContent(models[s], br.index[s], wheelbase, *weights[s]);
     for (int g = 0; g < kNumDofGroups; ++g) st.content[g] += c[g] / n;
     const double inPlaneOrLateral = 1.0 - c[int(DofGroup::Forward)] - c[int(DofGroup::Yaw)] - c[int(DofGroup::Lateral)];
     if (!(std::abs(l) < 1e-6 && inPlaneOrLateral < 1e-3)) st.neutral = false;
-    addComplianceShares(models[s], br.index[s], *weights[s], st.compliance);
+    // Compliance shares (swingarm_* coordinates), summed per layout and named once.
+    if (weights[s] != shareLayout) {
+      flushShares();
+      shareLayout = weights[s], shareModel = s;
+      shares.assign(shareLayout->compliance.size(), 0.0);
+    }
+    for (size_t c = 0; c < shares.size(); ++c) shares[c] += std::norm(models[s].eigenvectors(shareLayout->compliance[c], br.index[s]));
     if (std::abs(l.imag()) > 1e-9 * std::max(1.0, std::abs(l))) {
       ++osc;
       const double steer = c[int(DofGroup::Steer)];
       if (std::abs(l.imag()) / (2 * M_PI) > 4.0 && steer > 0.4 && steer > c[int(DofGroup::Roll)]) st.wobbleLike += 1;
     }
   }
+  flushShares();
   st.oscillatory = osc / n;
   st.wobbleLike = osc > 0 ? st.wobbleLike / osc : 0;
   return st;
@@ -252,19 +262,28 @@ std::vector<ModeBranch> trackModes(const std::vector<LinearModel>& models, doubl
     }
     std::vector<std::tuple<double, int, int>> pairs;
     pairs.reserve(n * n);
+    std::vector<int> assigned(n, -1);
+    std::vector<bool> taken(n, false);
+    bool distinct = true;  // every branch's cheapest match differs: greedy takes exactly those
     for (int b = 0; b < n; ++b) {
       const int kp = branches[b].index.back();
+      double best = std::numeric_limits<double>::infinity();
       for (int k = 0; k < n; ++k) {
         const auto la = prev.eigenvalues[kp], lb = cur.eigenvalues[k];
         const double cost = sameLayout ? calcMatchCost(la, lb, mac(kp, k)) : calcMatchCost(prev, kp, cur, k);
         pairs.emplace_back(cost, b, k);
+        if (cost < best) best = cost, assigned[b] = k;
       }
+      distinct = distinct && !taken[assigned[b]];
+      taken[assigned[b]] = true;
     }
-    std::sort(pairs.begin(), pairs.end());
-    std::vector<int> assigned(n, -1);
-    std::vector<bool> taken(n, false);
-    for (const auto& [cost, b, k] : pairs)
-      if (assigned[b] < 0 && !taken[k]) assigned[b] = k, taken[k] = true;
+    if (!distinct) {
+      std::sort(pairs.begin(), pairs.end());
+      std::fill(assigned.begin(), assigned.end(), -1);
+      std::fill(taken.begin(), taken.end(), false);
+      for (const auto& [cost, b, k] : pairs)
+        if (assigned[b] < 0 && !taken[k]) assigned[b] = k, taken[k] = true;
+    }
     for (int b = 0; b < n; ++b) {
       branches[b].index.push_back(assigned[b]);
       branches[b].eigenvalue.push_back(cur.eigenvalues[assigned[b]]);

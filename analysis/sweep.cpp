@@ -71,15 +71,14 @@ SweepResult runSweep(const VehicleModel& model, const SweepOptions& opt) {
   out.trims.resize(n);
   out.models.resize(n);
   // Contiguous blocks of speeds, one per worker, each a warm-started chain.
-  // Without constraints the next speed's trim Jacobian is read off this speed's A and B (B costs
-  // four realizations at the Dynamics stage; a differentiated trim Jacobian costs two per unknown).
-  const SimTK::State& s0 = model.getDefaultState();
-  if (s0.getNQErr() + s0.getNUErr() == 0) fixed.linearize.computeB = true;
+  // Without constraints the next speed's trim Jacobian is read off this speed's A, keeping the
+  // input columns of the one this trim used (a differentiated trim Jacobian costs two
+  // realizations per unknown).
   auto runBlock = [&](const VehicleModel& m, size_t begin, size_t end) {
     for (size_t k = begin; k < end; ++k) {
       out.trims[k] = calcTrim(m, out.speeds[k], opt.trim, k > begin ? &out.trims[k - 1] : nullptr);
       out.models[k] = linearize(m, out.trims[k], fixed.linearize);
-      Eigen::MatrixXd J = calcTrimJacobian(m, out.models[k]);
+      Eigen::MatrixXd J = calcTrimJacobian(m, out.models[k], out.trims[k].jacobian);
       if (J.size() > 0) out.trims[k].jacobian = std::move(J);
     }
   };
