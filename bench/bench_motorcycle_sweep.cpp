@@ -1,5 +1,6 @@
 // Issue 3 speed figures: the enduro `twist` model over 0-40 m/s at 0.1 m/s (401 speeds), serial and
-// on two threads, and one realize to Acceleration for the (2n+1)-realize cost ratio.
+// on two threads, and one realize to Acceleration for the (2n+1)-realize cost ratio (counters: n states,
+// realize_us, yardstick_ms = 401 (2n+1) realizes; ratio = Time / yardstick_ms).
 #include <benchmark/benchmark.h>
 
 #include "analysis/sweep.h"
@@ -15,10 +16,17 @@ void BM_EnduroTwistSweep401(benchmark::State& st) {
   motostab::SweepOptions opt;
   opt.start = 0, opt.stop = 40, opt.step = 0.1;
   opt.threads = static_cast<int>(st.range(0));
+  size_t states = 0;
   for (auto _ : st) {
     auto r = motostab::runSweep(model, opt);
+    states = r.models.back().A.rows();
     benchmark::DoNotOptimize(r.criticalSpeeds.data());
   }
+  // The issue's yardstick: (2n+1) realizations to Acceleration per speed, timed here on this machine.
+  const double realize = motostab::bench::calcRealizeSeconds(model, motostab::calcTrim(model, 20.0).state, 20000);
+  st.counters["n"] = static_cast<double>(states);
+  st.counters["realize_us"] = realize * 1e6;
+  st.counters["yardstick_ms"] = 401 * (2 * states + 1) * realize * 1e3;
 }
 BENCHMARK(BM_EnduroTwistSweep401)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->Iterations(3)->UseRealTime();
 

@@ -65,6 +65,13 @@ void RosenbrockStepper::initialize(double t, const Eigen::VectorXd& y) {
   previousError_ = 1;
 }
 
+void RosenbrockStepper::reinitialize(double t, const Eigen::VectorXd& y) {
+  if (J_.rows() != y.size()) return initialize(t, y);
+  t_ = t;
+  y_ = y;
+  callRhs(t_, y_, f_);
+}
+
 double RosenbrockStepper::calcErrorNorm(const Eigen::VectorXd& err, const Eigen::VectorXd& y0,
                                         const Eigen::VectorXd& y1) const {
   double sum = 0;
@@ -82,6 +89,7 @@ void RosenbrockStepper::step(double tStop) {
   const int n = static_cast<int>(y_.size());
   Eigen::VectorXd k[4], ys(n), fs(n), acc(n), y1(n), err(n);
   for (auto& ki : k) ki.resize(n);
+  bool rejectedHere = false;
   for (;;) {
     if (t_ - jacobianTime_ > opt_.jacobianMaxAge) {
       calcJacobian(t_, y_, f_, J_);
@@ -126,10 +134,11 @@ void RosenbrockStepper::step(double tStop) {
       return;
     }
     ++numRejected_;
-    if (jacobianTime_ < t_) {  // a stale J may be the cause: refresh before shrinking further
+    if (rejectedHere && jacobianTime_ < t_) {  // rejected twice: a stale J may be the cause
       calcJacobian(t_, y_, f_, J_);
       jacobianTime_ = t_;
     }
+    rejectedHere = true;
     h_ = h * (std::isfinite(e) ? std::clamp(0.9 * std::pow(e, -1.0 / 3), 0.2, 0.9) : 0.2);
     if (h_ < opt_.minStep) {
       std::ostringstream os;

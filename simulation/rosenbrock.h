@@ -24,7 +24,7 @@ struct RosenbrockOptions {
   double initialStep = 1e-3;       ///< s
   double maxStep = 0.05;           ///< s
   double minStep = 1e-10;          ///< s; a smaller step needed is a failure
-  double jacobianMaxAge = 0.5;     ///< s of simulated time before J is recomputed
+  double jacobianMaxAge = 2.0;     ///< s of simulated time before J is recomputed (also after a rejection)
 };
 
 /// Adaptive ROS34PW2 on dy/dt = f(t, y). The caller owns the model; this class owns the step logic.
@@ -37,8 +37,9 @@ class RosenbrockStepper {
 
   /// Starts at (t, y); computes f and J there.
   void initialize(double t, const Eigen::VectorXd& y);
-  /// Restarts after a discontinuity in f or y at the current time (new f, new J, cautious step).
-  void reinitialize(double t, const Eigen::VectorXd& y) { initialize(t, y); }
+  /// Restarts after a discontinuity in f or y (new f; J and the step size are kept: a W-method needs
+  /// no exact J, and a step that fails the error test is retried smaller).
+  void reinitialize(double t, const Eigen::VectorXd& y);
   /// Takes one accepted step, ending no later than tStop (s). Throws std::runtime_error if the step
   /// size falls below minStep or f turns non-finite.
   void step(double tStop);
