@@ -274,6 +274,8 @@ std::vector<ModeBranch> trackModes(const std::vector<LinearModel>& models, doubl
         pairs.emplace_back(cost, b, k);
         if (cost < best) best = cost, assigned[b] = k;
       }
+      if (assigned[b] < 0) throw std::runtime_error("trackModes: non-finite eigenvalues or eigenvectors at speed index " +
+                                                     std::to_string(s));
       distinct = distinct && !taken[assigned[b]];
       taken[assigned[b]] = true;
     }

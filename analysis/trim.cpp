@@ -50,10 +50,16 @@ TrimResult calcTrim(const VehicleModel& model, double speed, const TrimOptions& 
   }
   for (int i : model.getCyclicQ()) s.updQ()[i] = 0;
   model.setInput(s, Input::RollTorque, 0);
-  // Predictor: linear extrapolation along the warm start's secant (residual O(dv^2), not O(dv)).
-  if (warm && warm->unknownsPerSpeed.size() == n)
-    for (int j = 0; j < n; ++j)
-      fn.set(s, unknowns[j], fn.get(warm->state, unknowns[j]) + warm->unknownsPerSpeed[j] * (speed - oldSpeed));
+  // Predictor: Newton interpolation through the last trims (residual O(dv^3) with three, O(dv^2)
+  // with two), instead of the warm start itself (O(dv)).
+  if (warm && warm->unknownsPerSpeed.size() == n) {
+    const bool quadratic = warm->unknownsCurvature.size() == n;
+    for (int j = 0; j < n; ++j) {
+      double x = fn.get(warm->state, unknowns[j]) + warm->unknownsPerSpeed[j] * (speed - oldSpeed);
+      if (quadratic) x += warm->unknownsCurvature[j] * (speed - oldSpeed) * (speed - warm->secantStartSpeed);
+      fn.set(s, unknowns[j], x);
+    }
+  }
 
   Eigen::VectorXd r, rTrial, col;
   fn.calcTrimResidual(s, r);
@@ -61,6 +67,7 @@ TrimResult calcTrim(const VehicleModel& model, double speed, const TrimOptions& 
   bool jacobianIsCurrent = false;  // computed at the current iterate
   Eigen::CompleteOrthogonalDecomposition<Eigen::MatrixXd> decomposition;
   bool factored = false;           // decomposition holds J
+  bool refresh = false;            // slow convergence: differentiate again before the next step
   if (warm && warm->jacobian.cols() == n) J = warm->jacobian;
   auto computeJacobian = [&]() {
     J.resize(r.size(), n);
@@ -81,7 +88,8 @@ TrimResult calcTrim(const VehicleModel& model, double speed, const TrimOptions& 
   std::vector<double> x0(n);
   while (norm > opt.tolerance && it < opt.maxIterations) {
     ++it;
-    if (J.size() == 0) computeJacobian();
+    if (J.size() == 0 || refresh) computeJacobian();
+    refresh = false;
     if (!factored) decomposition.compute(J), factored = true;
     const Eigen::VectorXd dx = decomposition.solve(-r);
     for (int j = 0; j < n; ++j) x0[j] = fn.get(s, unknowns[j]);
@@ -99,8 +107,8 @@ TrimResult calcTrim(const VehicleModel& model, double speed, const TrimOptions& 
       computeJacobian();
       continue;
     }
-    // A Jacobian that no longer gives fast convergence is refreshed at the next iterate.
-    if (trialNorm > 0.25 * norm) J.resize(0, 0);
+    // A Jacobian that no longer gives fast convergence is refreshed before the next step, if any.
+    refresh = trialNorm > 0.25 * norm;
     jacobianIsCurrent = false;
     r = rTrial;
     norm = trialNorm;
@@ -114,6 +122,9 @@ TrimResult calcTrim(const VehicleModel& model, double speed, const TrimOptions& 
     res.unknownsPerSpeed.resize(n);
     for (int j = 0; j < n; ++j)
       res.unknownsPerSpeed[j] = (fn.get(s, unknowns[j]) - fn.get(warm->state, unknowns[j])) / (speed - oldSpeed);
+    res.secantStartSpeed = oldSpeed;
+    if (warm->unknownsPerSpeed.size() == n && std::abs(speed - warm->secantStartSpeed) > 1e-12)
+      res.unknownsCurvature = (res.unknownsPerSpeed - warm->unknownsPerSpeed) / (speed - warm->secantStartSpeed);
   }
   return res;
 }

@@ -21,10 +21,17 @@ struct TrimResult {
   double residualNorm = 0;    ///< infinity norm of [udot; zdot; qerr; uerr]
   int iterations = 0;
   int jacobianEvaluations = 0;  ///< finite-difference Jacobians computed (2 realizations per unknown each)
-  Eigen::MatrixXd jacobian;   ///< d residual / d unknowns at the solution (reusable as a warm start)
+  /// d residual / d unknowns near the solution, for the next warm start: the last one the Newton
+  /// iteration used (differentiated at some iterate of this or an earlier speed), or in sweeps of
+  /// constraint-free models the block of this speed's A (calcTrimJacobian).
+  Eigen::MatrixXd jacobian;
   /// Secant slope d(unknowns)/d(speed) from the warm start to this trim (getTrimUnknowns order,
   /// their units per m/s); empty without a warm start. The next warm start extrapolates with it.
   Eigen::VectorXd unknownsPerSpeed;
+  /// Second divided difference of the unknowns over this, the warm start's and its warm start's
+  /// speeds (units per (m/s)^2), and the earlier of those speeds: the predictor is then quadratic.
+  Eigen::VectorXd unknownsCurvature;
+  double secantStartSpeed = 0;  ///< m/s, the warm start's speed
 };
 
 /// A trim that did not converge: names the speed and the residual.

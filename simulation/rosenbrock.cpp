@@ -59,6 +59,7 @@ void RosenbrockStepper::initialize(double t, const Eigen::VectorXd& y) {
   y_ = y;
   f_.resize(y.size());
   callRhs(t_, y_, f_);
+  if (!f_.allFinite()) throw std::runtime_error("Rosenbrock: the derivative is non-finite at the start");
   calcJacobian(t_, y_, f_, J_);
   jacobianTime_ = t_;
   h_ = std::min(opt_.initialStep, opt_.maxStep);
@@ -70,6 +71,7 @@ void RosenbrockStepper::reinitialize(double t, const Eigen::VectorXd& y) {
   t_ = t;
   y_ = y;
   callRhs(t_, y_, f_);
+  if (!f_.allFinite()) throw std::runtime_error("Rosenbrock: the derivative is non-finite at the restart");
 }
 
 double RosenbrockStepper::calcErrorNorm(const Eigen::VectorXd& err, const Eigen::VectorXd& y0,
@@ -85,12 +87,14 @@ double RosenbrockStepper::calcErrorNorm(const Eigen::VectorXd& err, const Eigen:
 }
 
 void RosenbrockStepper::step(double tStop) {
+  if (!(tStop > t_)) throw std::invalid_argument("Rosenbrock: the stop time must lie ahead of the current time");
   const RosenbrockTableau& tab = getRos34pw2Tableau();
   const int n = static_cast<int>(y_.size());
   Eigen::VectorXd k[4], ys(n), fs(n), acc(n), y1(n), err(n);
   for (auto& ki : k) ki.resize(n);
   bool rejectedHere = false;
   for (;;) {
+    bool nonFinite = false;
     if (t_ - jacobianTime_ > opt_.jacobianMaxAge) {
       calcJacobian(t_, y_, f_, J_);
       jacobianTime_ = t_;
@@ -111,6 +115,7 @@ void RosenbrockStepper::step(double tStop) {
         c += tab.alpha(i, j);
       }
       callRhs(t_ + c * h, ys, fs);
+      if (!fs.allFinite()) nonFinite = true;
       k[i] = lu.solve(h * fs + h * (J_ * acc));
     }
     y1 = y_;
@@ -119,17 +124,20 @@ void RosenbrockStepper::step(double tStop) {
       y1 += tab.b[i] * k[i];
       err += (tab.b[i] - tab.bHat[i]) * k[i];
     }
-    const double e = y1.allFinite() ? calcErrorNorm(err, y_, y1) : HUGE_VAL;
+    if (!y1.allFinite()) nonFinite = true;
+    const double e = nonFinite ? HUGE_VAL : calcErrorNorm(err, y_, y1);
     if (e <= 1) {
       t_ = last ? tStop : t_ + h;
       y_ = y1;
       callRhs(t_, y_, f_);
       if (!f_.allFinite()) throw std::runtime_error("Rosenbrock: the derivative became non-finite");
       ++numSteps_;
+      // A step shortened to land on tStop says little about the next one: keep h_ and the history.
+      if (last && h < h_) return;
       // Gustafsson-style PI control on the order-2 estimate (local error ~ h^3).
       double factor = 0.9 * std::pow(std::max(e, 1e-10), -0.7 / 3) * std::pow(std::max(previousError_, 1e-10), 0.4 / 3);
-      factor = std::clamp(factor, 0.2, 5.0);
-      if (!last || h >= h_) h_ = h * factor;
+      factor = std::clamp(factor, 0.2, rejectedHere ? 1.0 : 5.0);
+      h_ = h * factor;
       previousError_ = e;
       return;
     }
@@ -142,7 +150,8 @@ void RosenbrockStepper::step(double tStop) {
     h_ = h * (std::isfinite(e) ? std::clamp(0.9 * std::pow(e, -1.0 / 3), 0.2, 0.9) : 0.2);
     if (h_ < opt_.minStep) {
       std::ostringstream os;
-      os << "Rosenbrock: step size " << h_ << " s below the minimum at t = " << t_ << " s";
+      os << "Rosenbrock: step size " << h_ << " s below the minimum at t = " << t_ << " s"
+         << (nonFinite ? " (the derivative is non-finite in every trial step)" : "");
       throw std::runtime_error(os.str());
     }
   }

@@ -24,7 +24,7 @@ struct RosenbrockOptions {
   double initialStep = 1e-3;       ///< s
   double maxStep = 0.05;           ///< s
   double minStep = 1e-10;          ///< s; a smaller step needed is a failure
-  double jacobianMaxAge = 2.0;     ///< s of simulated time before J is recomputed (also after a rejection)
+  double jacobianMaxAge = 2.0;     ///< s of simulated time before J is recomputed (also after two rejections)
 };
 
 /// Adaptive ROS34PW2 on dy/dt = f(t, y). The caller owns the model; this class owns the step logic.
@@ -40,8 +40,9 @@ class RosenbrockStepper {
   /// Restarts after a discontinuity in f or y (new f; J and the step size are kept: a W-method needs
   /// no exact J, and a step that fails the error test is retried smaller).
   void reinitialize(double t, const Eigen::VectorXd& y);
-  /// Takes one accepted step, ending no later than tStop (s). Throws std::runtime_error if the step
-  /// size falls below minStep or f turns non-finite.
+  /// Takes one accepted step, ending no later than tStop (s, > getTime(), else std::invalid_argument).
+  /// Throws std::runtime_error if the step size falls below minStep (naming a non-finite f if that
+  /// was the cause) or f turns non-finite at an accepted point.
   void step(double tStop);
 
   double getTime() const { return t_; }

@@ -104,6 +104,7 @@ void checkOptions(const SimulationOptions& o) {
   if (!(o.duration > 0) || !std::isfinite(o.duration)) bad("--duration", "must be > 0 s");
   if (!(o.outputStep > 0)) bad("--output-step", "must be > 0 s");
   if (!(o.accuracy > 0 && o.accuracy < 1)) bad("--accuracy", "must be in (0, 1)");
+  if (!(o.maxStep >= 0)) bad("maxStep", "must be >= 0 s (0: the integrator's default)");
   if (!(o.fallRollLimit > 0)) bad("--fall-limit", "must be > 0");
 }
 
@@ -216,8 +217,14 @@ SimulationResult runSimulation(const Scenario& scenario, PluginRegistry& registr
     }
   for (const auto& p : opt.perturbations)
     if (p.kind == PerturbationKind::RoadStep && p.start > 0 && p.start < opt.duration) segmentStarts.push_back(p.start);
+  // Switch times closer than 1e-12 s (e.g. 0.1 + 0.2 and 0.3) are one switch, at the later time:
+  // a pulse ending there is then off, and a road step there is applied once.
   std::sort(segmentStarts.begin(), segmentStarts.end());
-  segmentStarts.erase(std::unique(segmentStarts.begin(), segmentStarts.end()), segmentStarts.end());
+  std::vector<double> merged;
+  for (double t : segmentStarts)
+    if (!merged.empty() && t - merged.back() < 1e-12) merged.back() = t;
+    else merged.push_back(t);
+  segmentStarts = merged;
 
   const bool control = opt.speedControl == SpeedControl::PI;
   const double massRadius = calcMassSummary(scenario).mass * scenario.rearWheel.radius;

@@ -40,7 +40,7 @@ struct SimulationOptions {
   double accuracy = 1e-6;            ///< integrator relative accuracy
   double constraintTolerance = 0;    ///< constraint projection tolerance; <= 0: equal to accuracy
   bool projectEveryStep = false;     ///< project onto the constraints after every step
-  double maxStep = 0.05;             ///< largest internal step, s
+  double maxStep = 0;                ///< largest internal step, s; 0: integrator default (ROS34PW2 0.05 s, Simbody none)
   double fallRollLimit = M_PI / 3;   ///< |roll| beyond this ends the run as a fall, rad (60 deg)
   TrimOptions trim;
   /// Extra columns appended after the standard ones, in this order.

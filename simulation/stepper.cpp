@@ -59,7 +59,7 @@ class SimbodyStepper : public Stepper {
     integ_->setAccuracy(o.accuracy);
     integ_->setConstraintTolerance(o.constraintTolerance > 0 ? o.constraintTolerance : o.accuracy);
     integ_->setProjectEveryStep(o.projectEveryStep);
-    integ_->setMaximumStepSize(o.maxStep);
+    if (o.maxStep > 0) integ_->setMaximumStepSize(o.maxStep);
     integ_->setReturnEveryInternalStep(true);
     integ_->initialize(initial);
   }
@@ -114,7 +114,7 @@ class RosenbrockAdapter : public Stepper {
   static RosenbrockOptions makeOptions(const StepperOptions& o) {
     RosenbrockOptions r;
     r.relativeTolerance = o.accuracy;
-    r.maxStep = o.maxStep;
+    if (o.maxStep > 0) r.maxStep = o.maxStep;
     return r;
   }
   RosenbrockStepper::Rhs makeRhs() {

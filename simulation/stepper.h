@@ -31,7 +31,7 @@ struct StepperOptions {
   double accuracy = 1e-6;             ///< relative accuracy; absolute on a unit scale (1 rad, 1 m, 1 rad/s)
   double constraintTolerance = 0;     ///< <= 0: equal to accuracy (Simbody integrators only)
   bool projectEveryStep = false;      ///< Simbody integrators only
-  double maxStep = 0.05;              ///< s
+  double maxStep = 0;                 ///< s; 0: the integrator's default (ROS34PW2 0.05 s, Simbody none)
 };
 
 /// Advances a State one internal step at a time; the driver interpolates samples between steps.

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <iostream>
 
 #include "simulation/rosenbrock.h"
 
@@ -23,6 +24,16 @@ TEST(Rosenbrock, TableauSatisfiesOrderConditions) {
   // The embedded solution is of order 2.
   EXPECT_NEAR(t.bHat.sum(), 1.0, 1e-14);
   EXPECT_NEAR(t.bHat.dot(bp), 0.5 - g, 1e-14);
+  // W-method conditions of order 3 (J arbitrary; Hairer & Wanner II, sec. IV.7, with Gamma holding
+  // the diagonal gamma): alpha and Gamma enter separately.
+  const Eigen::Matrix4d G = t.gammaOff + g * Eigen::Matrix4d::Identity();
+  const Eigen::Vector4d one = Eigen::Vector4d::Ones();
+  EXPECT_NEAR(t.b.dot(t.alpha * one), 0.5, 1e-14);
+  EXPECT_NEAR(t.b.dot(G * one), 0.0, 1e-14);
+  EXPECT_NEAR(t.b.dot(t.alpha * t.alpha * one), 1.0 / 6, 1e-14);
+  EXPECT_NEAR(t.b.dot(t.alpha * G * one), 0.0, 1e-14);
+  EXPECT_NEAR(t.b.dot(G * t.alpha * one), 0.0, 1e-14);
+  EXPECT_NEAR(t.b.dot(G * G * one), 0.0, 1e-14);
 }
 
 // y' = -y^2 + cos t + (2 + sin t)^2, exact y = 2 + sin t. Fixed steps h (tolerance never binds).
@@ -107,7 +118,35 @@ TEST(Rosenbrock, NonFiniteDerivativeIsAnError) {
     d[0] = t > 0.5 ? NAN : -y[0];
   }, o);
   s.initialize(0, Eigen::VectorXd::Ones(1));
-  EXPECT_THROW({ while (s.getTime() < 1) s.step(1); }, std::runtime_error);
+  try {
+    while (s.getTime() < 1) s.step(1);
+    ADD_FAILURE() << "no error";
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find("non-finite"), std::string::npos) << e.what();
+    EXPECT_LE(s.getTime(), 0.5);
+  }
+  EXPECT_THROW(s.step(s.getTime()), std::invalid_argument);  // the stop time must lie ahead
+}
+
+// Landing on many stop times (output samples, pulse switches) must not throttle the step size.
+TEST(Rosenbrock, StopTimesDoNotShrinkTheStep) {
+  auto countSteps = [](int stops) {
+    RosenbrockOptions o;
+    o.relativeTolerance = 1e-6;
+    RosenbrockStepper s([](double, const Eigen::VectorXd& y, Eigen::VectorXd& d) {
+      d.resize(2);
+      d << y[1], -std::pow(2 * M_PI * 5, 2) * y[0];
+    }, o);
+    Eigen::VectorXd y0(2);
+    y0 << 1, 0;
+    s.initialize(0, y0);
+    for (int k = 1; k <= stops; ++k)
+      while (s.getTime() < k * 1.0 / stops - 1e-12) s.step(k * 1.0 / stops);
+    return s.getNumSteps() - stops;  // steps beyond one landing step per stop
+  };
+  const int free = countSteps(1), stopped = countSteps(50);
+  std::cout << "5 Hz oscillator over 1 s: " << free << " steps, " << stopped << " beyond the 50 landing steps\n";
+  EXPECT_LE(stopped, free * 1.005);
 }
 
 }  // namespace
