@@ -27,6 +27,17 @@ void registerScenarioCommands(CLI::App& app) {
               << "  static wheel loads    rear " << loads[0] << " N, front " << loads[1] << " N\n"
               << "  contact model         " << s.contact.model << "\n"
               << "  degrees of freedom    " << model.getNumQ() << " coordinates, " << model.getNumZ() << " auxiliary states\n";
+    if (s.hasSwingarm) {
+      std::cout << "  swingarm              compliance " << s.swingarm.compliance << ", pivot "
+                << (s.swingarm.hasSuspension ? "sprung" : "rigid in-plane") << "\n";
+      if (s.swingarm.hasSuspension) {
+        const double l = calcSuspensionLever(s);
+        std::cout << "  rear suspension       " << s.swingarm.suspension.stiffness << " N m/rad, "
+                  << s.swingarm.suspension.damping << " N m s/rad about the pivot (at the wheel "
+                  << s.swingarm.suspension.stiffness / (l * l) << " N/m, " << s.swingarm.suspension.damping / (l * l)
+                  << " N s/m; lever " << l << " m); static pivot moment " << calcStaticPivotMoment(s) << " N m\n";
+      }
+    }
   });
 
   struct ImportArgs {
