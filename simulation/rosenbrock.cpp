@@ -45,6 +45,10 @@ void RosenbrockStepper::calcJacobian(double t, const Eigen::VectorXd& y, const E
   J.resize(n, n);
   Eigen::VectorXd yp = y, fp(n);
   for (int j = 0; j < n; ++j) {
+    if (std::find(opt_.constantColumns.begin(), opt_.constantColumns.end(), j) != opt_.constantColumns.end()) {
+      J.col(j).setZero();
+      continue;
+    }
     const double d = 1e-7 * std::max(1.0, std::abs(y[j]));
     yp[j] = y[j] + d;
     callRhs(t, yp, fp);

@@ -5,6 +5,7 @@
 // steps; only stability depends on J capturing the stiff modes (tyre lags, swingarm compliance).
 #include <Eigen/Dense>
 #include <functional>
+#include <vector>
 
 namespace motostab::simulation {
 
@@ -24,7 +25,10 @@ struct RosenbrockOptions {
   double initialStep = 1e-3;       ///< s
   double maxStep = 0.05;           ///< s
   double minStep = 1e-10;          ///< s; a smaller step needed is a failure
-  double jacobianMaxAge = 2.0;     ///< s of simulated time before J is recomputed (also after two rejections)
+  double jacobianMaxAge = 5.0;     ///< s of simulated time before J is recomputed (also after two rejections)
+  /// Components of y that f does not depend on (cyclic coordinates): their J columns are zero and
+  /// cost no f call.
+  std::vector<int> constantColumns;
 };
 
 /// Adaptive ROS34PW2 on dy/dt = f(t, y). The caller owns the model; this class owns the step logic.
@@ -53,7 +57,8 @@ class RosenbrockStepper {
   int getNumRhsCalls() const { return numRhs_; }
   int getNumJacobians() const { return numJacobians_; }
 
-  /// Forward-difference Jacobian of f at (t, y) with f0 = f(t, y): one f call per column.
+  /// Forward-difference Jacobian of f at (t, y) with f0 = f(t, y): one f call per column, none for
+  /// the constant columns.
   void calcJacobian(double t, const Eigen::VectorXd& y, const Eigen::VectorXd& f0, Eigen::MatrixXd& J);
 
  private:

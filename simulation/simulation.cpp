@@ -313,6 +313,7 @@ SimulationResult runSimulation(const Scenario& scenario, PluginRegistry& registr
   so.constraintTolerance = opt.constraintTolerance;
   so.projectEveryStep = opt.projectEveryStep;
   so.maxStep = opt.maxStep;
+  so.cyclicY = model.getCyclicQ();  // y starts with q
   if (resolveIntegratorKind(so.kind, s) == IntegratorKind::Rosenbrock && hasConstraints(s))
     throw InputError({"command line", 0, 0, "--integrator"},
                      "ROS34PW2 integrates models without constraints only (force-based tyres); this model has "

@@ -115,6 +115,7 @@ class RosenbrockAdapter : public Stepper {
     RosenbrockOptions r;
     r.relativeTolerance = o.accuracy;
     if (o.maxStep > 0) r.maxStep = o.maxStep;
+    r.constantColumns = o.cyclicY;
     return r;
   }
   RosenbrockStepper::Rhs makeRhs() {

@@ -3,6 +3,7 @@
 // W-method (simulation/rosenbrock.h) for models without constraints.
 #include <memory>
 #include <string>
+#include <vector>
 
 #include <Simbody.h>
 
@@ -32,6 +33,7 @@ struct StepperOptions {
   double constraintTolerance = 0;     ///< <= 0: equal to accuracy (Simbody integrators only)
   bool projectEveryStep = false;      ///< Simbody integrators only
   double maxStep = 0;                 ///< s; 0: the integrator's default (ROS34PW2 0.05 s, Simbody none)
+  std::vector<int> cyclicY;           ///< indices in y = [q; u; z] that f does not depend on (ROS34PW2 only)
 };
 
 /// Advances a State one internal step at a time; the driver interpolates samples between steps.
