@@ -67,6 +67,41 @@ Eigen::MatrixXd calcTrimJacobian(const VehicleModel& model, const LinearModel& l
   return J;
 }
 
+ColumnGrouping calcColumnGrouping(const std::vector<const LinearModel*>& samples, double tolerance) {
+  ColumnGrouping g;
+  if (samples.empty()) return g;
+  const LinearModel& first = *samples.front();
+  const int n = static_cast<int>(first.states.size());
+  for (const LinearModel* m : samples) {
+    if (static_cast<int>(m->states.size()) != n || m->A.rows() != n) return {};
+    for (int i = 0; i < n; ++i)
+      if (m->states[i].name != first.states[i].name) return {};
+  }
+  for (const auto& st : first.states) g.states.push_back(st.name);
+  g.pattern.setConstant(n, n, false);
+  for (const LinearModel* m : samples)
+    for (int i = 0; i < n; ++i) {
+      const double rowMax = m->A.row(i).cwiseAbs().maxCoeff();
+      for (int j = 0; j < n; ++j) g.pattern(i, j) = g.pattern(i, j) || std::abs(m->A(i, j)) > tolerance * rowMax;
+    }
+  std::vector<int> order;  // coordinates first, then rates, then auxiliary states
+  for (Slot slot : {Slot::Q, Slot::U, Slot::Z})
+    for (int j = 0; j < n; ++j)
+      if (first.states[j].entry.slot == slot) order.push_back(j);
+  std::vector<std::vector<int>> groups;
+  std::vector<Eigen::Matrix<bool, Eigen::Dynamic, 1>> rows;  // union of the rows each group touches
+  for (int j : order) {
+    size_t k = 0;
+    while (k < groups.size() && (rows[k].array() && g.pattern.col(j).array()).any()) ++k;
+    if (k == groups.size()) groups.emplace_back(), rows.emplace_back(Eigen::Matrix<bool, Eigen::Dynamic, 1>::Constant(n, false));
+    groups[k].push_back(j);
+    rows[k] = rows[k].array() || g.pattern.col(j).array();
+  }
+  for (auto& grp : groups)
+    if (grp.size() > 1) g.groups.push_back(grp);
+  return g;
+}
+
 LinearModel linearize(const VehicleModel& model, const TrimResult& trim, const LinearizeOptions& opt) {
   const StateFunction fn(model);
   const CoordinateIndices& ix = model.getIndices();
@@ -133,23 +168,46 @@ LinearModel linearize(const VehicleModel& model, const TrimResult& trim, const L
   const int n = static_cast<int>(lin.states.size());
   auto rowOf = [&](const StateEntry& e) { return e.slot == Slot::Q ? e.index : e.slot == Slot::U ? nq + e.index : nq + nu + e.index; };
 
-  // Columns: directional derivatives along the tangent-space basis vectors.
+  // Columns: directional derivatives along the tangent-space basis vectors, grouped ones together.
+  auto addDirection = [&](int j, double scale, std::vector<std::pair<StateEntry, double>>& dir) {
+    const StateEntry& e = lin.states[j].entry;
+    dir.push_back({e, scale});
+    if (e.slot == Slot::Z || m == 0) return;
+    const Eigen::VectorXd dDep = GdepLU.solve(-G.col(rowOf(e)));
+    for (size_t k = 0; k < depCols.size(); ++k) {
+      const int c = depCols[k];
+      dir.push_back({{c < nq ? Slot::Q : Slot::U, c < nq ? c : c - nq}, scale * dDep[k]});
+    }
+  };
   Eigen::MatrixXd A(n, n);
+  std::vector<bool> done(n, false);
+  std::vector<int> linearIndexOf;  // grouping's state index -> lin.states index
+  for (const auto& name : opt.grouping.states) linearIndexOf.push_back(lin.findState(name));
+  const bool grouped = !opt.grouping.groups.empty() &&
+                       std::find(linearIndexOf.begin(), linearIndexOf.end(), -1) == linearIndexOf.end();
+  for (const auto& group : grouped ? opt.grouping.groups : std::vector<std::vector<int>>{}) {
+    std::vector<std::pair<StateEntry, double>> dir;
+    for (int g : group) addDirection(linearIndexOf[g], stepFor(lin.states[linearIndexOf[g]].entry), dir);
+    fn.calcDirectionalDerivative(s, dir, 1.0, opt.order, yDot, col);  // sum of h_j times column j
+    for (int g : group) {
+      const int j = linearIndexOf[g];
+      const double h = stepFor(lin.states[j].entry);
+      A.col(j).setZero();
+      for (size_t r = 0; r < linearIndexOf.size(); ++r)
+        if (opt.grouping.pattern(r, g)) A(linearIndexOf[r], j) = col[rowOf(lin.states[linearIndexOf[r]].entry)] / h;
+      done[j] = true;
+    }
+  }
   for (int j = 0; j < n; ++j) {
+    if (done[j]) continue;
     const StateEntry& e = lin.states[j].entry;
     const bool knownDeadYaw = e.slot == Slot::Q && e.index == ix.yaw && opt.removeYaw == 1;
     if ((isCyclicQ(e) && !opt.computeCyclicColumns) || knownDeadYaw) {
       A.col(j).setZero();
       continue;
     }
-    std::vector<std::pair<StateEntry, double>> dir{{e, 1.0}};
-    if (e.slot != Slot::Z && m > 0) {
-      const Eigen::VectorXd dDep = GdepLU.solve(-G.col(rowOf(e)));
-      for (size_t k = 0; k < depCols.size(); ++k) {
-        const int c = depCols[k];
-        dir.push_back({{c < nq ? Slot::Q : Slot::U, c < nq ? c : c - nq}, dDep[k]});
-      }
-    }
+    std::vector<std::pair<StateEntry, double>> dir;
+    addDirection(j, 1.0, dir);
     fn.calcDirectionalDerivative(s, dir, stepFor(e), opt.order, yDot, col);
     for (int i = 0; i < n; ++i) A(i, j) = col[rowOf(lin.states[i].entry)];
   }

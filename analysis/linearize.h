@@ -8,6 +8,15 @@
 
 namespace motostab {
 
+/// Columns of A evaluated together (Curtis, Powell & Reid, IMA J. Appl. Math. 13 (1974) 117):
+/// columns whose possibly nonzero rows do not overlap share one pair of evaluations. On a
+/// laterally symmetric vehicle the in-plane and lateral columns pair up.
+struct ColumnGrouping {
+  std::vector<std::string> states;            ///< names of the linear states (rows and columns)
+  Eigen::Matrix<bool, Eigen::Dynamic, Eigen::Dynamic> pattern;  ///< pattern(i, j): A(i, j) may be nonzero
+  std::vector<std::vector<int>> groups;       ///< column indices into `states`; singletons omitted
+};
+
 struct LinearizeOptions {
   int order = 4;            ///< central-difference order: 2 or 4
   double step = 1e-3;       ///< perturbation (rad, m, rad/s, m/s; scaled by max(1, |value|))
@@ -20,6 +29,8 @@ struct LinearizeOptions {
   int removeYaw = -1;
   /// Compute B (sweeps do not need it: B is then empty).
   bool computeB = true;
+  /// Grouped column evaluation (sweeps: from calcColumnGrouping); empty groups: one by one.
+  ColumnGrouping grouping;
 };
 
 /// One state of the linear model.
@@ -53,6 +64,13 @@ std::vector<int> chooseDependentColumns(const Eigen::MatrixXd& G, const std::vec
 /// only, so nearly speed-independent) are copied from `previous`, a trim Jacobian of the same model.
 /// Empty when neither holds (then the trim differentiates).
 Eigen::MatrixXd calcTrimJacobian(const VehicleModel& model, const LinearModel& lin, const Eigen::MatrixXd& previous = {});
+
+/// The union sparsity pattern of `samples` (linear models with the same states; an entry counts if
+/// above `tolerance` times its row's largest: symmetry zeros come out below 1e-13, and a dropped
+/// entry leaks at most tolerance x row scale into its group partner, which matters in stiff rows) and a greedy grouping of its columns, coordinates
+/// first so that cheap rate columns share the evaluations of position columns. Empty if the samples
+/// differ in their states.
+ColumnGrouping calcColumnGrouping(const std::vector<const LinearModel*>& samples, double tolerance = 1e-11);
 
 /// Linearises `model` about `trim` (seed eq. 26) and computes eigenvalues and eigenvectors.
 LinearModel linearize(const VehicleModel& model, const TrimResult& trim, const LinearizeOptions& options = {});

@@ -4,6 +4,7 @@
 #include <functional>
 #include <future>
 #include <memory>
+#include <optional>
 
 namespace motostab {
 
@@ -62,10 +63,11 @@ SweepResult runSweep(const VehicleModel& model, const SweepOptions& opt) {
   out.models.reserve(out.speeds.size());
   // The states must not change with speed: decide on yaw once, away from standstill.
   SweepOptions fixed = opt;
+  std::optional<LinearModel> ref;  // away from standstill: every speed-dependent coupling present
   if (fixed.linearize.removeYaw < 0) {
     const double vRef = std::max(1.0, opt.stop);
-    const LinearModel ref = linearize(model, calcTrim(model, vRef, opt.trim), opt.linearize);
-    fixed.linearize.removeYaw = ref.findState("yaw") < 0 ? 1 : 0;
+    ref = linearize(model, calcTrim(model, vRef, opt.trim), opt.linearize);
+    fixed.linearize.removeYaw = ref->findState("yaw") < 0 ? 1 : 0;  // the sweep's states are ref's
   }
   const size_t n = out.speeds.size();
   out.trims.resize(n);
@@ -75,9 +77,15 @@ SweepResult runSweep(const VehicleModel& model, const SweepOptions& opt) {
   // input columns of the one this trim used (a differentiated trim Jacobian costs two
   // realizations per unknown).
   auto runBlock = [&](const VehicleModel& m, size_t begin, size_t end) {
+    LinearizeOptions lo = fixed.linearize;
     for (size_t k = begin; k < end; ++k) {
       out.trims[k] = calcTrim(m, out.speeds[k], opt.trim, k > begin ? &out.trims[k - 1] : nullptr);
-      out.models[k] = linearize(m, out.trims[k], fixed.linearize);
+      out.models[k] = linearize(m, out.trims[k], lo);
+      if (opt.groupColumns && k == begin + 1) {
+        std::vector<const LinearModel*> samples{&out.models[begin], &out.models[k]};
+        if (ref) samples.push_back(&*ref);
+        lo.grouping = calcColumnGrouping(samples);
+      }
       Eigen::MatrixXd J = calcTrimJacobian(m, out.models[k], out.trims[k].jacobian);
       if (J.size() > 0) out.trims[k].jacobian = std::move(J);
     }
