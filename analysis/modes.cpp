@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <future>
 #include <map>
 
 namespace motostab {
@@ -33,6 +34,22 @@ std::string coordinateOf(const LinearState& s) {
 }  // namespace
 
 namespace {
+
+// f(i) for i in [0, count), in contiguous chunks on up to `threads` threads.
+template <class F>
+void runParallel(size_t count, int threads, const F& f) {
+  const size_t workers = std::max<size_t>(1, std::min<size_t>(threads, count));
+  if (workers == 1) {
+    for (size_t i = 0; i < count; ++i) f(i);
+    return;
+  }
+  std::vector<std::future<void>> jobs;
+  for (size_t w = 0; w < workers; ++w)
+    jobs.push_back(std::async(std::launch::async, [&, w]() {
+      for (size_t i = count * w / workers; i < count * (w + 1) / workers; ++i) f(i);
+    }));
+  for (auto& j : jobs) j.get();
+}
 
 bool hasSameStates(const LinearModel& a, const LinearModel& b) {
   if (a.states.size() != b.states.size()) return false;
@@ -188,7 +205,8 @@ BranchStats calcBranchStats(const std::vector<LinearModel>& models, const std::v
 // wheel hop: the rear suspension angle carries over 90 % of the in-plane content), relaxation,
 // wobble, weave, capsize, castor, other. Weave and wobble keep only their best pair, capsize and
 // castor their best branch; the rest become `other`.
-void labelBranches(const std::vector<LinearModel>& models, double wheelbase, std::vector<ModeBranch>& branches) {
+void labelBranches(const std::vector<LinearModel>& models, double wheelbase, std::vector<ModeBranch>& branches,
+                   int threads) {
   // State weights once per state layout (a sweep has one).
   std::vector<StateWeights> layouts;
   std::vector<const StateWeights*> weights(models.size());
@@ -198,10 +216,13 @@ void labelBranches(const std::vector<LinearModel>& models, double wheelbase, std
     layoutOf.push_back(layouts.size() - 1);
   }
   for (size_t s = 0; s < models.size(); ++s) weights[s] = &layouts[layoutOf[s]];
+  std::vector<BranchStats> stats(branches.size());
+  runParallel(branches.size(), threads,
+              [&](size_t b) { stats[b] = calcBranchStats(models, weights, wheelbase, branches[b]); });
   std::map<std::string, std::vector<std::pair<double, size_t>>> candidates;
   for (size_t b = 0; b < branches.size(); ++b) {
     ModeBranch& br = branches[b];
-    const BranchStats st = calcBranchStats(models, weights, wheelbase, br);
+    const BranchStats& st = stats[b];
     const ModeContent& c = st.content;
     const double roll = c[int(DofGroup::Roll)], steer = c[int(DofGroup::Steer)];
     const double lateral = roll + steer + c[int(DofGroup::Yaw)] + c[int(DofGroup::Lateral)];
@@ -239,27 +260,38 @@ void labelBranches(const std::vector<LinearModel>& models, double wheelbase, std
   }
 }
 
-std::vector<ModeBranch> trackModes(const std::vector<LinearModel>& models, double wheelbase) {
+std::vector<ModeBranch> trackModes(const std::vector<LinearModel>& models, double wheelbase, int threads) {
   std::vector<ModeBranch> branches;
   if (models.empty()) return branches;
   const int n = static_cast<int>(models[0].eigenvalues.size());
+  for (const auto& m : models)
+    if (m.eigenvalues.size() != n) throw std::runtime_error("trackModes: model size changed with speed");
+  // Match costs between every pair of consecutive speeds, independent of the assignment: in
+  // parallel. With the same state layout (a sweep's rule) every MAC comes from one product of the
+  // unit eigenvector matrices.
+  std::vector<Eigen::MatrixXd> costs(models.size());
+  runParallel(models.size() - 1, threads, [&](size_t i) {
+    const LinearModel &prev = models[i], &cur = models[i + 1];
+    Eigen::MatrixXd& c = costs[i + 1];
+    c.resize(n, n);
+    if (hasSameStates(prev, cur)) {
+      const Eigen::MatrixXcd dot = prev.eigenvectors.adjoint() * cur.eigenvectors;
+      const Eigen::VectorXd np = prev.eigenvectors.colwise().squaredNorm(), nc = cur.eigenvectors.colwise().squaredNorm();
+      const Eigen::MatrixXd mac = dot.cwiseAbs2().array() / (np * nc.transpose()).array();
+      for (int kp = 0; kp < n; ++kp)
+        for (int k = 0; k < n; ++k) c(kp, k) = calcMatchCost(prev.eigenvalues[kp], cur.eigenvalues[k], mac(kp, k));
+    } else {
+      for (int kp = 0; kp < n; ++kp)
+        for (int k = 0; k < n; ++k) c(kp, k) = calcMatchCost(prev, kp, cur, k);
+    }
+  });
   branches.resize(n);
   for (int k = 0; k < n; ++k) {
     branches[k].index.push_back(k);
     branches[k].eigenvalue.push_back(models[0].eigenvalues[k]);
   }
   for (size_t s = 1; s < models.size(); ++s) {
-    const LinearModel &prev = models[s - 1], &cur = models[s];
-    if (cur.eigenvalues.size() != n) throw std::runtime_error("trackModes: model size changed with speed");
-    // Greedy assignment on ascending cost. With the same state layout (a sweep's rule) every MAC
-    // comes from one product of the unit eigenvector matrices.
-    const bool sameLayout = hasSameStates(prev, cur);
-    Eigen::MatrixXd mac;
-    if (sameLayout) {
-      const Eigen::MatrixXcd dot = prev.eigenvectors.adjoint() * cur.eigenvectors;
-      const Eigen::VectorXd np = prev.eigenvectors.colwise().squaredNorm(), nc = cur.eigenvectors.colwise().squaredNorm();
-      mac = dot.cwiseAbs2().array() / (np * nc.transpose()).array();
-    }
+    // Greedy assignment on ascending cost.
     std::vector<std::tuple<double, int, int>> pairs;
     pairs.reserve(n * n);
     std::vector<int> assigned(n, -1);
@@ -269,8 +301,7 @@ std::vector<ModeBranch> trackModes(const std::vector<LinearModel>& models, doubl
       const int kp = branches[b].index.back();
       double best = std::numeric_limits<double>::infinity();
       for (int k = 0; k < n; ++k) {
-        const auto la = prev.eigenvalues[kp], lb = cur.eigenvalues[k];
-        const double cost = sameLayout ? calcMatchCost(la, lb, mac(kp, k)) : calcMatchCost(prev, kp, cur, k);
+        const double cost = costs[s](kp, k);
         pairs.emplace_back(cost, b, k);
         if (cost < best) best = cost, assigned[b] = k;
       }
@@ -288,10 +319,10 @@ std::vector<ModeBranch> trackModes(const std::vector<LinearModel>& models, doubl
     }
     for (int b = 0; b < n; ++b) {
       branches[b].index.push_back(assigned[b]);
-      branches[b].eigenvalue.push_back(cur.eigenvalues[assigned[b]]);
+      branches[b].eigenvalue.push_back(models[s].eigenvalues[assigned[b]]);
     }
   }
-  labelBranches(models, wheelbase, branches);
+  labelBranches(models, wheelbase, branches, threads);
   return branches;
 }
 

@@ -34,11 +34,13 @@ struct ModeBranch {
 };
 
 /// Eigenvalues tracked from speed to speed by eigenvector similarity (MAC) and eigenvalue
-/// proximity, then labelled from each branch's content over the whole sweep.
-std::vector<ModeBranch> trackModes(const std::vector<LinearModel>& models, double wheelbase);
+/// proximity, then labelled from each branch's content over the whole sweep. The match costs and
+/// the branch statistics are computed on up to `threads` threads; the assignment is serial.
+std::vector<ModeBranch> trackModes(const std::vector<LinearModel>& models, double wheelbase, int threads = 1);
 
 /// Sets each branch's label from its mean content over the sweep (see modes.cpp for the rules).
-void labelBranches(const std::vector<LinearModel>& models, double wheelbase, std::vector<ModeBranch>& branches);
+void labelBranches(const std::vector<LinearModel>& models, double wheelbase, std::vector<ModeBranch>& branches,
+                   int threads = 1);
 
 /// Cost of matching eigenvalue ka of `a` to kb of `b` (0 = identical).
 double calcMatchCost(const LinearModel& a, int ka, const LinearModel& b, int kb);

@@ -62,14 +62,21 @@ SweepResult runSweep(const VehicleModel& model, const SweepOptions& opt) {
   out.trims.reserve(out.speeds.size());
   out.models.reserve(out.speeds.size());
   // The states must not change with speed: decide on yaw once, away from standstill.
+  // With several workers the reference runs beside them (on its own model) while they trim their
+  // first speeds; they wait for it before their first linearisation.
+  const size_t n = out.speeds.size();
+  const size_t workers = std::max<size_t>(1, std::min<size_t>(opt.threads, n));
   SweepOptions fixed = opt;
   std::optional<LinearModel> ref;  // away from standstill: every speed-dependent coupling present
+  std::shared_future<void> refReady;
   if (fixed.linearize.removeYaw < 0) {
-    const double vRef = std::max(1.0, opt.stop);
-    ref = linearize(model, calcTrim(model, vRef, opt.trim), opt.linearize);
-    fixed.linearize.removeYaw = ref->findState("yaw") < 0 ? 1 : 0;  // the sweep's states are ref's
+    auto calcReference = [&](const VehicleModel& m) {
+      ref = linearize(m, calcTrim(m, std::max(1.0, opt.stop), opt.trim), opt.linearize);
+      fixed.linearize.removeYaw = ref->findState("yaw") < 0 ? 1 : 0;  // the sweep's states are ref's
+    };
+    if (workers == 1) calcReference(model);
+    else refReady = std::async(std::launch::async, [&]() { calcReference(VehicleModel(model.getScenario())); }).share();
   }
-  const size_t n = out.speeds.size();
   out.trims.resize(n);
   out.models.resize(n);
   // Contiguous blocks of speeds, one per worker, each a warm-started chain.
@@ -77,9 +84,13 @@ SweepResult runSweep(const VehicleModel& model, const SweepOptions& opt) {
   // input columns of the one this trim used (a differentiated trim Jacobian costs two
   // realizations per unknown).
   auto runBlock = [&](const VehicleModel& m, size_t begin, size_t end) {
-    LinearizeOptions lo = fixed.linearize;
+    LinearizeOptions lo;
     for (size_t k = begin; k < end; ++k) {
       out.trims[k] = calcTrim(m, out.speeds[k], opt.trim, k > begin ? &out.trims[k - 1] : nullptr);
+      if (k == begin) {
+        if (refReady.valid()) refReady.wait();
+        lo = fixed.linearize;
+      }
       out.models[k] = linearize(m, out.trims[k], lo);
       if (opt.groupColumns && k == begin + 1) {
         std::vector<const LinearModel*> samples{&out.models[begin], &out.models[k]};
@@ -90,7 +101,6 @@ SweepResult runSweep(const VehicleModel& model, const SweepOptions& opt) {
       if (J.size() > 0) out.trims[k].jacobian = std::move(J);
     }
   };
-  const size_t workers = std::max<size_t>(1, std::min<size_t>(opt.threads, n));
   if (workers == 1) {
     runBlock(model, 0, n);
   } else {
@@ -106,8 +116,9 @@ SweepResult runSweep(const VehicleModel& model, const SweepOptions& opt) {
       }));
     }
     for (auto& j : jobs) j.get();
+    if (refReady.valid()) refReady.get();  // rethrows a failed reference trim
   }
-  out.branches = trackModes(out.models, model.getScenario().geometry.wheelbase);
+  out.branches = trackModes(out.models, model.getScenario().geometry.wheelbase, opt.threads);
 
   // Every sign change of a labelled mode's real part, refined by Brent's method; crossings are
   // independent, so workers share them (each with its own model).
