@@ -61,40 +61,59 @@ SweepResult runSweep(const VehicleModel& model, const SweepOptions& opt) {
   out.speeds = makeSpeedGrid(opt.start, opt.stop, opt.step);
   out.trims.reserve(out.speeds.size());
   out.models.reserve(out.speeds.size());
-  // The states must not change with speed: decide on yaw once, away from standstill.
-  // With several workers the reference runs beside them (on its own model) while they trim their
-  // first speeds; they wait for it before their first linearisation.
+  // The states must not change with speed: decide on yaw once, from a reference linearisation away
+  // from standstill (every speed-dependent coupling present; also a sample of the column pattern).
+  // With several workers the last one sweeps its block downwards from the top speed and its first
+  // linearisation is the reference; the others trim their first speed meanwhile and wait for it.
   const size_t n = out.speeds.size();
   const size_t workers = std::max<size_t>(1, std::min<size_t>(opt.threads, n));
   SweepOptions fixed = opt;
-  std::optional<LinearModel> ref;  // away from standstill: every speed-dependent coupling present
+  const bool decideYaw = fixed.linearize.removeYaw < 0;
+  const bool topIsReference = decideYaw && workers > 1 && n > 0 && out.speeds.back() >= 1.0;
+  std::optional<LinearModel> ownReference;
+  const LinearModel* ref = nullptr;
+  std::promise<void> refPromise;
   std::shared_future<void> refReady;
-  if (fixed.linearize.removeYaw < 0) {
-    auto calcReference = [&](const VehicleModel& m) {
-      ref = linearize(m, calcTrim(m, std::max(1.0, opt.stop), opt.trim), opt.linearize);
-      fixed.linearize.removeYaw = ref->findState("yaw") < 0 ? 1 : 0;  // the sweep's states are ref's
-    };
-    if (workers == 1) calcReference(model);
-    else refReady = std::async(std::launch::async, [&]() { calcReference(VehicleModel(model.getScenario())); }).share();
+  if (topIsReference) {
+    refReady = refPromise.get_future().share();
+  } else if (decideYaw) {
+    ownReference = linearize(model, calcTrim(model, std::max(1.0, opt.stop), opt.trim), opt.linearize);
+    ref = &*ownReference;
+    fixed.linearize.removeYaw = ref->findState("yaw") < 0 ? 1 : 0;  // the sweep's states are ref's
   }
   out.trims.resize(n);
   out.models.resize(n);
-  // Contiguous blocks of speeds, one per worker, each a warm-started chain.
-  // Without constraints the next speed's trim Jacobian is read off this speed's A, keeping the
-  // input columns of the one this trim used (a differentiated trim Jacobian costs two
-  // realizations per unknown).
-  auto runBlock = [&](const VehicleModel& m, size_t begin, size_t end) {
+  // Contiguous blocks of speeds, one per worker, each a warm-started chain (upwards, or downwards
+  // for the reference block). Without constraints the next speed's trim Jacobian is read off this
+  // speed's A, keeping the input columns of the one this trim used (a differentiated trim Jacobian
+  // costs two realizations per unknown).
+  auto runBlock = [&](const VehicleModel& m, size_t begin, size_t end, bool downwards) {
     LinearizeOptions lo;
-    for (size_t k = begin; k < end; ++k) {
-      out.trims[k] = calcTrim(m, out.speeds[k], opt.trim, k > begin ? &out.trims[k - 1] : nullptr);
-      if (k == begin) {
-        if (refReady.valid()) refReady.wait();
+    for (size_t i = 0; i < end - begin; ++i) {
+      const size_t k = downwards ? end - 1 - i : begin + i, previous = downwards ? k + 1 : k - 1;
+      if (i == 0 && downwards) {
+        try {  // the other workers wait for this: they must hear of a failure too
+          out.trims[k] = calcTrim(m, out.speeds[k], opt.trim);
+          out.models[k] = linearize(m, out.trims[k], opt.linearize);  // removeYaw automatic
+        } catch (...) {
+          refPromise.set_exception(std::current_exception());
+          throw;
+        }
+        ref = &out.models[k];
+        fixed.linearize.removeYaw = ref->findState("yaw") < 0 ? 1 : 0;
         lo = fixed.linearize;
+        refPromise.set_value();
+      } else {
+        out.trims[k] = calcTrim(m, out.speeds[k], opt.trim, i > 0 ? &out.trims[previous] : nullptr);
+        if (i == 0) {
+          if (refReady.valid()) refReady.get();
+          lo = fixed.linearize;
+        }
+        out.models[k] = linearize(m, out.trims[k], lo);
       }
-      out.models[k] = linearize(m, out.trims[k], lo);
-      if (opt.groupColumns && k == begin + 1) {
-        std::vector<const LinearModel*> samples{&out.models[begin], &out.models[k]};
-        if (ref) samples.push_back(&*ref);
+      if (opt.groupColumns && i == 1) {
+        std::vector<const LinearModel*> samples{&out.models[previous], &out.models[k]};
+        if (ref) samples.push_back(ref);
         lo.grouping = calcColumnGrouping(samples);
       }
       Eigen::MatrixXd J = calcTrimJacobian(m, out.models[k], out.trims[k].jacobian);
@@ -102,21 +121,21 @@ SweepResult runSweep(const VehicleModel& model, const SweepOptions& opt) {
     }
   };
   if (workers == 1) {
-    runBlock(model, 0, n);
+    runBlock(model, 0, n, false);
   } else {
     std::vector<std::future<void>> jobs;
     std::vector<std::unique_ptr<VehicleModel>> copies(workers);
     for (size_t w = 0; w < workers; ++w) {
       const size_t begin = n * w / workers, end = n * (w + 1) / workers;
-      jobs.push_back(std::async(std::launch::async, [&, w, begin, end]() {
-        if (w == 0) return runBlock(model, begin, end);
+      const bool downwards = topIsReference && w + 1 == workers;
+      jobs.push_back(std::async(std::launch::async, [&, w, begin, end, downwards]() {
+        if (w == 0) return runBlock(model, begin, end, downwards);
         copies[w] = std::make_unique<VehicleModel>(model.getScenario());
-        runBlock(*copies[w], begin, end);
+        runBlock(*copies[w], begin, end, downwards);
         // States made by another model's system are valid for this one: same topology.
       }));
     }
     for (auto& j : jobs) j.get();
-    if (refReady.valid()) refReady.get();  // rethrows a failed reference trim
   }
   out.branches = trackModes(out.models, model.getScenario().geometry.wheelbase, opt.threads);
 
