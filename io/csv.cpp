@@ -36,13 +36,14 @@ int CsvTable::getColumnIndex(const std::string& name) const {
   throw InputError({source, 0, 0, name}, "no such column (columns: " + have + ")");
 }
 
-std::vector<double> CsvTable::getColumn(const std::string& name) const {
-  const int j = getColumnIndex(name);
+std::vector<double> extractColumn(const std::vector<std::vector<double>>& rows, int j) {
   std::vector<double> out;
   out.reserve(rows.size());
   for (const auto& r : rows) out.push_back(r[j]);
   return out;
 }
+
+std::vector<double> CsvTable::getColumn(const std::string& name) const { return extractColumn(rows, getColumnIndex(name)); }
 
 CsvTable readCsv(const std::filesystem::path& path) {
   CsvTable table;

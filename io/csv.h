@@ -8,6 +8,9 @@ namespace motostab {
 
 /// A numeric table read from a CSV file with a header row. Lines starting with '#' and blank
 /// lines are comments.
+/// Column j of row-major numeric rows (rows[i][j]), in row order; units those of the column.
+std::vector<double> extractColumn(const std::vector<std::vector<double>>& rows, int j);
+
 struct CsvTable {
   std::string source;                     ///< file path, for messages
   std::vector<std::string> header;        ///< column names

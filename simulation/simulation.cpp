@@ -8,6 +8,7 @@
 
 #include "analysis/linearize.h"
 #include "analysis/state_function.h"
+#include "io/csv.h"
 #include "io/input_error.h"
 
 namespace motostab::simulation {
@@ -124,11 +125,7 @@ int SimulationResult::getColumnIndex(const std::string& name) const {
 }
 
 std::vector<double> SimulationResult::getColumn(const std::string& name) const {
-  const int j = getColumnIndex(name);
-  std::vector<double> out;
-  out.reserve(rows.size());
-  for (const auto& r : rows) out.push_back(r[j]);
-  return out;
+  return extractColumn(rows, getColumnIndex(name));
 }
 
 void checkPerturbations(const VehicleModel& model, const std::vector<Perturbation>& perturbations) {
