@@ -94,8 +94,9 @@ void RosenbrockStepper::step(double tStop) {
   if (!(tStop > t_)) throw std::invalid_argument("Rosenbrock: the stop time must lie ahead of the current time");
   const RosenbrockTableau& tab = getRos34pw2Tableau();
   const int n = static_cast<int>(y_.size());
-  Eigen::VectorXd k[4], ys(n), fs(n), acc(n), y1(n), err(n);
-  for (auto& ki : k) ki.resize(n);
+  Eigen::VectorXd(&k)[4] = k_;  // work vectors kept between steps: no allocation per step
+  Eigen::VectorXd &ys = ys_, &fs = fs_, &acc = acc_, &y1 = y1_, &err = err_;
+  for (Eigen::VectorXd* v : {&k[0], &k[1], &k[2], &k[3], &ys, &fs, &acc, &y1, &err}) v->resize(n);
   bool rejectedHere = false;
   for (;;) {
     bool nonFinite = false;
@@ -107,7 +108,10 @@ void RosenbrockStepper::step(double tStop) {
     double h = std::min(h_, opt_.maxStep);
     const bool last = h >= remaining * (1 - 1e-12);
     if (last) h = remaining;
-    const Eigen::PartialPivLU<Eigen::MatrixXd> lu(Eigen::MatrixXd::Identity(n, n) - (h * tab.gamma) * J_);
+    W_ = -(h * tab.gamma) * J_;
+    W_.diagonal().array() += 1.0;
+    lu_.compute(W_);
+    const Eigen::PartialPivLU<Eigen::MatrixXd>& lu = lu_;
     k[0] = lu.solve(h * f_);
     for (int i = 1; i < 4; ++i) {
       ys = y_;

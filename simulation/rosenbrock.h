@@ -69,7 +69,9 @@ class RosenbrockStepper {
   RosenbrockOptions opt_;
   double t_ = 0, h_ = 0, jacobianTime_ = 0, previousError_ = 1;
   Eigen::VectorXd y_, f_;
-  Eigen::MatrixXd J_;
+  Eigen::MatrixXd J_, W_;
+  Eigen::PartialPivLU<Eigen::MatrixXd> lu_;
+  Eigen::VectorXd k_[4], ys_, fs_, acc_, y1_, err_;  // step work vectors
   int numSteps_ = 0, numRejected_ = 0, numRhs_ = 0, numJacobians_ = 0;
 };
 
