@@ -103,9 +103,16 @@ ColumnGrouping calcColumnGrouping(const std::vector<const LinearModel*>& samples
 }
 
 LinearModel linearize(const VehicleModel& model, const TrimResult& trim, const LinearizeOptions& opt) {
+  TrimResult work;
+  work.speed = trim.speed;
+  work.state = trim.state;
+  return linearizeInPlace(model, work, opt);
+}
+
+LinearModel linearizeInPlace(const VehicleModel& model, TrimResult& trim, const LinearizeOptions& opt) {
   const StateFunction fn(model);
   const CoordinateIndices& ix = model.getIndices();
-  SimTK::State s = trim.state;
+  SimTK::State& s = trim.state;
   const int nq = model.getNumQ(), nu = model.getNumU(), nz = model.getNumZ();
   auto yDot = [&](const SimTK::State& st, Eigen::VectorXd& out) { fn.calcYDot(st, out); };
   auto errors = [&](const SimTK::State& st, Eigen::VectorXd& out) { fn.calcConstraintErrors(st, out); };

@@ -18,7 +18,8 @@ ModeShape calcWeaveShape(const VehicleModel& model, const SweepResult& sweep, do
   size_t k = 0;
   for (size_t i = 0; i < sweep.speeds.size(); ++i)
     if (std::abs(sweep.speeds[i] - speed) < std::abs(sweep.speeds[k] - speed)) k = i;
-  const TrimResult trim = calcTrim(model, speed, opt.trim, &sweep.trims[k]);
+  TrimResult trim = restoreTrim(model, sweep.trims[k]);
+  updTrim(model, speed, opt.trim, trim);
   LinearizeOptions lo = opt.linearize;
   lo.removeYaw = sweep.models[k].findState("yaw") < 0 ? 1 : 0;
   const LinearModel lin = linearize(model, trim, lo);

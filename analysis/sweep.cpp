@@ -4,6 +4,7 @@
 #include <functional>
 #include <future>
 #include <memory>
+#include <mutex>
 #include <optional>
 
 namespace motostab {
@@ -17,8 +18,9 @@ std::vector<double> makeSpeedGrid(double start, double stop, double step) {
 
 double calcBranchRealPart(const VehicleModel& model, const SweepResult& sweep, const ModeBranch& branch, size_t k,
                           double v, const SweepOptions& opt) {
-  const TrimResult trim = calcTrim(model, v, opt.trim, &sweep.trims[k]);
-  const LinearModel lin = linearize(model, trim, opt.linearize);
+  TrimResult trim = restoreTrim(model, sweep.trims[k]);
+  updTrim(model, v, opt.trim, trim);
+  const LinearModel lin = linearizeInPlace(model, trim, opt.linearize);
   return lin.eigenvalues[findBestMatch(sweep.models[k], branch.index[k], lin)].real();
 }
 
@@ -77,61 +79,83 @@ SweepResult runSweep(const VehicleModel& model, const SweepOptions& opt) {
   if (topIsReference) {
     refReady = refPromise.get_future().share();
   } else if (decideYaw) {
-    ownReference = linearize(model, calcTrim(model, std::max(1.0, opt.stop), opt.trim), opt.linearize);
+    TrimResult top = calcTrim(model, std::max(1.0, opt.stop), opt.trim);
+    ownReference = linearizeInPlace(model, top, opt.linearize);
     ref = &*ownReference;
     fixed.linearize.removeYaw = ref->findState("yaw") < 0 ? 1 : 0;  // the sweep's states are ref's
   }
   out.trims.resize(n);
   out.models.resize(n);
-  // Contiguous blocks of speeds, one per worker, each a warm-started chain (upwards, or downwards
-  // for the reference block). Without constraints the next speed's trim Jacobian is read off this
-  // speed's A, keeping the input columns of the one this trim used (a differentiated trim Jacobian
-  // costs two realizations per unknown).
-  auto runBlock = [&](const VehicleModel& m, size_t begin, size_t end, bool downwards) {
+  // Warm-started chains of speeds: on a span shared by two workers one goes up from its bottom and
+  // the other down from its top, each taking the next speed until they meet, so that neither waits
+  // for the other whatever the cost per speed. Each chain trims in place on one State (no State
+  // copies). Without constraints the next speed's trim Jacobian is read off this speed's A, keeping
+  // the input columns of the one this trim used (a differentiated one costs two realizations per unknown).
+  struct Span {
+    std::mutex lock;
+    size_t lo = 0, hi = 0;  // speeds [lo, hi) not yet taken
+  };
+  const size_t spans = (workers + 1) / 2;
+  std::vector<Span> span(spans);
+  for (size_t p = 0; p < spans; ++p)  // shares of the speeds: two per two-worker span
+    span[p].lo = n * std::min(2 * p, workers) / workers, span[p].hi = n * std::min(2 * p + 2, workers) / workers;
+  auto runChain = [&](const VehicleModel& m, Span& sp, bool downwards, bool isReference) {
+    auto take = [&](size_t& k) {
+      std::lock_guard<std::mutex> guard(sp.lock);
+      if (sp.lo == sp.hi) return false;
+      k = downwards ? --sp.hi : sp.lo++;
+      return true;
+    };
     LinearizeOptions lo;
-    for (size_t i = 0; i < end - begin; ++i) {
-      const size_t k = downwards ? end - 1 - i : begin + i, previous = downwards ? k + 1 : k - 1;
-      if (i == 0 && downwards) {
-        try {  // the other workers wait for this: they must hear of a failure too
-          out.trims[k] = calcTrim(m, out.speeds[k], opt.trim);
-          out.models[k] = linearize(m, out.trims[k], opt.linearize);  // removeYaw automatic
-        } catch (...) {
-          refPromise.set_exception(std::current_exception());
-          throw;
-        }
-        ref = &out.models[k];
-        fixed.linearize.removeYaw = ref->findState("yaw") < 0 ? 1 : 0;
-        lo = fixed.linearize;
-        refPromise.set_value();
-      } else {
-        out.trims[k] = calcTrim(m, out.speeds[k], opt.trim, i > 0 ? &out.trims[previous] : nullptr);
-        if (i == 0) {
+    TrimResult work;
+    size_t k = 0, previous = 0;
+    for (size_t i = 0; take(k); ++i, previous = k) {
+      if (i == 0) {
+        if (isReference) {
+          try {  // the other workers wait for this: they must hear of a failure too
+            work = calcTrim(m, out.speeds[k], opt.trim);
+            out.models[k] = linearizeInPlace(m, work, opt.linearize);  // removeYaw automatic
+          } catch (...) {
+            refPromise.set_exception(std::current_exception());
+            throw;
+          }
+          ref = &out.models[k];
+          fixed.linearize.removeYaw = ref->findState("yaw") < 0 ? 1 : 0;
+          lo = fixed.linearize;
+          refPromise.set_value();
+        } else {
+          work = calcTrim(m, out.speeds[k], opt.trim);
           if (refReady.valid()) refReady.get();
           lo = fixed.linearize;
+          out.models[k] = linearizeInPlace(m, work, lo);
         }
-        out.models[k] = linearize(m, out.trims[k], lo);
+      } else {
+        updTrim(m, out.speeds[k], opt.trim, work);
+        out.models[k] = linearizeInPlace(m, work, lo);
       }
       if (opt.groupColumns && i == 1) {
         std::vector<const LinearModel*> samples{&out.models[previous], &out.models[k]};
         if (ref) samples.push_back(ref);
         lo.grouping = calcColumnGrouping(samples);
       }
-      Eigen::MatrixXd J = calcTrimJacobian(m, out.models[k], out.trims[k].jacobian);
-      if (J.size() > 0) out.trims[k].jacobian = std::move(J);
+      Eigen::MatrixXd J = calcTrimJacobian(m, out.models[k], work.jacobian);
+      if (J.size() > 0) work.jacobian = std::move(J);
+      out.trims[k] = makeTrimPoint(m, work);
     }
   };
   if (workers == 1) {
-    runBlock(model, 0, n, false);
+    runChain(model, span[0], false, false);
   } else {
     std::vector<std::future<void>> jobs;
     std::vector<std::unique_ptr<VehicleModel>> copies(workers);
     for (size_t w = 0; w < workers; ++w) {
-      const size_t begin = n * w / workers, end = n * (w + 1) / workers;
-      const bool downwards = topIsReference && w + 1 == workers;
-      jobs.push_back(std::async(std::launch::async, [&, w, begin, end, downwards]() {
-        if (w == 0) return runBlock(model, begin, end, downwards);
+      // The last worker goes down from the top speed (its first linearisation is the reference).
+      const bool isReference = topIsReference && w + 1 == workers;
+      const bool downwards = w % 2 == 1 || isReference;
+      jobs.push_back(std::async(std::launch::async, [&, w, downwards, isReference]() {
+        if (w == 0) return runChain(model, span[0], downwards, isReference);
         copies[w] = std::make_unique<VehicleModel>(model.getScenario());
-        runBlock(*copies[w], begin, end, downwards);
+        runChain(*copies[w], span[w / 2], downwards, isReference);
         // States made by another model's system are valid for this one: same topology.
       }));
     }

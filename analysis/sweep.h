@@ -42,7 +42,7 @@ struct CriticalSpeed {
 
 struct SweepResult {
   std::vector<double> speeds;
-  std::vector<TrimResult> trims;
+  std::vector<TrimPoint> trims;  ///< restoreTrim() gives a warm start from one
   std::vector<LinearModel> models;
   std::vector<ModeBranch> branches;
   std::vector<CriticalSpeed> criticalSpeeds;

@@ -29,34 +29,59 @@ std::vector<StateEntry> getTrimUnknowns(const VehicleModel& model) {
   return out;
 }
 
+namespace {
+void solveTrim(const VehicleModel& model, double speed, const TrimOptions& opt, TrimResult& res, bool warm);
+}  // namespace
+
 TrimResult calcTrim(const VehicleModel& model, double speed, const TrimOptions& opt, const TrimResult* warm) {
+  TrimResult res;
+  if (warm) {
+    res = *warm;
+  } else {
+    res.state = model.getDefaultState();
+  }
+  solveTrim(model, speed, opt, res, warm != nullptr);
+  return res;
+}
+
+void updTrim(const VehicleModel& model, double speed, const TrimOptions& opt, TrimResult& trim) {
+  solveTrim(model, speed, opt, trim, true);
+}
+
+namespace {
+
+// Newton's method from `res` (a warm start when `warm`, else the default state) to the trim at `speed`.
+void solveTrim(const VehicleModel& model, double speed, const TrimOptions& opt, TrimResult& res, bool warm) {
   const StateFunction fn(model);
   const CoordinateIndices& ix = model.getIndices();
   const auto unknowns = getTrimUnknowns(model);
   const int n = static_cast<int>(unknowns.size());
-
-  TrimResult res;
-  res.speed = speed;
-  res.state = warm ? warm->state : model.getDefaultState();
   SimTK::State& s = res.state;
+  const double oldSpeed = res.speed;
+  Eigen::VectorXd oldUnknowns(n);
+  for (int j = 0; j < n; ++j) oldUnknowns[j] = fn.get(s, unknowns[j]);
+  const Eigen::VectorXd oldSlope = res.unknownsPerSpeed, oldCurvature = res.unknownsCurvature;
+  const double oldSecantStart = res.secantStartSpeed;
+  res.speed = speed;
+  res.iterations = res.jacobianEvaluations = 0;
+  res.unknownsPerSpeed.resize(0), res.unknownsCurvature.resize(0);
   // Fixed part of straight running: every rate zero but the forward speed and the wheel spins.
+  const SimTK::Vector oldU = s.getU();
   s.updU() = 0;
   s.updU()[ix.x] = speed;
-  const double oldSpeed = warm ? warm->speed : 0;
   for (int w : {ix.rearSpin, ix.frontSpin}) {
     const double R = (w == ix.rearSpin ? model.getScenario().rearWheel : model.getScenario().frontWheel).radius;
-    const double old = warm ? warm->state.getU()[w] : 0;
-    s.updU()[w] = (warm && std::abs(oldSpeed) > 1e-9) ? old * speed / oldSpeed : speed / R;
+    s.updU()[w] = (warm && std::abs(oldSpeed) > 1e-9) ? oldU[w] * speed / oldSpeed : speed / R;
   }
   for (int i : model.getCyclicQ()) s.updQ()[i] = 0;
   model.setInput(s, Input::RollTorque, 0);
   // Predictor: Newton interpolation through the last trims (residual O(dv^3) with three, O(dv^2)
   // with two), instead of the warm start itself (O(dv)).
-  if (warm && warm->unknownsPerSpeed.size() == n) {
-    const bool quadratic = warm->unknownsCurvature.size() == n;
+  if (warm && oldSlope.size() == n) {
+    const bool quadratic = oldCurvature.size() == n;
     for (int j = 0; j < n; ++j) {
-      double x = fn.get(warm->state, unknowns[j]) + warm->unknownsPerSpeed[j] * (speed - oldSpeed);
-      if (quadratic) x += warm->unknownsCurvature[j] * (speed - oldSpeed) * (speed - warm->secantStartSpeed);
+      double x = oldUnknowns[j] + oldSlope[j] * (speed - oldSpeed);
+      if (quadratic) x += oldCurvature[j] * (speed - oldSpeed) * (speed - oldSecantStart);
       fn.set(s, unknowns[j], x);
     }
   }
@@ -68,7 +93,7 @@ TrimResult calcTrim(const VehicleModel& model, double speed, const TrimOptions& 
   Eigen::CompleteOrthogonalDecomposition<Eigen::MatrixXd> decomposition;
   bool factored = false;           // decomposition holds J
   bool refresh = false;            // slow convergence: differentiate again before the next step
-  if (warm && warm->jacobian.cols() == n) J = warm->jacobian;
+  if (res.jacobian.cols() == n) J.swap(res.jacobian);
   auto computeJacobian = [&]() {
     J.resize(r.size(), n);
     for (int j = 0; j < n; ++j) {
@@ -117,16 +142,38 @@ TrimResult calcTrim(const VehicleModel& model, double speed, const TrimOptions& 
   res.residualNorm = norm;
   if (!(norm <= opt.tolerance)) throw TrimError(speed, norm, it);
   if (J.size() == 0) computeJacobian();
-  res.jacobian = J;
+  res.jacobian.swap(J);
   if (warm && std::abs(speed - oldSpeed) > 1e-12) {
     res.unknownsPerSpeed.resize(n);
-    for (int j = 0; j < n; ++j)
-      res.unknownsPerSpeed[j] = (fn.get(s, unknowns[j]) - fn.get(warm->state, unknowns[j])) / (speed - oldSpeed);
+    for (int j = 0; j < n; ++j) res.unknownsPerSpeed[j] = (fn.get(s, unknowns[j]) - oldUnknowns[j]) / (speed - oldSpeed);
     res.secantStartSpeed = oldSpeed;
-    if (warm->unknownsPerSpeed.size() == n && std::abs(speed - warm->secantStartSpeed) > 1e-12)
-      res.unknownsCurvature = (res.unknownsPerSpeed - warm->unknownsPerSpeed) / (speed - warm->secantStartSpeed);
+    if (oldSlope.size() == n && std::abs(speed - oldSecantStart) > 1e-12)
+      res.unknownsCurvature = (res.unknownsPerSpeed - oldSlope) / (speed - oldSecantStart);
   }
-  return res;
+}
+
+}  // namespace
+
+TrimPoint makeTrimPoint(const VehicleModel& model, const TrimResult& trim) {
+  TrimPoint p;
+  static_cast<TrimSummary&>(p) = trim;
+  const SimTK::Vector& y = trim.state.getY();
+  p.y.resize(y.size());
+  for (int i = 0; i < y.size(); ++i) p.y[i] = y[i];
+  p.inputs.resize(kNumInputs);
+  for (int k = 0; k < kNumInputs; ++k) p.inputs[k] = model.getInput(trim.state, static_cast<Input>(k));
+  return p;
+}
+
+TrimResult restoreTrim(const VehicleModel& model, const TrimPoint& point) {
+  TrimResult t;
+  static_cast<TrimSummary&>(t) = point;
+  t.state = model.getDefaultState();
+  SimTK::Vector& y = t.state.updY();
+  if (y.size() != point.y.size()) throw std::invalid_argument("restoreTrim: the point belongs to another model");
+  for (int i = 0; i < y.size(); ++i) y[i] = point.y[i];
+  for (int k = 0; k < kNumInputs; ++k) model.setInput(t.state, static_cast<Input>(k), point.inputs[k]);
+  return t;
 }
 
 }  // namespace motostab

@@ -14,9 +14,8 @@ struct TrimOptions {
   double jacobianStep = 1e-6;
 };
 
-/// A trimmed state: every udot and zdot zero, constraints satisfied, forward speed fixed.
-struct TrimResult {
-  SimTK::State state;
+/// A trim's figures and its warm-start data for the next speed, without the Simbody State.
+struct TrimSummary {
   double speed = 0;           ///< m/s
   double residualNorm = 0;    ///< infinity norm of [udot; zdot; qerr; uerr]
   int iterations = 0;
@@ -34,6 +33,18 @@ struct TrimResult {
   double secantStartSpeed = 0;  ///< m/s, the warm start's speed
 };
 
+/// A trimmed state: every udot and zdot zero, constraints satisfied, forward speed fixed.
+struct TrimResult : TrimSummary {
+  SimTK::State state;
+};
+
+/// A trim without its State, as sweeps keep one per speed (copying a realized State costs two to
+/// four realizations): y = [q; u; z] and the inputs (N m, VehicleModel::getInputNames order).
+struct TrimPoint : TrimSummary {
+  Eigen::VectorXd y;
+  Eigen::VectorXd inputs;
+};
+
 /// A trim that did not converge: names the speed and the residual.
 class TrimError : public std::runtime_error {
  public:
@@ -49,5 +60,14 @@ std::vector<StateEntry> getTrimUnknowns(const VehicleModel& model);
 /// extrapolated along its secant slope, start the iteration, and its Jacobian is reused. Throws TrimError on failure.
 TrimResult calcTrim(const VehicleModel& model, double speed, const TrimOptions& options = {},
                     const TrimResult* warmStart = nullptr);
+
+/// calcTrim in place, without copying a State: `trim` (a trim at a nearby speed) is the warm start
+/// and becomes the trim at `speed` (m/s). Throws TrimError on failure (`trim` then holds the last iterate).
+void updTrim(const VehicleModel& model, double speed, const TrimOptions& options, TrimResult& trim);
+
+/// The trim's summary, y and inputs.
+TrimPoint makeTrimPoint(const VehicleModel& model, const TrimResult& trim);
+/// A TrimResult with `point`'s values in a copy of the model's default state.
+TrimResult restoreTrim(const VehicleModel& model, const TrimPoint& point);
 
 }  // namespace motostab

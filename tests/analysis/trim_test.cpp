@@ -59,6 +59,42 @@ TEST(Trim, FailureNamesSpeedAndResidual) {
   }
 }
 
+// The in-place trim does the copying trim's arithmetic on the same values: equal to the last bit.
+TEST(Trim, InPlaceTrimEqualsCopyingTrim) {
+  const VehicleModel model(loadScenario(std::string(MOTOSTAB_SOURCE_DIR) + "/scenarios/enduro.yaml", {"swingarm.compliance=twist"}));
+  const TrimResult a0 = calcTrim(model, 10.0);
+  const TrimResult a1 = calcTrim(model, 10.5, {}, &a0);
+  const TrimResult a2 = calcTrim(model, 11.0, {}, &a1);
+  TrimResult b = calcTrim(model, 10.0);
+  updTrim(model, 10.5, {}, b);
+  updTrim(model, 11.0, {}, b);
+  ASSERT_EQ(a2.state.getNY(), b.state.getNY());
+  for (int i = 0; i < b.state.getNY(); ++i) EXPECT_EQ(a2.state.getY()[i], b.state.getY()[i]) << i;
+  EXPECT_EQ(a2.iterations, b.iterations);
+  EXPECT_EQ(a2.unknownsCurvature.size(), b.unknownsCurvature.size());
+  EXPECT_GT(b.unknownsCurvature.size(), 0);  // three speeds: the predictor is quadratic
+  EXPECT_EQ(b.speed, 11.0);
+}
+
+// A trim kept without its State comes back with the same values, and is still a trim: the residual
+// evaluated afresh on the restored State stays within the tolerance.
+TEST(Trim, TrimPointRestoresTheTrimmedState) {
+  const VehicleModel model(loadScenario(std::string(MOTOSTAB_SOURCE_DIR) + "/scenarios/enduro.yaml", {"swingarm.compliance=torsion"}));
+  TrimResult t = calcTrim(model, 15.0);
+  const TrimPoint p = makeTrimPoint(model, t);
+  const TrimResult r = restoreTrim(model, p);
+  for (int i = 0; i < t.state.getNY(); ++i) EXPECT_EQ(r.state.getY()[i], t.state.getY()[i]) << i;
+  EXPECT_NE(p.inputs[static_cast<int>(Input::DriveTorque)], 0.0);  // rolling resistance and drag need drive
+  for (int k = 0; k < kNumInputs; ++k)
+    EXPECT_EQ(model.getInput(r.state, static_cast<Input>(k)), model.getInput(t.state, static_cast<Input>(k)));
+  Eigen::VectorXd res;
+  StateFunction(model).calcTrimResidual(r.state, res);
+  EXPECT_LE(res.lpNorm<Eigen::Infinity>(), TrimOptions().tolerance);
+  EXPECT_EQ(r.speed, 15.0);
+  const VehicleModel other(loadScenario(kScenario));
+  EXPECT_THROW(restoreTrim(other, p), std::invalid_argument);
+}
+
 }  // namespace
 }  // namespace motostab
 
@@ -70,17 +106,21 @@ TEST(Sweep, ParallelSweepMatchesSerial) {
   const VehicleModel model(loadScenario(std::string(MOTOSTAB_SOURCE_DIR) + "/scenarios/enduro.yaml", {"swingarm.compliance=torsion"}));
   SweepOptions serial;
   serial.start = 5, serial.stop = 30, serial.step = 1;
-  SweepOptions parallel = serial;
-  parallel.threads = 2;
-  const SweepResult a = runSweep(model, serial), b = runSweep(model, parallel);
-  ASSERT_EQ(a.branches.size(), b.branches.size());
-  for (size_t i = 0; i < a.branches.size(); ++i) {
-    EXPECT_EQ(a.branches[i].label, b.branches[i].label);
-    for (size_t k = 0; k < a.speeds.size(); ++k)
-      EXPECT_LT(std::abs(a.branches[i].eigenvalue[k] - b.branches[i].eigenvalue[k]), 1e-7 * (1 + std::abs(a.branches[i].eigenvalue[k])));
+  const SweepResult a = runSweep(model, serial);
+  for (int threads : {2, 3, 4}) {  // two workers per span of speeds; an odd one alone
+    SweepOptions parallel = serial;
+    parallel.threads = threads;
+    const SweepResult b = runSweep(model, parallel);
+    ASSERT_EQ(a.branches.size(), b.branches.size()) << threads;
+    for (size_t i = 0; i < a.branches.size(); ++i) {
+      EXPECT_EQ(a.branches[i].label, b.branches[i].label);
+      for (size_t k = 0; k < a.speeds.size(); ++k)
+        EXPECT_LT(std::abs(a.branches[i].eigenvalue[k] - b.branches[i].eigenvalue[k]), 1e-7 * (1 + std::abs(a.branches[i].eigenvalue[k])));
+    }
+    for (size_t k = 0; k < a.speeds.size(); ++k) EXPECT_EQ(b.trims[k].speed, a.speeds[k]) << threads;
+    ASSERT_EQ(a.criticalSpeeds.size(), b.criticalSpeeds.size());
+    for (size_t i = 0; i < a.criticalSpeeds.size(); ++i) EXPECT_NEAR(a.criticalSpeeds[i].speed, b.criticalSpeeds[i].speed, 1e-8);
   }
-  ASSERT_EQ(a.criticalSpeeds.size(), b.criticalSpeeds.size());
-  for (size_t i = 0; i < a.criticalSpeeds.size(); ++i) EXPECT_NEAR(a.criticalSpeeds[i].speed, b.criticalSpeeds[i].speed, 1e-8);
 }
 
 // A trim failure in one worker reaches the caller as a TrimError (no worker left waiting): the
