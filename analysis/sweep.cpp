@@ -108,6 +108,7 @@ SweepResult runSweep(const VehicleModel& model, const SweepOptions& opt) {
     };
     LinearizeOptions lo;
     TrimResult work;
+    Eigen::MatrixXd lastJ;  // the previous speed's trim Jacobian read off its A
     size_t k = 0, previous = 0;
     for (size_t i = 0; take(k); ++i, previous = k) {
       if (i == 0) {
@@ -139,7 +140,12 @@ SweepResult runSweep(const VehicleModel& model, const SweepOptions& opt) {
         lo.grouping = calcColumnGrouping(samples);
       }
       Eigen::MatrixXd J = calcTrimJacobian(m, out.models[k], work.jacobian);
-      if (J.size() > 0) work.jacobian = std::move(J);
+      if (J.size() > 0) {
+        if (i > 0 && lastJ.rows() == J.rows() && lastJ.cols() == J.cols())
+          work.jacobianPerSpeed = (J - lastJ) / (out.speeds[k] - out.speeds[previous]);
+        lastJ = J;
+        work.jacobian = std::move(J);
+      }
       out.trims[k] = makeTrimPoint(m, work);
     }
   };

@@ -93,7 +93,12 @@ void solveTrim(const VehicleModel& model, double speed, const TrimOptions& opt, 
   Eigen::CompleteOrthogonalDecomposition<Eigen::MatrixXd> decomposition;
   bool factored = false;           // decomposition holds J
   bool refresh = false;            // slow convergence: differentiate again before the next step
-  if (res.jacobian.cols() == n) J.swap(res.jacobian);
+  if (res.jacobian.cols() == n) {
+    J.swap(res.jacobian);
+    if (res.jacobianPerSpeed.rows() == J.rows() && res.jacobianPerSpeed.cols() == n)
+      J += res.jacobianPerSpeed * (speed - oldSpeed);
+  }
+  res.jacobianPerSpeed.resize(0, 0);
   auto computeJacobian = [&]() {
     J.resize(r.size(), n);
     for (int j = 0; j < n; ++j) {

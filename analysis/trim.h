@@ -24,6 +24,9 @@ struct TrimSummary {
   /// iteration used (differentiated at some iterate of this or an earlier speed), or in sweeps of
   /// constraint-free models the block of this speed's A (calcTrimJacobian).
   Eigen::MatrixXd jacobian;
+  /// d jacobian / d speed (per m/s) when known (sweeps: from the last two speeds' A): the next warm
+  /// start extrapolates the Jacobian with it, and Newton then converges at rate O(dv^2), not O(dv).
+  Eigen::MatrixXd jacobianPerSpeed;
   /// Secant slope d(unknowns)/d(speed) from the warm start to this trim (getTrimUnknowns order,
   /// their units per m/s); empty without a warm start. The next warm start extrapolates with it.
   Eigen::VectorXd unknownsPerSpeed;
