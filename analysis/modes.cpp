@@ -127,10 +127,13 @@ double calcMac(const LinearModel& a, int ka, const LinearModel& b, int kb) {
   return (na > 0 && nb > 0) ? std::norm(dot) / (na * nb) : 0.0;
 }
 
-double calcMatchCost(std::complex<double> la, std::complex<double> lb, double mac) {
-  const double scale = 1.0 + 0.5 * (std::abs(la) + std::abs(lb));
+double calcMatchCost(double distance, double absA, double absB, double mac) {
   // Eigenvalue proximity dominates; MAC separates modes that pass close to each other.
-  return std::abs(la - lb) / scale + 0.2 * (1.0 - mac);
+  return distance / (1.0 + 0.5 * (absA + absB)) + 0.2 * (1.0 - mac);
+}
+
+double calcMatchCost(std::complex<double> la, std::complex<double> lb, double mac) {
+  return calcMatchCost(std::abs(la - lb), std::abs(la), std::abs(lb), mac);
 }
 
 double calcMatchCost(const LinearModel& a, int ka, const LinearModel& b, int kb) {
@@ -275,11 +278,21 @@ std::vector<ModeBranch> trackModes(const std::vector<LinearModel>& models, doubl
     Eigen::MatrixXd& c = costs[i + 1];
     c.resize(n, n);
     if (hasSameStates(prev, cur)) {
-      const Eigen::MatrixXcd dot = prev.eigenvectors.adjoint() * cur.eigenvectors;
-      const Eigen::VectorXd np = prev.eigenvectors.colwise().squaredNorm(), nc = cur.eigenvectors.colwise().squaredNorm();
-      const Eigen::MatrixXd mac = dot.cwiseAbs2().array() / (np * nc.transpose()).array();
+      // a^H b in real arithmetic: [Re a; Im a]^T [Re b; Im b] + i [Re a; Im a]^T [Im b; -Re b]
+      // (real products vectorise; the complex one does not).
+      const int rows = static_cast<int>(prev.eigenvectors.rows());
+      Eigen::MatrixXd p(2 * rows, n), b(2 * rows, n), bi(2 * rows, n);
+      p << prev.eigenvectors.real(), prev.eigenvectors.imag();
+      b << cur.eigenvectors.real(), cur.eigenvectors.imag();
+      bi << cur.eigenvectors.imag(), -cur.eigenvectors.real();
+      const Eigen::MatrixXd re = p.transpose() * b, im = p.transpose() * bi;
+      const Eigen::VectorXd np = p.colwise().squaredNorm(), nc = b.colwise().squaredNorm();
+      const Eigen::MatrixXd mac = (re.cwiseAbs2() + im.cwiseAbs2()).array() / (np * nc.transpose()).array();
+      const Eigen::VectorXd absPrev = prev.eigenvalues.cwiseAbs(), absCur = cur.eigenvalues.cwiseAbs();
       for (int kp = 0; kp < n; ++kp)
-        for (int k = 0; k < n; ++k) c(kp, k) = calcMatchCost(prev.eigenvalues[kp], cur.eigenvalues[k], mac(kp, k));
+        for (int k = 0; k < n; ++k)
+          c(kp, k) = calcMatchCost(std::sqrt(std::norm(prev.eigenvalues[kp] - cur.eigenvalues[k])), absPrev[kp], absCur[k],
+                                   mac(kp, k));
     } else {
       for (int kp = 0; kp < n; ++kp)
         for (int k = 0; k < n; ++k) c(kp, k) = calcMatchCost(prev, kp, cur, k);

@@ -46,6 +46,8 @@ void labelBranches(const std::vector<LinearModel>& models, double wheelbase, std
 double calcMatchCost(const LinearModel& a, int ka, const LinearModel& b, int kb);
 /// The same cost from the two eigenvalues (1/s) and their MAC (0..1).
 double calcMatchCost(std::complex<double> la, std::complex<double> lb, double mac);
+/// The same cost from |la - lb|, |la| and |lb| (1/s) and the MAC.
+double calcMatchCost(double distance, double absA, double absB, double mac);
 
 /// Index of the eigenvalue of `b` that best continues eigenvalue ka of `a`.
 int findBestMatch(const LinearModel& a, int ka, const LinearModel& b);

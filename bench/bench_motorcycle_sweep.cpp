@@ -1,7 +1,7 @@
 // Issue 3 speed figures: the enduro `twist` model over 0-40 m/s at 0.1 m/s (401 speeds), serial and
 // on two threads, and one realize to Acceleration for the (2n+1)-realize cost ratio (counters: n states,
 // realize_us, yardstick_ms = 401 (2n+1) realizes; ratio = Time / yardstick_ms), and the two-thread speed-up
-// from alternated runs.
+// from 15 alternated pairs.
 #include <benchmark/benchmark.h>
 
 #include <algorithm>
@@ -59,7 +59,7 @@ void BM_EnduroTwistSweepSpeedup(benchmark::State& st) {
   st.counters["speedup"] = median(ratios);
   st.counters["serial_ms"] = median(serial) * 1e3;
 }
-BENCHMARK(BM_EnduroTwistSweepSpeedup)->Unit(benchmark::kMillisecond)->Iterations(7)->UseRealTime();
+BENCHMARK(BM_EnduroTwistSweepSpeedup)->Unit(benchmark::kMillisecond)->Iterations(15)->UseRealTime();
 
 void BM_EnduroTwistRealize(benchmark::State& st) {
   const motostab::VehicleModel model(motostab::loadScenario(kEnduro, {"swingarm.compliance=twist"}));
