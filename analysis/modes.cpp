@@ -263,40 +263,45 @@ void labelBranches(const std::vector<LinearModel>& models, double wheelbase, std
   }
 }
 
-std::vector<ModeBranch> trackModes(const std::vector<LinearModel>& models, double wheelbase, int threads) {
+Eigen::MatrixXd calcMatchCosts(const LinearModel& prev, const LinearModel& cur) {
+  const int n = static_cast<int>(prev.eigenvalues.size()), m = static_cast<int>(cur.eigenvalues.size());
+  Eigen::MatrixXd c(n, m);
+  if (!hasSameStates(prev, cur)) {
+    for (int kp = 0; kp < n; ++kp)
+      for (int k = 0; k < m; ++k) c(kp, k) = calcMatchCost(prev, kp, cur, k);
+    return c;
+  }
+  // Same state layout (a sweep's rule): every MAC from one product of the unit eigenvector matrices,
+  // a^H b in real arithmetic: [Re a; Im a]^T [Re b; Im b] + i [Re a; Im a]^T [Im b; -Re b]
+  // (real products vectorise; the complex one does not).
+  const int rows = static_cast<int>(prev.eigenvectors.rows());
+  Eigen::MatrixXd p(2 * rows, n), b(2 * rows, m), bi(2 * rows, m);
+  p << prev.eigenvectors.real(), prev.eigenvectors.imag();
+  b << cur.eigenvectors.real(), cur.eigenvectors.imag();
+  bi << cur.eigenvectors.imag(), -cur.eigenvectors.real();
+  const Eigen::MatrixXd re = p.transpose() * b, im = p.transpose() * bi;
+  const Eigen::VectorXd np = p.colwise().squaredNorm(), nc = b.colwise().squaredNorm();
+  const Eigen::MatrixXd mac = (re.cwiseAbs2() + im.cwiseAbs2()).array() / (np * nc.transpose()).array();
+  const Eigen::VectorXd absPrev = prev.eigenvalues.cwiseAbs(), absCur = cur.eigenvalues.cwiseAbs();
+  for (int kp = 0; kp < n; ++kp)
+    for (int k = 0; k < m; ++k)
+      c(kp, k) = calcMatchCost(std::sqrt(std::norm(prev.eigenvalues[kp] - cur.eigenvalues[k])), absPrev[kp], absCur[k],
+                               mac(kp, k));
+  return c;
+}
+
+std::vector<ModeBranch> trackModes(const std::vector<LinearModel>& models, double wheelbase, int threads,
+                                   std::vector<Eigen::MatrixXd> costs) {
   std::vector<ModeBranch> branches;
   if (models.empty()) return branches;
   const int n = static_cast<int>(models[0].eigenvalues.size());
   for (const auto& m : models)
     if (m.eigenvalues.size() != n) throw std::runtime_error("trackModes: model size changed with speed");
-  // Match costs between every pair of consecutive speeds, independent of the assignment: in
-  // parallel. With the same state layout (a sweep's rule) every MAC comes from one product of the
-  // unit eigenvector matrices.
-  std::vector<Eigen::MatrixXd> costs(models.size());
+  // Match costs between every pair of consecutive speeds not given, independent of the
+  // assignment: in parallel.
+  costs.resize(models.size());
   runParallel(models.size() - 1, threads, [&](size_t i) {
-    const LinearModel &prev = models[i], &cur = models[i + 1];
-    Eigen::MatrixXd& c = costs[i + 1];
-    c.resize(n, n);
-    if (hasSameStates(prev, cur)) {
-      // a^H b in real arithmetic: [Re a; Im a]^T [Re b; Im b] + i [Re a; Im a]^T [Im b; -Re b]
-      // (real products vectorise; the complex one does not).
-      const int rows = static_cast<int>(prev.eigenvectors.rows());
-      Eigen::MatrixXd p(2 * rows, n), b(2 * rows, n), bi(2 * rows, n);
-      p << prev.eigenvectors.real(), prev.eigenvectors.imag();
-      b << cur.eigenvectors.real(), cur.eigenvectors.imag();
-      bi << cur.eigenvectors.imag(), -cur.eigenvectors.real();
-      const Eigen::MatrixXd re = p.transpose() * b, im = p.transpose() * bi;
-      const Eigen::VectorXd np = p.colwise().squaredNorm(), nc = b.colwise().squaredNorm();
-      const Eigen::MatrixXd mac = (re.cwiseAbs2() + im.cwiseAbs2()).array() / (np * nc.transpose()).array();
-      const Eigen::VectorXd absPrev = prev.eigenvalues.cwiseAbs(), absCur = cur.eigenvalues.cwiseAbs();
-      for (int kp = 0; kp < n; ++kp)
-        for (int k = 0; k < n; ++k)
-          c(kp, k) = calcMatchCost(std::sqrt(std::norm(prev.eigenvalues[kp] - cur.eigenvalues[k])), absPrev[kp], absCur[k],
-                                   mac(kp, k));
-    } else {
-      for (int kp = 0; kp < n; ++kp)
-        for (int k = 0; k < n; ++k) c(kp, k) = calcMatchCost(prev, kp, cur, k);
-    }
+    if (costs[i + 1].rows() != n || costs[i + 1].cols() != n) costs[i + 1] = calcMatchCosts(models[i], models[i + 1]);
   });
   branches.resize(n);
   for (int k = 0; k < n; ++k) {

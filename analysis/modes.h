@@ -33,10 +33,15 @@ struct ModeBranch {
   std::vector<int> index;                         ///< eigenvalue index in that speed's LinearModel
 };
 
+/// Match cost of every eigenvalue of `prev` (rows) against every one of `cur` (columns): calcMatchCost.
+Eigen::MatrixXd calcMatchCosts(const LinearModel& prev, const LinearModel& cur);
+
 /// Eigenvalues tracked from speed to speed by eigenvector similarity (MAC) and eigenvalue
-/// proximity, then labelled from each branch's content over the whole sweep. The match costs and
-/// the branch statistics are computed on up to `threads` threads; the assignment is serial.
-std::vector<ModeBranch> trackModes(const std::vector<LinearModel>& models, double wheelbase, int threads = 1);
+/// proximity, then labelled from each branch's content over the whole sweep. costs[s] (s >= 1) may
+/// hold calcMatchCosts(models[s - 1], models[s]) already (sweep workers compute them as they go);
+/// missing ones and the branch statistics are computed on up to `threads` threads; the assignment is serial.
+std::vector<ModeBranch> trackModes(const std::vector<LinearModel>& models, double wheelbase, int threads = 1,
+                                   std::vector<Eigen::MatrixXd> costs = {});
 
 /// Sets each branch's label from its mean content over the sweep (see modes.cpp for the rules).
 void labelBranches(const std::vector<LinearModel>& models, double wheelbase, std::vector<ModeBranch>& branches,

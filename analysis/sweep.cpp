@@ -86,6 +86,7 @@ SweepResult runSweep(const VehicleModel& model, const SweepOptions& opt) {
   }
   out.trims.resize(n);
   out.models.resize(n);
+  std::vector<Eigen::MatrixXd> costs(n);  // costs[k]: calcMatchCosts(models[k - 1], models[k])
   // Warm-started chains of speeds: on a span shared by two workers one goes up from its bottom and
   // the other down from its top, each taking the next speed until they meet, so that neither waits
   // for the other whatever the cost per speed. Each chain trims in place on one State (no State
@@ -134,6 +135,10 @@ SweepResult runSweep(const VehicleModel& model, const SweepOptions& opt) {
         updTrim(m, out.speeds[k], opt.trim, work);
         out.models[k] = linearizeInPlace(m, work, lo);
       }
+      if (i > 0) {  // the match costs of this step, for the tracking
+        const size_t low = std::min(k, previous);
+        costs[low + 1] = calcMatchCosts(out.models[low], out.models[low + 1]);
+      }
       if (opt.groupColumns && i == 1) {
         std::vector<const LinearModel*> samples{&out.models[previous], &out.models[k]};
         if (ref) samples.push_back(ref);
@@ -167,7 +172,7 @@ SweepResult runSweep(const VehicleModel& model, const SweepOptions& opt) {
     }
     for (auto& j : jobs) j.get();
   }
-  out.branches = trackModes(out.models, model.getScenario().geometry.wheelbase, opt.threads);
+  out.branches = trackModes(out.models, model.getScenario().geometry.wheelbase, opt.threads, std::move(costs));
 
   // Every sign change of a labelled mode's real part, refined by Brent's method; crossings are
   // independent, so workers share them (each with its own model).
