@@ -74,7 +74,8 @@ ColumnGrouping calcColumnGrouping(const std::vector<const LinearModel*>& samples
 
 /// Linearises `model` about `trim` (seed eq. 26) and computes eigenvalues and eigenvectors.
 LinearModel linearize(const VehicleModel& model, const TrimResult& trim, const LinearizeOptions& options = {});
-/// linearize without copying the State: perturbs `trim.state` and puts every value back exactly.
+/// linearize without copying the State: perturbs `trim.state` and, on return, has put every value
+/// back exactly (only its realization cache is spent).
 LinearModel linearizeInPlace(const VehicleModel& model, TrimResult& trim, const LinearizeOptions& options = {});
 
 }  // namespace motostab

@@ -1,9 +1,10 @@
 #include "analysis/modes.h"
 
+#include "analysis/parallel.h"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <future>
 #include <map>
 
 namespace motostab {
@@ -34,22 +35,6 @@ std::string coordinateOf(const LinearState& s) {
 }  // namespace
 
 namespace {
-
-// f(i) for i in [0, count), in contiguous chunks on up to `threads` threads.
-template <class F>
-void runParallel(size_t count, int threads, const F& f) {
-  const size_t workers = std::max<size_t>(1, std::min<size_t>(threads, count));
-  if (workers == 1) {
-    for (size_t i = 0; i < count; ++i) f(i);
-    return;
-  }
-  std::vector<std::future<void>> jobs;
-  for (size_t w = 0; w < workers; ++w)
-    jobs.push_back(std::async(std::launch::async, [&, w]() {
-      for (size_t i = count * w / workers; i < count * (w + 1) / workers; ++i) f(i);
-    }));
-  for (auto& j : jobs) j.get();
-}
 
 bool hasSameStates(const LinearModel& a, const LinearModel& b) {
   if (a.states.size() != b.states.size()) return false;
@@ -271,9 +256,9 @@ Eigen::MatrixXd calcMatchCosts(const LinearModel& prev, const LinearModel& cur) 
       for (int k = 0; k < m; ++k) c(kp, k) = calcMatchCost(prev, kp, cur, k);
     return c;
   }
-  // Same state layout (a sweep's rule): every MAC from one product of the unit eigenvector matrices,
-  // a^H b in real arithmetic: [Re a; Im a]^T [Re b; Im b] + i [Re a; Im a]^T [Im b; -Re b]
-  // (real products vectorise; the complex one does not).
+  // Same state layout (a sweep's rule): every MAC at once from a^H b for all eigenvector pairs, in
+  // real arithmetic: [Re a; Im a]^T [Re b; Im b] + i [Re a; Im a]^T [Im b; -Re b] (two real
+  // products, which vectorise; the complex one does not), normalised afterwards.
   const int rows = static_cast<int>(prev.eigenvectors.rows());
   Eigen::MatrixXd p(2 * rows, n), b(2 * rows, m), bi(2 * rows, m);
   p << prev.eigenvectors.real(), prev.eigenvectors.imag();

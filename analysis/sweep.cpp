@@ -1,7 +1,10 @@
 #include "analysis/sweep.h"
 
+#include "analysis/parallel.h"
+
 #include <cmath>
 #include <functional>
+#include <atomic>
 #include <future>
 #include <memory>
 #include <mutex>
@@ -65,10 +68,10 @@ SweepResult runSweep(const VehicleModel& model, const SweepOptions& opt) {
   out.models.reserve(out.speeds.size());
   // The states must not change with speed: decide on yaw once, from a reference linearisation away
   // from standstill (every speed-dependent coupling present; also a sample of the column pattern).
-  // With several workers the last one sweeps its block downwards from the top speed and its first
+  // With several workers the last one sweeps downwards from the top speed and its first
   // linearisation is the reference; the others trim their first speed meanwhile and wait for it.
   const size_t n = out.speeds.size();
-  const size_t workers = std::max<size_t>(1, std::min<size_t>(opt.threads, n));
+  const size_t workers = std::max<size_t>(1, std::min<size_t>(static_cast<size_t>(std::max(1, opt.threads)), n));
   SweepOptions fixed = opt;
   const bool decideYaw = fixed.linearize.removeYaw < 0;
   const bool topIsReference = decideYaw && workers > 1 && n > 0 && out.speeds.back() >= 1.0;
@@ -76,6 +79,12 @@ SweepResult runSweep(const VehicleModel& model, const SweepOptions& opt) {
   const LinearModel* ref = nullptr;
   std::promise<void> refPromise;
   std::shared_future<void> refReady;
+  std::atomic<bool> refSettled{false}, failed{false};
+  auto settleReference = [&](std::exception_ptr e) {  // once: the value, or the failure that stops the sweep
+    if (!refReady.valid() || refSettled.exchange(true)) return;
+    if (e) refPromise.set_exception(e);
+    else refPromise.set_value();
+  };
   if (topIsReference) {
     refReady = refPromise.get_future().share();
   } else if (decideYaw) {
@@ -88,10 +97,12 @@ SweepResult runSweep(const VehicleModel& model, const SweepOptions& opt) {
   out.models.resize(n);
   std::vector<Eigen::MatrixXd> costs(n);  // costs[k]: calcMatchCosts(models[k - 1], models[k])
   // Warm-started chains of speeds: on a span shared by two workers one goes up from its bottom and
-  // the other down from its top, each taking the next speed until they meet, so that neither waits
-  // for the other whatever the cost per speed. Each chain trims in place on one State (no State
-  // copies). Without constraints the next speed's trim Jacobian is read off this speed's A, keeping
-  // the input columns of the one this trim used (a differentiated one costs two realizations per unknown).
+  // the other down from its top, each taking the next speed until they meet, so that within a span
+  // neither waits for the other whatever the cost per speed (where they meet depends on timing:
+  // threaded results agree with the serial sweep to the trim tolerance, not to the bit). Each chain
+  // trims in place on one State (no State copies). Without constraints the next speed's trim
+  // Jacobian is read off this speed's A, keeping the input columns of the one this trim used (a
+  // differentiated one costs two realizations per unknown), and extrapolated along speed.
   struct Span {
     std::mutex lock;
     size_t lo = 0, hi = 0;  // speeds [lo, hi) not yet taken
@@ -103,7 +114,7 @@ SweepResult runSweep(const VehicleModel& model, const SweepOptions& opt) {
   auto runChain = [&](const VehicleModel& m, Span& sp, bool downwards, bool isReference) {
     auto take = [&](size_t& k) {
       std::lock_guard<std::mutex> guard(sp.lock);
-      if (sp.lo == sp.hi) return false;
+      if (sp.lo == sp.hi || failed) return false;
       k = downwards ? --sp.hi : sp.lo++;
       return true;
     };
@@ -113,18 +124,13 @@ SweepResult runSweep(const VehicleModel& model, const SweepOptions& opt) {
     size_t k = 0, previous = 0;
     for (size_t i = 0; take(k); ++i, previous = k) {
       if (i == 0) {
-        if (isReference) {
-          try {  // the other workers wait for this: they must hear of a failure too
-            work = calcTrim(m, out.speeds[k], opt.trim);
-            out.models[k] = linearizeInPlace(m, work, opt.linearize);  // removeYaw automatic
-          } catch (...) {
-            refPromise.set_exception(std::current_exception());
-            throw;
-          }
+        if (isReference) {  // a failure reaches the waiting workers through runWorkers' onFirstFailure
+          work = calcTrim(m, out.speeds[k], opt.trim);
+          out.models[k] = linearizeInPlace(m, work, opt.linearize);  // removeYaw automatic
           ref = &out.models[k];
           fixed.linearize.removeYaw = ref->findState("yaw") < 0 ? 1 : 0;
           lo = fixed.linearize;
-          refPromise.set_value();
+          settleReference(nullptr);
         } else {
           work = calcTrim(m, out.speeds[k], opt.trim);
           if (refReady.valid()) refReady.get();
@@ -157,20 +163,22 @@ SweepResult runSweep(const VehicleModel& model, const SweepOptions& opt) {
   if (workers == 1) {
     runChain(model, span[0], false, false);
   } else {
-    std::vector<std::future<void>> jobs;
-    std::vector<std::unique_ptr<VehicleModel>> copies(workers);
-    for (size_t w = 0; w < workers; ++w) {
-      // The last worker goes down from the top speed (its first linearisation is the reference).
-      const bool isReference = topIsReference && w + 1 == workers;
-      const bool downwards = w % 2 == 1 || isReference;
-      jobs.push_back(std::async(std::launch::async, [&, w, downwards, isReference]() {
-        if (w == 0) return runChain(model, span[0], downwards, isReference);
-        copies[w] = std::make_unique<VehicleModel>(model.getScenario());
-        runChain(*copies[w], span[w / 2], downwards, isReference);
-        // States made by another model's system are valid for this one: same topology.
-      }));
-    }
-    for (auto& j : jobs) j.get();
+    // The reference worker always gets a speed: its span holds at least two, and its partner
+    // takes one and then waits for the reference. Each worker builds its own model (no shared
+    // Simbody caches); a failure stops the others at their next speed and releases the waiting.
+    runWorkers(
+        workers,
+        [&](size_t w) {
+          const bool isReference = topIsReference && w + 1 == workers;
+          const bool downwards = w % 2 == 1 || isReference;
+          std::unique_ptr<VehicleModel> own;
+          if (w > 0) own = std::make_unique<VehicleModel>(model.getScenario());
+          runChain(w > 0 ? *own : model, span[w / 2], downwards, isReference);
+        },
+        [&]() {
+          failed = true;
+          settleReference(std::make_exception_ptr(std::runtime_error("sweep stopped: another worker failed")));
+        });
   }
   out.branches = trackModes(out.models, model.getScenario().geometry.wheelbase, opt.threads, std::move(costs));
 
@@ -195,18 +203,15 @@ SweepResult runSweep(const VehicleModel& model, const SweepOptions& opt) {
     auto f = [&](double v) { return calcBranchRealPart(m, out, *c.branch, c.k, v, fixed); };
     c.speed = findRoot(f, out.speeds[c.k], out.speeds[c.k + 1], f0, f1, opt.criticalSpeedTolerance);
   };
-  const size_t refiners = std::max<size_t>(1, std::min<size_t>(opt.threads, crossings.size()));
+  const size_t refiners = std::max<size_t>(1, std::min<size_t>(static_cast<size_t>(std::max(1, opt.threads)), crossings.size()));
   if (refiners == 1) {
     for (auto& c : crossings) refine(model, c);
   } else {
-    std::vector<std::future<void>> jobs;
-    for (size_t w = 0; w < refiners; ++w)
-      jobs.push_back(std::async(std::launch::async, [&, w]() {
-        std::unique_ptr<VehicleModel> own;
-        if (w > 0) own = std::make_unique<VehicleModel>(model.getScenario());
-        for (size_t i = w; i < crossings.size(); i += refiners) refine(w > 0 ? *own : model, crossings[i]);
-      }));
-    for (auto& j : jobs) j.get();
+    runWorkers(refiners, [&](size_t w) {
+      std::unique_ptr<VehicleModel> own;
+      if (w > 0) own = std::make_unique<VehicleModel>(model.getScenario());
+      for (size_t i = w; i < crossings.size(); i += refiners) refine(w > 0 ? *own : model, crossings[i]);
+    });
   }
   for (const auto& c : crossings) {
     bool duplicate = false;  // both members of a complex pair cross together

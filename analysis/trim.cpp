@@ -145,9 +145,9 @@ void solveTrim(const VehicleModel& model, double speed, const TrimOptions& opt, 
   }
   res.iterations = it;
   res.residualNorm = norm;
-  if (!(norm <= opt.tolerance)) throw TrimError(speed, norm, it);
-  if (J.size() == 0) computeJacobian();
+  if (J.size() == 0 && norm <= opt.tolerance) computeJacobian();
   res.jacobian.swap(J);
+  if (!(norm <= opt.tolerance)) throw TrimError(speed, norm, it);
   if (warm && std::abs(speed - oldSpeed) > 1e-12) {
     res.unknownsPerSpeed.resize(n);
     for (int j = 0; j < n; ++j) res.unknownsPerSpeed[j] = (fn.get(s, unknowns[j]) - oldUnknowns[j]) / (speed - oldSpeed);

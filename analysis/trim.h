@@ -60,12 +60,14 @@ class TrimError : public std::runtime_error {
 std::vector<StateEntry> getTrimUnknowns(const VehicleModel& model);
 
 /// Trims `model` at `speed` (m/s). `warmStart` (a trim at a nearby speed) speeds it up: its unknowns,
-/// extrapolated along its secant slope, start the iteration, and its Jacobian is reused. Throws TrimError on failure.
+/// extrapolated along its secant slope (and curvature), start the iteration, and its Jacobian is
+/// reused, extrapolated with jacobianPerSpeed when that is set. Throws TrimError on failure.
 TrimResult calcTrim(const VehicleModel& model, double speed, const TrimOptions& options = {},
                     const TrimResult* warmStart = nullptr);
 
 /// calcTrim in place, without copying a State: `trim` (a trim at a nearby speed) is the warm start
-/// and becomes the trim at `speed` (m/s). Throws TrimError on failure (`trim` then holds the last iterate).
+/// and becomes the trim at `speed` (m/s). Throws TrimError on failure; `trim` then holds the last
+/// iterate and the Jacobian it used, without the predictor data (slopes, curvature).
 void updTrim(const VehicleModel& model, double speed, const TrimOptions& options, TrimResult& trim);
 
 /// The trim's summary, y and inputs.

@@ -124,15 +124,18 @@ TEST(Sweep, ParallelSweepMatchesSerial) {
 }
 
 // A trim failure in one worker reaches the caller as a TrimError (no worker left waiting): the
-// tilted-axis enduro has no upright equilibrium at standstill, in the first worker's block.
+// tilted-axis enduro has no upright equilibrium at standstill, the first worker's first speed.
 TEST(Sweep, ParallelSweepReportsATrimFailure) {
   const VehicleModel model(loadScenario(std::string(MOTOSTAB_SOURCE_DIR) + "/scenarios/enduro.yaml",
                                         {"swingarm.compliance=torsion",
                                          "swingarm.torsion={point_m: [0.56, 0, 0.014], direction: [1, 0.2, 0], "
                                          "stiffness_Nm_per_rad: 55200, damping_Nms_per_rad: 0.49}"}));
   SweepOptions opt;
-  opt.start = 0, opt.stop = 10, opt.step = 1, opt.threads = 2;
-  EXPECT_THROW(runSweep(model, opt), TrimError);
+  opt.start = 0, opt.stop = 10, opt.step = 1;
+  for (int threads : {2, 3, 4}) {
+    opt.threads = threads;
+    EXPECT_THROW(runSweep(model, opt), TrimError) << threads;
+  }
 }
 
 }  // namespace
