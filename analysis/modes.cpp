@@ -78,10 +78,10 @@ ModeContent calcModeContent(const LinearModel& lin, int k, double wheelbase, con
   const double rateScale = std::max(1.0, std::abs(lin.eigenvalues[k]));
   for (size_t i = 0; i < w.group.size(); ++i) {
     if (w.group[i] < 0) continue;
-    double mag = std::abs(lin.eigenvectors(i, k));
-    if (w.isRate[i]) mag /= rateScale;
-    if (w.perWheelbase[i]) mag /= wheelbase;
-    c[w.group[i]] += mag * mag;
+    double scale = 1.0;  // squared magnitudes: no hypot
+    if (w.isRate[i]) scale *= rateScale;
+    if (w.perWheelbase[i]) scale *= wheelbase;
+    c[w.group[i]] += std::norm(lin.eigenvectors(i, k)) / (scale * scale);
   }
   double sum = 0;
   for (double v : c) sum += v;
@@ -294,26 +294,30 @@ std::vector<ModeBranch> trackModes(const std::vector<LinearModel>& models, doubl
     branches[k].eigenvalue.push_back(models[0].eigenvalues[k]);
   }
   for (size_t s = 1; s < models.size(); ++s) {
-    // Greedy assignment on ascending cost.
-    std::vector<std::tuple<double, int, int>> pairs;
-    pairs.reserve(n * n);
+    // Greedy assignment on ascending cost; when every branch's cheapest match is distinct, greedy
+    // takes exactly those.
     std::vector<int> assigned(n, -1);
     std::vector<bool> taken(n, false);
-    bool distinct = true;  // every branch's cheapest match differs: greedy takes exactly those
+    bool distinct = true;
     for (int b = 0; b < n; ++b) {
       const int kp = branches[b].index.back();
       double best = std::numeric_limits<double>::infinity();
+      bool finite = true;  // NaN must not reach the sort below
       for (int k = 0; k < n; ++k) {
         const double cost = costs[s](kp, k);
-        pairs.emplace_back(cost, b, k);
+        finite = finite && std::isfinite(cost);
         if (cost < best) best = cost, assigned[b] = k;
       }
-      if (assigned[b] < 0) throw std::runtime_error("trackModes: non-finite eigenvalues or eigenvectors at speed index " +
+      if (!finite || assigned[b] < 0) throw std::runtime_error("trackModes: non-finite eigenvalues or eigenvectors at speed index " +
                                                      std::to_string(s));
       distinct = distinct && !taken[assigned[b]];
       taken[assigned[b]] = true;
     }
     if (!distinct) {
+      std::vector<std::tuple<double, int, int>> pairs;
+      pairs.reserve(n * n);
+      for (int b = 0; b < n; ++b)
+        for (int k = 0; k < n; ++k) pairs.emplace_back(costs[s](branches[b].index.back(), k), b, k);
       std::sort(pairs.begin(), pairs.end());
       std::fill(assigned.begin(), assigned.end(), -1);
       std::fill(taken.begin(), taken.end(), false);

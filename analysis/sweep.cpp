@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <functional>
+#include <algorithm>
 #include <atomic>
 #include <future>
 #include <memory>
@@ -68,13 +69,26 @@ SweepResult runSweep(const VehicleModel& model, const SweepOptions& opt) {
   out.models.reserve(out.speeds.size());
   // The states must not change with speed: decide on yaw once, from a reference linearisation away
   // from standstill (every speed-dependent coupling present; also a sample of the column pattern).
-  // With several workers the last one sweeps downwards from the top speed and its first
-  // linearisation is the reference; the others trim their first speed meanwhile and wait for it.
+  // It is the lead chain's first: worker 0 starts at the first speed of at least 1 m/s, sweeps down
+  // to its span's bottom, then turns and goes up; the other workers trim their first speed (the
+  // top of a span, a slow cold trim) meanwhile and take the reference before linearising it.
   const size_t n = out.speeds.size();
   const size_t workers = std::max<size_t>(1, std::min<size_t>(static_cast<size_t>(std::max(1, opt.threads)), n));
+  struct Span {
+    std::mutex lock;
+    size_t lo = 0, hi = 0;  // speeds [lo, hi) not yet taken
+  };
+  const size_t spans = (workers + 1) / 2;
+  std::vector<Span> span(spans);
+  for (size_t p = 0; p < spans; ++p)  // shares of the speeds: two per two-worker span
+    span[p].lo = n * std::min(2 * p, workers) / workers, span[p].hi = n * std::min(2 * p + 2, workers) / workers;
+  const size_t leadFirst = static_cast<size_t>(
+      std::find_if(out.speeds.begin(), out.speeds.end(), [](double v) { return v >= 1.0; }) - out.speeds.begin());
+  const bool leadTurns = leadFirst < span[0].hi;  // else worker 0 just goes up from 0
+  const size_t leadDown = leadTurns ? leadFirst + 1 : 0;  // speeds leadFirst, ..., 0 before the turn
+  if (leadTurns) span[0].lo = leadFirst + 1;
   SweepOptions fixed = opt;
   const bool decideYaw = fixed.linearize.removeYaw < 0;
-  const bool topIsReference = decideYaw && workers > 1 && n > 0 && out.speeds.back() >= 1.0;
   std::optional<LinearModel> ownReference;
   const LinearModel* ref = nullptr;
   std::promise<void> refPromise;
@@ -85,9 +99,9 @@ SweepResult runSweep(const VehicleModel& model, const SweepOptions& opt) {
     if (e) refPromise.set_exception(e);
     else refPromise.set_value();
   };
-  if (topIsReference) {
+  if (decideYaw && leadTurns) {
     refReady = refPromise.get_future().share();
-  } else if (decideYaw) {
+  } else if (decideYaw) {  // no speed of 1 m/s or more in the lead's span: a separate reference
     TrimResult top = calcTrim(model, std::max(1.0, opt.stop), opt.trim);
     ownReference = linearizeInPlace(model, top, opt.linearize);
     ref = &*ownReference;
@@ -96,22 +110,14 @@ SweepResult runSweep(const VehicleModel& model, const SweepOptions& opt) {
   out.trims.resize(n);
   out.models.resize(n);
   std::vector<Eigen::MatrixXd> costs(n);  // costs[k]: calcMatchCosts(models[k - 1], models[k])
-  // Warm-started chains of speeds: on a span shared by two workers one goes up from its bottom and
-  // the other down from its top, each taking the next speed until they meet, so that within a span
-  // neither waits for the other whatever the cost per speed (where they meet depends on timing:
-  // threaded results agree with the serial sweep to the trim tolerance, not to the bit). Each chain
-  // trims in place on one State (no State copies). Without constraints the next speed's trim
-  // Jacobian is read off this speed's A, keeping the input columns of the one this trim used (a
-  // differentiated one costs two realizations per unknown), and extrapolated along speed.
-  struct Span {
-    std::mutex lock;
-    size_t lo = 0, hi = 0;  // speeds [lo, hi) not yet taken
-  };
-  const size_t spans = (workers + 1) / 2;
-  std::vector<Span> span(spans);
-  for (size_t p = 0; p < spans; ++p)  // shares of the speeds: two per two-worker span
-    span[p].lo = n * std::min(2 * p, workers) / workers, span[p].hi = n * std::min(2 * p + 2, workers) / workers;
-  auto runChain = [&](const VehicleModel& m, Span& sp, bool downwards, bool isReference) {
+  // Warm-started chains of speeds: on a span shared by two workers one goes up and the other down
+  // from its top, each taking the next speed until they meet, so that within a span neither waits
+  // for the other whatever the cost per speed (where they meet depends on timing: threaded results
+  // agree with the serial sweep to the trim tolerance, not to the bit). Each chain trims in place
+  // on one State (no State copies). Without constraints the next speed's trim Jacobian is read off
+  // this speed's A, keeping the input columns of the one this trim used (a differentiated one costs
+  // two realizations per unknown), and extrapolated along speed.
+  auto runChain = [&](const VehicleModel& m, Span& sp, bool downwards, bool lead) {
     auto take = [&](size_t& k) {
       std::lock_guard<std::mutex> guard(sp.lock);
       if (sp.lo == sp.hi || failed) return false;
@@ -119,24 +125,29 @@ SweepResult runSweep(const VehicleModel& model, const SweepOptions& opt) {
       return true;
     };
     LinearizeOptions lo;
-    TrimResult work;
-    Eigen::MatrixXd lastJ;  // the previous speed's trim Jacobian read off its A
+    TrimResult work, turn;  // turn: the lead's first trim, from which it goes up
+    Eigen::MatrixXd lastJ, turnJ;  // the previous speed's trim Jacobian read off its A
     size_t k = 0, previous = 0;
-    for (size_t i = 0; take(k); ++i, previous = k) {
+    for (size_t i = 0;; ++i, previous = k) {
+      if (lead && i < leadDown) {
+        if (failed) break;
+        k = leadFirst - i;
+      } else if (!take(k)) {
+        break;
+      } else if (lead && i == leadDown && leadDown > 1) {
+        work = std::move(turn), lastJ = std::move(turnJ), previous = leadFirst;
+      }
       if (i == 0) {
-        if (isReference) {  // a failure reaches the waiting workers through runWorkers' onFirstFailure
-          work = calcTrim(m, out.speeds[k], opt.trim);
-          out.models[k] = linearizeInPlace(m, work, opt.linearize);  // removeYaw automatic
+        work = calcTrim(m, out.speeds[k], opt.trim);
+        const bool isReference = lead && refReady.valid();  // removeYaw automatic
+        if (refReady.valid() && !isReference) refReady.get();
+        out.models[k] = linearizeInPlace(m, work, isReference ? opt.linearize : fixed.linearize);
+        if (isReference) {
           ref = &out.models[k];
           fixed.linearize.removeYaw = ref->findState("yaw") < 0 ? 1 : 0;
-          lo = fixed.linearize;
-          settleReference(nullptr);
-        } else {
-          work = calcTrim(m, out.speeds[k], opt.trim);
-          if (refReady.valid()) refReady.get();
-          lo = fixed.linearize;
-          out.models[k] = linearizeInPlace(m, work, lo);
+          settleReference(nullptr);  // a failure reaches the waiting workers through onFirstFailure
         }
+        lo = fixed.linearize;
       } else {
         updTrim(m, out.speeds[k], opt.trim, work);
         out.models[k] = linearizeInPlace(m, work, lo);
@@ -158,22 +169,21 @@ SweepResult runSweep(const VehicleModel& model, const SweepOptions& opt) {
         work.jacobian = std::move(J);
       }
       out.trims[k] = makeTrimPoint(m, work);
+      if (lead && i == 0 && leadDown > 1) turn = work, turnJ = lastJ;  // one State copy
     }
   };
   if (workers == 1) {
-    runChain(model, span[0], false, false);
+    runChain(model, span[0], false, true);
   } else {
-    // The reference worker always gets a speed: its span holds at least two, and its partner
-    // takes one and then waits for the reference. Each worker builds its own model (no shared
-    // Simbody caches); a failure stops the others at their next speed and releases the waiting.
+    // Each worker builds its own model (no shared Simbody caches); a failure stops the others at
+    // their next speed and releases any wait for the reference. The lead's partner takes at
+    // least its first speed; the lead computes the reference before taking any shared speed.
     runWorkers(
         workers,
         [&](size_t w) {
-          const bool isReference = topIsReference && w + 1 == workers;
-          const bool downwards = w % 2 == 1 || isReference;
           std::unique_ptr<VehicleModel> own;
           if (w > 0) own = std::make_unique<VehicleModel>(model.getScenario());
-          runChain(w > 0 ? *own : model, span[w / 2], downwards, isReference);
+          runChain(w > 0 ? *own : model, span[w / 2], w % 2 == 1, w == 0);
         },
         [&]() {
           failed = true;

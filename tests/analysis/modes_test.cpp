@@ -37,5 +37,17 @@ TEST(Modes, PrecomputedCostsGiveTheSameBranches) {
   }
 }
 
+// A non-finite eigenvalue is an error naming the speed index, not a silent mis-assignment.
+TEST(Modes, NonFiniteEigenvalueIsNamed) {
+  SweepResult r = sweepEnduro();
+  r.models[3].eigenvalues[2] = std::complex<double>(std::nan(""), 0);
+  try {
+    trackModes(r.models, 1.4, 1);
+    FAIL() << "NaN must not be tracked";
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find("speed index 3"), std::string::npos) << e.what();
+  }
+}
+
 }  // namespace
 }  // namespace motostab

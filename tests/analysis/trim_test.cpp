@@ -1,5 +1,7 @@
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include "analysis/sweep.h"
 #include "scenario/scenario.h"
 #include "tyres/rolling_no_slip.h"
@@ -102,10 +104,33 @@ namespace motostab {
 namespace {
 
 // Splitting the speeds between workers changes only the trims' warm starts.
+// Each speed of a sweep is the trim and linearisation of that speed, whatever the chain that
+// reached it: the serial sweep from standstill starts at 1 m/s (the reference), goes down to 0 and
+// turns; every speed, either side of the turn, matches a cold trim and linearisation there.
+TEST(Sweep, EverySpeedMatchesItsOwnColdLinearisation) {
+  const VehicleModel model(loadScenario(std::string(MOTOSTAB_SOURCE_DIR) + "/scenarios/enduro.yaml", {"swingarm.compliance=torsion"}));
+  SweepOptions opt;
+  opt.start = 0, opt.stop = 2.5, opt.step = 0.5;
+  const SweepResult r = runSweep(model, opt);
+  LinearizeOptions lo = opt.linearize;
+  lo.removeYaw = r.models[0].findState("yaw") < 0 ? 1 : 0;
+  auto sorted = [](Eigen::VectorXcd v) {
+    std::sort(v.data(), v.data() + v.size(), [](auto a, auto b) { return a.real() != b.real() ? a.real() < b.real() : a.imag() < b.imag(); });
+    return v;
+  };
+  for (size_t k = 0; k < r.speeds.size(); ++k) {
+    const Eigen::VectorXcd cold = sorted(linearize(model, calcTrim(model, r.speeds[k]), lo).eigenvalues);
+    const Eigen::VectorXcd swept = sorted(r.models[k].eigenvalues);
+    ASSERT_EQ(cold.size(), swept.size());
+    for (int j = 0; j < cold.size(); ++j) EXPECT_LT(std::abs(cold[j] - swept[j]), 1e-6 * (1 + std::abs(cold[j]))) << r.speeds[k];
+  }
+}
+
 TEST(Sweep, ParallelSweepMatchesSerial) {
   const VehicleModel model(loadScenario(std::string(MOTOSTAB_SOURCE_DIR) + "/scenarios/enduro.yaml", {"swingarm.compliance=torsion"}));
+  for (double start : {5.0, 0.0}) {  // from 0 m/s the lead chain turns at 1 m/s
   SweepOptions serial;
-  serial.start = 5, serial.stop = 30, serial.step = 1;
+  serial.start = start, serial.stop = 30, serial.step = 1;
   const SweepResult a = runSweep(model, serial);
   for (int threads : {2, 3, 4}) {  // two workers per span of speeds; an odd one alone
     SweepOptions parallel = serial;
@@ -120,6 +145,7 @@ TEST(Sweep, ParallelSweepMatchesSerial) {
     for (size_t k = 0; k < a.speeds.size(); ++k) EXPECT_EQ(b.trims[k].speed, a.speeds[k]) << threads;
     ASSERT_EQ(a.criticalSpeeds.size(), b.criticalSpeeds.size());
     for (size_t i = 0; i < a.criticalSpeeds.size(); ++i) EXPECT_NEAR(a.criticalSpeeds[i].speed, b.criticalSpeeds[i].speed, 1e-8);
+  }
   }
 }
 
