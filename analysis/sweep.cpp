@@ -70,8 +70,9 @@ SweepResult runSweep(const VehicleModel& model, const SweepOptions& opt) {
   // The states must not change with speed: decide on yaw once, from a reference linearisation away
   // from standstill (every speed-dependent coupling present; also a sample of the column pattern).
   // It is the lead chain's first: worker 0 starts at the first speed of at least 1 m/s, sweeps down
-  // to its span's bottom, then turns and goes up; the other workers trim their first speed (the
-  // top of a span, a slow cold trim) meanwhile and take the reference before linearising it.
+  // to its span's bottom, then turns and goes up; the other workers make their first, cold trim
+  // meanwhile (its partner's, at the top speed, is the slowest) and take the reference before
+  // linearising it.
   const size_t n = out.speeds.size();
   const size_t workers = std::max<size_t>(1, std::min<size_t>(static_cast<size_t>(std::max(1, opt.threads)), n));
   struct Span {
