@@ -13,6 +13,7 @@ void registerStabilityCommands(CLI::App& app) {
   struct SweepArgs {
     std::string scenario, speeds, out;
     std::vector<std::string> overrides;
+    int threads = 1;
   };
   auto sweepArgs = std::make_shared<SweepArgs>();
   CLI::App* sweep = app.add_subcommand("sweep", "Linear stability sweep over speed: eigenvalues, modes, critical speeds, plots");
@@ -20,6 +21,10 @@ void registerStabilityCommands(CLI::App& app) {
   sweep->add_option("--speeds", sweepArgs->speeds, "START:STOP:STEP in m/s (default: the scenario's speeds_mps)");
   sweep->add_option("--out", sweepArgs->out, "Output folder (default: named after the scenario)");
   sweep->add_option("--set", sweepArgs->overrides, "Override a scenario value, e.g. --set geometry.trail_m=0.1");
+  sweep->add_option("--threads", sweepArgs->threads,
+                    "Worker threads (2: about 1.8x faster; results then agree with one thread to the trim "
+                    "tolerance, not to the bit)")
+      ->check(CLI::Range(1, 256));
   sweep->callback([sweepArgs]() {
     const Scenario scenario = loadScenario(sweepArgs->scenario, sweepArgs->overrides);
     const VehicleModel model(scenario);
@@ -28,6 +33,7 @@ void registerStabilityCommands(CLI::App& app) {
     opt.stop = scenario.speeds.stop;
     opt.step = scenario.speeds.step;
     if (!sweepArgs->speeds.empty()) parseSpeedRange(sweepArgs->speeds, opt.start, opt.stop, opt.step);
+    opt.threads = sweepArgs->threads;
     const SweepResult result = runSweep(model, opt);
     const std::string out = sweepArgs->out.empty() ? scenario.name : sweepArgs->out;
     writeSweepOutputs(out, scenario.name, result);
