@@ -65,8 +65,6 @@ double findRoot(const std::function<double(double)>& f, double a, double b, doub
 SweepResult runSweep(const VehicleModel& model, const SweepOptions& opt) {
   SweepResult out;
   out.speeds = makeSpeedGrid(opt.start, opt.stop, opt.step);
-  out.trims.reserve(out.speeds.size());
-  out.models.reserve(out.speeds.size());
   // The states must not change with speed: decide on yaw once, from a reference linearisation away
   // from standstill (every speed-dependent coupling present; also a sample of the column pattern).
   // It is the lead chain's first: worker 0 starts at the first speed of at least 1 m/s, sweeps down
