@@ -1,7 +1,7 @@
 // Kooijman, Schwab, Meijaard (2008), "Experimental validation of a model of an uncontrolled bicycle",
 // Multibody Syst Dyn 19:115-132: the Maxwell Silvercity of Table 1 has weave and capsize speeds of
 // about 3.99 and 7.90 m/s in the linear Whipple model. Its parameters come from BicycleParameters
-// (Moore et al. 2010), shared/measured-data/BicycleParameters.
+// (Moore et al. 2010), tests/data/measured-data/BicycleParameters.
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -14,7 +14,7 @@ namespace motostab {
 namespace {
 
 const std::string kScenarios = std::string(MOTOSTAB_SOURCE_DIR) + "/scenarios/";
-const std::string kBicycles = std::string(MOTOSTAB_SHARED_DIR) + "/measured-data/BicycleParameters/data/bicycles/";
+const std::string kBicycles = std::string(MOTOSTAB_TEST_DATA_DIR) + "/measured-data/BicycleParameters/data/bicycles/";
 
 double criticalSpeed(const SweepResult& s, const std::string& mode) {
   for (const auto& c : s.criticalSpeeds)

@@ -1,5 +1,5 @@
 // Real hammer records (ladisk/pyFRF, five hits, fs = 25.6 kHz, 1 s): H1, coherence and LSCF modes.
-// Reference values: ../shared/measured-data/pyFRF-impact/ORIGIN.md (resonances near 900, 2640, 3669/3690,
+// Reference values: tests/data/measured-data/pyFRF-impact/ORIGIN.md (resonances near 900, 2640, 3669/3690,
 // 4093/4128/4164, 4392 Hz; coherence >= 0.998 at the peaks).
 #include <gtest/gtest.h>
 
@@ -18,7 +18,7 @@ using namespace motostab::modal;
 std::vector<ImpactRecord> loadPyFrfHits() {
   std::vector<ImpactRecord> hits;
   for (int i = 1; i <= 5; ++i) {
-    const auto t = motostab::readCsv(std::string(MOTOSTAB_SHARED_DIR) + "/measured-data/pyFRF-impact/impact_" +
+    const auto t = motostab::readCsv(std::string(MOTOSTAB_TEST_DATA_DIR) + "/measured-data/pyFRF-impact/impact_" +
                                      std::to_string(i) + ".csv");
     ImpactRecord r;
     const auto time = t.getColumn("t_s");

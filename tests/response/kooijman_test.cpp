@@ -2,7 +2,7 @@
 // J.P. Meijaard, "Experimental validation of a model of an uncontrolled bicycle", Multibody Syst Dyn
 // 19:115-132 (2008). The paper fits c1 + exp(d t)(c2 cos(w t) + c3 sin(w t)) (its eq. 7) to the lean rate on
 // 9.9 <= t <= 12.5 s and reports lambda = -1.16 +/- 5.44i 1/s (Fig. 6 caption; Fig. 7 bar: -1.159 + 5.443i).
-// Data: /work/shared/measured-data/Kooijman2008 (traces extracted from the PDF's vector paths, see ORIGIN.md).
+// Data: tests/data/measured-data/Kooijman2008 (traces extracted from the PDF's vector paths, see ORIGIN.md).
 #include <gtest/gtest.h>
 
 #include <fstream>
@@ -19,7 +19,7 @@ namespace {
 using motostab::response::IdentificationOptions;
 using motostab::response::IdentificationResult;
 
-const std::string kDir = std::string(MOTOSTAB_SHARED_DIR) + "/measured-data/Kooijman2008/";
+const std::string kDir = std::string(MOTOSTAB_TEST_DATA_DIR) + "/measured-data/Kooijman2008/";
 constexpr double kPublishedReal = -1.16, kPublishedImag = 5.44;  // Kooijman et al. 2008, Fig. 6 caption
 constexpr double kTolerance = 0.05;                               // issue 5 acceptance
 

@@ -1,5 +1,5 @@
 // The hammer-test pipeline (YAML with the optional column keys) on the real pyFRF records
-// (../shared/measured-data/pyFRF-impact/ORIGIN.md: resonances near 900, 2640, 3669/3690, 4093-4164, 4392 Hz;
+// (tests/data/measured-data/pyFRF-impact/ORIGIN.md: resonances near 900, 2640, 3669/3690, 4093-4164, 4392 Hz;
 // coherence >= 0.998 at the peaks). One response channel: modes only, no modal axes.
 #include <gtest/gtest.h>
 
@@ -15,7 +15,7 @@ using namespace motostab::identification;
 
 TEST(PyFrfPipeline, FindsTheReferenceModesWithUncertainties) {
   const auto dir = makeTempDir("pyfrf");
-  const std::string data = std::string(MOTOSTAB_SHARED_DIR) + "/measured-data/pyFRF-impact/";
+  const std::string data = std::string(MOTOSTAB_TEST_DATA_DIR) + "/measured-data/pyFRF-impact/";
   std::ofstream(dir / "frf.yaml") << "test: frf\nframe: \"undocumented structure\"\nforce_point: {x: 0, z: 0}\n"
                                   << "channels:\n  - {name: R, x: 0, z: 0, column: response}\nhits: ["
                                   << data << "impact_1.csv, " << data << "impact_2.csv, " << data << "impact_3.csv, "
