@@ -1,7 +1,37 @@
 #!/usr/bin/env bash
-# Installs what is missing, builds, and runs the whole test suite with ctest.
+# Installs what is missing, builds, and runs the test suite with ctest.
+#   ./test.sh [CTEST_ARGS...]          Release build (./build), whole suite
+#   ./test.sh --sanitize [CTEST_ARGS]  AddressSanitizer + UndefinedBehaviorSanitizer build (./build-asan), whole suite
+#   ./test.sh --tsan [CTEST_ARGS]      ThreadSanitizer build (./build-tsan): the threaded sweep and parallel tests
+#   ./test.sh --fuzz [SECONDS]         libFuzzer targets (clang, ./build-fuzz), SECONDS each (default 60)
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
-"$root/scripts/build.sh"
-cd "$root/build"
-ctest --output-on-failure -j "${MOTOSTAB_JOBS:-$(nproc)}" "$@"
+jobs="${MOTOSTAB_JOBS:-$(nproc)}"
+mode="${1:-}"
+case "$mode" in
+  --sanitize)
+    shift
+    export MOTOSTAB_BUILD_DIR=build-asan MOTOSTAB_CMAKE_ARGS="-DMOTOSTAB_BUILD_BENCH=OFF"
+    export MOTOSTAB_CXX_FLAGS="-fsanitize=address,undefined -fno-sanitize-recover=undefined -fno-omit-frame-pointer"
+    export ASAN_OPTIONS="${ASAN_OPTIONS:-detect_leaks=1:abort_on_error=1:strict_string_checks=1}"
+    export UBSAN_OPTIONS="${UBSAN_OPTIONS:-print_stacktrace=1:halt_on_error=1}"
+    "$root/scripts/build.sh"
+    cd "$root/build-asan"
+    ctest --output-on-failure -j "$jobs" "$@" ;;
+  --tsan)
+    shift
+    export MOTOSTAB_BUILD_DIR=build-tsan MOTOSTAB_CMAKE_ARGS="-DMOTOSTAB_BUILD_BENCH=OFF"
+    export MOTOSTAB_CXX_FLAGS="-fsanitize=thread -fno-omit-frame-pointer"
+    export TSAN_OPTIONS="${TSAN_OPTIONS:-halt_on_error=1:second_deadlock_stack=1}"
+    "$root/scripts/build.sh" test_analysis test_apps motostab
+    cd "$root/build-tsan"
+    # Everything that runs worker threads: runParallel, threaded sweeps (library and CLI --threads).
+    ctest --output-on-failure -j "$jobs" -R 'Parallel|Threads' "$@" ;;
+  --fuzz)
+    shift
+    "$root/scripts/fuzz.sh" "${1:-60}" ;;
+  *)
+    "$root/scripts/build.sh"
+    cd "$root/build"
+    ctest --output-on-failure -j "$jobs" "$@" ;;
+esac

@@ -1,8 +1,11 @@
 #!/usr/bin/env bash
 # Installs the Debian packages motostab needs, only those missing. Run as root (or with sudo available).
+# MOTOSTAB_FUZZ_DEPS=1 adds the fuzzing tools.
 set -euo pipefail
 pkgs=(cmake g++ make libsimbody-dev libeigen3-dev libyaml-cpp-dev libcli11-dev nlohmann-json3-dev
-      libfftw3-dev libgtest-dev libbenchmark-dev gnuplot-nox)
+      libfftw3-dev libgtest-dev libbenchmark-dev gnuplot-nox python3)
+# The fuzz stage (scripts/fuzz.sh) also needs clang and its libFuzzer runtime.
+[ -n "${MOTOSTAB_FUZZ_DEPS:-}" ] && pkgs+=(clang-14 libclang-rt-14-dev)
 missing=()
 for p in "${pkgs[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

@@ -1,13 +1,13 @@
 #include "swingarm/identification/virtual_rig.h"
 
 #include <cmath>
-#include <random>
 #include <sstream>
 
 #include <unsupported/Eigen/MatrixFunctions>
 
 #include "io/atomic_file.h"
 #include "io/csv.h"
+#include "io/portable_random.h"
 
 namespace motostab::identification {
 namespace {
@@ -46,8 +46,7 @@ RigNoise RigNoise::scaled(double f) const {
 
 StaticReadings simulateStaticReadings(const VirtualSwingarm& rig, const std::vector<double>& loads,
                                       const RigNoise& noise, std::uint64_t seed) {
-  std::mt19937_64 rng(seed);
-  std::normal_distribution<double> gauss(0.0, 1.0);
+  PortableRandom rng(seed);
   const int ns = static_cast<int>(rig.sensorPoints.size());
   StaticReadings r;
   r.force = loads;
@@ -58,7 +57,7 @@ StaticReadings simulateStaticReadings(const VirtualSwingarm& rig, const std::vec
     const double perN = rig.getArmAt(0, rig.forcePoint) * rig.getArmAt(0, p) / rig.kB +
                         rig.getArmAt(1, rig.forcePoint) * rig.getArmAt(1, p) / rig.kT;
     for (size_t i = 0; i < loads.size(); ++i) {
-      const double y = offset + loads[i] * perN + noise.laserNoise * gauss(rng);
+      const double y = offset + loads[i] * perN + noise.laserNoise * rng.drawNormal();
       r.dy(i, j) = noise.laserResolution > 0 ? std::round(y / noise.laserResolution) * noise.laserResolution : y;
     }
   }
@@ -67,9 +66,7 @@ StaticReadings simulateStaticReadings(const VirtualSwingarm& rig, const std::vec
 
 std::vector<modal::ImpactRecord> simulateHammerHits(const VirtualSwingarm& rig, const HammerOptions& o,
                                                     const RigNoise& noise, std::uint64_t seed) {
-  std::mt19937_64 rng(seed);
-  std::normal_distribution<double> gauss(0.0, 1.0);
-  std::uniform_real_distribution<double> uni(0.0, 1.0);
+  PortableRandom rng(seed);
   const double dt = 1.0 / o.sampleRate;
   const size_t n = static_cast<size_t>(std::lround(o.duration * o.sampleRate));
   // Exact first-order-hold discretisation of each modal oscillator J th'' + c th' + k th = a_F F.
@@ -101,8 +98,8 @@ std::vector<modal::ImpactRecord> simulateHammerHits(const VirtualSwingarm& rig, 
   }
   std::vector<modal::ImpactRecord> hits;
   for (int h = 0; h < o.hits; ++h) {
-    const double amp = o.peakForce * (0.9 + 0.2 * uni(rng));
-    const double t0 = o.preTrigger + uni(rng) * dt;
+    const double amp = o.peakForce * (0.9 + 0.2 * rng.drawUniform());
+    const double t0 = o.preTrigger + rng.drawUniform() * dt;
     std::vector<double> f(n, 0.0);
     auto addPulse = [&](double start, double peak) {
       for (size_t k = 0; k < n; ++k) {
@@ -125,10 +122,10 @@ std::vector<modal::ImpactRecord> simulateHammerHits(const VirtualSwingarm& rig, 
         x = md.phi * x + md.g1 * f[k] + md.g2 * (fNext - f[k]) / dt;
       }
     }
-    for (size_t k = 0; k < n; ++k) r.force[k] = f[k] + noise.forceNoise * gauss(rng);
+    for (size_t k = 0; k < n; ++k) r.force[k] = f[k] + noise.forceNoise * rng.drawNormal();
     for (auto& ch : r.responses)
       for (auto& v : ch) {
-        v += noise.accelNoise * gauss(rng);
+        v += noise.accelNoise * rng.drawNormal();
         if (o.accelClip > 0) v = std::clamp(v, -o.accelClip, o.accelClip);
       }
     hits.push_back(std::move(r));
@@ -183,8 +180,7 @@ void writeFrfTestFiles(const std::filesystem::path& dir, const VirtualSwingarm& 
 
 void writeCogTestFiles(const std::filesystem::path& dir, const VirtualPart& part, const Eigen::Vector3d& origin,
                        double cellNoise, std::uint64_t seed) {
-  std::mt19937_64 rng(seed);
-  std::normal_distribution<double> gauss(0.0, 1.0);
+  PortableRandom rng(seed);
   const double g = 9.80665;
   const double cx[4] = {-0.3, 0.3, 0.3, -0.3}, cy[4] = {-0.2, -0.2, 0.2, 0.2};
   Eigen::Matrix<double, 3, 4> e;
@@ -208,8 +204,8 @@ void writeCogTestFiles(const std::filesystem::path& dir, const VirtualPart& part
     rd << a;
     tr << a;
     for (int j = 0; j < 4; ++j) {
-      rd << "," << num(withPart[j] + cellNoise * gauss(rng), 8);
-      tr << "," << num(plat[j] + cellNoise * gauss(rng), 8);
+      rd << "," << num(withPart[j] + cellNoise * rng.drawNormal(), 8);
+      tr << "," << num(plat[j] + cellNoise * rng.drawNormal(), 8);
     }
     rd << "\n";
     tr << "\n";
@@ -227,8 +223,7 @@ void writeCogTestFiles(const std::filesystem::path& dir, const VirtualPart& part
 
 void writeInertiaTestFiles(const std::filesystem::path& dir, const VirtualPart& part, double periodNoise,
                            std::uint64_t seed) {
-  std::mt19937_64 rng(seed);
-  std::normal_distribution<double> gauss(0.0, 1.0);
+  PortableRandom rng(seed);
   const double g = 9.80665, length = 2.0, radius = 0.3, plateMass = 4.0, plateInertia = 0.25;
   auto period = [&](double mass, double inertia) {
     return 2 * M_PI * std::sqrt(inertia * length / (mass * g * radius * radius));
@@ -236,7 +231,7 @@ void writeInertiaTestFiles(const std::filesystem::path& dir, const VirtualPart& 
   auto periods = [&](double mass, double inertia) {
     std::ostringstream s;
     s << "[";
-    for (int i = 0; i < 5; ++i) s << (i ? ", " : "") << num(period(mass, inertia) + periodNoise * gauss(rng), 8);
+    for (int i = 0; i < 5; ++i) s << (i ? ", " : "") << num(period(mass, inertia) + periodNoise * rng.drawNormal(), 8);
     return s.str() + "]";
   };
   std::ostringstream y;

@@ -1,5 +1,8 @@
 #include <gtest/gtest.h>
 
+#include <complex>
+#include <vector>
+
 #include "analysis/sweep.h"
 #include "scenario/scenario.h"
 
@@ -13,15 +16,55 @@ SweepResult sweepEnduro() {
   return runSweep(model, opt);
 }
 
-// The MAC of the batched cost matrix (real products) against calcMac's direct complex sum.
+// Modal assurance criterion written out here (Allemang 2003, Sound Vib. 37(8):14, eq. 1):
+// |a^H b|^2 / (|a|^2 |b|^2), states matched by name.
+double calcMacHere(const LinearModel& a, int ka, const LinearModel& b, int kb) {
+  std::complex<double> dot = 0;
+  double na = 0, nb = 0;
+  for (size_t i = 0; i < a.states.size(); ++i) {
+    const int j = b.findState(a.states[i].name);
+    if (j < 0) continue;
+    dot += std::conj(a.eigenvectors(i, ka)) * b.eigenvectors(j, kb);
+    na += std::norm(a.eigenvectors(i, ka)), nb += std::norm(b.eigenvectors(j, kb));
+  }
+  return std::norm(dot) / (na * nb);
+}
+
+// The batched cost matrix equals calcMatchCost entry by entry, its MAC equals the one written out
+// above, a model matched with itself costs zero on the diagonal and more elsewhere, and the tracked
+// branches pair the eigenvalues of consecutive speeds one-to-one.
 TEST(Modes, MatchCostMatrixEqualsPairwiseCosts) {
   const SweepResult r = sweepEnduro();
   const LinearModel &a = r.models[1], &b = r.models[2];
   const Eigen::MatrixXd c = calcMatchCosts(a, b);
   ASSERT_EQ(c.rows(), a.eigenvalues.size());
+  ASSERT_EQ(c.cols(), b.eigenvalues.size());
   for (int i = 0; i < c.rows(); ++i)
-    for (int j = 0; j < c.cols(); ++j) EXPECT_NEAR(c(i, j), calcMatchCost(a, i, b, j), 1e-12) << i << " " << j;
-  EXPECT_LT(c.diagonal().minCoeff(), 1.0);  // something matches
+    for (int j = 0; j < c.cols(); ++j) {
+      EXPECT_NEAR(c(i, j), calcMatchCost(a, i, b, j), 1e-12) << i << " " << j;
+      const double mac = calcMacHere(a, i, b, j);
+      EXPECT_NEAR(calcMac(a, i, b, j), mac, 1e-12) << i << " " << j;
+      EXPECT_GE(mac, -1e-15);
+      EXPECT_LE(mac, 1 + 1e-12);
+      EXPECT_NEAR(calcMac(b, j, a, i), mac, 1e-12);  // symmetric
+    }
+  const Eigen::MatrixXd self = calcMatchCosts(b, b);
+  for (int i = 0; i < self.rows(); ++i) {
+    EXPECT_NEAR(self(i, i), 0.0, 1e-12) << i;
+    for (int j = 0; j < self.cols(); ++j)
+      if (std::abs(b.eigenvalues[i] - b.eigenvalues[j]) > 1e-6) EXPECT_GT(self(i, j), 0.0) << i << " " << j;
+  }
+  // Tracking: every eigenvalue of every speed belongs to exactly one branch.
+  ASSERT_EQ(r.branches.size(), static_cast<size_t>(a.eigenvalues.size()));
+  for (size_t k = 0; k < r.models.size(); ++k) {
+    std::vector<int> used(r.models[k].eigenvalues.size(), 0);
+    for (const auto& br : r.branches) {
+      ASSERT_GE(br.index[k], 0);
+      ++used[br.index[k]];
+      EXPECT_EQ(br.eigenvalue[k], r.models[k].eigenvalues[br.index[k]]);
+    }
+    for (int u : used) EXPECT_EQ(u, 1) << "speed index " << k;
+  }
 }
 
 // Costs handed in (as sweep workers do) give the same branches as costs computed inside.

@@ -5,8 +5,11 @@
 
 #include <iostream>
 
+#include <algorithm>
 #include <complex>
 #include <set>
+#include <utility>
+#include <vector>
 
 #include "analysis/sweep.h"
 #include "scenario/scenario.h"
@@ -51,11 +54,25 @@ class WhippleBenchmark : public ::testing::Test {
     delete sweep_;
     delete model_;
   }
-  static const ModeBranch* branchAt(const std::string& label, size_t k, cd near) {
-    const ModeBranch* best = nullptr;
-    for (const auto& b : sweep_->branches)
-      if (b.label == label && (!best || std::abs(b.eigenvalue[k] - near) < std::abs(best->eigenvalue[k] - near))) best = &b;
-    return best;
+  // One-to-one assignment at speed index k: the expected (label, eigenvalue) pairs are matched to
+  // branches of the same label greedily by distance, each branch used once (greedy with removal).
+  // Returns the branch of each expected entry (nullptr when none is left).
+  static std::vector<const ModeBranch*> assignOneToOne(const std::vector<std::pair<std::string, cd>>& expected, size_t k) {
+    struct Pair {
+      double distance;
+      size_t e, b;
+    };
+    std::vector<Pair> pairs;
+    for (size_t e = 0; e < expected.size(); ++e)
+      for (size_t b = 0; b < sweep_->branches.size(); ++b)
+        if (sweep_->branches[b].label == expected[e].first)
+          pairs.push_back({std::abs(sweep_->branches[b].eigenvalue[k] - expected[e].second), e, b});
+    std::sort(pairs.begin(), pairs.end(), [](const Pair& x, const Pair& y) { return x.distance < y.distance; });
+    std::vector<const ModeBranch*> out(expected.size(), nullptr);
+    std::vector<bool> branchUsed(sweep_->branches.size(), false);
+    for (const Pair& p : pairs)
+      if (!out[p.e] && !branchUsed[p.b]) out[p.e] = &sweep_->branches[p.b], branchUsed[p.b] = true;
+    return out;
   }
   static VehicleModel* model_;
   static SweepResult* sweep_;
@@ -68,15 +85,15 @@ TEST_F(WhippleBenchmark, EigenvaluesMatchTable2WithLabels) {
   for (const Row& r : kTable2) {
     const size_t k = static_cast<size_t>(std::lround(r.v / 0.5));
     ASSERT_NEAR(sweep_->speeds[k], r.v, 1e-12);
-    const struct {
-      const char* label;
-      cd value;
-    } expected[] = {{"weave", r.weave}, {"weave", r.weave2}, {"capsize", r.capsize}, {"castor", r.castor}};
-    for (const auto& e : expected) {
-      const ModeBranch* b = branchAt(e.label, k, e.value);
-      ASSERT_NE(b, nullptr) << e.label << " at v=" << r.v;
-      EXPECT_LE(std::abs(b->eigenvalue[k] - e.value), 1e-8) << e.label << " at v=" << r.v << ": " << b->eigenvalue[k];
-      worst = std::max(worst, std::abs(b->eigenvalue[k] - e.value));
+    const std::vector<std::pair<std::string, cd>> expected = {
+        {"weave", r.weave}, {"weave", r.weave2}, {"capsize", r.capsize}, {"castor", r.castor}};
+    const auto assigned = assignOneToOne(expected, k);
+    for (size_t e = 0; e < expected.size(); ++e) {
+      const ModeBranch* b = assigned[e];
+      ASSERT_NE(b, nullptr) << expected[e].first << " at v=" << r.v << ": no branch of that label left";
+      EXPECT_LE(std::abs(b->eigenvalue[k] - expected[e].second), 1e-8)
+          << expected[e].first << " at v=" << r.v << ": " << b->eigenvalue[k];
+      worst = std::max(worst, std::abs(b->eigenvalue[k] - expected[e].second));
     }
     // The fifth eigenvalue is the neutral forward-speed mode.
     int neutral = 0;

@@ -2,8 +2,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <random>
 
+#include "io/portable_random.h"
 #include "modal/lscf.h"
 #include "modal/spectra.h"
 
@@ -84,8 +84,7 @@ TEST(H1, ExponentialWindowCorrectionRecoversSdofDamping) {
   const double fs = 1000, f0 = 73.0, zeta = 0.004, m = 2.0, dt = 1 / fs;
   const double w0 = 2 * M_PI * f0, wd = w0 * std::sqrt(1 - zeta * zeta), sigma = zeta * w0;
   const size_t n = 2000, k0 = 10;
-  std::mt19937_64 rng(3);
-  std::normal_distribution<double> g(0, 1);
+  PortableRandom rng(3);
   std::vector<ImpactRecord> hits;
   for (int h = 0; h < 4; ++h) {
     ImpactRecord r;
@@ -98,7 +97,7 @@ TEST(H1, ExponentialWindowCorrectionRecoversSdofDamping) {
       // x = I/(m wd) e^{-sigma t} sin(wd t); a = x''
       const double t = (k - k0) * dt, e = std::exp(-sigma * t);
       const double a = impulse / (m * wd) * e * ((sigma * sigma - wd * wd) * std::sin(wd * t) - 2 * sigma * wd * std::cos(wd * t));
-      r.responses[0][k] = a + 1e-3 * g(rng);
+      r.responses[0][k] = a + 1e-3 * rng.drawNormal();
     }
     hits.push_back(r);
   }

@@ -5,11 +5,11 @@
 #include <cmath>
 #include <complex>
 #include <iostream>
-#include <random>
 #include <stdexcept>
 
 #include <Eigen/Dense>
 
+#include "io/portable_random.h"
 #include "response/mode_identification.h"
 
 namespace {
@@ -31,22 +31,20 @@ std::vector<double> makeUniformTime(double duration, double step) {
 
 // Random steps uniform in [minStep, maxStep].
 std::vector<double> makeJitteredTime(double duration, double minStep, double maxStep, unsigned seed) {
-  std::mt19937 rng(seed);
-  std::uniform_real_distribution<double> step(minStep, maxStep);
+  PortableRandom rng(seed);
   std::vector<double> t{0.0};
-  while (t.back() < duration) t.push_back(t.back() + step(rng));
+  while (t.back() < duration) t.push_back(t.back() + rng.drawUniform(minStep, maxStep));
   return t;
 }
 
 std::vector<double> makeSignal(const std::vector<double>& t, double offset, const std::vector<TrueMode>& modes,
                                double noiseStd, unsigned seed) {
-  std::mt19937 rng(seed);
-  std::normal_distribution<double> noise(0.0, 1.0);
+  PortableRandom rng(seed);
   std::vector<double> y;
   for (double ti : t) {
     double v = offset;
     for (const auto& m : modes) v += m.amplitude * std::exp(m.sigma * ti) * std::cos(m.omega * ti + m.phase);
-    y.push_back(v + noiseStd * noise(rng));
+    y.push_back(v + noiseStd * rng.drawNormal());
   }
   return y;
 }

@@ -7,7 +7,7 @@
 #include "io/input_error.h"
 #include "swingarm/identification/frf_test.h"
 #include "swingarm/identification/static_test.h"
-#include "temp_dir.h"
+#include "tests/support/temp_dir.h"
 
 namespace {
 

@@ -7,7 +7,7 @@
 #include "io/input_error.h"
 #include "swingarm/identification/mass_properties.h"
 #include "swingarm/identification/virtual_rig.h"
-#include "temp_dir.h"
+#include "tests/support/temp_dir.h"
 
 namespace {
 

@@ -7,7 +7,7 @@
 #include <fstream>
 
 #include "swingarm/identification/frf_test.h"
-#include "temp_dir.h"
+#include "tests/support/temp_dir.h"
 
 namespace {
 

@@ -11,7 +11,7 @@
 #include "swingarm/identification/decomposition.h"
 #include "swingarm/identification/virtual_rig.h"
 #include "rig_truth.h"
-#include "temp_dir.h"
+#include "tests/support/temp_dir.h"
 
 namespace {
 

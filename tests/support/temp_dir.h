@@ -5,7 +5,7 @@
 
 inline std::filesystem::path makeTempDir(const std::string& name) {
   const auto dir = std::filesystem::temp_directory_path() /
-                   ("motostab_swingarm_" + name);
+                   ("motostab_test_" + name);
   std::filesystem::remove_all(dir);
   std::filesystem::create_directories(dir);
   return dir;

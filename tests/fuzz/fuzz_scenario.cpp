@@ -1,0 +1,13 @@
+// Fuzz target: the scenario loader (scenario/scenario.h, loadScenario) on one YAML file.
+#include "scenario/scenario.h"
+#include "tests/fuzz/fuzz_support.h"
+
+extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
+  const auto dir = motostab::fuzz::resetScratchDir();
+  const auto file = motostab::fuzz::writeScratchFile(dir, "scenario.yaml", std::string(reinterpret_cast<const char*>(data), size));
+  motostab::fuzz::expectInputErrorOnly([&] {
+    const motostab::Scenario s = motostab::loadScenario(file.string());
+    motostab::calcMassSummary(s);
+  });
+  return 0;
+}
