@@ -18,7 +18,7 @@ InputLocation YamlMap::locate(const std::string& key) const {
   YAML::Mark mark = node_.Mark();
   if (!key.empty()) {
     for (const auto& kv : node_)
-      if (kv.first.as<std::string>() == key) mark = kv.first.Mark();
+      if (kv.first.IsScalar() && kv.first.Scalar() == key) mark = kv.first.Mark();
   }
   return {file_, mark.line >= 0 ? mark.line + 1 : 0, mark.column >= 0 ? mark.column + 1 : 0, childPath(key)};
 }
@@ -125,9 +125,11 @@ YamlMap YamlMap::getMap(const std::string& key) {
 
 void YamlMap::finish() const {
   for (const auto& kv : node_) {
-    const std::string k = kv.first.as<std::string>();
+    const YAML::Mark m = kv.first.Mark();
+    // A list, mapping or null as a key (fuzz_scenario regression non_scalar_key.yaml).
+    if (!kv.first.IsScalar()) throw InputError({file_, m.line + 1, m.column + 1, path_}, "expected a key name");
+    const std::string k = kv.first.Scalar();
     if (!used_->count(k)) {
-      const YAML::Mark m = kv.first.Mark();
       throw InputError({file_, m.line + 1, m.column + 1, childPath(k)}, "unknown key");
     }
   }

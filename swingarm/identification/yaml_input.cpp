@@ -33,7 +33,9 @@ void YamlInput::checkMap(const YAML::Node& node, const std::string& path,
   if (!node.IsMap()) fail(node, path, "expected a map");
   std::set<std::string> seen;
   for (const auto& kv : node) {
-    const std::string k = kv.first.as<std::string>();
+    // A list, mapping or null as a key (fuzz_identification regression non_scalar_key.txt).
+    if (!kv.first.IsScalar()) fail(kv.first, path, "expected a key name");
+    const std::string k = kv.first.Scalar();
     if (!seen.insert(k).second) fail(kv.first, join(path, k), "duplicate key");
     bool ok = false;
     std::string list;

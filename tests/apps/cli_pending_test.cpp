@@ -8,12 +8,6 @@
 
 namespace {
 
-void expectInputError(const std::string& args, const std::string& named) {
-  const CliRun r = runCli(args);
-  EXPECT_EQ(r.exitCode, 2) << args << "\nstdout: " << r.out << "\nstderr: " << r.err;
-  EXPECT_NE(r.err.find(named), std::string::npos) << args << "\nstderr: " << r.err;
-}
-
 const std::string kWhipple = "scenarios/whipple-benchmark.yaml";
 
 TEST(CliPendingHardin, MissingScenarioFile) { expectInputError("check scenarios/no-such-file.yaml", "no-such-file.yaml"); }

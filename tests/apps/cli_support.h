@@ -1,5 +1,6 @@
 #pragma once
 // Runs the motostab executable (MOTOSTAB_CLI) as a user would and checks the files it writes parse.
+#include <gtest/gtest.h>
 #include <sys/wait.h>
 
 #include <cstdlib>
@@ -61,4 +62,11 @@ inline int checkOutputsParse(const std::filesystem::path& dir) {
 inline nlohmann::json readJson(const std::filesystem::path& p) {
   std::ifstream in(p);
   return nlohmann::json::parse(in);
+}
+
+/// Expects exit status 2 (bad input) and `named` (the option, file or key) in the message.
+inline void expectInputError(const std::string& args, const std::string& named) {
+  const CliRun r = runCli(args);
+  EXPECT_EQ(r.exitCode, 2) << args << "\nstdout: " << r.out << "\nstderr: " << r.err;
+  EXPECT_NE(r.err.find(named), std::string::npos) << args << "\nstderr: " << r.err;
 }

@@ -191,12 +191,6 @@ TEST(CliCommands, IdentifyChainOnVirtualRigAndExamples) {
 
 // ---- Bad input: exit 2 with a message naming the input -------------------------------------------
 
-void expectInputError(const std::string& args, const std::string& named) {
-  const CliRun r = runCli(args);
-  EXPECT_EQ(r.exitCode, 2) << args << "\nstdout: " << r.out << "\nstderr: " << r.err;
-  EXPECT_NE(r.err.find(named), std::string::npos) << args << "\nstderr: " << r.err;
-}
-
 TEST(CliBadInput, UnknownScenarioKeyNamesFileLineAndKey) {
   const auto dir = makeTempDir("cli_bad_key");
   std::string text = readWholeFile(std::string(MOTOSTAB_SOURCE_DIR) + "/" + kWhipple);

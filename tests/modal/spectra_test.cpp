@@ -84,7 +84,7 @@ TEST(H1, ExponentialWindowCorrectionRecoversSdofDamping) {
   const double fs = 1000, f0 = 73.0, zeta = 0.004, m = 2.0, dt = 1 / fs;
   const double w0 = 2 * M_PI * f0, wd = w0 * std::sqrt(1 - zeta * zeta), sigma = zeta * w0;
   const size_t n = 2000, k0 = 10;
-  PortableRandom rng(3);
+  motostab::PortableRandom rng(3);
   std::vector<ImpactRecord> hits;
   for (int h = 0; h < 4; ++h) {
     ImpactRecord r;

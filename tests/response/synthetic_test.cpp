@@ -31,7 +31,7 @@ std::vector<double> makeUniformTime(double duration, double step) {
 
 // Random steps uniform in [minStep, maxStep].
 std::vector<double> makeJitteredTime(double duration, double minStep, double maxStep, unsigned seed) {
-  PortableRandom rng(seed);
+  motostab::PortableRandom rng(seed);
   std::vector<double> t{0.0};
   while (t.back() < duration) t.push_back(t.back() + rng.drawUniform(minStep, maxStep));
   return t;
@@ -39,7 +39,7 @@ std::vector<double> makeJitteredTime(double duration, double minStep, double max
 
 std::vector<double> makeSignal(const std::vector<double>& t, double offset, const std::vector<TrueMode>& modes,
                                double noiseStd, unsigned seed) {
-  PortableRandom rng(seed);
+  motostab::PortableRandom rng(seed);
   std::vector<double> y;
   for (double ti : t) {
     double v = offset;
