@@ -29,6 +29,8 @@ void registerStabilityCommands(CLI::App& app) {
       ->check(makeThreadsCheck());
   sweep->callback([sweepArgs]() {
     const Scenario scenario = loadScenario(sweepArgs->scenario, sweepArgs->overrides);
+    const std::string out = sweepArgs->out.empty() ? scenario.name : sweepArgs->out;
+    OutputFolder folder(out);  // first: a kill from here on leaves the old outputs whole
     const VehicleModel model(scenario);
     SweepOptions opt;
     opt.start = scenario.speeds.start;
@@ -37,8 +39,6 @@ void registerStabilityCommands(CLI::App& app) {
     if (!sweepArgs->speeds.empty()) parseSpeedRange(sweepArgs->speeds, opt.start, opt.stop, opt.step);
     opt.threads = sweepArgs->threads;
     const SweepResult result = runSweep(model, opt);
-    const std::string out = sweepArgs->out.empty() ? scenario.name : sweepArgs->out;
-    OutputFolder folder(out);
     writeSweepOutputs(folder.getPath(), scenario.name, result);
     folder.commit();
     std::cout << "Scenario " << scenario.name << ": " << result.speeds.size() << " speeds\n"
@@ -59,10 +59,10 @@ void registerStabilityCommands(CLI::App& app) {
   lin->add_option("--set", linArgs->overrides, "Override a scenario value");
   lin->callback([linArgs]() {
     const Scenario scenario = loadScenario(linArgs->scenario, linArgs->overrides);
+    OutputFolder folder(linArgs->out);
     const VehicleModel model(scenario);
     const TrimResult trim = calcTrim(model, linArgs->speed);
     const LinearModel lm = linearize(model, trim);
-    OutputFolder folder(linArgs->out);
     writeLinearModel(folder.getPath(), lm);
     folder.commit();
     std::cout << "Trim at " << linArgs->speed << " m/s: residual " << trim.residualNorm << " after " << trim.iterations
@@ -107,9 +107,9 @@ void registerStabilityCommands(CLI::App& app) {
     opt.shapeSpeeds = st->shapeSpeeds;
     opt.overrides = st->overrides;
     opt.threads = st->threads;
-    const StudyResult result = runStudy(st->scenario, opt);
     const std::string out = st->out.empty() ? scenario.name + "-study" : st->out;
     OutputFolder folder(out);
+    const StudyResult result = runStudy(st->scenario, opt);
     writeStudyOutputs(folder.getPath(), result, opt);
     folder.commit();
     std::cout << makeStudyReport(result, opt) << "\nWrote " << out
