@@ -1,43 +1,30 @@
 #pragma once
-// Runs the motostab executable (MOTOSTAB_CLI) as a user would and checks the files it writes parse.
+// End-to-end helpers: run motostab in the source folder (run_motostab.h) and check that the files it
+// writes parse.
 #include <gtest/gtest.h>
-#include <sys/wait.h>
 
-#include <cstdlib>
 #include <filesystem>
 #include <fstream>
-#include <sstream>
 #include <string>
 #include <vector>
 
 #include "nlohmann/json.hpp"
+#include "tests/apps/run_motostab.h"
 #include "tests/support/temp_dir.h"
 #include "tests/support/text_csv.h"
 
 struct CliRun {
-  int exitCode = -1;  ///< the exit status, or 128 + signal number when killed
-  std::string out, err;
+  int exitCode = -1;   ///< exit status, or 128 + signal when killed
+  std::string output;  ///< stdout and stderr
 };
 
-inline std::string readWholeFile(const std::filesystem::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
-/// Runs `motostab ARGS` (ARGS already shell-quoted where needed) in the source folder.
-inline CliRun runCli(const std::string& args) {
+/// Runs `motostab args...` in the source folder (relative paths as in the README's examples).
+inline CliRun runCli(const std::vector<std::string>& args) {
   static int counter = 0;
-  const auto dir = makeTempDir("cli_io_" + std::to_string(++counter));
-  const std::string cmd = "cd '" MOTOSTAB_SOURCE_DIR "' && '" MOTOSTAB_CLI "' " + args + " >'" + (dir / "out").string() +
-                          "' 2>'" + (dir / "err").string() + "'";
-  const int status = std::system(cmd.c_str());
+  const auto log = makeTempDir("cli_log_" + std::to_string(++counter)) / "log.txt";
   CliRun r;
-  if (WIFEXITED(status)) r.exitCode = WEXITSTATUS(status);
-  if (WIFSIGNALED(status)) r.exitCode = 128 + WTERMSIG(status);
-  r.out = readWholeFile(dir / "out");
-  r.err = readWholeFile(dir / "err");
+  r.exitCode = motostab::test::waitForExit(motostab::test::startMotostab(args, MOTOSTAB_SOURCE_DIR, log.string()));
+  r.output = motostab::test::readLog(log.string());
   return r;
 }
 
@@ -48,7 +35,7 @@ inline int checkOutputsParse(const std::filesystem::path& dir) {
     if (!e.is_regular_file()) continue;
     if (e.path().extension() == ".json") {
       std::ifstream in(e.path());
-      nlohmann::json::parse(in);  // throws on bad JSON
+      (void)nlohmann::json::parse(in);  // throws on bad JSON
       ++n;
     } else if (e.path().extension() == ".csv") {
       const TextCsv t = readTextCsv(e.path());  // throws on ragged rows
@@ -65,8 +52,10 @@ inline nlohmann::json readJson(const std::filesystem::path& p) {
 }
 
 /// Expects exit status 2 (bad input) and `named` (the option, file or key) in the message.
-inline void expectInputError(const std::string& args, const std::string& named) {
+inline void expectInputError(const std::vector<std::string>& args, const std::string& named) {
   const CliRun r = runCli(args);
-  EXPECT_EQ(r.exitCode, 2) << args << "\nstdout: " << r.out << "\nstderr: " << r.err;
-  EXPECT_NE(r.err.find(named), std::string::npos) << args << "\nstderr: " << r.err;
+  std::string cmd;
+  for (const auto& a : args) cmd += a + " ";
+  EXPECT_EQ(r.exitCode, 2) << cmd << "\n" << r.output;
+  EXPECT_NE(r.output.find(named), std::string::npos) << cmd << "\n" << r.output;
 }
