@@ -2,7 +2,7 @@
 # Installs what is missing, builds, and runs the test suite with ctest.
 #   ./test.sh [CTEST_ARGS...]          Release build (./build), whole suite
 #   ./test.sh --sanitize [CTEST_ARGS]  AddressSanitizer + UndefinedBehaviorSanitizer build (./build-asan), whole suite
-#   ./test.sh --tsan [CTEST_ARGS]      ThreadSanitizer build (./build-tsan): the threaded sweep and parallel tests
+#   ./test.sh --tsan [CTEST_ARGS]      ThreadSanitizer build (./build-tsan): the tests that run worker threads
 #   ./test.sh --fuzz [SECONDS]         libFuzzer targets (clang, ./build-fuzz), SECONDS each (default 60)
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
@@ -23,10 +23,11 @@ case "$mode" in
     export MOTOSTAB_BUILD_DIR=build-tsan MOTOSTAB_CMAKE_ARGS="-DMOTOSTAB_BUILD_BENCH=OFF"
     export MOTOSTAB_CXX_FLAGS="-fsanitize=thread -fno-omit-frame-pointer"
     export TSAN_OPTIONS="${TSAN_OPTIONS:-halt_on_error=1:second_deadlock_stack=1}"
-    "$root/scripts/build.sh" test_analysis test_apps motostab
+    "$root/scripts/build.sh" test_analysis test_apps test_plugins motostab
     cd "$root/build-tsan"
-    # Everything that runs worker threads: runParallel, threaded sweeps (library and CLI --threads).
-    ctest --output-on-failure -j "$jobs" -R 'Parallel|Threads' "$@" ;;
+    # Everything that runs worker threads: runParallel, threaded sweeps (library, CLI --threads, and
+    # the sweep workers' plugin and model-extension replicas).
+    ctest --output-on-failure -j "$jobs" -R 'Parallel|Threads|SweepWorker' "$@" ;;
   --fuzz)
     shift
     "$root/scripts/fuzz.sh" "${1:-60}" ;;
