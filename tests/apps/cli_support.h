@@ -3,6 +3,8 @@
 // writes parse.
 #include <gtest/gtest.h>
 
+#include <unistd.h>
+
 #include <filesystem>
 #include <fstream>
 #include <string>
@@ -21,10 +23,12 @@ struct CliRun {
 /// Runs `motostab args...` in the source folder (relative paths as in the README's examples).
 inline CliRun runCli(const std::vector<std::string>& args) {
   static int counter = 0;
-  const auto log = makeTempDir("cli_log_" + std::to_string(++counter)) / "log.txt";
+  // One folder per process and run: ctest -j runs the tests side by side.
+  const auto log = makeTempDir("cli_log_" + std::to_string(getpid()) + "_" + std::to_string(++counter)) / "log.txt";
   CliRun r;
   r.exitCode = motostab::test::waitForExit(motostab::test::startMotostab(args, MOTOSTAB_SOURCE_DIR, log.string()));
   r.output = motostab::test::readLog(log.string());
+  std::filesystem::remove_all(log.parent_path());
   return r;
 }
 

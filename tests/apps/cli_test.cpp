@@ -54,6 +54,14 @@ std::map<std::pair<double, std::string>, std::vector<cd>> readSweepEigenvalues(c
   return out;
 }
 
+// Eigenvalues of modes.json (imag >= 0).
+std::vector<cd> readModes(const fs::path& file) {
+  const nlohmann::json j = readJson(file);
+  std::vector<cd> modes;
+  for (const auto& m : j.at("modes")) modes.emplace_back(m.at("real").get<double>(), std::abs(m.at("imag").get<double>()));
+  return modes;
+}
+
 TEST(CliCommands, CheckPrintsTheScenarioSummary) {
   const CliRun r = runCli({"check", kWhipple});
   ASSERT_EQ(r.exitCode, 0) << r.output;
@@ -151,9 +159,7 @@ TEST(CliCommands, SimulateWritesATimeseriesAndIdentifiesTheWeave) {
   EXPECT_GE(checkOutputsParse(dir), 2);
   const TextCsv t = readTextCsv(dir / "timeseries.csv");
   EXPECT_NEAR(parseCell(t.rows.back()[0]), 3.0, 1e-9);
-  std::vector<cd> modes;
-  for (const auto& m : readJson(dir / "modes.json").at("modes"))
-    modes.emplace_back(m.at("real").get<double>(), std::abs(m.at("imag").get<double>()));
+  const std::vector<cd> modes = readModes(dir / "modes.json");
   expectEigenvalues(modes, {kWeave5}, 0.02);
 }
 
@@ -165,9 +171,7 @@ TEST(CliCommands, IdentifyResponseFindsKooijmanRun52) {
                            "--signal", "lean_rate_V", "--window", "9.9:12.5", "--out", dir.string()});
   ASSERT_EQ(r.exitCode, 0) << r.output;
   EXPECT_GE(checkOutputsParse(dir), 1);
-  std::vector<cd> modes;
-  for (const auto& m : readJson(dir / "modes.json").at("modes"))
-    modes.emplace_back(m.at("real").get<double>(), std::abs(m.at("imag").get<double>()));
+  const std::vector<cd> modes = readModes(dir / "modes.json");
   expectEigenvalues(modes, {cd(-1.16, 5.44)}, 0.02);
 }
 

@@ -20,7 +20,8 @@ struct Outcome {
 Outcome run(const std::vector<std::string>& args) {
   const auto dir = std::filesystem::temp_directory_path() / "motostab_cli_errors";
   std::filesystem::create_directories(dir);
-  const std::string log = (dir / "log.txt").string();
+  // One log per process: ctest -j runs these tests side by side.
+  const std::string log = (dir / ("log_" + std::to_string(getpid()) + ".txt")).string();
   const int code = test::waitForExit(test::startMotostab(args, dir.string(), log));
   return {code, test::readLog(log)};
 }
