@@ -146,6 +146,10 @@ UncertaintyTask getTask(const UncertaintySetup& s, size_t t) {
   return {TaskKind::SobolAB, row, static_cast<int>(k - 2)};
 }
 
+size_t getModeValueCount(const UncertaintySetup& s) {
+  return 2 * kFanModes.size() * makeSpeedGrid(s.options.start, s.options.stop, s.options.step).size();
+}
+
 TaskResult runTask(const UncertaintySetup& s, size_t t) {
   TaskResult r;
   r.firstCrossing.fill(kNaN);

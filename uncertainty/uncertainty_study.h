@@ -82,6 +82,9 @@ struct TaskResult {
   std::vector<double> modeValues;
 };
 
+/// Length of TaskResult::modeValues: 2 x fan modes x speeds of the grid.
+size_t getModeValueCount(const UncertaintySetup& setup);
+
 /// Runs task t (one serial sweep).
 TaskResult runTask(const UncertaintySetup& setup, size_t t);
 
