@@ -5,6 +5,7 @@
 #include "apps/commands.h"
 #include "io/atomic_file.h"
 #include "scenario/bicycle_parameters.h"
+#include "scenario/bicycle_parameters_uncertainty.h"
 #include "vehicle/vehicle_model.h"
 
 namespace motostab::cli {
@@ -51,7 +52,8 @@ void registerScenarioCommands(CLI::App& app) {
   i->add_option("--name", imp->name, "Scenario name (default: the output file stem)");
   i->callback([imp]() {
     const std::string name = imp->name.empty() ? std::filesystem::path(imp->out).stem().string() : imp->name;
-    writeFileAtomically(imp->out, convertBicycleParametersToScenario(imp->file, name));
+    writeFileAtomically(imp->out, convertBicycleParametersToScenario(imp->file, name) +
+                                      formatBicycleParametersUncertainty(readBicycleParameterSigmas(imp->file)));
     loadScenario(imp->out);  // what we write must load
     std::cout << "Wrote " << imp->out << "\n";
   });

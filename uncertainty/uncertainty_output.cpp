@@ -221,7 +221,7 @@ std::string makeHistogramBody(const std::string& mode, int column) {
 std::string makeSensitivityBody(const std::string& mode, std::pair<size_t, size_t> rows, bool sobol) {
   return kCommon + "  set title " + gnuplotQuote("Sensitivity of the " + mode + " critical speed") +
          "\n  set ylabel " + gnuplotQuote(sobol ? "first-order Sobol index" : "standardised regression coefficient") +
-         "\n  set style fill solid 0.6\n  set boxwidth 0.7\n  set xtics rotate by -45\n  unset key\n"
+         "\n  set style fill solid 0.6\n  set boxwidth 0.7\n  set xtics rotate by -45 noenhanced\n  unset key\n"
          "  plot 'sensitivity.csv' skip 1 every ::" + std::to_string(rows.first) + "::" + std::to_string(rows.second) +
          " using 0:4:xtic(3) with boxes\n";
 }
