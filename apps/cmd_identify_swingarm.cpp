@@ -6,11 +6,13 @@
 #include <string>
 
 #include "apps/commands.h"
+#include "io/atomic_file.h"
 #include "io/input_error.h"
 #include "swingarm/identification/decomposition.h"
 #include "swingarm/identification/frf_test.h"
 #include "swingarm/identification/mass_properties.h"
 #include "swingarm/identification/static_test.h"
+#include "swingarm/identification/swingarm_uncertainty.h"
 #include "swingarm/identification/virtual_rig.h"
 
 namespace motostab::cli {
@@ -81,9 +83,10 @@ void registerSwingarmIdentifyCommands(CLI::App& identify) {
     id::writeStaticOutputs(st, sr, out);
     id::writeFrfOutputs(ft, fr, out / "frf");
     id::writeSwingarmOutputs(swr, st, ft, out);
+    writeFileAtomically(out / "swingarm_uncertainty.yaml", id::formatSwingarmUncertainty(swr));
     printStatic(sr);
     printFrf(fr);
-    std::printf("swingarm: k_b %.6g +/- %.2g, k_t %.6g +/- %.2g Nm/rad; c_b %.4g, c_t %.4g, c_tw %.4g Nms/rad -> %s\n",
+    std::printf("swingarm: k_b %.6g +/- %.2g, k_t %.6g +/- %.2g Nm/rad; c_b %.4g, c_t %.4g, c_tw %.4g Nms/rad -> %s (standard errors: swingarm_uncertainty.yaml)\n",
                 swr.bending.stiffness.value, swr.bending.stiffness.stderr_, swr.torsion.stiffness.value,
                 swr.torsion.stiffness.stderr_, swr.bending.damping.value, swr.torsion.damping.value,
                 swr.twist.damping.value, (out / "swingarm.yaml").c_str());
