@@ -17,7 +17,7 @@ nlohmann::json number(double v) { return std::isfinite(v) ? nlohmann::json(v) : 
 std::string getMethodName(SamplingMethod m) { return m == SamplingMethod::Sobol ? "sobol" : "mc"; }
 
 std::string getSensitivityName(SamplingMethod m) {
-  return m == SamplingMethod::Sobol ? "first-order Sobol indices (Saltelli et al. 2010, Table 2 b)"
+  return m == SamplingMethod::Sobol ? "first-order Sobol indices (Jansen estimator, Saltelli et al. 2010, Table 2 f)"
                                     : "standardised regression coefficients with R^2 (Saltelli et al. 2008, sec. 1.2.5)";
 }
 

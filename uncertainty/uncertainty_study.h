@@ -9,7 +9,7 @@
 //   mc:    sample i draws every parameter from (seed, i) (uncertainty/sampling.h).
 //   sobol: Saltelli's design (Saltelli et al. 2010, Comput. Phys. Commun. 181:259, Table 2): base rows
 //          A_j = draw (seed, 2j), B_j = draw (seed, 2j+1) and, per parameter i, A_j with column i from
-//          B_j; N rows give N (P + 2) sweeps.
+//          B_j; N rows give N (P + 2) sweeps; first-order indices by Jansen's estimator.
 // A draw that leaves the physical range (the loader or the model rejects it: negative mass, inertia
 // not positive definite or violating the triangle inequality, a plugin's range) is redrawn with the
 // next attempt counter, up to maxAttempts; redraws are counted. A sweep that fails (trim does not

@@ -60,8 +60,10 @@ void fillRegression(const std::vector<TaskResult>& samples, size_t m, CriticalSp
   if (x.empty()) c.sensitivity.assign(samples.empty() ? 0 : samples[0].parameters.size(), kNaN);
 }
 
-// First-order Sobol indices by Saltelli et al. (2010) Table 2 (b):
-// S_i = mean(f(B) (f(A_B^i) - f(A))) / Var(f), over the rows whose every evaluation has the crossing.
+// First-order Sobol indices with Jansen's estimator (Saltelli et al. 2010, Table 2 (f); Jansen 1999):
+// S_i = 1 - mean((f(B) - f(A_B^i))^2) / (2 Var(f)), Var over f(A) and f(B), over the rows whose every
+// evaluation has the crossing. Differences of outputs, unlike products, do not lose the spread to
+// cancellation when the mean is much larger than the standard deviation.
 void fillSobol(const UncertaintySetup& s, const std::vector<TaskResult>& r, size_t m, CriticalSpeedStats& c) {
   const size_t p = s.params.size(), rows = s.options.samples, first = 1 + 2 * p;
   auto f = [&](size_t t) { return r[t].ok ? r[t].firstCrossing[m] : kNaN; };
@@ -81,8 +83,8 @@ void fillSobol(const UncertaintySetup& s, const std::vector<TaskResult>& r, size
   const double var = ss / (2.0 * good.size() - 1);
   for (size_t i = 0; i < p; ++i) {
     double v = 0;
-    for (size_t t : good) v += f(t + 1) * (f(t + 2 + i) - f(t));
-    c.sensitivity[i] = var > 0 ? v / good.size() / var : kNaN;
+    for (size_t t : good) v += (f(t + 1) - f(t + 2 + i)) * (f(t + 1) - f(t + 2 + i));
+    c.sensitivity[i] = var > 0 ? 1 - v / (2.0 * good.size() * var) : kNaN;
   }
 }
 
@@ -170,7 +172,7 @@ std::vector<double> calcStandardisedRegression(const std::vector<std::vector<dou
   const double sy = sd(Y);
   std::vector<Eigen::Index> active{0};  // intercept and the columns that vary
   for (size_t j = 0; j < p; ++j)
-    if (sd(X.col(j + 1)) > 0) active.push_back(static_cast<Eigen::Index>(j + 1));
+    if (X.col(j + 1).maxCoeff() > X.col(j + 1).minCoeff()) active.push_back(static_cast<Eigen::Index>(j + 1));
     else src[j] = 0;
   Eigen::MatrixXd Xa(n, active.size());
   for (size_t c = 0; c < active.size(); ++c) Xa.col(c) = X.col(active[c]);

@@ -18,7 +18,7 @@ struct CriticalSpeedStats {
   double nominal = 0;           ///< the nominal scenario's crossing, NaN if none
   double firstOrderStd = 0;     ///< sqrt(J Sigma J^T), NaN if a neighbour lacks the crossing
   std::vector<double> derivatives;  ///< dv/dx_j (m/s per parameter unit), NaN where unavailable
-  /// Sensitivity per parameter: first-order Sobol index S_j (sobol) or standardised regression
+  /// Sensitivity per parameter: first-order Sobol index S_j (sobol, Jansen's estimator) or standardised regression
   /// coefficient SRC_j (mc); r2 is the regression's coefficient of determination (mc; NaN for sobol).
   std::vector<double> sensitivity;
   double r2 = 0;
