@@ -10,6 +10,7 @@
 #include "analysis/sweep.h"
 #include "tests/uncertainty/test_support.h"
 #include "uncertainty/distributed.h"
+#include "uncertainty/sampling.h"
 #include "uncertainty/uncertainty_summary.h"
 #include "vehicle/vehicle_model.h"
 
@@ -202,6 +203,45 @@ TEST(UncertaintyStudy, PercentilesAndRegressionMatchHandCalculations) {
   EXPECT_NEAR(r2, 1.0, 1e-12);
   EXPECT_NEAR(src[0], 3 * sd(c0) / sd(y), 1e-10);
   EXPECT_NEAR(src[1], -sd(c1) / sd(y), 1e-10);
+}
+
+}  // namespace
+}  // namespace motostab
+
+namespace motostab {
+namespace {
+
+TEST(UncertaintyStudy, UnphysicalDrawsAreRedrawnAndCounted) {
+  // sigma = nominal mass: about 16 % of the normal draws are negative masses, which the loader rejects.
+  std::mt19937_64 g(21);
+  const uint64_t seed = g();
+  const std::string file = test::writeScenarioWith("whipple-benchmark.yaml", test::makeSection({{"rear_frame.mass_kg", 85}}), "redraw");
+  UncertaintyOptions o = makeOptions(12, seed);
+  o.start = 4, o.stop = 4.5, o.step = 0.5;
+  const ParameterUncertainty p{"rear_frame.mass_kg", 85};
+  size_t expectedRedraws = 0, expectedFailures = 0;
+  for (uint64_t i = 0; i < 12; ++i) {
+    for (uint64_t a = 0; drawParameters(seed, i, a, {p}, {85})[0] <= 0; ++a) ++expectedRedraws;
+    if (drawParameters(seed, i, 0, {p}, {85})[0] <= 0) ++expectedFailures;
+  }
+  ASSERT_GT(expectedFailures, 0u) << "choose another seed: no negative draw among 12";
+  const auto s = prepareUncertainty(file, {}, o);
+  const auto r = runAll(s, 2);
+  const auto sum = summarizeUncertainty(s, r);
+  EXPECT_EQ(sum.redraws, expectedRedraws);
+  for (size_t t = 1 + 2 * s.params.size(); t < r.size(); ++t) EXPECT_GT(r[t].parameters[0], 0);
+  // One attempt only: the unphysical samples are recorded as failed, with the reason.
+  o.maxAttempts = 1;
+  const auto s1 = prepareUncertainty(file, {}, o);
+  const auto r1 = runAll(s1, 2);
+  size_t failed = 0;
+  for (size_t t = 1 + 2 * s1.params.size(); t < r1.size(); ++t)
+    if (!r1[t].ok) {
+      ++failed;
+      EXPECT_NE(r1[t].reason.find("rear_frame.mass_kg: must be positive"), std::string::npos) << r1[t].reason;
+    }
+  EXPECT_EQ(failed, expectedFailures);
+  EXPECT_EQ(summarizeUncertainty(s1, r1).failed, expectedFailures);
 }
 
 }  // namespace
