@@ -6,11 +6,13 @@
 #include <cstdio>
 #include <cstdlib>
 #include <iostream>
+#include <memory>
 #include <mutex>
 
 #include "apps/commands.h"
 #include "apps/common_options.h"
 #include "io/input_error.h"
+#include "io/output_folder.h"
 #include "uncertainty/distributed.h"
 #include "uncertainty/uncertainty_output.h"
 
@@ -71,6 +73,9 @@ void runUncertainty(const UncertaintyArgs& a) {
   DistributedSession session;
   const Scenario scenario = loadScenario(a.scenario, a.overrides);
   const UncertaintySetup setup = prepareUncertainty(a.scenario, a.overrides, makeOptions(a, scenario));
+  const std::string out = a.out.empty() ? scenario.name + "-uncertainty" : a.out;
+  std::unique_ptr<OutputFolder> folder;  // rank 0 writes; inputs are all checked by now
+  if (session.getRank() == 0) folder = std::make_unique<OutputFolder>(out);
   const size_t count = getTaskCount(setup);
   const auto mine = getRankTasks(count, session.getRank(), session.getSize());
   ProgressBar bar(mine.size(), session.getRank() == 0);
@@ -78,8 +83,8 @@ void runUncertainty(const UncertaintyArgs& a) {
   const auto all = gatherResults(session, local, count, setup.params.size(), getModeValueCount(setup));
   if (session.getRank() != 0) return;
   const UncertaintySummary summary = summarizeUncertainty(setup, all);
-  const std::string out = a.out.empty() ? scenario.name + "-uncertainty" : a.out;
-  writeUncertaintyOutputs(out, scenario.name, setup, summary, all);
+  writeUncertaintyOutputs(folder->getPath(), scenario.name, setup, summary, all);
+  folder->commit();
   std::cout << makeUncertaintyReport(scenario.name, setup, summary) << "\nWrote " << out
             << "/{summary.json, samples.csv, mode_quantiles.csv, sensitivity.csv, report.md, fan_*, histogram_*, "
                "sensitivity_* (.gp/.png/.svg)}"
@@ -95,8 +100,9 @@ void registerUncertaintyCommands(CLI::App& app) {
   u->add_option("--samples", a->samples, "mc: samples; sobol: base rows N (N (P + 2) sweeps); default 1000");
   u->add_option("--seed", a->seed, "Random seed, a non-negative integer (default 1); sample i depends only on (seed, i)");
   u->add_option("--method", a->method, "mc (Monte Carlo, regression sensitivities) or sobol (Saltelli design, first-order Sobol indices)");
-  u->add_option("--speeds", a->speeds, "START:STOP:STEP in m/s (default: the scenario's speeds_mps)");
-  u->add_option("--threads", a->threads, "Worker threads per process (results identical for any number)")->check(CLI::Range(1, 256));
+  u->add_option("--speeds", a->speeds, "START:STOP:STEP in m/s (default: the scenario's speeds_mps)")
+      ->check(makeSpeedRangeCheck());
+  u->add_option("--threads", a->threads, "Worker threads per process (results identical for any number)")->check(makeThreadsCheck());
   u->add_option("--out", a->out, "Output folder (default: SCENARIO-uncertainty)");
   u->add_option("--set", a->overrides, "Override a scenario value, e.g. --set geometry.trail_m=0.1");
   u->callback([a]() { runUncertainty(*a); });
