@@ -82,7 +82,7 @@ double timeMpi(int ranks, const std::string& file) {
   const std::string root = geteuid() == 0 ? " --allow-run-as-root" : "";
   const std::string cmd = "OMPI_MCA_btl=self,vader mpirun" + root + " --oversubscribe -n " + std::to_string(ranks) + " " +
                           MOTOSTAB_BINARY + " uncertainty " + file +
-                          " --set swingarm.compliance=twist --samples 60 --speeds 0:40:1 --out " +
+                          " --set swingarm.compliance=twist --samples 200 --speeds 0:40:1 --out " +
                           (std::filesystem::temp_directory_path() / "motostab-bench-uq-mpi").string() + " > /dev/null 2>&1";
   const auto t0 = Clock::now();
   if (std::system(cmd.c_str()) != 0) return -1;
