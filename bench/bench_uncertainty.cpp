@@ -5,6 +5,7 @@
 // speed-up as the median ratio.
 #include <benchmark/benchmark.h>
 
+#include <sys/resource.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -77,15 +78,24 @@ void BM_EnduroTwist200Samples(benchmark::State& st) {
 }
 BENCHMARK(BM_EnduroTwist200Samples)->Unit(benchmark::kSecond)->Iterations(1)->UseRealTime();
 
-// Wall time of one `mpirun -n K motostab uncertainty` of the enduro study, s.
-double timeMpi(int ranks, const std::string& file) {
+// CPU time (user + system) of finished child processes so far, s.
+double calcChildCpuSeconds() {
+  rusage u{};
+  getrusage(RUSAGE_CHILDREN, &u);
+  return u.ru_utime.tv_sec + u.ru_stime.tv_sec + 1e-6 * (u.ru_utime.tv_usec + u.ru_stime.tv_usec);
+}
+
+// Wall time of one `mpirun -n K motostab uncertainty` of the enduro study, s; `cpu` gets its CPU time.
+double timeMpi(int ranks, const std::string& file, double& cpu) {
   const std::string root = geteuid() == 0 ? " --allow-run-as-root" : "";
   const std::string cmd = "OMPI_MCA_btl=self,vader mpirun" + root + " --oversubscribe -n " + std::to_string(ranks) + " " +
                           MOTOSTAB_BINARY + " uncertainty " + file +
                           " --set swingarm.compliance=twist --samples 200 --speeds 0:40:1 --out " +
                           (std::filesystem::temp_directory_path() / "motostab-bench-uq-mpi").string() + " > /dev/null 2>&1";
   const auto t0 = Clock::now();
+  const double c0 = calcChildCpuSeconds();
   if (std::system(cmd.c_str()) != 0) return -1;
+  cpu = calcChildCpuSeconds() - c0;
   return std::chrono::duration<double>(Clock::now() - t0).count();
 }
 
@@ -94,7 +104,8 @@ void BM_EnduroMpiSpeedup(benchmark::State& st) {
   for (auto _ : st) {
     std::vector<double> ratio;
     for (int pair = 0; pair < 3; ++pair) {
-      const double one = timeMpi(1, file), two = timeMpi(2, file);
+      double cpuOne = 0, cpuTwo = 0;
+      const double one = timeMpi(1, file, cpuOne), two = timeMpi(2, file, cpuTwo);
       if (one < 0 || two < 0) {
         st.SkipWithError("mpirun failed (is OpenMPI installed?)");
         return;
@@ -102,6 +113,9 @@ void BM_EnduroMpiSpeedup(benchmark::State& st) {
       ratio.push_back(one / two);
       st.counters["one_rank_s"] = one;
       st.counters["two_ranks_s"] = two;
+      // CPU time of both runs: equal work means an idle machine's speed-up is near 2 t_1 / (t_2 + t_0).
+      st.counters["one_rank_cpu_s"] = cpuOne;
+      st.counters["two_ranks_cpu_s"] = cpuTwo;
     }
     std::sort(ratio.begin(), ratio.end());
     st.counters["speedup"] = ratio[1];
