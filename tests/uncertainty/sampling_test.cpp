@@ -42,10 +42,12 @@ TEST(Sampling, EachDistributionHasTheStatedMeanAndStandardDeviation) {
     // Standard errors: sigma / sqrt(n) for the mean, about sigma / sqrt(2 n) for the std (x5 margin).
     EXPECT_NEAR(m.mean, mu, 5 * p.sigma / std::sqrt(n)) << static_cast<int>(d);
     EXPECT_NEAR(m.std, p.sigma, 5 * p.sigma * std::sqrt(2.0 / n) * (d == D::Lognormal ? 2 : 1)) << static_cast<int>(d);
-    if (d == D::Uniform)
+    if (d == D::Uniform) {
       for (double v : x) ASSERT_LE(std::abs(v - mu), std::sqrt(3.0) * p.sigma);
-    if (d == D::Lognormal)
+    }
+    if (d == D::Lognormal) {
       for (double v : x) ASSERT_GT(v, 0);
+    }
   }
 }
 
@@ -60,7 +62,13 @@ TEST(Sampling, StandardNormalTailsMatchTheNormalDistribution) {
 TEST(Sampling, DrawsDependOnlyOnSeedSampleAndPath) {
   std::mt19937_64 g(99);
   const uint64_t seed = g(), sample = g() % 100000;
-  ParameterUncertainty a{"geometry.trail_m", 0.002}, b{"rear_frame.com_m[2]", 0.01}, c{"rear_frame.mass_kg", 1.5};
+  auto make = [](const std::string& path, double sigma) {
+    ParameterUncertainty p;
+    p.path = path, p.sigma = sigma;
+    return p;
+  };
+  const ParameterUncertainty a = make("geometry.trail_m", 0.002), b = make("rear_frame.com_m[2]", 0.01),
+                             c = make("rear_frame.mass_kg", 1.5);
   const auto alone = drawParameters(seed, sample, 0, {a}, {0.08});
   const auto three = drawParameters(seed, sample, 0, {c, b, a}, {85, 0.9, 0.08});
   EXPECT_EQ(alone[0], three[2]);  // bit for bit

@@ -218,7 +218,8 @@ TEST(UncertaintyStudy, UnphysicalDrawsAreRedrawnAndCounted) {
   const std::string file = test::writeScenarioWith("whipple-benchmark.yaml", test::makeSection({{"rear_frame.mass_kg", 85}}), "redraw");
   UncertaintyOptions o = makeOptions(12, seed);
   o.start = 4, o.stop = 4.5, o.step = 0.5;
-  const ParameterUncertainty p{"rear_frame.mass_kg", 85};
+  ParameterUncertainty p;
+  p.path = "rear_frame.mass_kg", p.sigma = 85;
   size_t expectedRedraws = 0, expectedFailures = 0;
   for (uint64_t i = 0; i < 12; ++i) {
     for (uint64_t a = 0; drawParameters(seed, i, a, {p}, {85})[0] <= 0; ++a) ++expectedRedraws;
