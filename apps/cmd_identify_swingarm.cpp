@@ -8,9 +8,10 @@
 #include "apps/commands.h"
 #include "io/input_error.h"
 #include "swingarm/identification/decomposition.h"
-#include "swingarm/identification/frf_test.h"
+#include "swingarm/identification/frf_diagnosis.h"
+#include "swingarm/identification/hammer_frf.h"
 #include "swingarm/identification/mass_properties.h"
-#include "swingarm/identification/static_test.h"
+#include "swingarm/identification/static_laser.h"
 #include "swingarm/identification/virtual_rig.h"
 
 namespace motostab::cli {
@@ -22,6 +23,7 @@ struct Args {
   std::string first, second, out;
   double noiseFactor = 1;
   unsigned long seed = 1;
+  bool verbose = false;
 };
 
 void printStatic(const id::StaticResult& r) {
@@ -29,8 +31,10 @@ void printStatic(const id::StaticResult& r) {
               r.kLat, r.kLatStderr, r.aTw, r.aTwStderr, r.kTw, r.kTwStderr, r.betaDeg, r.betaStderrDeg);
 }
 
-void printFrf(const id::FrfResult& r) {
-  std::printf("frf: %d hits averaged, %zu rejected\n", r.frf.averages, r.rejectedHits.size());
+void printFrf(const id::FrfResult& r, bool verbose) {
+  std::printf("frf: %d hits averaged, %zu rejected; band %s; model orders %d-%d (%s)\n", r.frf.averages,
+              r.rejectedHits.size(), r.band.description.c_str(), r.options.minOrder, r.options.maxOrder,
+              r.orderReason.c_str());
   for (const auto& h : r.rejectedHits) std::printf("  rejected %s\n", h.c_str());
   for (const auto& m : r.modes) {
     std::printf("  mode %9.3f +/- %.3f Hz  zeta %.5f +/- %.5f  eta %.5f", m.frequencyHz, m.frequencyStderrHz,
@@ -38,6 +42,8 @@ void printFrf(const id::FrfResult& r) {
     if (m.hasAxis) std::printf("  axis a %.4f m beta %.2f deg (mpc %.3f)", m.axis.arm, m.axis.betaDeg, m.mpc);
     std::printf("%s\n", m.label.empty() ? "" : ("  [" + m.label + "]").c_str());
   }
+  for (const auto& d : r.diagnostics) std::printf("  note: %s\n", d.c_str());
+  if (verbose) std::printf("%s", id::formatStabilisationSummary(r).c_str());
 }
 
 }  // namespace
@@ -58,17 +64,20 @@ void registerSwingarmIdentifyCommands(CLI::App& identify) {
   CLI::App* fr = identify.add_subcommand("frf", "Hammer test: H1, coherence, LSCF modes, modal twist axes");
   fr->add_option("test", args->first, "hammer test YAML")->required()->check(CLI::ExistingFile);
   fr->add_option("--out", args->out, "output folder")->required();
+  fr->add_flag("--verbose", args->verbose, "print the stabilisation summary");
   fr->callback([args] {
     const auto t = id::readFrfTest(args->first);
     const auto r = id::identifyFrf(t, id::readHits(t));
     id::writeFrfOutputs(t, r, args->out);
-    printFrf(r);
+    printFrf(r, args->verbose);
+    id::requireModes(r);  // exit 3 with what was tried and what to set
   });
 
   CLI::App* sw = identify.add_subcommand("swingarm", "Whole chain: bending/torsion/twist stiffness and damping (seed eq. 1-25)");
   sw->add_option("static", args->first, "static test YAML")->required()->check(CLI::ExistingFile);
   sw->add_option("frf", args->second, "hammer test YAML")->required()->check(CLI::ExistingFile);
   sw->add_option("--out", args->out, "output folder")->required();
+  sw->add_flag("--verbose", args->verbose, "print the stabilisation summary");
   sw->callback([args] {
     const auto st = id::readStaticTest(args->first);
     const auto ft = id::readFrfTest(args->second);
@@ -76,13 +85,15 @@ void registerSwingarmIdentifyCommands(CLI::App& identify) {
     const auto fr = id::identifyFrf(ft, id::readHits(ft));
     if (std::abs(st.forcePoint.x - ft.forcePoint.x) > 1e-3 || std::abs(st.forcePoint.z - ft.forcePoint.z) > 1e-3)
       throw InputError({ft.file.string(), 0, 0, "force_point"}, "the hammer test's force point differs from the static test's");
-    const auto swr = id::identifySwingarm(sr, fr);
     const std::filesystem::path out(args->out);
     id::writeStaticOutputs(st, sr, out);
     id::writeFrfOutputs(ft, fr, out / "frf");
-    id::writeSwingarmOutputs(swr, st, ft, out);
     printStatic(sr);
-    printFrf(fr);
+    printFrf(fr, args->verbose);
+    id::requireModes(fr);
+    id::requireBendingAndTorsion(fr);  // exit 3: which mode is missing, why, where to hit
+    const auto swr = id::identifySwingarm(sr, fr);
+    id::writeSwingarmOutputs(swr, st, ft, out);
     std::printf("swingarm: k_b %.6g +/- %.2g, k_t %.6g +/- %.2g Nm/rad; c_b %.4g, c_t %.4g, c_tw %.4g Nms/rad -> %s\n",
                 swr.bending.stiffness.value, swr.bending.stiffness.stderr_, swr.torsion.stiffness.value,
                 swr.torsion.stiffness.stderr_, swr.bending.damping.value, swr.torsion.damping.value,

@@ -6,7 +6,7 @@
 #include <cmath>
 #include <fstream>
 
-#include "swingarm/identification/frf_test.h"
+#include "swingarm/identification/hammer_frf.h"
 #include "temp_dir.h"
 
 namespace {

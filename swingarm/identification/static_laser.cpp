@@ -1,4 +1,4 @@
-#include "swingarm/identification/static_test.h"
+#include "swingarm/identification/static_laser.h"
 
 #include <cmath>
 #include <cstdio>

@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "modal/automatic_settings.h"
 #include "modal/lscf.h"
 #include "modal/peak_picking.h"
 #include "modal/spectra.h"
@@ -28,8 +29,8 @@ struct FrfTest {
   std::vector<std::filesystem::path> hits;
   std::string timeColumn = "time_s", forceColumn = "force_N";
   // Optional processing settings (key `processing`).
-  double bandMinHz = 0, bandMaxHz = 0;   ///< 0 = automatic (5 bins .. 0.8 Nyquist)
-  int minOrder = 4, maxOrder = 40;
+  double bandMinHz = 0, bandMaxHz = 0;   ///< Hz; both 0 = automatic (modal/automatic_settings.h)
+  int minOrder = 0, maxOrder = 0;        ///< LSCF orders swept; both 0 = automatic from the indicator peaks
   double exponentialEndValue = 0.05;
   bool forceWindow = true;
   double doubleHitFraction = 0.1;
@@ -66,7 +67,13 @@ struct FrfResult {
   modal::FrfEstimate frf;
   std::vector<std::string> usedHits, rejectedHits;  ///< rejected: "file: reason"
   modal::LscfOptions options;
+  modal::BandChoice band;                          ///< the band used and where it came from
+  bool automaticBand = true, automaticOrders = true;
+  std::string orderReason;                         ///< why these orders ("from 2 indicator peaks: 2n .. 4n + 24")
+  std::vector<modal::IndicatorPeak> indicatorPeaks;  ///< mode indicator peaks in the band
   std::vector<modal::StabilisationPole> diagram;
+  std::vector<modal::ModalEstimate> rejectedClusters;  ///< stable-pole clusters at too few orders
+  std::vector<std::string> diagnostics;  ///< indicator peaks without a stable mode; a missing bending/torsion mode
   std::vector<modal::PeakEstimate> peaks;
   std::vector<ModeResult> modes;
   std::vector<modal::ModalModel> models;  ///< per channel, 1/|H|-weighted LSFD, for the overlay
