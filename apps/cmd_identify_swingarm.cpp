@@ -133,8 +133,7 @@ void registerSwingarmIdentifyCommands(CLI::App& identify) {
     std::vector<double> loads;  // load and unload, 0-4000-0 N in 250 N steps
     for (int i = 0; i <= 32; ++i) loads.push_back(250.0 * (i <= 16 ? i : 32 - i));
     id::writeStaticTestFiles(out, rig, id::simulateStaticReadings(rig, loads, noise, args->seed), noise.laserResolution);
-    id::writeFrfTestFiles(out, rig, id::simulateHammerHits(rig, {}, noise, args->seed + 1),
-                          "  band_hz: [60, 400]\n  model_order: [4, 24]\n");
+    id::writeFrfTestFiles(out, rig, id::simulateHammerHits(rig, {}, noise, args->seed + 1));  // default settings
     const id::VirtualPart part;
     id::writeCogTestFiles(out, part, {0.05, 0.0, 0.04}, 0.05 * args->noiseFactor, args->seed + 2);
     id::writeInertiaTestFiles(out, part, 1e-3 * args->noiseFactor, args->seed + 3);

@@ -64,10 +64,12 @@ BandChoice chooseBand(const FrfEstimate& frf, const AutomaticSettingsOptions& o)
   while (lo < forceBin && coh[lo] < o.bandCoherence) ++lo;
   size_t hi = forceBin;
   while (hi > lo && coh[hi] < o.bandCoherence) --hi;
-  if (hi <= lo + 4 || coh[lo] < o.bandCoherence)
-    throw std::runtime_error("no usable band: coherence (median over " + std::to_string(o.coherenceWindowBins) +
-                             " bins) never reaches " + std::to_string(o.bandCoherence) + " below the force limit " +
-                             std::to_string(frf.frequency[forceBin]) + " Hz");
+  if (hi <= lo + 4 || coh[lo] < o.bandCoherence) {
+    char why[160];
+    std::snprintf(why, sizeof why, "no usable band: the coherence (median over %d bins) stays below %.3g up to the "
+                  "force limit %.6g Hz", o.coherenceWindowBins, o.bandCoherence, frf.frequency[forceBin]);
+    throw std::runtime_error(why);
+  }
   BandChoice b;
   b.fMin = frf.frequency[lo];
   b.fMax = frf.frequency[hi];

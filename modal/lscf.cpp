@@ -202,7 +202,8 @@ std::vector<ModalEstimate> selectStableModes(const std::vector<StabilisationPole
   std::vector<ModalEstimate> modes;
   for (const auto& c : clusterStablePoles(diagram, o.clusterTolerance)) {
     const ModalEstimate m = summariseCluster(c);
-    if (static_cast<size_t>(m.count) >= calcRequiredStableOrders(o))
+    // A passive structure has positive damping; <= 0 after removing the window is resolution-limited.
+    if (static_cast<size_t>(m.count) >= calcRequiredStableOrders(o) && m.dampingRatio > 0)
       modes.push_back(m);
     else if (rejected)
       rejected->push_back(m);

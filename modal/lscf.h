@@ -68,7 +68,8 @@ class LscfEstimator {
 std::vector<StabilisationPole> calcStabilisationDiagram(const LscfEstimator& estimator);
 
 /// Clusters poles stable in frequency and damping; a cluster at enough orders (minStableFraction of the
-/// orders swept, at least 2) is a mode. Clusters at too few orders go to `rejected` if given.
+/// orders swept, at least 2) with a positive damping ratio (window decay removed) is a mode. Other
+/// clusters go to `rejected` if given.
 std::vector<ModalEstimate> selectStableModes(const std::vector<StabilisationPole>& diagram, const LscfOptions& options,
                                             std::vector<ModalEstimate>* rejected = nullptr);
 

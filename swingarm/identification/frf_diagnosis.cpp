@@ -83,6 +83,12 @@ std::string describeMissingMode(const FrfTest& t, const FrfResult& r, bool bendi
 }  // namespace
 
 void diagnoseFrf(const FrfTest& t, FrfResult& r) {
+  for (const auto& c : r.rejectedClusters)
+    if (static_cast<size_t>(c.count) >= modal::calcRequiredStableOrders(r.options))
+      r.diagnostics.push_back("poles at " + fmt(c.frequencyHz) + " Hz are stable at " + std::to_string(c.count) +
+                              " orders but their damping ratio after removing the exponential window (" +
+                              fmt(c.dampingRatio, 3) + ") is not positive: the damping is below what the record "
+                              "resolves; dropped (a longer record or processing.exponential_end_value nearer 1 helps)");
   for (const auto& p : findUnexplainedPeaks(r))
     r.diagnostics.push_back("indicator peak at " + describePeak(p) + " has no stable mode (orders " +
                             std::to_string(r.options.minOrder) + "-" + std::to_string(r.options.maxOrder) +
@@ -131,8 +137,16 @@ std::string formatStabilisationSummary(const FrfResult& r) {
   s << "\n";
   for (const auto& m : r.modes)
     s << "  mode    " << fmt(m.frequencyHz) << " Hz stable at " << m.stableCount << " orders\n";
-  for (const auto& c : r.rejectedClusters)
-    s << "  dropped " << fmt(c.frequencyHz) << " Hz stable at " << c.count << " orders\n";
+  size_t few = 0;
+  for (const auto& c : r.rejectedClusters) {
+    if (c.count < 3) {
+      ++few;
+      continue;
+    }
+    s << "  dropped " << fmt(c.frequencyHz) << " Hz stable at " << c.count << " orders"
+      << (c.dampingRatio <= 0 ? " (damping ratio <= 0)" : "") << "\n";
+  }
+  if (few) s << "  dropped " << few << " more clusters stable at 1 or 2 orders\n";
   for (const auto& p : r.indicatorPeaks) s << "  indicator peak " << describePeak(p) << "\n";
   return s.str();
 }

@@ -182,7 +182,14 @@ void chooseLscfOptions(const FrfTest& test, FrfResult& res) {
   auto& o = res.options;
   res.automaticBand = test.bandMinHz == 0 && test.bandMaxHz == 0;
   if (res.automaticBand) {
-    res.band = modal::chooseBand(frf);
+    try {
+      res.band = modal::chooseBand(frf);
+    } catch (const std::runtime_error& e) {  // no usable band: analyse the whole record, say why
+      res.band.fMin = 5 * frf.df;
+      res.band.fMax = 0.8 * frf.frequency.back();
+      res.band.description = formatNumber(res.band.fMin, 6) + "-" + formatNumber(res.band.fMax, 6) +
+                             " Hz (5 bins to 0.8 Nyquist: " + e.what() + ")";
+    }
   } else {
     res.band.fMin = test.bandMinHz;
     res.band.fMax = std::min(test.bandMaxHz, frf.frequency.back());
