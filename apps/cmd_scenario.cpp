@@ -12,8 +12,9 @@ namespace {
 
 void printInertiaRepairs(const std::vector<InertiaRepair>& repairs) {
   for (const auto& r : repairs)
-    std::cout << "repaired " << r.key << ": " << r.explanation << "; lowered from " << r.before << " to " << r.after
-              << " kg m^2 (-" << r.before - r.after << "). The linearised Whipple model does not use the frames' "
+    std::cout << "repaired " << r.key << ": " << r.explanation << "; " << (r.after < r.before ? "lowered" : "raised")
+              << " from " << r.before << " to " << r.after << " kg m^2 (" << std::showpos << r.after - r.before
+              << std::noshowpos << "). The linearised Whipple model does not use the frames' "
               << "I_yy (pitch), so the eigenvalues are those of the file's values.\n";
 }
 
@@ -61,7 +62,7 @@ void registerScenarioCommands(CLI::App& app) {
   i->add_option("--out", imp->out, "Scenario YAML to write")->required();
   i->add_option("--name", imp->name, "Scenario name (default: the output file stem)");
   i->add_flag("--repair-inertia", imp->repairInertia,
-              "Lower a frame's I_yy onto the triangle-inequality bound (unused by the linear Whipple model)");
+              "Move a frame's I_yy onto the triangle-inequality bound (unused by the linear Whipple model)");
   i->callback([imp]() {
     const std::string name = imp->name.empty() ? std::filesystem::path(imp->out).stem().string() : imp->name;
     std::vector<InertiaRepair> repairs;

@@ -113,6 +113,17 @@ std::vector<IndicatorPeak> findIndicatorPeaks(const FrfEstimate& frf, double fMi
   return merged;
 }
 
+std::vector<IndicatorPeak> findUnexplainedPeaks(const std::vector<IndicatorPeak>& peaks,
+                                                const std::vector<double>& modeFrequenciesHz, double df) {
+  std::vector<IndicatorPeak> out;
+  for (const auto& p : peaks) {
+    bool found = false;
+    for (double f : modeFrequenciesHz) found = found || std::abs(f - p.frequencyHz) <= std::max(3 * df, 0.005 * p.frequencyHz);
+    if (!found) out.push_back(p);
+  }
+  return out;
+}
+
 OrderChoice chooseOrders(size_t peakCount, size_t bandBins, const AutomaticSettingsOptions& o) {
   const int n = static_cast<int>(peakCount);
   const int cap = std::min<int>(o.maxOrderCap, static_cast<int>(bandBins) - 2);

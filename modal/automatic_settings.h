@@ -58,6 +58,10 @@ BandChoice chooseBand(const FrfEstimate& frf, const AutomaticSettingsOptions& op
 std::vector<IndicatorPeak> findIndicatorPeaks(const FrfEstimate& frf, double fMin, double fMax,
                                               const AutomaticSettingsOptions& options = {});
 
+/// The peaks with no entry of `modeFrequenciesHz` within max(3 df, 0.5 %) of their frequency.
+std::vector<IndicatorPeak> findUnexplainedPeaks(const std::vector<IndicatorPeak>& peaks,
+                                                const std::vector<double>& modeFrequenciesHz, double df);
+
 /// Orders 2 n_peaks .. 4 n_peaks + 24 (at least options.minOrder, at most maxOrderCap and the number of
 /// band bins minus 2, which LSCF needs).
 OrderChoice chooseOrders(size_t peakCount, size_t bandBins, const AutomaticSettingsOptions& options = {});

@@ -1,5 +1,6 @@
 #include "scenario/bicycle_parameters.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
@@ -61,17 +62,11 @@ Eigen::Matrix3d getFrameInertia(const std::map<std::string, double>& p, const st
   return M;
 }
 
-// Excess of the largest principal moment over the sum of the other two, kg m^2 (<= 0: valid).
-double calcTriangleExcess(const Eigen::Matrix3d& M) {
-  const Eigen::Vector3d l = Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(M).eigenvalues();
-  return l[2] - l[0] - l[1];
-}
-
 // Scenario comment lines recording each repaired inertia.
 std::string formatRepairComments(const std::vector<InertiaRepair>& changes) {
   std::string c;
   for (const auto& r : changes)
-    c += "# --repair-inertia: " + r.key + " lowered from " + formatNumber(r.before, 15) + " to " +
+    c += "# --repair-inertia: " + r.key + (r.after < r.before ? " lowered" : " raised") + " from " + formatNumber(r.before, 15) + " to " +
          formatNumber(r.after, 15) + " kg m^2 (" + r.explanation + ")\n";
   return c;
 }
@@ -109,23 +104,16 @@ std::vector<InertiaRepair> repairFrameInertias(std::map<std::string, double>& p,
   for (const std::string s : {"B", "H"}) {
     const std::string why = explainFrameInertia(p, s), key = "I" + s + "yy";
     if (why.empty()) continue;
-    Eigen::Matrix3d M = getFrameInertia(p, s);
-    const double before = M(1, 1);
-    if (M(0, 1) == 0 && M(1, 2) == 0) {
-      M(1, 1) = M(0, 0) + M(2, 2);  // y principal: I_yy <= I_1 + I_2 = I_xx + I_zz (trace of the x-z block)
-    } else {  // largest I_yy that satisfies the inequality, by bisection (the excess grows with I_yy)
-      double lo = 0, hi = before;
-      for (int i = 0; i < 200; ++i) {
-        M(1, 1) = 0.5 * (lo + hi);
-        (calcTriangleExcess(M) > 0 ? hi : lo) = M(1, 1);
-      }
-      M(1, 1) = lo;
-    }
-    if (M(1, 1) >= before || calcTriangleExcess(M) > 1e-12 * M.trace())
-      throw InputError({file, 0, 0, key}, why + "; lowering " + key + " cannot mend it (the broken inequality "
-                                               "involves the moments the Whipple model uses)");
-    p[key] = M(1, 1);
-    out.push_back({key, before, M(1, 1), why});
+    const Eigen::Matrix3d M = getFrameInertia(p, s);
+    if (M(0, 1) != 0 || M(1, 2) != 0)
+      throw InputError({file, 0, 0, key}, why + "; --repair-inertia needs a frame symmetric about the x-z plane "
+                                               "(I" + s + "xy = I" + s + "yz = 0)");
+    // y is principal; the x-z block has moments m -/+ r. The triangle inequality holds for
+    // |l_xz1 - l_xz2| = 2 r <= I_yy <= l_xz1 + l_xz2 = I_xx + I_zz: clamp I_yy onto the violated bound.
+    const double r = std::hypot(0.5 * (M(0, 0) - M(2, 2)), M(0, 2));
+    const double after = std::clamp(M(1, 1), 2 * r, M(0, 0) + M(2, 2));
+    p[key] = after;
+    out.push_back({key, M(1, 1), after, why});
   }
   return out;
 }
@@ -152,7 +140,7 @@ std::vector<InertiaRepair> applyInertiaPolicy(std::map<std::string, double>& p, 
     const std::string why = explainFrameInertia(p, s);
     if (!why.empty())
       throw InputError({file, 0, 0, "I" + s + "yy"},
-                       why + ". --repair-inertia lowers I" + s + "yy just onto the bound: the linearised Whipple model "
+                       why + ". --repair-inertia moves I" + s + "yy just onto the bound: the linearised Whipple model "
                        "(Meijaard et al. 2007) does not use the frames' I_yy, so its eigenvalues stay those of the file");
   }
   return {};

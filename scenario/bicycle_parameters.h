@@ -13,7 +13,7 @@ std::map<std::string, double> readBicycleParameters(const std::string& file);
 
 /// Import settings.
 struct BicycleImportOptions {
-  bool repairInertia = false;  ///< lower a frame's I_yy onto the triangle-inequality bound (see repairFrameInertias)
+  bool repairInertia = false;  ///< move a frame's I_yy onto the triangle-inequality bound (see repairFrameInertias)
 };
 
 /// One inertia lowered by the repair.
@@ -28,11 +28,14 @@ struct InertiaRepair {
 /// by how much (kg m^2 and %). Needs the I<s>xx, yy, zz, xz keys (xy, yz optional, 0).
 std::string explainFrameInertia(const std::map<std::string, double>& parameters, const std::string& s);
 
-/// Lowers I<s>yy of each frame (s = B, H) whose inertia breaks the triangle inequality just onto the bound
-/// (I_yy = I_xx + I_zz for a frame symmetric about the x-z plane; the largest I_yy that satisfies it
-/// otherwise). Why y: the linearised Whipple model (Meijaard et al. 2007, App. A) uses only I_xx, I_xz and
-/// I_zz of the frames (roll and yaw about x and z); pitch I_yy is absent, so the eigenvalues are those of
-/// the file's values. A violation that lowering I_yy cannot mend is an InputError. Returns the changes.
+/// Moves I<s>yy of each frame (s = B, H) whose inertia breaks the triangle inequality just onto the
+/// violated bound. For a frame symmetric about the x-z plane (I_xy = I_yz = 0, as the format assumes) y is
+/// principal and the inequality reads |l_1 - l_2| <= I_yy <= l_1 + l_2 = I_xx + I_zz (l_1, l_2 the x-z
+/// principal moments): I_yy too large is lowered to I_xx + I_zz (Browser rear frame), too small raised to
+/// |l_1 - l_2| (Yellow, Yellowrev front frames, whose largest moment is about an axis near x). Why y: the
+/// linearised Whipple model (Meijaard et al. 2007, App. A) uses only I_xx, I_xz and I_zz of the frames
+/// (roll and yaw about x and z); pitch I_yy is absent, so the eigenvalues are those of the file's values.
+/// A frame with I_xy or I_yz is an InputError. Returns the changes (kg m^2).
 std::vector<InertiaRepair> repairFrameInertias(std::map<std::string, double>& parameters, const std::string& file);
 
 /// A scenario YAML text for the bicycle in `file`, with the rolling_no_slip contact. Missing

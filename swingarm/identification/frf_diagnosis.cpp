@@ -35,14 +35,9 @@ std::string listModes(const FrfResult& r) {
 
 // Indicator peaks not explained by any identified mode (within max(3 bins, 0.5 %)).
 std::vector<modal::IndicatorPeak> findUnexplainedPeaks(const FrfResult& r) {
-  std::vector<modal::IndicatorPeak> out;
-  for (const auto& p : r.indicatorPeaks) {
-    bool found = false;
-    for (const auto& m : r.modes)
-      found = found || std::abs(m.frequencyHz - p.frequencyHz) <= std::max(3 * r.frf.df, 0.005 * p.frequencyHz);
-    if (!found) out.push_back(p);
-  }
-  return out;
+  std::vector<double> f;
+  for (const auto& m : r.modes) f.push_back(m.frequencyHz);
+  return modal::findUnexplainedPeaks(r.indicatorPeaks, f, r.frf.df);
 }
 
 // Channel position farthest from the force point along x (bending: axis roughly along z) or z (torsion).

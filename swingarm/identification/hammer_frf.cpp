@@ -56,9 +56,7 @@ FrfTest readFrfTest(const std::filesystem::path& file) {
   FrfTest t;
   t.file = file;
   t.frame = in.getString(root, "", "frame", "");
-  const YAML::Node fp = in.getChild(root, "", "force_point");
-  in.checkMap(fp, "force_point", {"x", "z"});
-  t.forcePoint = {in.getDouble(fp, "force_point", "x"), in.getDouble(fp, "force_point", "z")};
+  t.forcePoint = in.getForcePoint();
   const YAML::Node ch = in.getChild(root, "", "channels");
   if (!ch.IsSequence() || ch.size() == 0) in.fail(ch, "channels", "expected a non-empty list of channels");
   std::set<std::string> names;
@@ -213,14 +211,9 @@ void chooseLscfOptions(const FrfTest& test, FrfResult& res) {
 
 // Indicator peaks with no selected mode within max(3 bins, 0.5 %).
 std::vector<modal::IndicatorPeak> findUnmatchedPeaks(const FrfResult& res, const std::vector<modal::ModalEstimate>& modes) {
-  std::vector<modal::IndicatorPeak> out;
-  for (const auto& p : res.indicatorPeaks) {
-    bool found = false;
-    for (const auto& m : modes)
-      found = found || std::abs(m.frequencyHz - p.frequencyHz) <= std::max(3 * res.frf.df, 0.005 * p.frequencyHz);
-    if (!found) out.push_back(p);
-  }
-  return out;
+  std::vector<double> f;
+  for (const auto& m : modes) f.push_back(m.frequencyHz);
+  return modal::findUnexplainedPeaks(res.indicatorPeaks, f, res.frf.df);
 }
 
 // Stage 4: stabilisation diagram and stable-mode selection. With automatic orders, when indicator peaks

@@ -21,9 +21,7 @@ StaticTest readStaticTest(const std::filesystem::path& file) {
   StaticTest t;
   t.file = file;
   t.frame = in.getString(root, "", "frame", "");
-  const YAML::Node fp = in.getChild(root, "", "force_point");
-  in.checkMap(fp, "force_point", {"x", "z"});
-  t.forcePoint = {in.getDouble(fp, "force_point", "x"), in.getDouble(fp, "force_point", "z")};
+  t.forcePoint = in.getForcePoint();
   const YAML::Node sensors = in.getChild(root, "", "sensors");
   if (!sensors.IsSequence()) in.fail(sensors, "sensors", "expected a list of sensors");
   std::set<std::string> names;

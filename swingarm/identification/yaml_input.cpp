@@ -126,4 +126,10 @@ void YamlInput::checkTestKind(const std::string& kind) const {
   if (t != kind) fail(root_["test"], "test", "expected 'test: " + kind + "', found '" + t + "'");
 }
 
+PlatePoint YamlInput::getForcePoint() const {
+  const YAML::Node fp = getChild(root_, "", "force_point");
+  checkMap(fp, "force_point", {"x", "z"});
+  return {getDouble(fp, "force_point", "x"), getDouble(fp, "force_point", "z")};
+}
+
 }  // namespace motostab::identification

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "io/input_error.h"
+#include "swingarm/identification/plate_motion.h"
 
 namespace motostab::identification {
 
@@ -53,6 +54,8 @@ class YamlInput {
   std::filesystem::path resolvePath(const std::string& name) const;
   /// Requires `test: <kind>` at the root.
   void checkTestKind(const std::string& kind) const;
+  /// The required root key `force_point: {x, z}`, m.
+  PlatePoint getForcePoint() const;
 
  private:
   double toDouble(const YAML::Node& node, const std::string& key) const;
