@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <fstream>
 
+#include "../cli_run.h"
 #include "io/atomic_file.h"
 #include "io/input_error.h"
 #include "scenario/bicycle_parameters.h"
@@ -92,6 +93,28 @@ TEST(BicycleParameters, NamesThatYamlWouldRetypeStayStrings) {
     writeFileAtomically(tmp, convertBicycleParametersToScenario(getParameterFile("Benchmark"), name));
     EXPECT_EQ(loadScenario(tmp.string()).name, name);
   }
+}
+
+// Through the command line: the default name is the output file's stem, and it must stay a string.
+TEST(BicycleParameters, ImportCommandToNullOneAndTrueYaml) {
+  const auto dir = std::filesystem::temp_directory_path() / "motostab_import_cli";
+  std::filesystem::create_directories(dir);
+  for (const std::string stem : {"null", "1", "true"}) {
+    const auto out = dir / (stem + ".yaml");
+    const CliRun run = runCli("import '" + getParameterFile("Benchmark") + "' --format bicycleparameters --out '" +
+                              out.string() + "'", dir);
+    ASSERT_EQ(run.exitCode, 0) << run.err;
+    EXPECT_EQ(loadScenario(out.string()).name, stem);
+  }
+  const CliRun bad = runCli("import '" + getParameterFile("Browser") + "' --format bicycleparameters --out '" +
+                            (dir / "b.yaml").string() + "'", dir);
+  EXPECT_EQ(bad.exitCode, 2);
+  EXPECT_NE(bad.err.find("--repair-inertia"), std::string::npos) << bad.err;
+  const CliRun good = runCli("import '" + getParameterFile("Browser") + "' --format bicycleparameters --out '" +
+                             (dir / "b.yaml").string() + "' --repair-inertia", dir);
+  EXPECT_EQ(good.exitCode, 0) << good.err;
+  EXPECT_NE(good.out.find("repaired IByy"), std::string::npos) << good.out;
+  EXPECT_NE(good.out.find("lowered from 1.3164"), std::string::npos) << good.out;
 }
 
 }  // namespace

@@ -6,7 +6,7 @@
 #include <cstdint>
 #include <random>
 
-#include "cli_run.h"
+#include "../cli_run.h"
 #include "swingarm/identification/frf_diagnosis.h"
 #include "swingarm/identification/virtual_rig.h"
 #include "temp_dir.h"

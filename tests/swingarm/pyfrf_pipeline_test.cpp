@@ -8,7 +8,7 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 
-#include "cli_run.h"
+#include "../cli_run.h"
 #include "temp_dir.h"
 
 namespace {
