@@ -1,6 +1,7 @@
 #pragma once
 // Hammer test: H1 FRFs averaged over hits, hit checks, LSCF modal parameters with a stabilisation
-// diagram, half-power quick estimates, and modal (dynamic) twist axes from the 3-point ODS.
+// diagram (band and orders chosen from the data unless given), half-power quick estimates, and modal
+// (dynamic) twist axes from the 3-point ODS (seed sec. 2.1-2.2).
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -80,13 +81,15 @@ struct FrfResult {
   int bendingIndex = -1, torsionIndex = -1;
 };
 
-/// Runs the chain: hit checks (double hit, overload: rejected), force + exponential windows, H1 and
-/// coherence, LSCF stabilisation diagram and stable-mode selection (uncertainty = jackknife over hits
-/// combined with the scatter over model orders), half-power estimates, ODS twist axes (the ODS at the
-/// bin nearest each damped natural frequency, its quadrature part Im(H1), fitted by the plate plane; or,
-/// with modal_axes_from: modal_model, the quadrature part of the LSFD residues),
-/// and bending/torsion labels (hints, else the lowest mode whose axis is within 45 deg of normal to x
-/// is bending and the lowest within 45 deg of x is torsion).
+/// Runs the chain in named stages (docs/swingarm-identification.md, "Processing chain"): hit checks
+/// (double hit, overload: rejected), force + exponential windows, H1 and coherence, band and model orders
+/// (processing keys, else from the data: modal/automatic_settings.h), LSCF stabilisation diagram and
+/// stable-mode selection (Peeters et al. 2004; uncertainty = jackknife over hits combined with the scatter
+/// over model orders), half-power estimates, ODS twist axes (seed sec. 2.1: the quadrature part Im(H1) of the
+/// ODS at the bin nearest each damped natural frequency, fitted by the plate plane; or, with
+/// modal_axes_from: modal_model, the quadrature part of the LSFD residues), bending/torsion labels (hints,
+/// else the most strongly excited mode whose axis is within 45 deg of normal to x is bending, of x torsion)
+/// and diagnostics (swingarm/identification/frf_diagnosis.h). Frequencies in Hz, damping ratios viscous.
 FrfResult identifyFrf(const FrfTest& test, const std::vector<modal::ImpactRecord>& hits);
 
 /// Writes DIR/frf.csv, DIR/modes.csv, DIR/stabilisation.csv, DIR/frf.json and the plots
