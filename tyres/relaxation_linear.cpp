@@ -139,7 +139,7 @@ class RelaxationLinear : public ContactModel {
 
 }  // namespace
 
-void registerRelaxationLinear(PluginRegistry& registry) {
+void registerRelaxationLinear(PluginRegistrar& registry) {
   registry.addContactModel("relaxation_linear", [](YamlMap& m) -> std::unique_ptr<ContactModel> {
     return std::make_unique<RelaxationLinear>(readTyre(m.getMap("front")), readTyre(m.getMap("rear")));
   });

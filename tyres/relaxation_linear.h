@@ -34,6 +34,6 @@ struct LinearTyreParameters {
 constexpr double kSlipSpeedFloor = 0.1;
 
 /// Registers `relaxation_linear` (parameters under `front` and `rear`).
-void registerRelaxationLinear(PluginRegistry& registry);
+void registerRelaxationLinear(PluginRegistrar& registry);
 
 }  // namespace motostab
