@@ -48,21 +48,26 @@ void printFrf(const id::FrfResult& r, bool verbose) {
   if (verbose) std::printf("%s", id::formatStabilisationSummary(r).c_str());
 }
 
+// Writes a command's outputs into a temporary folder that replaces `target` as a whole (io/output_folder.h).
+template <class Write>
+void writeWholeFolder(const std::string& target, const Write& write) {
+  OutputFolder folder(target);
+  write(folder.getPath());
+  folder.commit();
+}
+
 void runStatic(const Args& args) {
   const auto t = id::readStaticTest(args.first);
   const auto r = id::identifyStatic(t, id::readStaticReadings(t));
-  OutputFolder out(args.out);
-  id::writeStaticOutputs(t, r, out.getPath());
-  out.commit();
+  writeWholeFolder(args.out, [&](const std::filesystem::path& dir) { id::writeStaticOutputs(t, r, dir); });
   printStatic(r);
 }
 
 void runFrf(const Args& args) {
   const auto t = id::readFrfTest(args.first);
   const auto r = id::identifyFrf(t, id::readHits(t));
-  OutputFolder out(args.out);
-  id::writeFrfOutputs(t, r, out.getPath());  // complete even without modes: the FRFs to look at
-  out.commit();
+  // Complete even without modes: the FRFs to look at.
+  writeWholeFolder(args.out, [&](const std::filesystem::path& dir) { id::writeFrfOutputs(t, r, dir); });
   printFrf(r, args.verbose);
   id::requireModes(r);  // exit 3 with what was tried and what to set
 }
@@ -94,9 +99,7 @@ void runSwingarm(const Args& args) {
 void runCog(const Args& args) {
   const auto t = id::readCogTest(args.first);
   const auto r = id::identifyCog(t);
-  OutputFolder out(args.out);
-  id::writeCogOutputs(t, r, out.getPath());
-  out.commit();
+  writeWholeFolder(args.out, [&](const std::filesystem::path& dir) { id::writeCogOutputs(t, r, dir); });
   std::printf("cog: mass %.4f +/- %.4f kg, CoG (%.5f, %.5f, %.5f) +/- (%.5f, %.5f, %.5f) m\n", r.mass, r.massStderr,
               r.cog[0], r.cog[1], r.cog[2], r.cogStderr[0], r.cogStderr[1], r.cogStderr[2]);
 }
@@ -104,9 +107,7 @@ void runCog(const Args& args) {
 void runInertia(const Args& args) {
   const auto t = id::readInertiaTest(args.first);
   const auto r = id::identifyInertia(t);
-  OutputFolder out(args.out);
-  id::writeInertiaOutputs(t, r, out.getPath());
-  out.commit();
+  writeWholeFolder(args.out, [&](const std::filesystem::path& dir) { id::writeInertiaOutputs(t, r, dir); });
   std::printf("inertia about CoG: Ixx %.5f +/- %.5f, Iyy %.5f +/- %.5f, Izz %.5f +/- %.5f kg m^2\n", r.tensor(0, 0),
               r.tensorStderr(0, 0), r.tensor(1, 1), r.tensorStderr(1, 1), r.tensor(2, 2), r.tensorStderr(2, 2));
 }

@@ -7,7 +7,7 @@
 #include <filesystem>
 #include <fstream>
 
-#include "../cli_run.h"
+#include "../apps/run_motostab.h"
 #include "io/atomic_file.h"
 #include "io/input_error.h"
 #include "scenario/bicycle_parameters.h"
@@ -99,22 +99,23 @@ TEST(BicycleParameters, NamesThatYamlWouldRetypeStayStrings) {
 TEST(BicycleParameters, ImportCommandToNullOneAndTrueYaml) {
   const auto dir = std::filesystem::temp_directory_path() / "motostab_import_cli";
   std::filesystem::create_directories(dir);
+  std::string output;
   for (const std::string stem : {"null", "1", "true"}) {
     const auto out = dir / (stem + ".yaml");
-    const CliRun run = runCli("import '" + getParameterFile("Benchmark") + "' --format bicycleparameters --out '" +
-                              out.string() + "'", dir);
-    ASSERT_EQ(run.exitCode, 0) << run.err;
+    const int code = motostab::test::runMotostab(
+        {"import", getParameterFile("Benchmark"), "--format", "bicycleparameters", "--out", out.string()}, dir.string(), output);
+    ASSERT_EQ(code, 0) << output;
     EXPECT_EQ(loadScenario(out.string()).name, stem);
   }
-  const CliRun bad = runCli("import '" + getParameterFile("Browser") + "' --format bicycleparameters --out '" +
-                            (dir / "b.yaml").string() + "'", dir);
-  EXPECT_EQ(bad.exitCode, 2);
-  EXPECT_NE(bad.err.find("--repair-inertia"), std::string::npos) << bad.err;
-  const CliRun good = runCli("import '" + getParameterFile("Browser") + "' --format bicycleparameters --out '" +
-                             (dir / "b.yaml").string() + "' --repair-inertia", dir);
-  EXPECT_EQ(good.exitCode, 0) << good.err;
-  EXPECT_NE(good.out.find("repaired IByy"), std::string::npos) << good.out;
-  EXPECT_NE(good.out.find("lowered from 1.3164"), std::string::npos) << good.out;
+  const std::vector<std::string> browser{"import", getParameterFile("Browser"), "--format", "bicycleparameters", "--out",
+                                         (dir / "b.yaml").string()};
+  EXPECT_EQ(motostab::test::runMotostab(browser, dir.string(), output), 2);
+  EXPECT_NE(output.find("--repair-inertia"), std::string::npos) << output;
+  auto repaired = browser;
+  repaired.push_back("--repair-inertia");
+  EXPECT_EQ(motostab::test::runMotostab(repaired, dir.string(), output), 0) << output;
+  EXPECT_NE(output.find("repaired IByy"), std::string::npos) << output;
+  EXPECT_NE(output.find("lowered from 1.3164"), std::string::npos) << output;
 }
 
 }  // namespace

@@ -6,7 +6,7 @@
 #include <cstdint>
 #include <random>
 
-#include "../cli_run.h"
+#include "../apps/run_motostab.h"
 #include "swingarm/identification/frf_diagnosis.h"
 #include "swingarm/identification/virtual_rig.h"
 #include "temp_dir.h"
@@ -33,13 +33,13 @@ TEST(NeverSilent, NoModeIsExit3WithWhatWasTriedAndWhatToSet) {
     for (auto& ch : h.responses)
       for (auto& v : ch) v = drawNoise(rng, 1.0);  // the accelerometers saw nothing but noise
   writeFrfTestFiles(dir, rig, hits);
-  const CliRun run = runCli("identify frf '" + (dir / "frf.yaml").string() + "' --out '" + (dir / "out").string() +
-                            "' --verbose", dir);
-  EXPECT_EQ(run.exitCode, 3) << run.out << run.err;
+  std::string output;
+  const int code = motostab::test::runMotostab(
+      {"identify", "frf", (dir / "frf.yaml").string(), "--out", (dir / "out").string(), "--verbose"}, dir.string(), output);
+  EXPECT_EQ(code, 3) << output;
   for (const char* s : {"no mode identified", "Tried:", "band", "model orders", "indicator peaks", "What to set",
-                        "band_hz", "model_order"})
-    EXPECT_NE(run.err.find(s), std::string::npos) << s << "\n" << run.err;
-  EXPECT_NE(run.out.find("stabilisation (band"), std::string::npos) << run.out;
+                        "band_hz", "model_order", "stabilisation (band"})
+    EXPECT_NE(output.find(s), std::string::npos) << s << "\n" << output;
   EXPECT_TRUE(std::filesystem::exists(dir / "out" / "frf.csv"));  // the evidence is written for inspection
 }
 
@@ -61,10 +61,12 @@ TEST(NeverSilent, MissingTorsionSaysWhichWhyAndWhereToHit) {
   for (const auto& d : r.diagnostics) all += d + "\n";
   for (const char* s : {"torsion mode not found", "too close to the torsion axis", "move along z", "near channel A3"})
     EXPECT_NE(all.find(s), std::string::npos) << s << "\n" << all;  // A3 at z = -0.05: the farthest from the hit in z
-  const CliRun run = runCli("identify swingarm '" + (dir / "static.yaml").string() + "' '" + (dir / "frf.yaml").string() +
-                            "' --out '" + (dir / "out").string() + "'", dir);
-  EXPECT_EQ(run.exitCode, 3) << run.out << run.err;
-  EXPECT_NE(run.err.find("torsion mode not found"), std::string::npos) << run.err;
+  std::string output;
+  const int code = motostab::test::runMotostab({"identify", "swingarm", (dir / "static.yaml").string(),
+                                                (dir / "frf.yaml").string(), "--out", (dir / "out").string()},
+                                               dir.string(), output);
+  EXPECT_EQ(code, 3) << output;
+  EXPECT_NE(output.find("torsion mode not found"), std::string::npos) << output;
   EXPECT_FALSE(std::filesystem::exists(dir / "out" / "swingarm.yaml"));
 }
 

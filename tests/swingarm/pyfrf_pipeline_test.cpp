@@ -8,7 +8,7 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 
-#include "../cli_run.h"
+#include "../apps/run_motostab.h"
 #include "temp_dir.h"
 
 namespace {
@@ -21,9 +21,11 @@ TEST(PyFrfPipeline, DefaultsFindTheReferenceModesThroughTheCommandLine) {
                                   << data << "impact_1.csv, " << data << "impact_2.csv, " << data << "impact_3.csv, "
                                   << data << "impact_4.csv, " << data << "impact_5.csv]\n"
                                   << "time_column: t_s\nforce_column: force\n";
-  const CliRun run = runCli("identify frf '" + (dir / "frf.yaml").string() + "' --out '" + (dir / "out").string() + "'", dir);
-  ASSERT_EQ(run.exitCode, 0) << run.err;
-  EXPECT_NE(run.out.find("5 hits averaged, 0 rejected"), std::string::npos) << run.out;
+  std::string output;
+  const int code = motostab::test::runMotostab({"identify", "frf", (dir / "frf.yaml").string(), "--out", (dir / "out").string()},
+                                               dir.string(), output);
+  ASSERT_EQ(code, 0) << output;
+  EXPECT_NE(output.find("5 hits averaged, 0 rejected"), std::string::npos) << output;
   nlohmann::json j;
   std::ifstream(dir / "out" / "frf.json") >> j;
   EXPECT_TRUE(j["band"]["automatic"].get<bool>());
@@ -34,7 +36,7 @@ TEST(PyFrfPipeline, DefaultsFindTheReferenceModesThroughTheCommandLine) {
   };
   for (double target : {900.0, 2640.0, 3669.0, 3690.0, 4392.0}) {
     const nlohmann::json* m = findNear(target, 8);
-    ASSERT_NE(m, nullptr) << target << "\n" << run.out;
+    ASSERT_NE(m, nullptr) << target << "\n" << output;
     const double zeta = (*m)["damping_ratio"].get<double>(), zetaErr = (*m)["damping_ratio_stderr"].get<double>();
     EXPECT_FALSE(m->contains("modal_axis"));
     EXPECT_GT(zeta, 0.0);
@@ -48,11 +50,11 @@ TEST(PyFrfPipeline, DefaultsFindTheReferenceModesThroughTheCommandLine) {
   EXPECT_NE(findNear(3669, 8), findNear(3690, 8));  // the close pair is two modes
   int group = 0;                                     // the 4093-4164 group: as many as are stable
   for (double f : {4093.0, 4128.0, 4164.0}) group += findNear(f, 6) != nullptr;
-  EXPECT_GE(group, 2) << run.out;
+  EXPECT_GE(group, 2) << output;
   for (const char* f : {"frf.csv", "modes.csv", "frf.json", "frf_magnitude_phase.png", "coherence.png", "stabilisation.png"})
     EXPECT_TRUE(std::filesystem::exists(dir / "out" / f)) << f;
   EXPECT_FALSE(std::filesystem::exists(dir / "out" / "modal_axes.png"));
-  std::printf("%s", run.out.c_str());
+  std::printf("%s", output.c_str());
 }
 
 }  // namespace
