@@ -34,9 +34,9 @@ void printStatic(const id::StaticResult& r) {
 }
 
 void printFrf(const id::FrfResult& r, bool verbose) {
-  std::printf("frf: %d hits averaged, %zu rejected; band %s; model orders %d-%d (%s)\n", r.frf.averages,
-              r.rejectedHits.size(), r.band.description.c_str(), r.options.minOrder, r.options.maxOrder,
-              r.orderReason.c_str());
+  std::printf("frf: %d hits averaged, %zu rejected; window %s; band %s; model orders %d-%d (%s)\n", r.frf.averages,
+              r.rejectedHits.size(), r.window.description.c_str(), r.band.description.c_str(), r.options.minOrder,
+              r.options.maxOrder, r.orderReason.c_str());
   for (const auto& h : r.rejectedHits) std::printf("  rejected %s\n", h.c_str());
   for (const auto& m : r.modes) {
     std::printf("  mode %9.3f +/- %.3f Hz  zeta %.5f +/- %.5f  eta %.5f", m.frequencyHz, m.frequencyStderrHz,

@@ -82,6 +82,27 @@ BandChoice chooseBand(const FrfEstimate& frf, const AutomaticSettingsOptions& o)
   return b;
 }
 
+WindowChoice chooseExponentialWindow(const std::vector<ImpactRecord>& hits, const AutomaticSettingsOptions& o) {
+  WindowChoice w;
+  for (const auto& h : hits)
+    for (const auto& x : h.responses) {
+      double peak = 0, tail = 0;
+      const size_t n = x.size(), start = n - std::max<size_t>(1, n / 10);
+      for (double v : x) peak = std::max(peak, std::abs(v));
+      for (size_t k = start; k < n; ++k) tail += x[k] * x[k] / (n - start);
+      if (peak > 0) w.tail = std::max(w.tail, std::sqrt(tail) / peak);
+    }
+  w.endValue = w.tail <= o.tailFraction ? 1.0 : std::max(o.minEndValue, o.tailFraction / w.tail);
+  char text[200];
+  if (w.endValue == 1)
+    std::snprintf(text, sizeof text, "none (the responses decay to %.3g %% of their peak by the record end)", 100 * w.tail);
+  else
+    std::snprintf(text, sizeof text, "exponential, end value %.3g (the responses end at %.3g %% of their peak; aim %.3g %%)",
+                  w.endValue, 100 * w.tail, 100 * o.tailFraction);
+  w.description = text;
+  return w;
+}
+
 std::vector<IndicatorPeak> findIndicatorPeaks(const FrfEstimate& frf, double fMin, double fMax,
                                               const AutomaticSettingsOptions& o) {
   const size_t n = frf.frequency.size();

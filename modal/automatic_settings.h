@@ -10,6 +10,10 @@
 //  - the model orders swept in the stabilisation diagram, from the number of peaks: an LSCF model of
 //    order p has p poles, i.e. p/2 modes, so 2 n_peaks is the least order that can hold every peak;
 //    the sweep runs to 4 n_peaks + 24 (computational poles absorb noise, leakage and out-of-band modes).
+//  - the exponential window: none if every response has died out by the end of the record (RMS of the
+//    last 10 % below `tailFraction` of the channel's peak), else just strong enough to bring that tail
+//    down to `tailFraction` (end value tailFraction / tail, at least minEndValue): every window adds
+//    damping that must be subtracted again, which lightly damped modes cannot afford.
 // Which poles become modes is left to the stabilisation diagram (modal/lscf.h).
 // References: Peeters et al. (2004) "The PolyMAX frequency-domain method", Shock Vib. 11, 395-409
 // (stabilisation diagram); Ewins (2000) "Modal testing", sec. 3.9 (hammer spectrum, coherence).
@@ -27,6 +31,8 @@ struct AutomaticSettingsOptions {
   int coherenceWindowBins = 21;     ///< width of that median window, bins
   double peakMinRelative = 0.01;    ///< |H| at a peak / the channel's largest peak in the band
   double peakMinCoherence = 0.99;   ///< coherence at a peak (best of the peak bin and its neighbours)
+  double tailFraction = 0.01;       ///< response RMS over the last 10 % of a record / its peak, aimed at
+  double minEndValue = 0.05;        ///< strongest exponential window used (value at the record end)
   int minOrder = 4;                 ///< least order swept
   int maxOrderCap = 160;            ///< largest order ever swept
 };
@@ -46,6 +52,13 @@ struct IndicatorPeak {
   int channel = 0;           ///< the channel where the peak is largest relative to that channel
 };
 
+/// The exponential window and why.
+struct WindowChoice {
+  double endValue = 1;      ///< window value at the record end (1 = no window)
+  double tail = 0;          ///< largest (RMS of the last 10 % of a record) / (peak |x|) over hits and channels
+  std::string description;  ///< e.g. "none (responses decay to 0.2 % of their peak by the record end)"
+};
+
 /// Model orders of the stabilisation diagram.
 struct OrderChoice {
   int minOrder = 4, maxOrder = 40;
@@ -53,6 +66,9 @@ struct OrderChoice {
 
 /// Band from the data (see the file comment). Throws std::runtime_error if no bin qualifies.
 BandChoice chooseBand(const FrfEstimate& frf, const AutomaticSettingsOptions& options = {});
+
+/// Exponential window from the responses (see the file comment).
+WindowChoice chooseExponentialWindow(const std::vector<ImpactRecord>& hits, const AutomaticSettingsOptions& options = {});
 
 /// Mode indicator peaks in [fMin, fMax] (see the file comment), ascending in frequency.
 std::vector<IndicatorPeak> findIndicatorPeaks(const FrfEstimate& frf, double fMin, double fMax,

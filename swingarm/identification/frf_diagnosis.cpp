@@ -95,7 +95,8 @@ void diagnoseFrf(const FrfTest& t, FrfResult& r) {
 
 std::string describeFrfAttempt(const FrfResult& r) {
   std::ostringstream s;
-  s << r.frf.averages << " hits averaged (" << r.rejectedHits.size() << " rejected); band " << r.band.description
+  s << r.frf.averages << " hits averaged (" << r.rejectedHits.size() << " rejected); window " << r.window.description
+    << "; band " << r.band.description
     << (r.automaticBand ? " [automatic]" : "") << "; model orders " << r.options.minOrder << "-" << r.options.maxOrder
     << " (" << r.orderReason << "); " << r.indicatorPeaks.size()
     << " mode indicator peaks (>= 1 % of the largest, coherence > 0.99)";

@@ -348,7 +348,14 @@ FrfResult identifyFrf(const FrfTest& test, const std::vector<modal::ImpactRecord
   const auto good = screenHits(test, hits, res);
   modal::WindowOptions w;
   w.forceWindow = test.forceWindow;
-  w.exponentialEndValue = test.exponentialEndValue;
+  if (test.exponentialEndValue > 0) {
+    res.window.endValue = test.exponentialEndValue;
+    res.window.description = "exponential, end value " + formatNumber(test.exponentialEndValue, 6) +
+                             " (processing.exponential_end_value)";
+  } else {
+    res.window = modal::chooseExponentialWindow(good);
+  }
+  w.exponentialEndValue = res.window.endValue;
   res.frf = modal::estimateH1(good, w);
   chooseLscfOptions(test, res);
   const auto& o = res.options;
@@ -453,7 +460,8 @@ void writeFrfJson(const FrfTest& test, const FrfResult& r, const std::filesystem
   j["hits_rejected"] = r.rejectedHits;
   j["averages"] = r.frf.averages;
   j["frequency_resolution_hz"] = r.frf.df;
-  j["window"] = {{"force_window", test.forceWindow}, {"exponential_end_value", test.exponentialEndValue},
+  j["window"] = {{"force_window", test.forceWindow}, {"exponential_end_value", r.window.endValue},
+                 {"exponential_reason", r.window.description},
                  {"added_decay_rate_per_s", r.frf.windowDecayRate}};
   j["method"] = "LSCF (common-denominator, z-domain), stable poles clustered over model orders; "
                 "stderr = jackknife over hits combined with the scatter over orders";

@@ -32,7 +32,7 @@ struct FrfTest {
   // Optional processing settings (key `processing`).
   double bandMinHz = 0, bandMaxHz = 0;   ///< Hz; both 0 = automatic (modal/automatic_settings.h)
   int minOrder = 0, maxOrder = 0;        ///< LSCF orders swept; both 0 = automatic from the indicator peaks
-  double exponentialEndValue = 0.05;
+  double exponentialEndValue = 0;        ///< exponential window at the record end; 0 = automatic
   bool forceWindow = true;
   double doubleHitFraction = 0.1;
   double forceRange = 0, responseRange = 0;  ///< N, m/s^2; 0 = not given
@@ -69,6 +69,7 @@ struct FrfResult {
   std::vector<std::string> usedHits, rejectedHits;  ///< rejected: "file: reason"
   modal::LscfOptions options;
   modal::BandChoice band;                          ///< the band used and where it came from
+  modal::WindowChoice window;                      ///< the exponential window used and why
   bool automaticBand = true, automaticOrders = true;
   std::string orderReason;                         ///< why these orders ("from 2 indicator peaks: 2n .. 4n + 24")
   std::vector<modal::IndicatorPeak> indicatorPeaks;  ///< mode indicator peaks in the band

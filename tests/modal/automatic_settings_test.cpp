@@ -93,4 +93,23 @@ TEST(AutomaticSettings, OrdersFollowThePeakCount) {
   EXPECT_EQ(chooseOrders(9, 30).maxOrder, 28);  // never more than the band bins minus 2
 }
 
+// Decaying sines x = exp(-sigma t) sin(w t) over T = 1 s: the RMS of the last 10 % relative to the peak is
+// about exp(-0.95 sigma) / sqrt(2) (envelope at the middle of the tail; peak ~1 for light decay).
+TEST(AutomaticSettings, ExponentialWindowOnlyAsStrongAsTheTailNeeds) {
+  auto record = [](double sigma) {
+    ImpactRecord r;
+    r.dt = 1.0 / 4096;
+    r.force.assign(4096, 0.0);
+    r.responses.assign(1, std::vector<double>(4096));
+    for (size_t k = 0; k < 4096; ++k) r.responses[0][k] = std::exp(-sigma * k * r.dt) * std::sin(2 * M_PI * 200.5 * k * r.dt);
+    return std::vector<ImpactRecord>{r};
+  };
+  EXPECT_EQ(chooseExponentialWindow(record(8.0)).endValue, 1.0);  // tail 0.05 % of the peak: no window
+  EXPECT_EQ(chooseExponentialWindow(record(0.0)).endValue, 0.05);  // no decay at all: the strongest window
+  const double sigma = 1.0, tail = std::exp(-0.95 * sigma) / std::sqrt(2.0);  // about 27 %
+  const WindowChoice w = chooseExponentialWindow(record(sigma));
+  EXPECT_NEAR(w.tail, tail, 0.02 * tail);
+  EXPECT_NEAR(w.endValue, std::max(0.05, 0.01 / tail), 0.02 * w.endValue);
+}
+
 }  // namespace
