@@ -84,9 +84,7 @@ FrfTest readFrfTest(const std::filesystem::path& file) {
   FrfTest t;
   t.file = file;
   t.frame = root.getString("frame", "");
-  YamlMap fp = root.getMap("force_point");
-  t.forcePoint = {fp.getDouble("x"), fp.getDouble("z")};
-  fp.finish();
+  t.forcePoint = readForcePoint(root);
   std::vector<YamlMap> channels = root.getMapList("channels");
   if (channels.empty()) root.fail("channels", "expected a non-empty list of channels");
   std::set<std::string> names;
