@@ -3,6 +3,7 @@
 
 #include "apps/commands.h"
 #include "io/input_error.h"
+#include "io/result_error.h"
 
 int main(int argc, char** argv) {
   CLI::App app{"motostab: stability of motorcycles and bicycles (Simbody multibody models from YAML scenarios)"};
@@ -10,6 +11,7 @@ int main(int argc, char** argv) {
   motostab::cli::registerScenarioCommands(app);
   motostab::cli::registerStabilityCommands(app);
   motostab::cli::registerSimulateCommands(app);
+  motostab::cli::registerUncertaintyCommands(app);
   CLI::App* identify = app.add_subcommand("identify", "Identify model parameters from lab tests or responses");
   identify->require_subcommand(1);
   motostab::cli::registerSwingarmIdentifyCommands(*identify);
@@ -22,6 +24,9 @@ int main(int argc, char** argv) {
   } catch (const motostab::InputError& e) {
     std::cerr << "motostab: input error: " << e.what() << "\n";
     return 2;
+  } catch (const motostab::ResultError& e) {
+    std::cerr << "motostab: no result: " << e.what() << "\n";
+    return 3;
   } catch (const std::exception& e) {
     std::cerr << "motostab: error: " << e.what() << "\n";
     return 1;

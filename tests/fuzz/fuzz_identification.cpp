@@ -1,9 +1,9 @@
 // Fuzz target: the identification test loaders (swingarm/identification): a multi-file input
 // (fuzz_support.h) whose first file names the test: static*.yaml (readStaticTest + readStaticReadings),
 // frf*.yaml (readFrfTest + readHits), cog*.yaml (readCogTest), inertia*.yaml (readInertiaTest).
-#include "swingarm/identification/frf_test.h"
+#include "swingarm/identification/hammer_frf.h"
 #include "swingarm/identification/mass_properties.h"
-#include "swingarm/identification/static_test.h"
+#include "swingarm/identification/static_laser.h"
 #include "tests/fuzz/fuzz_support.h"
 
 namespace id = motostab::identification;
