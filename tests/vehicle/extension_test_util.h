@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <fstream>
+#include <iostream>
 #include <random>
 #include <sstream>
 #include <string>
@@ -63,6 +64,31 @@ inline SweepResult runScenarioSweep(const Scenario& s, double start, double stop
   SweepOptions o;
   o.start = start, o.stop = stop, o.step = step;
   return runSweep(model, o);
+}
+
+/// The limit test of issue 10 on the enduro: weave and wobble at 10, 20 and 30 m/s with `overrides`
+/// within `tolerance` (relative) of the plain enduro's.
+inline void expectEnduroWeaveAndWobbleKept(const std::vector<std::string>& overrides, double tolerance = 1e-3) {
+  const SweepResult a = runScenarioSweep(loadScenario(kEnduro), 10, 30, 1);
+  const SweepResult b = runScenarioSweep(loadScenario(kEnduro, overrides), 10, 30, 1);
+  for (size_t k : {0, 10, 20})
+    for (const char* mode : {"weave", "wobble"}) {
+      const cd la = findLabelled(a, mode, k), lb = findLabelled(b, mode, k);
+      ASSERT_TRUE(std::isfinite(la.real()) && std::isfinite(lb.real())) << mode << " at " << a.speeds[k];
+      std::cout << "enduro " << mode << " at " << a.speeds[k] << " m/s: relative change " << std::abs(la - lb) / std::abs(la) << "\n";
+      EXPECT_LT(std::abs(la - lb) / std::abs(la), tolerance) << mode << " at " << a.speeds[k];
+    }
+}
+
+/// The limit test of issue 10 on the Whipple bicycle: every eigenvalue at 2, 5 and 8 m/s of
+/// `extended` within `tolerance` (relative to max(1, |lambda|)) of one of the plain benchmark's.
+inline void expectWhippleSpectrumKept(const Scenario& extended, double tolerance = 1e-4) {
+  const Scenario plain = loadScenario(kWhipple);
+  for (double v : {2.0, 5.0, 8.0}) {
+    const double d = calcSpectrumDistance(calcEigenvaluesAt(plain, v), calcEigenvaluesAt(extended, v));
+    std::cout << "Whipple at " << v << " m/s: largest relative eigenvalue change " << d << "\n";
+    EXPECT_LT(d, tolerance) << v;
+  }
 }
 
 /// Writes `base` with `extra` appended to a fresh file; returns its path. `lineOfExtra` gets the

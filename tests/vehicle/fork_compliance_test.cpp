@@ -98,19 +98,9 @@ TEST(ForkCompliance, LockedVehicleFrequenciesAreSqrtKOverJ) {
 
 TEST(ForkCompliance, StiffForkReproducesTheRigidFork) {
   std::mt19937_64 rng(33);
-  const Scenario whipple = loadScenario(kWhipple);
-  const Scenario stiff = loadScenario(kWhipple, {toYaml(drawFork(rng, true), 1e4, 1e2)});
-  for (double v : {2.0, 5.0, 8.0})
-    EXPECT_LT(calcSpectrumDistance(calcEigenvaluesAt(whipple, v), calcEigenvaluesAt(stiff, v)), 1e-4) << v;
+  expectWhippleSpectrumKept(loadScenario(kWhipple, {toYaml(drawFork(rng, true), 1e4, 1e2)}));
 
-  const SweepResult a = runScenarioSweep(loadScenario(kEnduro), 10, 30, 1);
-  const SweepResult b = runScenarioSweep(loadScenario(kEnduro, {toYaml(drawFork(rng, true), 1e4, 1e2)}), 10, 30, 1);
-  for (size_t k : {0, 10, 20})
-    for (const char* mode : {"weave", "wobble"}) {
-      const cd la = findLabelled(a, mode, k), lb = findLabelled(b, mode, k);
-      ASSERT_TRUE(std::isfinite(la.real()) && std::isfinite(lb.real())) << mode << " at " << a.speeds[k];
-      EXPECT_LT(std::abs(la - lb) / std::abs(la), 1e-3) << mode << " at " << a.speeds[k];
-    }
+  expectEnduroWeaveAndWobbleKept({toYaml(drawFork(rng, true), 1e4, 1e2)});
 }
 
 // With a realistic fork the sweep still finds weave and wobble, and names the fork's own mode.

@@ -77,13 +77,16 @@ Eigen::VectorXcd calcBenchmarkEigenvalues(const Benchmark& b, double g, double v
 // eigenvalue (forward speed) is zero.
 void expectMatchesBenchmark(const Scenario& s, double c) {
   const Benchmark b = calcMeijaardMatrices(s);
+  double worst = 0;
   for (int v = 0; v <= 10; ++v) {
     const Eigen::VectorXcd ref = calcBenchmarkEigenvalues(b, s.gravity, v, c);
     const Eigen::VectorXcd got = calcEigenvaluesAt(s, v);
     ASSERT_EQ(got.size(), 5);
+    worst = std::max(worst, calcSpectrumDistance(ref, got));
     EXPECT_LT(calcSpectrumDistance(ref, got), 1e-8) << "v = " << v << "\nref " << ref.transpose() << "\ngot " << got.transpose();
     EXPECT_LT(calcSpectrumDistance(got, (Eigen::VectorXcd(5) << ref, cd(0)).finished()), 1e-8) << "v = " << v;
   }
+  std::cout << "c = " << c << " N m s/rad: worst eigenvalue error against Meijaard M, C1, K0, K2 over 0-10 m/s: " << worst << "\n";
 }
 
 TEST(SteerDamper, BenchmarkBicycleMatchesMeijaardWithDampingInC) {
@@ -107,18 +110,9 @@ TEST(SteerDamper, RandomBicycleMatchesMeijaard) {
 }
 
 TEST(SteerDamper, ZeroDampingReproducesTheUndampedModel) {
-  const Scenario base = loadScenario(kWhipple);
-  const Scenario zero = loadScenario(kWhipple, {"steer_damper={damping_Nms_per_rad: 0}"});
-  for (double v : {2.0, 5.0, 8.0}) EXPECT_LT(calcSpectrumDistance(calcEigenvaluesAt(base, v), calcEigenvaluesAt(zero, v)), 1e-4);
+  expectWhippleSpectrumKept(loadScenario(kWhipple, {"steer_damper={damping_Nms_per_rad: 0}"}));
 
-  const SweepResult a = runScenarioSweep(loadScenario(kEnduro), 10, 30, 1);
-  const SweepResult b = runScenarioSweep(loadScenario(kEnduro, {"steer_damper={damping_Nms_per_rad: 0}"}), 10, 30, 1);
-  for (size_t k : {0, 10, 20})
-    for (const char* mode : {"weave", "wobble"}) {
-      const cd la = findLabelled(a, mode, k), lb = findLabelled(b, mode, k);
-      ASSERT_TRUE(std::isfinite(la.real()) && std::isfinite(lb.real())) << mode;
-      EXPECT_LT(std::abs(la - lb) / std::abs(la), 1e-3) << mode << " at " << a.speeds[k];
-    }
+  expectEnduroWeaveAndWobbleKept({"steer_damper={damping_Nms_per_rad: 0}"});
 }
 
 // Damping raises wobble damping on the enduro (Cossalter 2006 sec. 8.5; Sharp & Limebeer 2001).
