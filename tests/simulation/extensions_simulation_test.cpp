@@ -52,14 +52,15 @@ TEST(SimulationExtensions, SteerTorquePulseActsOnTheSteerAxis) {
   o.speed = 20;
   o.duration = 0.3;
   o.outputStep = 0.005;
-  o.perturbations = {parsePerturbation("steer-torque:2:0:0.05:rect")};
+  o.perturbations = {parsePerturbation("steer-torque:2:0.02:0.05:rect")};
   const SimulationResult r = runSimulation(getExtendedEnduro(), o);
   ASSERT_EQ(r.status, SimulationStatus::Completed) << r.message;
   const int steer = r.getColumnIndex("steer"), torque = r.getColumnIndex("steer_torque");
   ASSERT_GE(steer, 0);
   ASSERT_GE(torque, 0);
-  EXPECT_GT(r.rows[2][steer] - r.trimRow[steer], 0);  // 10 ms into a +2 N m pulse: steered left
-  EXPECT_NEAR(r.rows[2][torque] - r.trimRow[torque], 2.0, 1e-9);
+  ASSERT_NEAR(r.rows[10][0], 0.05, 1e-12);
+  EXPECT_GT(r.rows[10][steer] - r.trimRow[steer], 0);  // 30 ms into a +2 N m pulse: steered left
+  EXPECT_NEAR(r.rows[10][torque] - r.trimRow[torque], 2.0, 1e-9);
 }
 
 }  // namespace
