@@ -9,6 +9,7 @@
 #include <fstream>
 #include <iostream>
 #include <sstream>
+#include <unistd.h>
 
 #include "analysis/linearize.h"
 #include "analysis/sweep.h"
@@ -109,7 +110,7 @@ TEST(BicycleTyres, BadPresetInputNamesFileLineColumnAndKey) {
     const size_t at = body.find("contact: {model: rolling_no_slip}");
     const int line = 1 + static_cast<int>(std::count(body.begin(), body.begin() + static_cast<long>(at), '\n'));
     body.replace(at, std::string("contact: {model: rolling_no_slip}").size(), contact);
-    const std::string file = (dir / "motostab_bad_preset.yaml").string();
+    const std::string file = (dir / ("motostab_bad_preset_" + std::to_string(::getpid()) + ".yaml")).string();
     std::ofstream(file) << body;
     try {
       VehicleModel m(loadScenario(file));

@@ -12,6 +12,7 @@
 #include <random>
 #include <sstream>
 #include <string>
+#include <unistd.h>
 #include <vector>
 
 #include "analysis/linearize.h"
@@ -102,7 +103,8 @@ inline std::string writeScenarioWith(const std::string& base, const std::string&
   if (!body.empty() && body.back() != '\n') body += '\n';
   lineOfExtra = 1;
   for (char c : body) lineOfExtra += c == '\n';
-  const auto dir = std::filesystem::temp_directory_path() / "motostab_extension_tests";
+  // One folder per process: parallel test runs (other checkouts too) never share a file.
+  const auto dir = std::filesystem::temp_directory_path() / ("motostab_extension_tests_" + std::to_string(::getpid()));
   std::filesystem::create_directories(dir);
   const std::string path = (dir / (name + ".yaml")).string();
   std::ofstream(path) << body << extra;
