@@ -28,6 +28,14 @@ void printExtensions(const Scenario& s) {
               << " m, " << s.riderLean.stiffness << " N m/rad, " << s.riderLean.damping << " N m s/rad\n";
 }
 
+void printInertiaRepairs(const std::vector<InertiaRepair>& repairs) {
+  for (const auto& r : repairs)
+    std::cout << "repaired " << r.key << ": " << r.explanation << "; " << (r.after < r.before ? "lowered" : "raised")
+              << " from " << r.before << " to " << r.after << " kg m^2 (" << std::showpos << r.after - r.before
+              << std::noshowpos << "). The linearised Whipple model does not use the frames' "
+              << "I_yy (pitch), so the eigenvalues are those of the file's values.\n";
+}
+
 }  // namespace
 
 void registerScenarioCommands(CLI::App& app) {
@@ -64,6 +72,7 @@ void registerScenarioCommands(CLI::App& app) {
 
   struct ImportArgs {
     std::string file, format, out, name;
+    bool repairInertia = false;
   };
   auto imp = std::make_shared<ImportArgs>();
   CLI::App* i = app.add_subcommand("import", "Convert a parameter file into a scenario");
@@ -71,9 +80,14 @@ void registerScenarioCommands(CLI::App& app) {
   i->add_option("--format", imp->format, "Input format")->required()->check(CLI::IsMember({"bicycleparameters"}));
   i->add_option("--out", imp->out, "Scenario YAML to write")->required();
   i->add_option("--name", imp->name, "Scenario name (default: the output file stem)");
+  i->add_flag("--repair-inertia", imp->repairInertia,
+              "Move a frame's I_yy onto the triangle-inequality bound (unused by the linear Whipple model)");
   i->callback([imp]() {
     const std::string name = imp->name.empty() ? std::filesystem::path(imp->out).stem().string() : imp->name;
-    writeFileAtomically(imp->out, convertBicycleParametersToScenario(imp->file, name));
+    std::vector<InertiaRepair> repairs;
+    const std::string text = convertBicycleParametersToScenario(imp->file, name, {imp->repairInertia}, &repairs);
+    printInertiaRepairs(repairs);
+    writeFileAtomically(imp->out, text);
     loadScenario(imp->out);  // what we write must load
     std::cout << "Wrote " << imp->out << "\n";
   });

@@ -3,6 +3,7 @@
 
 #include "apps/commands.h"
 #include "io/input_error.h"
+#include "io/result_error.h"
 
 int main(int argc, char** argv) {
   CLI::App app{"motostab: stability of motorcycles and bicycles (Simbody multibody models from YAML scenarios)"};
@@ -22,6 +23,9 @@ int main(int argc, char** argv) {
   } catch (const motostab::InputError& e) {
     std::cerr << "motostab: input error: " << e.what() << "\n";
     return 2;
+  } catch (const motostab::ResultError& e) {
+    std::cerr << "motostab: no result: " << e.what() << "\n";
+    return 3;
   } catch (const std::exception& e) {
     std::cerr << "motostab: error: " << e.what() << "\n";
     return 1;

@@ -138,17 +138,21 @@ std::vector<StabilisationPole> calcStabilisationDiagram(const LscfEstimator& est
   return all;
 }
 
-std::vector<ModalEstimate> selectStableModes(const std::vector<StabilisationPole>& diagram, const LscfOptions& o) {
+namespace {
+
+// Greedy clusters of the poles stable in frequency and damping, in ascending frequency: a pole joins the
+// current cluster if within clusterTolerance of the cluster mean.
+std::vector<std::vector<StabilisationPole>> clusterStablePoles(const std::vector<StabilisationPole>& diagram,
+                                                               double clusterTolerance) {
   std::vector<StabilisationPole> stable;
   for (const auto& p : diagram)
     if (p.stableDamping) stable.push_back(p);
   std::sort(stable.begin(), stable.end(),
             [](const StabilisationPole& a, const StabilisationPole& b) { return a.frequencyHz < b.frequencyHz; });
-  // Greedy clusters: a pole joins the current cluster if within tolerance of the cluster mean.
   std::vector<std::vector<StabilisationPole>> clusters;
   double mean = 0;
   for (const auto& p : stable) {
-    if (clusters.empty() || std::abs(p.frequencyHz - mean) > o.clusterTolerance * mean) {
+    if (clusters.empty() || std::abs(p.frequencyHz - mean) > clusterTolerance * mean) {
       clusters.push_back({p});
       mean = p.frequencyHz;
     } else {
@@ -156,33 +160,53 @@ std::vector<ModalEstimate> selectStableModes(const std::vector<StabilisationPole
       mean += (p.frequencyHz - mean) / clusters.back().size();
     }
   }
+  return clusters;
+}
+
+// One pole per order (the nearest to the cluster median) summarised as a mode estimate.
+ModalEstimate summariseCluster(const std::vector<StabilisationPole>& cluster) {
+  std::vector<double> fs;
+  for (const auto& p : cluster) fs.push_back(p.frequencyHz);
+  const double fMed = calcMedian(fs);
+  std::map<int, StabilisationPole> perOrder;
+  for (const auto& p : cluster) {
+    auto it = perOrder.find(p.order);
+    if (it == perOrder.end() || std::abs(p.frequencyHz - fMed) < std::abs(it->second.frequencyHz - fMed))
+      perOrder[p.order] = p;
+  }
+  std::vector<double> f, z;
+  for (const auto& [order, p] : perOrder) f.push_back(p.frequencyHz), z.push_back(p.dampingRatio);
+  ModalEstimate m;
+  m.frequencyHz = calcMedian(f);
+  m.dampingRatio = calcMedian(z);
+  m.frequencyScatterHz = calcRobustSpread(f);
+  m.dampingScatter = calcRobustSpread(z);
+  m.count = static_cast<int>(perOrder.size());
+  const StabilisationPole* rep = nullptr;
+  for (const auto& [order, p] : perOrder)
+    if (!rep || std::abs(p.frequencyHz - m.frequencyHz) < std::abs(rep->frequencyHz - m.frequencyHz)) rep = &p;
+  m.order = rep->order;
+  m.rawLambda = rep->rawLambda;
+  return m;
+}
+
+}  // namespace
+
+size_t calcRequiredStableOrders(const LscfOptions& o) {
   const int nOrders = o.maxOrder - o.minOrder + 1;
+  return std::max<size_t>(2, static_cast<size_t>(std::ceil(o.minStableFraction * nOrders)));
+}
+
+std::vector<ModalEstimate> selectStableModes(const std::vector<StabilisationPole>& diagram, const LscfOptions& o,
+                                            std::vector<ModalEstimate>* rejected) {
   std::vector<ModalEstimate> modes;
-  for (auto& c : clusters) {
-    std::vector<double> fs;
-    for (const auto& p : c) fs.push_back(p.frequencyHz);
-    const double fMed = calcMedian(fs);
-    std::map<int, StabilisationPole> perOrder;  // one pole per order: the nearest to the median
-    for (const auto& p : c) {
-      auto it = perOrder.find(p.order);
-      if (it == perOrder.end() || std::abs(p.frequencyHz - fMed) < std::abs(it->second.frequencyHz - fMed))
-        perOrder[p.order] = p;
-    }
-    if (perOrder.size() < std::max<size_t>(2, static_cast<size_t>(std::ceil(o.minStableFraction * nOrders)))) continue;
-    std::vector<double> f, z;
-    for (const auto& [order, p] : perOrder) f.push_back(p.frequencyHz), z.push_back(p.dampingRatio);
-    ModalEstimate m;
-    m.frequencyHz = calcMedian(f);
-    m.dampingRatio = calcMedian(z);
-    m.frequencyScatterHz = calcRobustSpread(f);
-    m.dampingScatter = calcRobustSpread(z);
-    m.count = static_cast<int>(perOrder.size());
-    const StabilisationPole* rep = nullptr;
-    for (const auto& [order, p] : perOrder)
-      if (!rep || std::abs(p.frequencyHz - m.frequencyHz) < std::abs(rep->frequencyHz - m.frequencyHz)) rep = &p;
-    m.order = rep->order;
-    m.rawLambda = rep->rawLambda;
-    modes.push_back(m);
+  for (const auto& c : clusterStablePoles(diagram, o.clusterTolerance)) {
+    const ModalEstimate m = summariseCluster(c);
+    // A passive structure has positive damping; <= 0 after removing the window is resolution-limited.
+    if (static_cast<size_t>(m.count) >= calcRequiredStableOrders(o) && m.dampingRatio > 0)
+      modes.push_back(m);
+    else if (rejected)
+      rejected->push_back(m);
   }
   return modes;
 }

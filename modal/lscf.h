@@ -67,8 +67,14 @@ class LscfEstimator {
 /// Poles of every order from minOrder to maxOrder, with stability flags against the previous order.
 std::vector<StabilisationPole> calcStabilisationDiagram(const LscfEstimator& estimator);
 
-/// Clusters poles stable in frequency and damping; a cluster at enough orders is a mode.
-std::vector<ModalEstimate> selectStableModes(const std::vector<StabilisationPole>& diagram, const LscfOptions& options);
+/// Clusters poles stable in frequency and damping; a cluster at enough orders (minStableFraction of the
+/// orders swept, at least 2) with a positive damping ratio (window decay removed) is a mode. Other
+/// clusters go to `rejected` if given.
+std::vector<ModalEstimate> selectStableModes(const std::vector<StabilisationPole>& diagram, const LscfOptions& options,
+                                            std::vector<ModalEstimate>* rejected = nullptr);
+
+/// Number of orders at which a cluster must be stable to count as a mode.
+size_t calcRequiredStableOrders(const LscfOptions& options);
 
 /// Jackknife standard error from leave-one-out estimates: sqrt((n-1)/n sum (x_i - mean)^2).
 double calcJackknifeSpread(const std::vector<double>& leaveOneOutEstimates);

@@ -1,8 +1,12 @@
 #include "scenario/bicycle_parameters.h"
 
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <fstream>
 #include <sstream>
+
+#include <Eigen/Dense>
 
 #include "io/csv.h"
 #include "io/input_error.h"
@@ -41,8 +45,113 @@ std::map<std::string, double> readBicycleParameters(const std::string& file) {
   return out;
 }
 
-std::string convertBicycleParametersToScenario(const std::string& file, const std::string& name) {
-  const auto p = readBicycleParameters(file);
+namespace {
+
+double getOr(const std::map<std::string, double>& p, const std::string& k, double fallback) {
+  const auto it = p.find(k);
+  return it == p.end() ? fallback : it->second;
+}
+
+// Inertia tensor of frame s in the benchmark frame (only the xx, yy, zz, xz keys are required).
+Eigen::Matrix3d getFrameInertia(const std::map<std::string, double>& p, const std::string& s) {
+  const std::string I = "I" + s;
+  const double xy = getOr(p, I + "xy", 0), yz = getOr(p, I + "yz", 0), xz = getOr(p, I + "xz", 0);
+  Eigen::Matrix3d M;
+  M << getOr(p, I + "xx", 0), xy, xz, xy, getOr(p, I + "yy", 0), yz, xz, yz, getOr(p, I + "zz", 0);
+  return M;
+}
+
+// Scenario comment lines recording each repaired inertia.
+std::string formatRepairComments(const std::vector<InertiaRepair>& changes) {
+  std::string c;
+  for (const auto& r : changes)
+    c += "# --repair-inertia: " + r.key + (r.after < r.before ? " lowered" : " raised") + " from " + formatNumber(r.before, 15) + " to " +
+         formatNumber(r.after, 15) + " kg m^2 (" + r.explanation + ")\n";
+  return c;
+}
+
+bool hasFrameInertia(const std::map<std::string, double>& p, const std::string& s) {
+  for (const char* k : {"xx", "yy", "zz", "xz"})
+    if (!p.count("I" + s + k)) return false;
+  return true;
+}
+
+}  // namespace
+
+std::string explainFrameInertia(const std::map<std::string, double>& p, const std::string& s) {
+  if (!hasFrameInertia(p, s)) return "";
+  const Eigen::Matrix3d M = getFrameInertia(p, s);
+  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> es(M);
+  const Eigen::Vector3d l = es.eigenvalues();
+  const double excess = l[2] - l[0] - l[1];
+  if (excess <= 1e-12 * l.sum()) return "";
+  const Eigen::Vector3d e = es.eigenvectors().col(2);
+  int axis = 0;
+  e.cwiseAbs().maxCoeff(&axis);
+  char text[400];
+  std::snprintf(text, sizeof text,
+                "I%s: principal moments %.6g, %.6g, %.6g kg m^2 break the triangle inequality: the largest (%.6g, "
+                "about an axis within %.1f deg of %c) exceeds the sum of the other two (%.6g) by %.4g kg m^2 "
+                "(%.2f %%), which no rigid body can do",
+                s.c_str(), l[0], l[1], l[2], l[2], std::acos(std::min(1.0, std::abs(e[axis]))) * 180 / M_PI, "xyz"[axis],
+                l[0] + l[1], excess, 100 * excess / (l[0] + l[1]));
+  return text;
+}
+
+std::vector<InertiaRepair> repairFrameInertias(std::map<std::string, double>& p, const std::string& file) {
+  std::vector<InertiaRepair> out;
+  for (const std::string s : {"B", "H"}) {
+    const std::string why = explainFrameInertia(p, s), key = "I" + s + "yy";
+    if (why.empty()) continue;
+    const Eigen::Matrix3d M = getFrameInertia(p, s);
+    if (M(0, 1) != 0 || M(1, 2) != 0)
+      throw InputError({file, 0, 0, key}, why + "; --repair-inertia needs a frame symmetric about the x-z plane "
+                                               "(I" + s + "xy = I" + s + "yz = 0)");
+    // y is principal; the x-z block has moments m -/+ r. The triangle inequality holds for
+    // |l_xz1 - l_xz2| = 2 r <= I_yy <= l_xz1 + l_xz2 = I_xx + I_zz: clamp I_yy onto the violated bound.
+    const double r = std::hypot(0.5 * (M(0, 0) - M(2, 2)), M(0, 2));
+    const double after = std::clamp(M(1, 1), 2 * r, M(0, 0) + M(2, 2));
+    p[key] = after;
+    out.push_back({key, M(1, 1), after, why});
+  }
+  return out;
+}
+
+std::string quoteYamlString(const std::string& text) {
+  std::string q = "\"";
+  for (const char ch : text) {
+    if (ch == '"' || ch == '\\') q += '\\', q += ch;
+    else if (static_cast<unsigned char>(ch) < 0x20) {
+      char b[8];
+      std::snprintf(b, sizeof b, "\\x%02x", static_cast<unsigned char>(ch));
+      q += b;
+    } else q += ch;
+  }
+  return q + "\"";
+}
+
+namespace {
+
+// Without repair an impossible frame inertia is an InputError with the explanation and the way out.
+std::vector<InertiaRepair> applyInertiaPolicy(std::map<std::string, double>& p, const std::string& file, bool repair) {
+  if (repair) return repairFrameInertias(p, file);
+  for (const std::string s : {"B", "H"}) {
+    const std::string why = explainFrameInertia(p, s);
+    if (!why.empty())
+      throw InputError({file, 0, 0, "I" + s + "yy"},
+                       why + ". --repair-inertia moves I" + s + "yy just onto the bound: the linearised Whipple model "
+                       "(Meijaard et al. 2007) does not use the frames' I_yy, so its eigenvalues stay those of the file");
+  }
+  return {};
+}
+
+}  // namespace
+
+std::string convertBicycleParametersToScenario(const std::string& file, const std::string& name,
+                                               const BicycleImportOptions& options, std::vector<InertiaRepair>* repairs) {
+  auto p = readBicycleParameters(file);
+  const auto changes = applyInertiaPolicy(p, file, options.repairInertia);
+  if (repairs) *repairs = changes;
   auto get = [&](const std::string& k) {
     const auto it = p.find(k);
     if (it == p.end()) throw InputError({file, 0, 0, k}, "missing parameter");
@@ -53,7 +162,7 @@ std::string convertBicycleParametersToScenario(const std::string& file, const st
   std::ostringstream y;
   y << "# Imported from " << file << " (BicycleParameters benchmark format, Moore et al. 2010).\n"
     << "# Benchmark frame (y right, z down) converted to the design frame (y left, z up): z and I_xz change sign.\n"
-    << "name: " << name << "\n"
+    << formatRepairComments(changes) << "name: " << quoteYamlString(name) << "\n"
     << "description: imported benchmark parameters\n"
     << "gravity_mps2: " << num(get("g")) << "\n"
     << "speeds_mps: {start: 0, stop: 10, step: 0.1}\n"

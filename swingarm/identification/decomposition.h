@@ -4,8 +4,8 @@
 #include <filesystem>
 #include <string>
 
-#include "swingarm/identification/frf_test.h"
-#include "swingarm/identification/static_test.h"
+#include "swingarm/identification/hammer_frf.h"
+#include "swingarm/identification/static_laser.h"
 
 namespace motostab::identification {
 

@@ -9,9 +9,9 @@
 #include <vector>
 
 #include "modal/spectra.h"
-#include "swingarm/identification/frf_test.h"
+#include "swingarm/identification/hammer_frf.h"
 #include "swingarm/identification/mass_properties.h"
-#include "swingarm/identification/static_test.h"
+#include "swingarm/identification/static_laser.h"
 
 namespace motostab::identification {
 

@@ -9,4 +9,11 @@ YamlMap openTestFile(const std::filesystem::path& file, const std::string& kind)
   return root;
 }
 
+PlatePoint readForcePoint(YamlMap& root) {
+  YamlMap fp = root.getMap("force_point");
+  const PlatePoint p{fp.getDouble("x"), fp.getDouble("z")};
+  fp.finish();
+  return p;
+}
+
 }  // namespace motostab::identification

@@ -6,10 +6,14 @@
 #include <string>
 
 #include "scenario/yaml_map.h"
+#include "swingarm/identification/plate_motion.h"
 
 namespace motostab::identification {
 
 /// Loads a test description and checks its `test: <kind>` key (consumed).
 YamlMap openTestFile(const std::filesystem::path& file, const std::string& kind);
+
+/// The required `force_point: {x, z}` of a static or hammer test (m; consumed).
+PlatePoint readForcePoint(YamlMap& root);
 
 }  // namespace motostab::identification

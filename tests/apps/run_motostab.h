@@ -40,4 +40,12 @@ inline std::string readLog(const std::string& log) {
   return ss.str();
 }
 
+/// Runs `motostab args...` in `dir` to completion; its exit code, with stdout + stderr in `output`.
+inline int runMotostab(const std::vector<std::string>& args, const std::string& dir, std::string& output) {
+  const std::string log = dir + "/motostab_run.log";
+  const int code = waitForExit(startMotostab(args, dir, log));
+  output = readLog(log);
+  return code;
+}
+
 }  // namespace motostab::test

@@ -5,8 +5,8 @@
 #include <functional>
 
 #include "io/input_error.h"
-#include "swingarm/identification/frf_test.h"
-#include "swingarm/identification/static_test.h"
+#include "swingarm/identification/hammer_frf.h"
+#include "swingarm/identification/static_laser.h"
 #include "temp_dir.h"
 
 namespace {

@@ -1,4 +1,4 @@
-#include "swingarm/identification/static_test.h"
+#include "swingarm/identification/static_laser.h"
 
 #include <cmath>
 #include <cstdio>
@@ -18,9 +18,7 @@ StaticTest readStaticTest(const std::filesystem::path& file) {
   StaticTest t;
   t.file = file;
   t.frame = root.getString("frame", "");
-  YamlMap fp = root.getMap("force_point");
-  t.forcePoint = {fp.getDouble("x"), fp.getDouble("z")};
-  fp.finish();
+  t.forcePoint = readForcePoint(root);
   std::set<std::string> names;
   std::vector<PlatePoint> points;
   for (YamlMap& m : root.getMapList("sensors")) {

@@ -3,7 +3,7 @@
 
 #include <cmath>
 
-#include "swingarm/identification/static_test.h"
+#include "swingarm/identification/static_laser.h"
 #include "swingarm/identification/virtual_rig.h"
 #include "rig_truth.h"
 

@@ -1,10 +1,12 @@
 #pragma once
 // Hammer test: H1 FRFs averaged over hits, hit checks, LSCF modal parameters with a stabilisation
-// diagram, half-power quick estimates, and modal (dynamic) twist axes from the 3-point ODS.
+// diagram (band and orders chosen from the data unless given), half-power quick estimates, and modal
+// (dynamic) twist axes from the 3-point ODS (seed sec. 2.1-2.2).
 #include <filesystem>
 #include <string>
 #include <vector>
 
+#include "modal/automatic_settings.h"
 #include "modal/lscf.h"
 #include "modal/peak_picking.h"
 #include "modal/spectra.h"
@@ -28,9 +30,9 @@ struct FrfTest {
   std::vector<std::filesystem::path> hits;
   std::string timeColumn = "time_s", forceColumn = "force_N";
   // Optional processing settings (key `processing`).
-  double bandMinHz = 0, bandMaxHz = 0;   ///< 0 = automatic (5 bins .. 0.8 Nyquist)
-  int minOrder = 4, maxOrder = 40;
-  double exponentialEndValue = 0.05;
+  double bandMinHz = 0, bandMaxHz = 0;   ///< Hz; both 0 = automatic (modal/automatic_settings.h)
+  int minOrder = 0, maxOrder = 0;        ///< LSCF orders swept; both 0 = automatic from the indicator peaks
+  double exponentialEndValue = 0;        ///< exponential window at the record end; 0 = automatic
   bool forceWindow = true;
   double doubleHitFraction = 0.1;
   double forceRange = 0, responseRange = 0;  ///< N, m/s^2; 0 = not given
@@ -66,20 +68,29 @@ struct FrfResult {
   modal::FrfEstimate frf;
   std::vector<std::string> usedHits, rejectedHits;  ///< rejected: "file: reason"
   modal::LscfOptions options;
+  modal::BandChoice band;                          ///< the band used and where it came from
+  modal::WindowChoice window;                      ///< the exponential window used and why
+  bool automaticBand = true, automaticOrders = true;
+  std::string orderReason;                         ///< why these orders ("from 2 indicator peaks: 2n .. 4n + 24")
+  std::vector<modal::IndicatorPeak> indicatorPeaks;  ///< mode indicator peaks in the band
   std::vector<modal::StabilisationPole> diagram;
+  std::vector<modal::ModalEstimate> rejectedClusters;  ///< stable-pole clusters at too few orders
+  std::vector<std::string> diagnostics;  ///< indicator peaks without a stable mode; a missing bending/torsion mode
   std::vector<modal::PeakEstimate> peaks;
   std::vector<ModeResult> modes;
   std::vector<modal::ModalModel> models;  ///< per channel, 1/|H|-weighted LSFD, for the overlay
   int bendingIndex = -1, torsionIndex = -1;
 };
 
-/// Runs the chain: hit checks (double hit, overload: rejected), force + exponential windows, H1 and
-/// coherence, LSCF stabilisation diagram and stable-mode selection (uncertainty = jackknife over hits
-/// combined with the scatter over model orders), half-power estimates, ODS twist axes (the ODS at the
-/// bin nearest each damped natural frequency, its quadrature part Im(H1), fitted by the plate plane; or,
-/// with modal_axes_from: modal_model, the quadrature part of the LSFD residues),
-/// and bending/torsion labels (hints, else the lowest mode whose axis is within 45 deg of normal to x
-/// is bending and the lowest within 45 deg of x is torsion).
+/// Runs the chain in named stages (docs/swingarm-identification.md, "Processing chain"): hit checks
+/// (double hit, overload: rejected), force + exponential windows, H1 and coherence, band and model orders
+/// (processing keys, else from the data: modal/automatic_settings.h), LSCF stabilisation diagram and
+/// stable-mode selection (Peeters et al. 2004; uncertainty = jackknife over hits combined with the scatter
+/// over model orders), half-power estimates, ODS twist axes (seed sec. 2.1: the quadrature part Im(H1) of the
+/// ODS at the bin nearest each damped natural frequency, fitted by the plate plane; or, with
+/// modal_axes_from: modal_model, the quadrature part of the LSFD residues), bending/torsion labels (hints,
+/// else the most strongly excited mode whose axis is within 45 deg of normal to x is bending, of x torsion)
+/// and diagnostics (swingarm/identification/frf_diagnosis.h). Frequencies in Hz, damping ratios viscous.
 FrfResult identifyFrf(const FrfTest& test, const std::vector<modal::ImpactRecord>& hits);
 
 /// Writes DIR/frf.csv, DIR/modes.csv, DIR/stabilisation.csv, DIR/frf.json and the plots
