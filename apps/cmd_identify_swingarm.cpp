@@ -8,12 +8,14 @@
 #include "apps/commands.h"
 #include "apps/common_options.h"
 #include "io/input_error.h"
+#include "io/atomic_file.h"
 #include "io/output_folder.h"
 #include "swingarm/identification/decomposition.h"
 #include "swingarm/identification/frf_diagnosis.h"
 #include "swingarm/identification/hammer_frf.h"
 #include "swingarm/identification/mass_properties.h"
 #include "swingarm/identification/static_laser.h"
+#include "swingarm/identification/swingarm_uncertainty.h"
 #include "swingarm/identification/virtual_rig.h"
 
 namespace motostab::cli {
@@ -88,9 +90,10 @@ void runSwingarm(const Args& args) {
   id::writeStaticOutputs(st, sr, folder.getPath());
   id::writeFrfOutputs(ft, fr, folder.getPath() / "frf");
   id::writeSwingarmOutputs(swr, st, ft, folder.getPath());
+  writeFileAtomically(folder.getPath() / "swingarm_uncertainty.yaml", id::formatSwingarmUncertainty(swr));
   folder.commit();
   const std::filesystem::path out(args.out);
-  std::printf("swingarm: k_b %.6g +/- %.2g, k_t %.6g +/- %.2g Nm/rad; c_b %.4g, c_t %.4g, c_tw %.4g Nms/rad -> %s\n",
+  std::printf("swingarm: k_b %.6g +/- %.2g, k_t %.6g +/- %.2g Nm/rad; c_b %.4g, c_t %.4g, c_tw %.4g Nms/rad -> %s (standard errors: swingarm_uncertainty.yaml)\n",
               swr.bending.stiffness.value, swr.bending.stiffness.stderr_, swr.torsion.stiffness.value,
               swr.torsion.stiffness.stderr_, swr.bending.damping.value, swr.torsion.damping.value,
               swr.twist.damping.value, (out / "swingarm.yaml").c_str());

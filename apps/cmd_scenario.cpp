@@ -5,6 +5,7 @@
 #include "apps/commands.h"
 #include "io/atomic_file.h"
 #include "scenario/bicycle_parameters.h"
+#include "scenario/bicycle_parameters_uncertainty.h"
 #include "vehicle/vehicle_model.h"
 
 namespace motostab::cli {
@@ -87,7 +88,7 @@ void registerScenarioCommands(CLI::App& app) {
     std::vector<InertiaRepair> repairs;
     const std::string text = convertBicycleParametersToScenario(imp->file, name, {imp->repairInertia}, &repairs);
     printInertiaRepairs(repairs);
-    writeFileAtomically(imp->out, text);
+    writeFileAtomically(imp->out, text + formatBicycleParametersUncertainty(readBicycleParameterSigmas(imp->file)));
     loadScenario(imp->out);  // what we write must load
     std::cout << "Wrote " << imp->out << "\n";
   });

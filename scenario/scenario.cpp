@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "scenario/extension_specs.h"
+#include "scenario/parameter_paths.h"
 #include "scenario/yaml_map.h"
 
 namespace motostab {
@@ -82,6 +83,45 @@ Vec3d calcSwingarmCom(const Scenario& s) {
   Vec3d c = f.origin;
   for (int i = 0; i < 3; ++i) c[i] += f.x[i] * c_S[0] + f.y[i] * c_S[1] + f.z[i] * c_S[2];
   return c;
+}
+
+// One entry of the uncertainty section: `path: sigma` or `path: {sigma: s, distribution: d}`.
+ParameterUncertainty readUncertaintyEntry(YamlMap& m, const std::string& path) {
+  using D = ParameterUncertainty::Distribution;
+  ParameterUncertainty u;
+  u.path = path;
+  u.where = m.locate(path);
+  if (m.getNode()[path].IsMap()) {
+    YamlMap e = m.getMap(path);
+    u.sigma = e.getNonNegative("sigma");
+    const std::string d = e.getString("distribution", "normal");
+    if (d == "uniform") u.distribution = D::Uniform;
+    else if (d == "lognormal") u.distribution = D::Lognormal;
+    else if (d != "normal") e.fail("distribution", "expected normal, uniform or lognormal (got '" + d + "')");
+    e.finish();
+  } else {
+    u.sigma = m.getNonNegative(path);
+  }
+  return u;
+}
+
+// The `uncertainty:` section: key paths as --set takes them, each naming a number of the scenario
+// tree (checked with getScalarParameter), with a standard deviation >= 0 in the key's own unit.
+std::vector<ParameterUncertainty> readUncertainty(YamlMap m, const YAML::Node& tree) {
+  std::vector<ParameterUncertainty> out;
+  for (const auto& kv : m.getNode()) {
+    const std::string path = kv.first.as<std::string>();
+    if (path == "uncertainty" || path.rfind("uncertainty.", 0) == 0 || path.rfind("uncertainty[", 0) == 0)
+      m.fail(path, "an uncertainty cannot refer to the uncertainty section");
+    try {
+      getScalarParameter(tree, path);
+    } catch (const InputError& e) {
+      m.fail(path, "not a numeric parameter of the scenario: " + e.getReason());
+    }
+    out.push_back(readUncertaintyEntry(m, path));
+  }
+  m.finish();
+  return out;
 }
 
 }  // namespace
@@ -214,6 +254,7 @@ Scenario readScenario(const std::string& file, YamlMap& m) {
                                         "), relative to this file; a bare name is not searched for");
     s.plugins = m.getFilePathList("plugins");
   }
+  if (m.has("uncertainty")) s.uncertainty = readUncertainty(m.getMap("uncertainty"), m.getNode());
   m.finish();
   return s;
 }

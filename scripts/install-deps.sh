@@ -2,7 +2,7 @@
 # Installs the Debian packages motostab needs, only those missing. Run as root (or with sudo available).
 set -euo pipefail
 pkgs=(cmake g++ make libsimbody-dev libeigen3-dev libyaml-cpp-dev libcli11-dev nlohmann-json3-dev
-      libfftw3-dev libgtest-dev libbenchmark-dev gnuplot-nox)
+      libfftw3-dev libgtest-dev libbenchmark-dev gnuplot-nox libopenmpi-dev openmpi-bin)
 missing=()
 for p in "${pkgs[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
