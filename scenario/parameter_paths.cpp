@@ -1,6 +1,8 @@
 #include "scenario/parameter_paths.h"
 
 #include <cmath>
+#include <utility>
+#include <vector>
 #include <cstdio>
 
 #include "io/input_error.h"
@@ -62,11 +64,19 @@ std::vector<ScalarParameter> listScalarParameters(const YAML::Node& tree) {
     const YAML::Node n = findKeyPath(tree, section);
     if (n && n.IsMap()) collect(n, section, out);
   }
-  const YAML::Node swingarm = findKeyPath(tree, "swingarm");
-  if (swingarm && swingarm.IsMap()) {
-    for (const char* key : {"pivot_m", "mass_kg", "com_m", "inertia_kgm2"}) {
-      const YAML::Node n = findKeyPath(swingarm, key);
-      if (n) collect(n, std::string("swingarm.") + key, out);
+  // Measured parts of optional sections: the swingarm, the leaning rider's upper body (issue 10)
+  // and the fork's hub carrier when given explicitly.
+  const std::pair<const char*, std::vector<const char*>> sections[] = {
+      {"swingarm", {"pivot_m", "mass_kg", "com_m", "inertia_kgm2"}},
+      {"rider_lean", {"hinge_height_m", "mass_kg", "com_m", "inertia_kgm2"}},
+      {"fork_compliance.carrier", {"mass_kg", "com_m", "inertia_kgm2"}},
+  };
+  for (const auto& [name, keys] : sections) {
+    const YAML::Node section = findKeyPath(tree, name);
+    if (!section || !section.IsMap()) continue;
+    for (const char* key : keys) {
+      const YAML::Node n = findKeyPath(section, key);
+      if (n) collect(n, std::string(name) + "." + key, out);
     }
   }
   setInertiaScales(out);

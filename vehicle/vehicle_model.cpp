@@ -4,6 +4,10 @@
 #include "tyres/relaxation_linear.h"
 #include "tyres/rolling_no_slip.h"
 #include "vehicle/aerodynamics.h"
+#include "vehicle/body_builder.h"
+#include "vehicle/fork_compliance.h"
+#include "vehicle/rider_lean.h"
+#include "vehicle/steer_damper.h"
 
 namespace motostab {
 
@@ -23,16 +27,6 @@ PluginRegistry makeBuiltinRegistry() {
 
 namespace {
 
-Vec3 toVec3(const Vec3d& v) { return Vec3(v[0], v[1], v[2]); }
-
-// Rigid body with its origin at `origin_D` (design frame), axes parallel to the design frame.
-SimTK::Body::Rigid makeBody(const BodySpec& b, const Vec3& origin_D) {
-  const Vec3 com_B = toVec3(b.com) - origin_D;
-  const SimTK::Inertia I_com(Vec3(b.inertia.xx, b.inertia.yy, b.inertia.zz),
-                             Vec3(b.inertia.xy, b.inertia.xz, b.inertia.yz));
-  return SimTK::Body::Rigid(SimTK::MassProperties(b.mass, com_B, I_com.shiftFromMassCenter(-com_B, b.mass)));
-}
-
 SimTK::Body::Rigid makeWheel(const WheelSpec& w) {
   return SimTK::Body::Rigid(SimTK::MassProperties(
       w.mass, Vec3(0), SimTK::Inertia(w.diametralInertia, w.axialInertia, w.diametralInertia)));
@@ -48,6 +42,120 @@ MobilizedBody::Pin addSuspension(BuildContext& ctx, MobilizedBody& rearFrame, co
   SimTK::Force::MobilityLinearSpring(ctx.forces, link, SimTK::MobilizerQIndex(0), su.stiffness, freeAngle);
   SimTK::Force::MobilityLinearDamper(ctx.forces, link, SimTK::MobilizerUIndex(0), su.damping);
   return link;
+}
+
+// What addRearAssembly and addFrontAssembly built: the mobilizers, the swingarm model, and the
+// named one-DOF mobilizers (swingarm compliance, rider_lean, fork_bending, fork_torsion).
+using NamedMobilizers = std::vector<std::pair<std::string, MobilizedBody>>;
+struct RearAssembly {
+  MobilizedBody rearFrame, rearWheel, suspension;
+  std::unique_ptr<SwingarmModel> swingarm;
+  NamedMobilizers compliance, extension;
+};
+struct FrontAssembly {
+  MobilizedBody frontFrame, frontWheel;
+  NamedMobilizers extension;
+};
+struct CoordinateNames {
+  CoordinateIndices idx;
+  std::vector<std::string> q, u;
+};
+
+// Rear frame on a Bushing whose frames are permuted (F.x = G.z, F.y = G.x, F.z = G.y) so that its
+// body-fixed 1-2-3 angles are yaw, roll, pitch and its translations are height, x, y; with a leaning
+// rider the upper body is its own body and the rear frame keeps the rest. The rear wheel hangs from the
+// rear frame, or from the swingarm's hub carrier.
+RearAssembly addRearAssembly(const Scenario& s, PluginRegistry& registry, BuildContext& ctx) {
+  RearAssembly out;
+  const Vec3 pRearHub_D(0, 0, s.rearWheel.radius);
+  const Rotation R_perm(SimTK::Mat33(0, 1, 0, 0, 0, 1, 1, 0, 0), true);
+  const BodySpec rearBody = s.hasRiderLean ? calcBodyRemainder(s.rearFrame, s.riderLean.body) : s.rearFrame;
+  out.rearFrame = MobilizedBody::Bushing(ctx.matter.Ground(), Transform(R_perm, Vec3(0)), makeBody(rearBody, pRearHub_D),
+                                         Transform(R_perm, Vec3(0)));
+  if (s.hasRiderLean) out.extension.push_back({"rider_lean", addRiderLean(ctx, out.rearFrame, pRearHub_D, s.riderLean)});
+  if (!s.hasSwingarm) {
+    out.rearWheel = addPinAtDesignPose(out.rearFrame, Transform(), makeWheel(s.rearWheel), Vec3(0), Vec3(0, 1, 0));
+    return out;
+  }
+  out.swingarm = registry.createSwingarmModel(s.swingarm);
+  const SwingarmFrame f = calcSwingarmFrame(s);
+  const Rotation R_RS(SimTK::Mat33(f.x[0], f.y[0], f.z[0], f.x[1], f.y[1], f.z[1], f.x[2], f.y[2], f.z[2]), true);
+  // The swingarm hangs from the rear frame, or from the suspension link (compliance in series).
+  MobilizedBody armParent = out.rearFrame;
+  Vec3 p_PS = toVec3(f.origin) - pRearHub_D;
+  if (s.swingarm.hasSuspension) {
+    out.suspension = armParent = addSuspension(ctx, out.rearFrame, p_PS, s);
+    p_PS = Vec3(0);
+  }
+  const SwingarmSite site{armParent, Transform(R_RS, p_PS), Vec3(f.length, 0, 0), makeBody(s.swingarm.body, Vec3(0))};
+  const SwingarmAssembly arm = out.swingarm->addSwingarm(ctx, site);
+  MobilizedBody carrier = arm.hubCarrier;
+  out.rearWheel = addPinAtDesignPose(carrier, arm.X_CH, makeWheel(s.rearWheel), Vec3(0), Vec3(0, 1, 0));
+  out.compliance = arm.coordinates;
+  return out;
+}
+
+// Front frame on the steer axis through the ground point (w + c, 0, 0), tilted back by lambda; the
+// front wheel on it, or on the fork's hub carrier (fork_compliance).
+FrontAssembly addFrontAssembly(const Scenario& s, BuildContext& ctx, MobilizedBody& rearFrame) {
+  FrontAssembly out;
+  const double w = s.geometry.wheelbase, lambda = s.geometry.steerAxisTilt;
+  const Vec3 pRearHub_D(0, 0, s.rearWheel.radius), pFrontHub_D(w, 0, s.frontWheel.radius);
+  const Vec3 steerAxis(-std::sin(lambda), 0, std::cos(lambda));
+  const Vec3 pSteer_D(w + s.geometry.trail, 0, 0);
+  const BodySpec frontBody = s.hasForkCompliance ? calcBodyRemainder(s.frontFrame, s.forkCompliance.carrier) : s.frontFrame;
+  out.frontFrame = addPinAtDesignPose(rearFrame, Transform(pFrontHub_D - pRearHub_D), makeBody(frontBody, pFrontHub_D),
+                                      pSteer_D - pFrontHub_D, steerAxis);
+  MobilizedBody carrier = out.frontFrame;
+  if (s.hasForkCompliance) {
+    const ForkAssembly fork = addForkCompliance(ctx, out.frontFrame, pFrontHub_D, s);
+    carrier = fork.hubCarrier;
+    out.extension = fork.coordinates;
+  }
+  out.frontWheel = addPinAtDesignPose(carrier, Transform(), makeWheel(s.frontWheel), Vec3(0), Vec3(0, 1, 0));
+  return out;
+}
+
+// Indices and names of the coordinates (q) and speeds (u) of a realized-to-Model state.
+CoordinateNames nameCoordinates(const SimTK::State& state, const RearAssembly& rear, const FrontAssembly& front) {
+  CoordinateNames out;
+  CoordinateIndices& idx = out.idx;
+  std::vector<std::string>& names = out.q;
+  const int qR = rear.rearFrame.getFirstQIndex(state);
+  idx.yaw = qR;
+  idx.roll = qR + 1;
+  idx.pitch = qR + 2;
+  idx.height = qR + 3;
+  idx.x = qR + 4;
+  idx.y = qR + 5;
+  idx.steer = front.frontFrame.getFirstQIndex(state);
+  idx.rearSpin = rear.rearWheel.getFirstQIndex(state);
+  idx.frontSpin = front.frontWheel.getFirstQIndex(state);
+  names.assign(state.getNQ(), "");
+  const std::pair<int, const char*> fixed[] = {{idx.yaw, "yaw"}, {idx.roll, "roll"}, {idx.pitch, "pitch"},
+                                               {idx.height, "height"}, {idx.x, "x"}, {idx.y, "y"},
+                                               {idx.steer, "steer"}, {idx.rearSpin, "rear_wheel_angle"},
+                                               {idx.frontSpin, "front_wheel_angle"}};
+  for (const auto& [q, name] : fixed) names[q] = name;
+  if (!rear.suspension.isEmptyHandle()) {
+    idx.suspension = rear.suspension.getFirstQIndex(state);
+    names[idx.suspension] = "suspension_pitch";
+  }
+  auto addNames = [&](const NamedMobilizers& list, std::vector<int>& indices) {
+    for (const auto& [n, mobod] : list) {
+      const int q = mobod.getFirstQIndex(state);
+      names[q] = n;
+      indices.push_back(q);
+    }
+  };
+  addNames(rear.compliance, idx.compliance);
+  addNames(rear.extension, idx.extension);
+  addNames(front.extension, idx.extension);
+  for (const auto& n : names) out.u.push_back(n + "_rate");
+  out.u[idx.x] = "vx";
+  out.u[idx.y] = "vy";
+  out.u[idx.height] = "vz";
+  return out;
 }
 
 }  // namespace
@@ -83,61 +191,30 @@ void VehicleModel::build(PluginRegistry& registry, const std::vector<ModelExtens
   registry_ = registry;
   extensions_ = extensions;
   auto contact = registry.createContactModel(s.contact);
+  BuildContext ctx{system_, matter_, forces_, s.gravity};
 
-  const double w = s.geometry.wheelbase, c = s.geometry.trail, lambda = s.geometry.steerAxisTilt;
-  const double rR = s.rearWheel.radius, rF = s.frontWheel.radius;
-  const Vec3 pRearHub_D(0, 0, rR), pFrontHub_D(w, 0, rF);
-
-  // Rear frame on a Bushing whose frames are permuted (F.x = G.z, F.y = G.x, F.z = G.y) so that
-  // its body-fixed 1-2-3 angles are yaw, roll, pitch and its translations are height, x, y.
-  const Rotation R_perm(SimTK::Mat33(0, 1, 0, 0, 0, 1, 1, 0, 0), true);
-  rearFrame_ = MobilizedBody::Bushing(matter_.Ground(), Transform(R_perm, Vec3(0)), makeBody(s.rearFrame, pRearHub_D),
-                                      Transform(R_perm, Vec3(0)));
-  // Rear wheel: on the rear frame, or on the swingarm's hub carrier.
-  std::vector<std::pair<std::string, MobilizedBody>> compliance;
-  MobilizedBody suspension;
-  if (s.hasSwingarm) {
-    auto swingarmModel = registry.createSwingarmModel(s.swingarm);
-    const SwingarmFrame f = calcSwingarmFrame(s);
-    const Rotation R_RS(SimTK::Mat33(f.x[0], f.y[0], f.z[0], f.x[1], f.y[1], f.z[1], f.x[2], f.y[2], f.z[2]), true);
-    BuildContext swingarmCtx{system_, matter_, forces_, s.gravity};
-    // The swingarm hangs from the rear frame, or from the suspension link (compliance in series).
-    MobilizedBody armParent = rearFrame_;
-    Vec3 p_PS = toVec3(f.origin) - pRearHub_D;
-    if (s.swingarm.hasSuspension) {
-      suspension = armParent = addSuspension(swingarmCtx, rearFrame_, p_PS, s);
-      p_PS = Vec3(0);
-    }
-    const SwingarmSite site{armParent, Transform(R_RS, p_PS), Vec3(f.length, 0, 0), makeBody(s.swingarm.body, Vec3(0))};
-    const SwingarmAssembly arm = swingarmModel->addSwingarm(swingarmCtx, site);
-    MobilizedBody carrier = arm.hubCarrier;
-    rearWheel_ = addPinAtDesignPose(carrier, arm.X_CH, makeWheel(s.rearWheel), Vec3(0), Vec3(0, 1, 0));
-    compliance = arm.coordinates;
-    swingarm_ = std::move(swingarmModel);
-  } else {
-    rearWheel_ = addPinAtDesignPose(rearFrame_, Transform(), makeWheel(s.rearWheel), Vec3(0), Vec3(0, 1, 0));
-  }
-  // Steer axis through the ground point (w + c, 0, 0), tilted back by lambda.
-  const Vec3 steerAxis(-std::sin(lambda), 0, std::cos(lambda));
-  const Vec3 pSteer_D(w + c, 0, 0);
-  frontFrame_ = addPinAtDesignPose(rearFrame_, Transform(pFrontHub_D - pRearHub_D), makeBody(s.frontFrame, pFrontHub_D),
-                                   pSteer_D - pFrontHub_D, steerAxis);
-  frontWheel_ = addPinAtDesignPose(frontFrame_, Transform(), makeWheel(s.frontWheel), Vec3(0), Vec3(0, 1, 0));
+  RearAssembly rear = addRearAssembly(s, registry, ctx);
+  rearFrame_ = rear.rearFrame;
+  rearWheel_ = rear.rearWheel;
+  swingarm_ = std::move(rear.swingarm);
+  const FrontAssembly front = addFrontAssembly(s, ctx, rearFrame_);
+  frontFrame_ = front.frontFrame;
+  frontWheel_ = front.frontWheel;
 
   SimTK::Force::Gravity(forces_, matter_, -SimTK::ZAxis, s.gravity);
   inputs_ = SimTK::Force::DiscreteForces(forces_, matter_);
-
   const auto loads = calcStaticWheelLoads(s);
-  BuildContext ctx{system_, matter_, forces_, s.gravity};
-  const WheelSite rear{"rear_wheel", rearWheel_, rR, s.rearWheel.crownRadius, loads[0]};
-  const WheelSite front{"front_wheel", frontWheel_, rF, s.frontWheel.crownRadius, loads[1]};
-  wheelSites_ = {rear, front};
-  for (const WheelSite* site : {&rear, &front}) {
+  const WheelSite rearSite{"rear_wheel", rearWheel_, s.rearWheel.radius, s.rearWheel.crownRadius, loads[0]};
+  const WheelSite frontSite{"front_wheel", frontWheel_, s.frontWheel.radius, s.frontWheel.crownRadius, loads[1]};
+  wheelSites_ = {rearSite, frontSite};
+  for (const WheelSite* site : {&rearSite, &frontSite}) {
     contact->addWheel(ctx, *site);
     for (const auto& n : contact->getStateNames(*site)) zNames_.push_back(n);
   }
   contacts_.push_back(std::move(contact));
+  const Vec3 pRearHub_D(0, 0, s.rearWheel.radius);
   if (s.hasAerodynamics) addAerodynamicDrag(ctx, rearFrame_, s.aerodynamics, toVec3(s.aerodynamics.centreOfPressure) - pRearHub_D);
+  if (s.hasSteerDamper) addSteerDamper(ctx, frontFrame_, s.steerDamper);
   for (const auto& extend : extensions)
     for (const auto& n : extend(ctx, *this)) zNames_.push_back(n);
 
@@ -147,42 +224,11 @@ void VehicleModel::build(PluginRegistry& registry, const std::vector<ModelExtens
   if (defaultState_.getNU() != nq_) throw std::logic_error("vehicle model: every mobilizer must have u = qdot");
   if (defaultState_.getNZ() != static_cast<int>(zNames_.size()))
     throw std::logic_error("vehicle model: contact plugins allocated z states they did not name");
-
-  const int qR = rearFrame_.getFirstQIndex(defaultState_);
-  idx_.yaw = qR;
-  idx_.roll = qR + 1;
-  idx_.pitch = qR + 2;
-  idx_.height = qR + 3;
-  idx_.x = qR + 4;
-  idx_.y = qR + 5;
-  idx_.steer = frontFrame_.getFirstQIndex(defaultState_);
-  idx_.rearSpin = rearWheel_.getFirstQIndex(defaultState_);
-  idx_.frontSpin = frontWheel_.getFirstQIndex(defaultState_);
-  qNames_.assign(nq_, "");
-  qNames_[idx_.yaw] = "yaw";
-  qNames_[idx_.roll] = "roll";
-  qNames_[idx_.pitch] = "pitch";
-  qNames_[idx_.height] = "height";
-  qNames_[idx_.x] = "x";
-  qNames_[idx_.y] = "y";
-  qNames_[idx_.steer] = "steer";
-  qNames_[idx_.rearSpin] = "rear_wheel_angle";
-  qNames_[idx_.frontSpin] = "front_wheel_angle";
-  if (!suspension.isEmptyHandle()) {
-    idx_.suspension = suspension.getFirstQIndex(defaultState_);
-    qNames_[idx_.suspension] = "suspension_pitch";
-  }
-  for (const auto& [name, mobod] : compliance) {
-    const int q = mobod.getFirstQIndex(defaultState_);
-    qNames_[q] = name;
-    idx_.compliance.push_back(q);
-  }
-  for (const auto& n : qNames_) uNames_.push_back(n + "_rate");
-  uNames_[idx_.x] = "vx";
-  uNames_[idx_.y] = "vy";
-  uNames_[idx_.height] = "vz";
-
-  defaultState_.updQ()[idx_.height] = rR;
+  CoordinateNames names = nameCoordinates(defaultState_, rear, front);
+  idx_ = names.idx;
+  qNames_ = std::move(names.q);
+  uNames_ = std::move(names.u);
+  defaultState_.updQ()[idx_.height] = s.rearWheel.radius;
   system_.realize(defaultState_, SimTK::Stage::Instance);
 }
 
