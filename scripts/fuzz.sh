@@ -7,6 +7,8 @@ set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 seconds="${1:-60}"
 shift || true
+# A fixed seed makes a run repeatable: the inputs CI tries are a prefix of a longer local run's.
+seed="${MOTOSTAB_FUZZ_SEED:-1}"
 MOTOSTAB_FUZZ_DEPS=1 "$root/scripts/install-deps.sh"
 export MOTOSTAB_BUILD_DIR=build-fuzz
 export MOTOSTAB_CMAKE_ARGS="-DCMAKE_CXX_COMPILER=clang++-14 -DMOTOSTAB_FUZZ=ON -DMOTOSTAB_BUILD_BENCH=OFF"
@@ -24,7 +26,7 @@ for t in "${targets[@]}"; do
   echo "fuzz_$t: ${seconds} s"
   # New inputs go to build-fuzz/corpus/<target> (kept between runs); the seeds stay read-only.
   status=0
-  "$root/build-fuzz/tests/fuzz/fuzz_$t" -max_total_time="$seconds" -max_len=65536 -timeout=10 -rss_limit_mb=2048 \
+  "$root/build-fuzz/tests/fuzz/fuzz_$t" -seed="$seed" -max_total_time="$seconds" -max_len=65536 -timeout=10 -rss_limit_mb=2048 \
       -artifact_prefix="$findings/" -print_final_stats=1 "$work" "$root/tests/fuzz/$t/corpus" \
       "$root/tests/fuzz/$t/regressions" >"$findings.log" 2>&1 || status=$?
   grep -E '^(stat::number_of_executed_units|stat::peak_rss_mb|SUMMARY|fuzz finding)' "$findings.log" || true
