@@ -1,0 +1,1 @@
+// hidden-effect tests (filled below)
