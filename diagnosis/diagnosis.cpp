@@ -147,7 +147,9 @@ ModelSpec makeModel(const std::vector<const Candidate*>& causes, const Candidate
 
 FitSummary fitFull(const FitProblem& problem, const ModelSpec& model, const Eigen::VectorXd& x0, const std::string& name) {
   const LeastSquaresResult r = fitModel(problem, model, x0, -1);
-  const int own = name == "baseline" ? model.size() : model.size() - static_cast<int>(model.parts.back()->parameters.size());
+  // A candidate's own parameters are the last part's; the baseline and the extended model own all.
+  const bool candidate = !model.parts.empty() && name == model.parts.back()->name;
+  const int own = candidate ? model.size() - static_cast<int>(model.parts.back()->parameters.size()) : 0;
   FitSummary s = summarise(name, problem, model, r, own);
   score(problem, problem.predict(model, r.x), s, model.size());
   return s;
@@ -290,7 +292,7 @@ std::vector<ComponentResidual> summariseResiduals(const FitProblem& problem, con
     ++c.count;
     c.meanReal += raw;
     ss[o.component] += z * z;
-    if (o.row >= 0 && o.part == 0) trend[o.component].push_back({o.speed, raw});
+    if (o.row >= 0) trend[o.component].push_back({o.speed, raw});
   }
   for (size_t k = 0; k < out.size(); ++k) {
     ComponentResidual& c = out[k];

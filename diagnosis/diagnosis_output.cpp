@@ -268,7 +268,7 @@ void writeResponsePlots(const std::filesystem::path& dir, const DiagnosisResult&
       writeFileAtomically(dir / (name + ".csv"), w.getText());
       renderGnuplot(dir, name,
                     "set datafile separator ','\nset key autotitle columnhead\nset grid\nset xlabel 'time (s)'\n"
-                    "set ylabel '" + gnuplotQuote(rr.signals[j].column) + "'\n"
+                    "set ylabel " + gnuplotQuote(rr.signals[j].column) + "\n"
                     "plot '" + name + ".csv' u 1:2 w l t 'measured', '' u 1:3 w l t 'baseline', '' u 1:4 w l t 'extended'\n");
     }
   }
