@@ -86,6 +86,16 @@ struct SpeedRange {
   double start = 0, stop = 10, step = 0.1;
 };
 
+/// A stated uncertainty of one scenario parameter (the `uncertainty:` section): the key path as
+/// --set takes it, and the standard deviation in the key's own unit.
+struct ParameterUncertainty {
+  enum class Distribution { Normal, Uniform, Lognormal };
+  std::string path;
+  double sigma = 0;
+  Distribution distribution = Distribution::Normal;
+  InputLocation where;  ///< where the scenario states it
+};
+
 struct Scenario {
   std::string name;
   std::string description;
@@ -102,6 +112,7 @@ struct Scenario {
   bool hasAerodynamics = false;
   AerodynamicsSpec aerodynamics;
   std::vector<std::string> plugins;     ///< shared libraries to load before building
+  std::vector<ParameterUncertainty> uncertainty;  ///< stated parameter uncertainties (may be empty)
 };
 
 /// Loads and validates a scenario file. `overrides` are "a.b=value" assignments applied first.

@@ -145,26 +145,94 @@ YamlMap loadYamlFile(const std::string& file) {
   return YamlMap(root, file, "");
 }
 
+std::vector<KeyPathSegment> parseKeyPath(const std::string& path) {
+  std::vector<KeyPathSegment> out;
+  size_t start = 0;
+  while (true) {
+    const size_t dot = path.find('.', start);
+    std::string part = path.substr(start, dot == std::string::npos ? std::string::npos : dot - start);
+    KeyPathSegment seg;
+    const size_t open = part.find('[');
+    if (open != std::string::npos) {
+      const size_t close = part.find(']', open);
+      const std::string digits = close == std::string::npos ? "" : part.substr(open + 1, close - open - 1);
+      if (close != part.size() - 1 || digits.empty() || digits.find_first_not_of("0123456789") != std::string::npos ||
+          digits.size() > 6)
+        throw InputError({"", 0, 0, path}, "malformed index in key path (expected key[N])");
+      seg.index = std::stoi(digits);
+      part = part.substr(0, open);
+    }
+    if (part.empty()) throw InputError({"", 0, 0, path}, "empty key in key path");
+    seg.key = part;
+    out.push_back(seg);
+    if (dot == std::string::npos) break;
+    start = dot + 1;
+  }
+  return out;
+}
+
+YAML::Node findKeyPath(const YAML::Node& root, const std::string& path) {
+  YAML::Node node;  // a handle walked with const lookups only: the caller's tree gains no keys
+  node.reset(root);
+  for (const auto& seg : parseKeyPath(path)) {
+    if (!node.IsMap()) return YAML::Node(YAML::NodeType::Undefined);
+    const YAML::Node next = static_cast<const YAML::Node&>(node)[seg.key];
+    if (!next) return YAML::Node(YAML::NodeType::Undefined);
+    node.reset(next);
+    if (seg.index >= 0) {
+      if (!node.IsSequence() || seg.index >= static_cast<int>(node.size())) return YAML::Node(YAML::NodeType::Undefined);
+      const YAML::Node element = static_cast<const YAML::Node&>(node)[static_cast<size_t>(seg.index)];
+      node.reset(element);
+    }
+  }
+  return node;
+}
+
 void applyOverride(YAML::Node& root, const std::string& assignment) {
   const auto eq = assignment.find('=');
   if (eq == std::string::npos || eq == 0)
     throw InputError({"--set", 0, 0, assignment}, "expected KEY.PATH=VALUE");
   const std::string path = assignment.substr(0, eq);
-  YAML::Node value = YAML::Load(assignment.substr(eq + 1));
-  std::vector<std::string> keys;
-  size_t start = 0;
-  for (size_t dot; (dot = path.find('.', start)) != std::string::npos; start = dot + 1)
-    keys.push_back(path.substr(start, dot - start));
-  keys.push_back(path.substr(start));
+  YAML::Node value;
+  try {
+    value = YAML::Load(assignment.substr(eq + 1));
+  } catch (const YAML::Exception& e) {
+    throw InputError({"--set", 0, 0, path}, "value is not valid YAML (" + e.msg + ") in '" + assignment + "'");
+  }
+  std::vector<KeyPathSegment> segments;
+  try {
+    segments = parseKeyPath(path);
+  } catch (const InputError& e) {
+    throw InputError({"--set", 0, 0, path}, e.getReason());
+  }
   // yaml-cpp nodes are handles: walk with fresh handles so the tree itself is edited.
   std::vector<YAML::Node> chain{root};
-  for (size_t i = 0; i + 1 < keys.size(); ++i) {
-    YAML::Node next = chain.back()[keys[i]];
-    if (!next || !next.IsMap())
-      throw InputError({"--set", 0, 0, path}, "'" + keys[i] + "' is not a mapping in the scenario");
+  for (size_t i = 0; i < segments.size(); ++i) {
+    const KeyPathSegment& seg = segments[i];
+    const bool last = i + 1 == segments.size();
+    if (!chain.back().IsMap())
+      throw InputError({"--set", 0, 0, path}, "'" + (i ? segments[i - 1].key : std::string("the scenario")) +
+                                                 "' is not a mapping in the scenario");
+    if (last && seg.index < 0) {
+      chain.back()[seg.key] = value;
+      return;
+    }
+    YAML::Node next = chain.back()[seg.key];
+    if (seg.index >= 0) {
+      if (!next || !next.IsSequence() || seg.index >= static_cast<int>(next.size()))
+        throw InputError({"--set", 0, 0, path}, "'" + seg.key + "' has no element " + std::to_string(seg.index) +
+                                                   " in the scenario");
+      if (last) {
+        next[static_cast<size_t>(seg.index)] = value;
+        return;
+      }
+      chain.push_back(next);
+      next = chain.back()[static_cast<size_t>(seg.index)];
+    } else if (!next) {
+      throw InputError({"--set", 0, 0, path}, "'" + seg.key + "' is not a mapping in the scenario");
+    }
     chain.push_back(next);
   }
-  chain.back()[keys.back()] = value;
 }
 
 }  // namespace motostab

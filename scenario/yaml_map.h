@@ -60,8 +60,22 @@ class YamlMap {
 /// Loads a YAML file as the root map. Syntax errors are InputErrors with line and column.
 YamlMap loadYamlFile(const std::string& file);
 
-/// Applies "a.b.c=value" overrides (from --set) to a YAML tree; the value is parsed as YAML.
-/// An override path through a non-map is an InputError naming the override.
+/// One segment of a key path such as `rear_frame.com_m[2]`: a mapping key and, optionally, a
+/// sequence index into its value (-1: none).
+struct KeyPathSegment {
+  std::string key;
+  int index = -1;
+};
+/// Splits "a.b[2].c" into segments; a malformed path is an InputError naming it.
+std::vector<KeyPathSegment> parseKeyPath(const std::string& path);
+/// The node at a key path, or an undefined node when absent; never modifies `root`.
+YAML::Node findKeyPath(const YAML::Node& root, const std::string& path);
+
+/// Applies "a.b.c=value" overrides (from --set) to a YAML tree; the value is parsed as YAML, and the
+/// last key may be new (so a whole section can be added: `steer_damper={damping_Nms_per_rad: 0.4}`).
+/// Sequence elements are addressed as `key[i]` (`rear_frame.com_m[2]=0.9`). A path through a
+/// missing key or a non-map, an index out of range, or a value that is not YAML is an InputError
+/// naming the override.
 void applyOverride(YAML::Node& root, const std::string& assignment);
 
 }  // namespace motostab
