@@ -6,10 +6,7 @@
 #include <stdexcept>
 
 #include "io/csv.h"
-#if __has_include("scenario/parameter_paths.h")
 #include "scenario/parameter_paths.h"
-#define MOTOSTAB_HAVE_PARAMETER_PATHS 1
-#endif
 
 namespace motostab {
 namespace {
@@ -70,7 +67,6 @@ void addSwingarmCandidates(const YAML::Node& tree, std::vector<Candidate>& out) 
   }
 }
 
-#ifdef MOTOSTAB_HAVE_PARAMETER_PATHS
 double findSigma(const ScalarParameter& p, const std::vector<std::pair<std::string, double>>& uncertainty) {
   for (const auto& u : uncertainty)
     if (u.first == p.path) return u.second;
@@ -93,11 +89,8 @@ Candidate makeParameterCandidate(const ScalarParameter& p, double sigma) {
   c.priorSigma = sigma;
   return {"parameter:" + p.path, {}, {c}};
 }
-#endif
 
 }  // namespace
-
-std::string makeOverride(const std::string& path, double value) { return path + "=" + formatNumber(value, 17); }
 
 std::vector<Candidate> listCandidates(const YAML::Node& tree,
                                       const std::vector<std::pair<std::string, double>>& uncertainty) {
@@ -105,12 +98,10 @@ std::vector<Candidate> listCandidates(const YAML::Node& tree,
   if (!tree["steer_damper"]) out.push_back(makeSteerDamper(tree));
   if (!tree["fork_compliance"]) out.push_back(makeForkCompliance(tree));
   addSwingarmCandidates(tree, out);
-#ifdef MOTOSTAB_HAVE_PARAMETER_PATHS
   for (const ScalarParameter& p : listScalarParameters(tree)) {
     const double sigma = findSigma(p, uncertainty);
     if (sigma > 0) out.push_back(makeParameterCandidate(p, sigma));
   }
-#endif
   return out;
 }
 

@@ -40,7 +40,4 @@ std::vector<Candidate> listCandidates(const YAML::Node& scenarioTree,
 /// `patterns` is empty. An entry that matches nothing is an error (std::invalid_argument naming it).
 std::vector<Candidate> filterCandidates(const std::vector<Candidate>& all, const std::vector<std::string>& patterns);
 
-/// The override that sets `path` to `value` (17 significant digits).
-std::string makeOverride(const std::string& path, double value);
-
 }  // namespace motostab

@@ -182,7 +182,15 @@ void fitStep(const FitProblem& problem, Step& step, const DiagnosisOptions& opt,
     for (size_t i; (i = next++) < step.pool.size();) {
       const Candidate& c = *step.pool[i];
       const Eigen::VectorXd x0 = warm ? step.fits[i].x : joinStart(step.baseline.x, c);
-      step.fits[i] = fitFull(problem, makeModel(step.causes, &c), x0, c.name);
+      try {
+        step.fits[i] = fitFull(problem, makeModel(step.causes, &c), x0, c.name);
+      } catch (const std::exception& e) {  // its start is no valid vehicle, or a trim failed
+        step.fits[i] = FitSummary();
+        step.fits[i].name = c.name;
+        step.fits[i].x = x0;
+        step.fits[i].chi2 = step.fits[i].bic = step.fits[i].rms = HUGE_VAL;
+        step.fits[i].failed = {std::string("fit failed: ") + e.what()};
+      }
       std::lock_guard<std::mutex> lock(progressMutex);
       if (opt.progress) opt.progress(stage, ++done, static_cast<int>(step.pool.size()));
     }
@@ -218,6 +226,7 @@ void judge(const FitProblem& problem, const Step& step, size_t i, FitSummary& fi
            bool alwaysCv) {
   const Candidate& c = *step.pool[i];
   const ModelSpec model = makeModel(step.causes, &c);
+  if (!std::isfinite(fit.chi2)) return;
   fit.deltaBic = fit.bic - step.baseline.bic;
   const double lr = std::max(0.0, step.baseline.chi2 - fit.chi2);
   const int df = static_cast<int>(c.parameters.size());
@@ -361,9 +370,7 @@ namespace {
 
 std::vector<std::pair<std::string, double>> getUncertainty(const std::string& file, const DiagnosisOptions& opt) {
   std::vector<std::pair<std::string, double>> out;
-#if __has_include("scenario/parameter_paths.h")
   for (const auto& u : loadScenario(file, opt.overrides).uncertainty) out.push_back({u.path, u.sigma});
-#endif
   return out;
 }
 
@@ -413,8 +420,8 @@ void finish(FitProblem& problem, const Step& step, DiagnosisResult& result) {
   calcProfiles(problem, extended, result.extended);
   for (size_t c = 0, i = 0; c < result.causes.size(); ++c)
     for (auto& e : result.causes[c].fit.parameters) e = result.extended.allParameters[i++];
-  result.before = problem.predict(none, Eigen::VectorXd());
-  result.after = problem.predict(extended, result.extended.x);
+  result.before = problem.predict(none, Eigen::VectorXd(), true);
+  result.after = problem.predict(extended, result.extended.x, true);
   for (const auto& o : extended.makeOverrides(result.extended.x)) result.extendedOverrides.push_back(o);
   result.residualsBefore = summariseResiduals(problem, result.before);
   result.residualsAfter = summariseResiduals(problem, result.after);

@@ -4,6 +4,8 @@
 #include <cmath>
 #include <numeric>
 
+#include "scenario/parameter_paths.h"
+
 namespace motostab {
 
 int ModelSpec::size() const {
@@ -36,7 +38,7 @@ std::vector<std::string> ModelSpec::makeOverrides(const Eigen::VectorXd& x) cons
   for (const auto* c : parts) {
     out.insert(out.end(), c->fixedOverrides.begin(), c->fixedOverrides.end());
     for (const auto& p : c->parameters) {
-      out.push_back(makeOverride(p.path, p.logScale ? std::exp(x(i)) : x(i)));
+      out.push_back(formatOverride(p.path, p.logScale ? std::exp(x(i)) : x(i)));
       ++i;
     }
   }
@@ -131,8 +133,8 @@ std::vector<std::vector<double>> FitProblem::getResponseSigma() const {
   return s;
 }
 
-Prediction FitProblem::predict(const ModelSpec& model, const Eigen::VectorXd& x) const {
-  return predictor_.predict(model.makeOverrides(x), getResponseSigma());
+Prediction FitProblem::predict(const ModelSpec& model, const Eigen::VectorXd& x, bool exact) const {
+  return predictor_.predict(model.makeOverrides(x), getResponseSigma(), exact);
 }
 
 double FitProblem::getPredicted(const Prediction& p, const Observation& o) const {

@@ -45,7 +45,8 @@ class FitProblem {
   double getSigma(const Observation& o) const { return o.knownSigma > 0 ? o.knownSigma : componentSigma[o.component]; }
   /// Per run and signal sigma, for the response fits.
   std::vector<std::vector<double>> getResponseSigma() const;
-  Prediction predict(const ModelSpec& model, const Eigen::VectorXd& x) const;
+  /// Fast (interpolated) predictions unless `exact`.
+  Prediction predict(const ModelSpec& model, const Eigen::VectorXd& x, bool exact = false) const;
   /// (measured - predicted) / sigma of every observation.
   Eigen::VectorXd calcResiduals(const Prediction& p) const;
   double getPredicted(const Prediction& p, const Observation& o) const;

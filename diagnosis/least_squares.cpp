@@ -10,11 +10,20 @@ Eigen::MatrixXd calcJacobian(const LeastSquaresProblem& p, const Eigen::VectorXd
                              int& evaluations) {
   Eigen::MatrixXd J(r.size(), x.size());
   for (int i = 0; i < x.size(); ++i) {
-    Eigen::VectorXd xp = x;
-    const double h = (x(i) + p.step(i) <= p.upper(i)) ? p.step(i) : -p.step(i);  // stay inside the box
-    xp(i) += h;
-    J.col(i) = (p.residual(xp) - r) / h;
-    ++evaluations;
+    // Inside the box first; a rejected point (an unphysical vehicle) tries the other side; a
+    // parameter rejected on both sides gets a zero column.
+    const double h0 = (x(i) + p.step(i) <= p.upper(i)) ? p.step(i) : -p.step(i);
+    J.col(i).setZero();
+    for (double h : {h0, -h0}) {
+      Eigen::VectorXd xp = x;
+      xp(i) += h;
+      ++evaluations;
+      try {
+        J.col(i) = (p.residual(xp) - r) / h;
+        break;
+      } catch (const std::exception&) {
+      }
+    }
   }
   return J;
 }

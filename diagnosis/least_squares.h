@@ -33,7 +33,7 @@ struct LeastSquaresResult {
   std::string stop;                 ///< converged, iteration limit, step too small
 };
 
-/// Minimises |r(x)|^2 over lower <= x <= upper from x0 (clamped into the box).
+/// Minimises |r(x)|^2 over lower <= x <= upper from x0 (clamped into the box; r(x0) must not throw).
 LeastSquaresResult solveBoundedLeastSquares(const LeastSquaresProblem& problem, const Eigen::VectorXd& x0,
                                             const LeastSquaresOptions& options = {});
 

@@ -117,6 +117,30 @@ double calcVaf(const std::vector<double>& y, const std::vector<double>& yhat) {
   return vy > 0 ? 100.0 * (1.0 - vr / vy) : 0.0;
 }
 
+std::vector<double> makeSortedUnique(std::vector<double> v) {
+  std::sort(v.begin(), v.end());
+  v.erase(std::unique(v.begin(), v.end()), v.end());
+  return v;
+}
+
+size_t findSpeed(const std::vector<double>& speeds, double v) {
+  return std::lower_bound(speeds.begin(), speeds.end(), v) - speeds.begin();
+}
+
+// Barycentric interpolation on Chebyshev points of the second kind x_j (weights (-1)^j, halved at the ends).
+std::complex<double> interpolate(const std::vector<double>& x, const std::vector<std::complex<double>>& f, double v) {
+  std::complex<double> num = 0;
+  double den = 0;
+  const size_t n = x.size();
+  for (size_t j = 0; j < n; ++j) {
+    if (v == x[j]) return f[j];
+    const double w = ((j % 2) ? -1.0 : 1.0) * ((j == 0 || j + 1 == n) ? 0.5 : 1.0) / (v - x[j]);
+    num += w * f[j];
+    den += w;
+  }
+  return num / den;
+}
+
 }  // namespace
 
 ResponseFit fitFreeResponse(const LinearModel& lin, const ResponseRun& run, const std::vector<double>& sigma) {
@@ -167,8 +191,22 @@ Predictor::Predictor(std::string scenarioFile, std::vector<std::string> baseOver
   for (const auto& row : data.eigenvalues)
     for (double v : getEvaluationSpeeds(row)) speeds_.push_back(v);
   for (const auto& run : data.responses) speeds_.push_back(run.speed);
-  std::sort(speeds_.begin(), speeds_.end());
-  speeds_.erase(std::unique(speeds_.begin(), speeds_.end()), speeds_.end());
+  speeds_ = makeSortedUnique(speeds_);
+  double lo = HUGE_VAL, hi = -HUGE_VAL;
+  std::vector<double> others;
+  int labelled = 0;
+  for (const auto& row : data.eigenvalues)
+    for (double v : getEvaluationSpeeds(row)) {
+      if (row.mode.empty()) others.push_back(v);
+      else lo = std::min(lo, v), hi = std::max(hi, v), ++labelled;
+    }
+  const int n = std::clamp(static_cast<int>(std::ceil((hi - lo) / 0.25)) + 1, 6, 16);
+  if (labelled > n && hi > lo)
+    for (int j = n - 1; j >= 0; --j) nodes_.push_back(0.5 * (lo + hi) + 0.5 * (hi - lo) * std::cos(M_PI * j / (n - 1)));
+  for (const auto& run : data.responses) others.push_back(run.speed);
+  fastSpeeds_ = nodes_;
+  fastSpeeds_.insert(fastSpeeds_.end(), others.begin(), others.end());
+  fastSpeeds_ = makeSortedUnique(fastSpeeds_);
   const Scenario scenario = loadScenario(scenarioFile_, baseOverrides_);
   const VehicleModel model(scenario);
   SweepOptions opt;
@@ -179,23 +217,52 @@ Predictor::Predictor(std::string scenarioFile, std::vector<std::string> baseOver
   reference_ = std::make_shared<SweepResult>(runSweep(model, opt));
 }
 
-std::vector<LinearModel> Predictor::calcLinearModels(const std::vector<std::string>& overrides) const {
+// The sweep's trims and linearisations (warm-started in increasing speed, columns grouped after the
+// first two speeds as runSweep groups them).
+std::vector<LinearModel> Predictor::calcLinearModels(const std::vector<std::string>& overrides,
+                                                     const std::vector<double>& speeds) const {
   std::vector<std::string> all = baseOverrides_;
   all.insert(all.end(), overrides.begin(), overrides.end());
   const Scenario scenario = loadScenario(scenarioFile_, all);
   const VehicleModel model(scenario);
-  const SweepOptions sweep;
-  TrimResult trim = calcTrim(model, speeds_.front(), sweep.trim);
+  SweepOptions sweep;
+  TrimResult trim = calcTrim(model, speeds.front(), sweep.trim);
   std::vector<LinearModel> out;
-  for (size_t i = 0; i < speeds_.size(); ++i) {
-    if (i > 0) updTrim(model, speeds_[i], sweep.trim, trim);
+  for (size_t i = 0; i < speeds.size(); ++i) {
+    if (i > 0) updTrim(model, speeds[i], sweep.trim, trim);
     out.push_back(linearizeInPlace(model, trim, sweep.linearize));
+    if (i == 1 && sweep.groupColumns) {
+      sweep.linearize.removeYaw = out[0].findState("yaw") < 0 ? 1 : 0;
+      sweep.linearize.grouping = calcColumnGrouping({&out[0], &out[1]});
+    }
   }
   return out;
 }
 
-int Predictor::findSpeed(double v) const {
-  return static_cast<int>(std::lower_bound(speeds_.begin(), speeds_.end(), v) - speeds_.begin());
+std::vector<std::complex<double>> Predictor::predictInterpolated(const std::vector<LinearModel>& models,
+                                                                 const std::vector<double>& speeds) const {
+  std::vector<std::complex<double>> out;
+  std::vector<std::string> modes;
+  std::vector<std::vector<std::complex<double>>> atNodes;  // per mode, per node
+  for (const auto& row : data_.eigenvalues) {
+    std::complex<double> sum = 0;
+    const std::vector<double> vs = getEvaluationSpeeds(row);
+    for (double v : vs) {
+      if (row.mode.empty()) {
+        sum += pickEigenvalue(models[findSpeed(speeds, v)], row);
+        continue;
+      }
+      size_t m = std::find(modes.begin(), modes.end(), row.mode) - modes.begin();
+      if (m == modes.size()) {
+        modes.push_back(row.mode);
+        atNodes.emplace_back();
+        for (double x : nodes_) atNodes.back().push_back(pickEigenvalue(models[findSpeed(speeds, x)], row));
+      }
+      sum += interpolate(nodes_, atNodes[m], v);
+    }
+    out.push_back(sum / static_cast<double>(vs.size()));
+  }
+  return out;
 }
 
 std::complex<double> Predictor::pickEigenvalue(const LinearModel& lin, const MeasuredEigenvalue& row) const {
@@ -222,17 +289,21 @@ std::complex<double> Predictor::pickEigenvalue(const LinearModel& lin, const Mea
 }
 
 Prediction Predictor::predict(const std::vector<std::string>& overrides,
-                              const std::vector<std::vector<double>>& sigma) const {
-  const std::vector<LinearModel> models = calcLinearModels(overrides);
+                              const std::vector<std::vector<double>>& sigma, bool exact) const {
+  const bool fast = !exact && !nodes_.empty();
+  const std::vector<double>& speeds = fast ? fastSpeeds_ : speeds_;
+  const std::vector<LinearModel> models = calcLinearModels(overrides, speeds);
   Prediction p;
+  if (fast) p.eigenvalues = predictInterpolated(models, speeds);
   for (const auto& row : data_.eigenvalues) {
+    if (fast) break;
     const std::vector<double> nodes = getEvaluationSpeeds(row);
     std::complex<double> sum = 0;
-    for (double v : nodes) sum += pickEigenvalue(models[findSpeed(v)], row);
+    for (double v : nodes) sum += pickEigenvalue(models[findSpeed(speeds, v)], row);
     p.eigenvalues.push_back(sum / static_cast<double>(nodes.size()));
   }
   for (size_t r = 0; r < data_.responses.size(); ++r) {
-    p.responses.push_back(fitFreeResponse(models[findSpeed(data_.responses[r].speed)], data_.responses[r], sigma[r]));
+    p.responses.push_back(fitFreeResponse(models[findSpeed(speeds, data_.responses[r].speed)], data_.responses[r], sigma[r]));
     p.numLinear += p.responses.back().numLinear;
   }
   return p;
