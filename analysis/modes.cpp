@@ -9,6 +9,11 @@
 
 namespace motostab {
 
+bool isComplianceCoordinate(const std::string& name) {
+  auto starts = [&](const char* p) { return name.rfind(p, 0) == 0; };
+  return starts("swingarm") || starts("fork_bending") || starts("fork_torsion") || starts("rider_lean");
+}
+
 DofGroup getDofGroup(const std::string& name) {
   auto starts = [&](const char* p) { return name.rfind(p, 0) == 0; };
   if (starts("roll")) return DofGroup::Roll;
@@ -17,7 +22,7 @@ DofGroup getDofGroup(const std::string& name) {
   if (name == "y" || name == "vy") return DofGroup::Lateral;
   if (starts("pitch")) return DofGroup::Pitch;
   if (name == "height" || name == "vz") return DofGroup::Bounce;
-  if (starts("swingarm")) return DofGroup::Compliance;
+  if (isComplianceCoordinate(name)) return DofGroup::Compliance;
   if (starts("suspension")) return DofGroup::Suspension;
   if (name == "x" || name == "vx" || name.find("wheel_angle") != std::string::npos) return DofGroup::Forward;
   return DofGroup::Relaxation;
@@ -48,7 +53,7 @@ struct StateWeights {
   std::vector<int> group;         // DofGroup, or -1: skipped (a rate whose coordinate is kept, wheel spin)
   std::vector<char> isRate;       // divided by max(1, |lambda|)
   std::vector<char> perWheelbase; // lateral and forward displacements, divided by the wheelbase
-  std::vector<int> compliance;    // indices of swingarm_* coordinates
+  std::vector<int> compliance;    // indices of compliance coordinates (isComplianceCoordinate)
 };
 
 StateWeights calcStateWeights(const LinearModel& lin) {
@@ -68,7 +73,7 @@ StateWeights calcStateWeights(const LinearModel& lin) {
     // says nothing about the mode's character.
     if (st.entry.slot == Slot::U && (lin.findState(coordinate) >= 0 || st.name.find("wheel_angle") != std::string::npos))
       w.group[i] = -1;
-    if (st.entry.slot == Slot::Q && st.name.rfind("swingarm_", 0) == 0) w.compliance.push_back(static_cast<int>(i));
+    if (st.entry.slot == Slot::Q && isComplianceCoordinate(st.name)) w.compliance.push_back(static_cast<int>(i));
   }
   return w;
 }
@@ -168,7 +173,7 @@ BranchStats calcBranchStats(const std::vector<LinearModel>& models, const std::v
     for (int g = 0; g < kNumDofGroups; ++g) st.content[g] += c[g] / n;
     const double inPlaneOrLateral = 1.0 - c[int(DofGroup::Forward)] - c[int(DofGroup::Yaw)] - c[int(DofGroup::Lateral)];
     if (!(std::abs(l) < 1e-6 && inPlaneOrLateral < 1e-3)) st.neutral = false;
-    // Compliance shares (swingarm_* coordinates), summed per layout and named once.
+    // Compliance shares (isComplianceCoordinate), summed per layout and named once.
     if (weights[s] != shareLayout) {
       flushShares();
       shareLayout = weights[s], shareModel = s;

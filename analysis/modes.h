@@ -15,6 +15,10 @@ enum class DofGroup { Roll, Steer, Yaw, Lateral, Pitch, Bounce, Forward, Complia
 constexpr int kNumDofGroups = 10;
 using ModeContent = std::array<double, kNumDofGroups>;
 
+/// Compliance coordinates: swingarm_*, and the issue-10 extensions fork_bending, fork_torsion and
+/// rider_lean. An oscillatory mode they dominate is labelled with the leading coordinate's name.
+bool isComplianceCoordinate(const std::string& coordinateName);
+
 /// The group a linear state belongs to, from its name.
 DofGroup getDofGroup(const std::string& stateName);
 
@@ -26,7 +30,7 @@ ModeContent calcModeContent(const LinearModel& lin, int k, double wheelbase);
 double calcMac(const LinearModel& a, int ka, const LinearModel& b, int kb);
 
 /// A mode followed across speed. Labels: weave, capsize, castor, wobble, swingarm_bending,
-/// swingarm_torsion, swingarm_twist, bounce, pitch, rear_hop, relaxation, neutral, other.
+/// swingarm_torsion, swingarm_twist, fork_bending, fork_torsion, rider_lean, bounce, pitch, rear_hop, relaxation, neutral, other.
 struct ModeBranch {
   std::string label;
   std::vector<std::complex<double>> eigenvalue;  ///< per speed of the sweep

@@ -8,6 +8,27 @@
 #include "vehicle/vehicle_model.h"
 
 namespace motostab::cli {
+namespace {
+
+// The issue-10 model extensions present, one line each (docs/scenario-format.md).
+void printExtensions(const Scenario& s) {
+  if (s.hasSteerDamper)
+    std::cout << "  steer damper          " << s.steerDamper.damping << " N m s/rad, Coulomb " << s.steerDamper.coulomb
+              << " N m (smoothing " << s.steerDamper.coulombSmoothing << " rad/s; linearised "
+              << s.steerDamper.damping + s.steerDamper.coulomb / s.steerDamper.coulombSmoothing << " N m s/rad)\n";
+  if (s.hasForkCompliance) {
+    const ForkComplianceSpec& f = s.forkCompliance;
+    std::cout << "  fork compliance       bending " << f.stiffness << " N m/rad, " << f.damping << " N m s/rad, axis "
+              << f.axisDistance << " m up the steer axis, carrier " << f.carrier.mass << " kg";
+    if (f.hasTorsion) std::cout << "; torsion " << f.torsionStiffness << " N m/rad, " << f.torsionDamping << " N m s/rad";
+    std::cout << "\n";
+  }
+  if (s.hasRiderLean)
+    std::cout << "  rider lean            upper body " << s.riderLean.body.mass << " kg, hinge at " << s.riderLean.hingeHeight
+              << " m, " << s.riderLean.stiffness << " N m/rad, " << s.riderLean.damping << " N m s/rad\n";
+}
+
+}  // namespace
 
 void registerScenarioCommands(CLI::App& app) {
   auto check = std::make_shared<std::pair<std::string, std::vector<std::string>>>();
@@ -38,6 +59,7 @@ void registerScenarioCommands(CLI::App& app) {
                   << " N s/m; lever " << l << " m); static pivot moment " << calcStaticPivotMoment(s) << " N m\n";
       }
     }
+    printExtensions(s);
   });
 
   struct ImportArgs {

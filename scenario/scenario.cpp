@@ -3,6 +3,7 @@
 #include <Eigen/Eigenvalues>
 #include <cmath>
 
+#include "scenario/extension_specs.h"
 #include "scenario/yaml_map.h"
 
 namespace motostab {
@@ -22,11 +23,20 @@ InertiaSpec readInertia(YamlMap m) {
   return I;
 }
 
-BodySpec readBody(YamlMap m) {
+}  // namespace
+
+BodySpec readBodyKeys(YamlMap& m) {
   BodySpec b;
   b.mass = m.getPositive("mass_kg");
   b.com = m.getVec3("com_m");
   b.inertia = readInertia(m.getMap("inertia_kgm2"));
+  return b;
+}
+
+namespace {
+
+BodySpec readBody(YamlMap m) {
+  const BodySpec b = readBodyKeys(m);
   m.finish();
   return b;
 }
@@ -164,9 +174,43 @@ Scenario loadScenario(const std::string& file, const std::vector<std::string>& o
     s.aerodynamics.centreOfPressure = a.getVec3("centre_of_pressure_m");
     a.finish();
   }
+  readExtensions(m, s);
   if (m.has("plugins")) s.plugins = m.getStringList("plugins");
   m.finish();
   return s;
+}
+
+namespace {
+// Inertia tensor about the design origin of a body given about its CoM (parallel axes).
+Eigen::Matrix3d calcInertiaAboutOrigin(const BodySpec& b) {
+  const InertiaSpec& I = b.inertia;
+  Eigen::Matrix3d J;
+  J << I.xx, I.xy, I.xz, I.xy, I.yy, I.yz, I.xz, I.yz, I.zz;
+  const Eigen::Vector3d r(b.com[0], b.com[1], b.com[2]);
+  return J + b.mass * (r.squaredNorm() * Eigen::Matrix3d::Identity() - r * r.transpose());
+}
+}  // namespace
+
+BodySpec calcBodyRemainder(const BodySpec& whole, const BodySpec& part) {
+  BodySpec r;
+  r.mass = whole.mass - part.mass;
+  if (!(r.mass > 0)) return r;
+  for (int i = 0; i < 3; ++i) r.com[i] = (whole.mass * whole.com[i] - part.mass * part.com[i]) / r.mass;
+  const Eigen::Vector3d c(r.com[0], r.com[1], r.com[2]);
+  const Eigen::Matrix3d J = calcInertiaAboutOrigin(whole) - calcInertiaAboutOrigin(part) -
+                            r.mass * (c.squaredNorm() * Eigen::Matrix3d::Identity() - c * c.transpose());
+  r.inertia = {J(0, 0), J(1, 1), J(2, 2), J(0, 1), J(0, 2), J(1, 2)};
+  return r;
+}
+
+BodySpec calcDefaultForkCarrier(const Scenario& s, double fraction) {
+  BodySpec c;
+  const BodySpec& H = s.frontFrame;
+  c.mass = fraction * H.mass;
+  c.com = H.com;
+  const InertiaSpec& I = H.inertia;
+  c.inertia = {fraction * I.xx, fraction * I.yy, fraction * I.zz, fraction * I.xy, fraction * I.xz, fraction * I.yz};
+  return c;
 }
 
 MassSummary calcMassSummary(const Scenario& s) {

@@ -73,6 +73,39 @@ struct AerodynamicsSpec {
   Vec3d centreOfPressure{0, 0, 0};  ///< in D, m
 };
 
+/// A steering damper between front and rear frames about the steer axis (vehicle/steer_damper.h):
+/// T = -c delta' - f tanh(delta'/omega_s) on the front frame, its reaction on the rear frame.
+struct SteerDamperSpec {
+  double damping = 0;            ///< c, N m s/rad (>= 0)
+  double coulomb = 0;            ///< f, N m (>= 0): smoothed Coulomb friction
+  double coulombSmoothing = 0.1; ///< omega_s, rad/s (> 0): steer rate at which tanh reaches 76 % of f
+};
+
+/// Lateral bending of the front fork (vehicle/fork_compliance.h): the hub carrier (lower legs, axle,
+/// brake) turns relative to the front frame about an axis perpendicular to the steer axis in the plane
+/// of symmetry, through the steer-axis point `axisDistance` above the steer axis's ground point.
+/// Optional torsion about the steer-axis direction in series (between carrier and wheel).
+struct ForkComplianceSpec {
+  double stiffness = 0;          ///< bending stiffness, N m/rad (> 0)
+  double damping = 0;            ///< bending damping, N m s/rad (>= 0)
+  double axisDistance = 0;       ///< m along the steer axis from its ground point (default: the crown, see reader)
+  BodySpec carrier;              ///< moving part's mass properties in D (default: a fraction of the front frame)
+  double carrierFraction = 0;    ///< the fraction used for the default carrier (0 when given explicitly)
+  bool hasTorsion = false;
+  double torsionStiffness = 0;   ///< N m/rad (> 0)
+  double torsionDamping = 0;     ///< N m s/rad (>= 0)
+};
+
+/// A passive rider upper body (vehicle/rider_lean.h) hinged to the rear frame about the longitudinal
+/// axis (design x) at height `hingeHeight`, against a torsional spring and damper. `body` is taken out
+/// of the rear frame, whose mass properties include the whole rider: the vehicle's totals are unchanged.
+struct RiderLeanSpec {
+  double hingeHeight = 0;        ///< m above the ground, in the plane of symmetry
+  BodySpec body;                 ///< upper body: mass (kg), CoM in D (m), inertia about its CoM in D
+  double stiffness = 0;          ///< N m/rad (> 0)
+  double damping = 0;            ///< N m s/rad (>= 0)
+};
+
 /// A plugin selected by name with its own parameters (validated by the plugin itself).
 struct PluginSpec {
   std::string model;
@@ -111,6 +144,12 @@ struct Scenario {
   SwingarmSpec swingarm;
   bool hasAerodynamics = false;
   AerodynamicsSpec aerodynamics;
+  bool hasSteerDamper = false;
+  SteerDamperSpec steerDamper;
+  bool hasForkCompliance = false;
+  ForkComplianceSpec forkCompliance;
+  bool hasRiderLean = false;
+  RiderLeanSpec riderLean;
   std::vector<std::string> plugins;     ///< shared libraries to load before building
   std::vector<ParameterUncertainty> uncertainty;  ///< stated parameter uncertainties (may be empty)
 };
@@ -122,6 +161,15 @@ Scenario loadScenario(const std::string& file, const std::vector<std::string>& o
 /// Checks an inertia tensor: symmetric positive definite and principal moments satisfying the
 /// triangle inequality. Returns an empty string if valid, else the reason.
 std::string checkInertia(const InertiaSpec& inertia);
+
+/// The mass properties of `whole` without `part` (all in D): mass, CoM and inertia about the new CoM.
+/// Parallel-axis theorem about the design origin; the caller checks the result (mass > 0, checkInertia).
+BodySpec calcBodyRemainder(const BodySpec& whole, const BodySpec& part);
+
+/// The default hub carrier of a fork_compliance section: the front frame scaled by `fraction` (that
+/// fraction of its mass at its CoM, that fraction of its inertia), so that the rest, the front frame
+/// scaled by 1 - fraction, is a valid body for every valid front frame.
+BodySpec calcDefaultForkCarrier(const Scenario& scenario, double fraction);
 
 /// Total mass (kg) and centre of mass in D (m) of frames and wheels.
 struct MassSummary {

@@ -1,6 +1,8 @@
 #include "tyres/relaxation_linear.h"
 
+#include <algorithm>
 #include <map>
+#include <stdexcept>
 
 #include "tyres/rolling_no_slip.h"
 
@@ -12,16 +14,20 @@ using SimTK::Vec3;
 
 namespace {
 
-LinearTyreParameters readTyre(YamlMap m) {
-  LinearTyreParameters p;
-  p.corneringStiffness = m.getPositive("cornering_stiffness_per_rad");
-  p.camberStiffness = m.getDouble("camber_stiffness_per_rad");
-  p.selfAligningStiffness = m.getDouble("self_aligning_stiffness_m_per_rad");
-  p.twistingStiffness = m.getDouble("twisting_stiffness_m_per_rad");
-  p.relaxationLength = m.getNonNegative("relaxation_length_m");
-  p.radialStiffness = m.getPositive("radial_stiffness_N_per_m");
-  p.radialDamping = m.getNonNegative("radial_damping_Ns_per_m");
-  p.longitudinalStiffness = m.getPositive("longitudinal_stiffness");
+// One tyre's keys. With a preset every key is optional (given ones override the preset's value).
+LinearTyreParameters readTyre(YamlMap m, const LinearTyreParameters* preset) {
+  LinearTyreParameters p = preset ? *preset : LinearTyreParameters{};
+  auto read = [&](const char* key, double& v, double (YamlMap::*get)(const std::string&)) {
+    if (!preset || m.has(key)) v = (m.*get)(key);
+  };
+  read("cornering_stiffness_per_rad", p.corneringStiffness, &YamlMap::getPositive);
+  read("camber_stiffness_per_rad", p.camberStiffness, &YamlMap::getDouble);
+  read("self_aligning_stiffness_m_per_rad", p.selfAligningStiffness, &YamlMap::getDouble);
+  read("twisting_stiffness_m_per_rad", p.twistingStiffness, &YamlMap::getDouble);
+  read("relaxation_length_m", p.relaxationLength, &YamlMap::getNonNegative);
+  read("radial_stiffness_N_per_m", p.radialStiffness, &YamlMap::getPositive);
+  read("radial_damping_Ns_per_m", p.radialDamping, &YamlMap::getNonNegative);
+  read("longitudinal_stiffness", p.longitudinalStiffness, &YamlMap::getPositive);
   m.finish();
   return p;
 }
@@ -139,9 +145,35 @@ class RelaxationLinear : public ContactModel {
 
 }  // namespace
 
+LinearTyreParameters getRelaxationLinearPreset(const std::string& name) {
+  if (name != "bicycle") throw std::invalid_argument("unknown relaxation_linear preset '" + name + "'");
+  // docs/scenario-format.md, "Bicycle tyre preset", gives each value's source.
+  LinearTyreParameters p;
+  p.corneringStiffness = 15.0;      // Dressel & Rahman (2012); Dressel (2013): 0.2-0.3 /deg normalised
+  p.camberStiffness = 0.9;          // Dressel & Rahman (2012): about 0.015 /deg normalised
+  p.selfAligningStiffness = -0.15;  // pneumatic trail about 10 mm times k_alpha (Dressel 2013)
+  p.twistingStiffness = 0.012;      // Dressel (2013) twisting torque coefficient, about 2e-4 m/deg
+  p.relaxationLength = 0.1;         // Dressel (2013) / VTI (2020) range 0.1-0.3 m, lower end
+  p.radialStiffness = 1.0e5;        // 4 mm deflection under 400 N, Dressel (2013) vertical stiffness
+  p.radialDamping = 100;            // estimate (the linear modes barely depend on it)
+  p.longitudinalStiffness = 20;     // estimate, motorcycle order (Cossalter 2006 ch. 2)
+  return p;
+}
+
+std::vector<std::string> getRelaxationLinearPresetNames() { return {"bicycle"}; }
+
 void registerRelaxationLinear(PluginRegistry& registry) {
   registry.addContactModel("relaxation_linear", [](YamlMap& m) -> std::unique_ptr<ContactModel> {
-    return std::make_unique<RelaxationLinear>(readTyre(m.getMap("front")), readTyre(m.getMap("rear")));
+    if (!m.has("preset")) return std::make_unique<RelaxationLinear>(readTyre(m.getMap("front"), nullptr), readTyre(m.getMap("rear"), nullptr));
+    const std::string name = m.getString("preset");
+    const auto names = getRelaxationLinearPresetNames();
+    if (std::find(names.begin(), names.end(), name) == names.end()) m.fail("preset", "unknown preset '" + name + "' (known: bicycle)");
+    const LinearTyreParameters preset = getRelaxationLinearPreset(name);
+    auto side = [&](const char* key) {
+      if (!m.has(key)) return preset;
+      return readTyre(m.getMap(key), &preset);
+    };
+    return std::make_unique<RelaxationLinear>(side("front"), side("rear"));
   });
 }
 

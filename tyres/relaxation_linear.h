@@ -33,7 +33,14 @@ struct LinearTyreParameters {
 /// Slip regularisation speed v_eps (m/s): keeps slips finite at standstill.
 constexpr double kSlipSpeedFloor = 0.1;
 
-/// Registers `relaxation_linear` (parameters under `front` and `rear`).
+/// A named parameter set for both tyres (per unit load where stated). `bicycle`: measured bicycle
+/// tyres (Dressel & Rahman 2012, Dressel 2013, VTI 2020; docs/scenario-format.md). Unknown names throw
+/// std::invalid_argument.
+LinearTyreParameters getRelaxationLinearPreset(const std::string& name);
+std::vector<std::string> getRelaxationLinearPresetNames();
+
+/// Registers `relaxation_linear` (parameters under `front` and `rear`, or `preset: NAME` with
+/// optional `front`/`rear` maps whose keys override the preset's values).
 void registerRelaxationLinear(PluginRegistry& registry);
 
 }  // namespace motostab

@@ -4,6 +4,10 @@
 #include "tyres/relaxation_linear.h"
 #include "tyres/rolling_no_slip.h"
 #include "vehicle/aerodynamics.h"
+#include "vehicle/body_builder.h"
+#include "vehicle/fork_compliance.h"
+#include "vehicle/rider_lean.h"
+#include "vehicle/steer_damper.h"
 
 namespace motostab {
 
@@ -22,16 +26,6 @@ PluginRegistry makeBuiltinRegistry() {
 }
 
 namespace {
-
-Vec3 toVec3(const Vec3d& v) { return Vec3(v[0], v[1], v[2]); }
-
-// Rigid body with its origin at `origin_D` (design frame), axes parallel to the design frame.
-SimTK::Body::Rigid makeBody(const BodySpec& b, const Vec3& origin_D) {
-  const Vec3 com_B = toVec3(b.com) - origin_D;
-  const SimTK::Inertia I_com(Vec3(b.inertia.xx, b.inertia.yy, b.inertia.zz),
-                             Vec3(b.inertia.xy, b.inertia.xz, b.inertia.yz));
-  return SimTK::Body::Rigid(SimTK::MassProperties(b.mass, com_B, I_com.shiftFromMassCenter(-com_B, b.mass)));
-}
 
 SimTK::Body::Rigid makeWheel(const WheelSpec& w) {
   return SimTK::Body::Rigid(SimTK::MassProperties(
@@ -76,8 +70,13 @@ void VehicleModel::build(PluginRegistry& registry, const std::vector<ModelExtens
   // Rear frame on a Bushing whose frames are permuted (F.x = G.z, F.y = G.x, F.z = G.y) so that
   // its body-fixed 1-2-3 angles are yaw, roll, pitch and its translations are height, x, y.
   const Rotation R_perm(SimTK::Mat33(0, 1, 0, 0, 0, 1, 1, 0, 0), true);
-  rearFrame_ = MobilizedBody::Bushing(matter_.Ground(), Transform(R_perm, Vec3(0)), makeBody(s.rearFrame, pRearHub_D),
+  // With a leaning rider the upper body is its own body and the rear frame keeps the rest.
+  const BodySpec rearBody = s.hasRiderLean ? calcBodyRemainder(s.rearFrame, s.riderLean.body) : s.rearFrame;
+  rearFrame_ = MobilizedBody::Bushing(matter_.Ground(), Transform(R_perm, Vec3(0)), makeBody(rearBody, pRearHub_D),
                                       Transform(R_perm, Vec3(0)));
+  std::vector<std::pair<std::string, MobilizedBody>> extensionCoordinates;
+  BuildContext ctx{system_, matter_, forces_, s.gravity};
+  if (s.hasRiderLean) extensionCoordinates.push_back({"rider_lean", addRiderLean(ctx, rearFrame_, pRearHub_D, s.riderLean)});
   // Rear wheel: on the rear frame, or on the swingarm's hub carrier.
   std::vector<std::pair<std::string, MobilizedBody>> compliance;
   MobilizedBody suspension;
@@ -105,15 +104,21 @@ void VehicleModel::build(PluginRegistry& registry, const std::vector<ModelExtens
   // Steer axis through the ground point (w + c, 0, 0), tilted back by lambda.
   const Vec3 steerAxis(-std::sin(lambda), 0, std::cos(lambda));
   const Vec3 pSteer_D(w + c, 0, 0);
-  frontFrame_ = addPinAtDesignPose(rearFrame_, Transform(pFrontHub_D - pRearHub_D), makeBody(s.frontFrame, pFrontHub_D),
+  const BodySpec frontBody = s.hasForkCompliance ? calcBodyRemainder(s.frontFrame, s.forkCompliance.carrier) : s.frontFrame;
+  frontFrame_ = addPinAtDesignPose(rearFrame_, Transform(pFrontHub_D - pRearHub_D), makeBody(frontBody, pFrontHub_D),
                                    pSteer_D - pFrontHub_D, steerAxis);
-  frontWheel_ = addPinAtDesignPose(frontFrame_, Transform(), makeWheel(s.frontWheel), Vec3(0), Vec3(0, 1, 0));
+  MobilizedBody frontCarrier = frontFrame_;
+  if (s.hasForkCompliance) {
+    const ForkAssembly fork = addForkCompliance(ctx, frontFrame_, pFrontHub_D, s);
+    frontCarrier = fork.hubCarrier;
+    for (const auto& c : fork.coordinates) extensionCoordinates.push_back(c);
+  }
+  frontWheel_ = addPinAtDesignPose(frontCarrier, Transform(), makeWheel(s.frontWheel), Vec3(0), Vec3(0, 1, 0));
 
   SimTK::Force::Gravity(forces_, matter_, -SimTK::ZAxis, s.gravity);
   inputs_ = SimTK::Force::DiscreteForces(forces_, matter_);
 
   const auto loads = calcStaticWheelLoads(s);
-  BuildContext ctx{system_, matter_, forces_, s.gravity};
   const WheelSite rear{"rear_wheel", rearWheel_, rR, s.rearWheel.crownRadius, loads[0]};
   const WheelSite front{"front_wheel", frontWheel_, rF, s.frontWheel.crownRadius, loads[1]};
   wheelSites_ = {rear, front};
@@ -123,6 +128,7 @@ void VehicleModel::build(PluginRegistry& registry, const std::vector<ModelExtens
   }
   contacts_.push_back(std::move(contact));
   if (s.hasAerodynamics) addAerodynamicDrag(ctx, rearFrame_, s.aerodynamics, toVec3(s.aerodynamics.centreOfPressure) - pRearHub_D);
+  if (s.hasSteerDamper) addSteerDamper(ctx, frontFrame_, s.steerDamper);
   for (const auto& extend : extensions)
     for (const auto& n : extend(ctx, *this)) zNames_.push_back(n);
 
@@ -161,6 +167,11 @@ void VehicleModel::build(PluginRegistry& registry, const std::vector<ModelExtens
     const int q = mobod.getFirstQIndex(defaultState_);
     qNames_[q] = name;
     idx_.compliance.push_back(q);
+  }
+  for (const auto& [name, mobod] : extensionCoordinates) {
+    const int q = mobod.getFirstQIndex(defaultState_);
+    qNames_[q] = name;
+    idx_.extension.push_back(q);
   }
   for (const auto& n : qNames_) uNames_.push_back(n + "_rate");
   uNames_[idx_.x] = "vx";

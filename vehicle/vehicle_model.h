@@ -4,7 +4,9 @@
 // a contact plugin per wheel. Coordinates (ground: x forward, y left, z up):
 //   q = yaw, roll, pitch (body-fixed z-x-y of the rear frame), height, x, y of the rear wheel centre,
 //       then steer, rear and front wheel spin angles, and, with a swingarm, the optional rear
-//       suspension angle `suspension_pitch` and the compliance coordinates `swingarm_*`.
+//       suspension angle `suspension_pitch` and the compliance coordinates `swingarm_*`; with the
+//       optional extensions `rider_lean` (vehicle/rider_lean.h), `fork_bending` and `fork_torsion`
+//       (vehicle/fork_compliance.h). A steer damper (vehicle/steer_damper.h) adds no coordinate.
 //       Every u is the corresponding qdot.
 // Signs: roll > 0 leans right, yaw > 0 turns left, steer > 0 steers left, pitch > 0 nose down.
 #include <functional>
@@ -24,6 +26,7 @@ struct CoordinateIndices {
   int steer = -1, rearSpin = -1, frontSpin = -1;
   std::vector<int> compliance;  ///< swingarm compliance coordinates, if any
   int suspension = -1;          ///< rear suspension angle about the pivot (rad, > 0 lifts the hub), if any
+  std::vector<int> extension;   ///< rider_lean, fork_bending, fork_torsion (issue 10), those present
 };
 
 /// Model inputs: generalized forces the trim may solve for and B is taken against.

@@ -1,0 +1,93 @@
+#include "scenario/extension_specs.h"
+
+#include <cmath>
+
+namespace motostab {
+namespace {
+
+// Fails at `key` unless the remainder of `whole` without `part` is a valid body.
+void checkRemainder(const YamlMap& m, const std::string& key, const BodySpec& whole, const BodySpec& part,
+                    const std::string& wholeName) {
+  const BodySpec r = calcBodyRemainder(whole, part);
+  if (!(r.mass > 0)) m.fail(key, "the moving part's mass must be below " + wholeName + ".mass_kg");
+  const std::string why = checkInertia(r.inertia);
+  if (!why.empty()) m.fail(key, wholeName + " without the moving part: " + why);
+}
+
+// {stiffness_Nm_per_rad > 0, damping_Nms_per_rad >= 0} of one spring-damper.
+void readSpringDamper(YamlMap& m, double& stiffness, double& damping) {
+  stiffness = m.getPositive("stiffness_Nm_per_rad");
+  damping = m.getNonNegative("damping_Nms_per_rad");
+}
+
+}  // namespace
+
+double calcDefaultForkAxisDistance(const Scenario& s) {
+  return 2 * s.frontWheel.radius / std::cos(s.geometry.steerAxisTilt);
+}
+
+SteerDamperSpec readSteerDamper(YamlMap m) {
+  SteerDamperSpec d;
+  d.damping = m.getNonNegative("damping_Nms_per_rad");
+  if (m.has("coulomb_Nm")) d.coulomb = m.getNonNegative("coulomb_Nm");
+  if (m.has("coulomb_smoothing_rad_per_s")) d.coulombSmoothing = m.getPositive("coulomb_smoothing_rad_per_s");
+  m.finish();
+  return d;
+}
+
+ForkComplianceSpec readForkCompliance(YamlMap m, const Scenario& s) {
+  ForkComplianceSpec f;
+  readSpringDamper(m, f.stiffness, f.damping);
+  f.axisDistance = m.has("axis_distance_along_steer_m") ? m.getDouble("axis_distance_along_steer_m")
+                                                        : calcDefaultForkAxisDistance(s);
+  if (m.has("carrier") && m.has("carrier_mass_fraction"))
+    m.fail("carrier_mass_fraction", "give only one of carrier and carrier_mass_fraction");
+  std::string carrierKey = "carrier_mass_fraction";
+  if (m.has("carrier")) {
+    YamlMap c = m.getMap("carrier");
+    f.carrier = readBodyKeys(c);
+    c.finish();
+    carrierKey = "carrier";
+  } else {
+    f.carrierFraction = m.has(carrierKey) ? m.getPositive(carrierKey) : kDefaultForkCarrierFraction;
+    if (f.carrierFraction >= 1) m.fail(carrierKey, "must be below 1");
+    f.carrier = calcDefaultForkCarrier(s, f.carrierFraction);
+  }
+  checkRemainder(m, carrierKey, s.frontFrame, f.carrier, "front_frame");
+  if (m.has("torsion")) {
+    YamlMap t = m.getMap("torsion");
+    f.hasTorsion = true;
+    readSpringDamper(t, f.torsionStiffness, f.torsionDamping);
+    t.finish();
+  }
+  m.finish();
+  return f;
+}
+
+RiderLeanSpec readRiderLean(YamlMap m, const Scenario& s) {
+  RiderLeanSpec r;
+  r.hingeHeight = m.getPositive("hinge_height_m");
+  r.body = readBodyKeys(m);
+  readSpringDamper(m, r.stiffness, r.damping);
+  if (r.body.com[1] != 0) m.fail("com_m", "the upper body's centre of mass must lie in the plane of symmetry (y = 0)");
+  checkRemainder(m, "mass_kg", s.rearFrame, r.body, "rear_frame");
+  m.finish();
+  return r;
+}
+
+void readExtensions(YamlMap& root, Scenario& s) {
+  if (root.has("steer_damper")) {
+    s.hasSteerDamper = true;
+    s.steerDamper = readSteerDamper(root.getMap("steer_damper"));
+  }
+  if (root.has("fork_compliance")) {
+    s.hasForkCompliance = true;
+    s.forkCompliance = readForkCompliance(root.getMap("fork_compliance"), s);
+  }
+  if (root.has("rider_lean")) {
+    s.hasRiderLean = true;
+    s.riderLean = readRiderLean(root.getMap("rider_lean"), s);
+  }
+}
+
+}  // namespace motostab

@@ -1,0 +1,37 @@
+#pragma once
+// Readers of the optional model-extension sections of a scenario (issue 10): `steer_damper`,
+// `fork_compliance`, `rider_lean`. Each section is strict (unknown keys, wrong types, negative
+// stiffnesses are InputErrors at file:line:col); absent sections leave the model as it was.
+#include "scenario/scenario.h"
+#include "scenario/yaml_map.h"
+
+namespace motostab {
+
+/// Reads every extension section present in the scenario root `root` into `scenario` (whose
+/// frames, wheels and geometry are already read).
+void readExtensions(YamlMap& root, Scenario& scenario);
+
+/// Reads `mass_kg`, `com_m` and `inertia_kgm2` (checked) from `m` (scenario.cpp); the caller finishes the map.
+BodySpec readBodyKeys(YamlMap& m);
+
+/// `steer_damper: {damping_Nms_per_rad, coulomb_Nm?, coulomb_smoothing_rad_per_s?}`.
+SteerDamperSpec readSteerDamper(YamlMap m);
+
+/// `fork_compliance: {stiffness_Nm_per_rad, damping_Nms_per_rad, axis_distance_along_steer_m?,
+/// carrier_mass_fraction? | carrier: {mass_kg, com_m, inertia_kgm2}?, torsion: {stiffness_Nm_per_rad,
+/// damping_Nms_per_rad}?}`; the front frame without the carrier must remain a valid body.
+ForkComplianceSpec readForkCompliance(YamlMap m, const Scenario& scenario);
+
+/// `rider_lean: {hinge_height_m, mass_kg, com_m, inertia_kgm2, stiffness_Nm_per_rad,
+/// damping_Nms_per_rad}`; the rear frame without the upper body must remain a valid body.
+RiderLeanSpec readRiderLean(YamlMap m, const Scenario& scenario);
+
+/// Default fork bending axis: the steer-axis point at the height of the front tyre's top (2 r_F), an
+/// estimate of the fork crown (lower triple clamp), m along the steer axis: 2 r_F / cos(lambda).
+double calcDefaultForkAxisDistance(const Scenario& scenario);
+
+/// Default carrier fraction of the front frame's mass (estimate: lower fork legs, axle and brake
+/// caliper are about a third of a motorcycle's front frame; see docs/scenario-format.md).
+constexpr double kDefaultForkCarrierFraction = 0.3;
+
+}  // namespace motostab

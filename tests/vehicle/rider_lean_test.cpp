@@ -1,0 +1,128 @@
+// Passive rider lean (vehicle/rider_lean.h, scenario `rider_lean`): totals kept, the locked-vehicle
+// frequency sqrt(k/J) against a hand calculation, the stiff limit, --set and malformed input.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <sstream>
+
+#include "extension_test_util.h"
+
+namespace motostab {
+namespace {
+
+using namespace motostab::testing;
+
+// A rider upper body drawn at random (seeded): 20-30 kg with its CoM 0.15-0.25 m above the rear
+// frame's and 0.2-0.3 m above the hinge, inertia of a trunk-sized body (Winter 2009, Table 4.1:
+// head-arms-trunk radius of gyration about 0.5 of its 0.5 m length). Small enough that the rest of the
+// Meijaard (2007) rear frame (85 kg, I_xx 9.2 kg m^2) stays a valid body.
+RiderLeanSpec drawRider(std::mt19937_64& rng, const BodySpec& rearFrame) {
+  RiderLeanSpec r;
+  r.body.mass = drawUniform(rng, 20, 30);
+  r.body.com = {rearFrame.com[0] + drawUniform(rng, -0.05, 0.05), 0, rearFrame.com[2] + drawUniform(rng, 0.15, 0.25)};
+  r.hingeHeight = r.body.com[2] - drawUniform(rng, 0.2, 0.3);
+  const double xx = drawUniform(rng, 1.0, 1.5);
+  r.body.inertia = {xx, xx * drawUniform(rng, 1.0, 1.1), drawUniform(rng, 0.3, 0.5), 0, drawUniform(rng, -0.1, 0.1), 0};
+  r.stiffness = drawUniform(rng, 800, 2000);
+  r.damping = drawUniform(rng, 20, 80);
+  return r;
+}
+
+std::string toYaml(const RiderLeanSpec& r, double stiffnessScale = 1, double dampingScale = 1) {
+  std::ostringstream o;
+  o.precision(17);
+  const auto& I = r.body.inertia;
+  o << "rider_lean={hinge_height_m: " << r.hingeHeight << ", mass_kg: " << r.body.mass << ", com_m: [" << r.body.com[0]
+    << ", " << r.body.com[1] << ", " << r.body.com[2] << "], inertia_kgm2: {xx: " << I.xx << ", yy: " << I.yy
+    << ", zz: " << I.zz << ", xy: " << I.xy << ", xz: " << I.xz << ", yz: " << I.yz
+    << "}, stiffness_Nm_per_rad: " << r.stiffness * stiffnessScale
+    << ", damping_Nms_per_rad: " << r.damping * dampingScale << "}";
+  return o.str();
+}
+
+TEST(RiderLean, WholeVehicleTotalsAreKept) {
+  std::mt19937_64 rng(1010);
+  for (const std::string& file : {kWhipple, kEnduro}) {
+    const Scenario base = loadScenario(file);
+    const RiderLeanSpec r = drawRider(rng, base.rearFrame);
+    const Scenario lean = loadScenario(file, {toYaml(r)});
+    ASSERT_TRUE(lean.hasRiderLean);
+    EXPECT_LT(calcTotalsDifference(calcVehicleTotals(base), calcVehicleTotals(lean), base.geometry.wheelbase), 1e-13) << file;
+  }
+}
+
+// With everything else locked and no gravity the upper body swings about the hinge axis (design x
+// through (0, 0, h)): omega^2 = k / J, J = I_xx + m ((z_G - h)^2 + y_G^2) (parallel axes).
+TEST(RiderLean, LockedVehicleFrequencyIsSqrtKOverJ) {
+  std::mt19937_64 rng(2020);
+  for (int trial = 0; trial < 3; ++trial) {
+    const RiderLeanSpec r = drawRider(rng, loadScenario(kEnduro).rearFrame);
+    const Scenario s = loadScenario(kEnduro, {toYaml(r), "gravity_mps2=0"});
+    const double dz = r.body.com[2] - r.hingeHeight;
+    const double J = r.body.inertia.xx + r.body.mass * dz * dz;
+    const double omega = std::sqrt(calcLockedOmegaSquared(s, "rider_lean"));
+    EXPECT_NEAR(omega / std::sqrt(r.stiffness / J), 1.0, 1e-6);
+  }
+}
+
+TEST(RiderLean, StiffRiderReproducesTheRigidRider) {
+  std::mt19937_64 rng(3030);
+  const Scenario whipple = loadScenario(kWhipple);
+  const Scenario stiff = loadScenario(kWhipple, {toYaml(drawRider(rng, whipple.rearFrame), 1e4, 1e2)});
+  for (double v : {2.0, 5.0, 8.0})
+    EXPECT_LT(calcSpectrumDistance(calcEigenvaluesAt(whipple, v), calcEigenvaluesAt(stiff, v)), 1e-4) << v;
+
+  const SweepResult a = runScenarioSweep(loadScenario(kEnduro), 10, 30, 1);
+  const Scenario enduro = loadScenario(kEnduro);
+  const SweepResult b = runScenarioSweep(loadScenario(kEnduro, {toYaml(drawRider(rng, enduro.rearFrame), 1e4, 1e2)}), 10, 30, 1);
+  for (size_t k : {0, 10, 20})
+    for (const char* mode : {"weave", "wobble"}) {
+      const cd la = findLabelled(a, mode, k), lb = findLabelled(b, mode, k);
+      ASSERT_TRUE(std::isfinite(la.real()) && std::isfinite(lb.real())) << mode << " at " << a.speeds[k];
+      EXPECT_LT(std::abs(la - lb) / std::abs(la), 1e-3) << mode << " at " << a.speeds[k];
+    }
+}
+
+TEST(RiderLean, SetCreatesTheSectionAndEditsIt) {
+  std::mt19937_64 rng(4040);
+  const RiderLeanSpec r = drawRider(rng, loadScenario(kWhipple).rearFrame);
+  const Scenario s = loadScenario(kWhipple, {toYaml(r), "rider_lean.stiffness_Nm_per_rad=1234"});
+  ASSERT_TRUE(s.hasRiderLean);
+  EXPECT_DOUBLE_EQ(s.riderLean.stiffness, 1234);
+  EXPECT_DOUBLE_EQ(s.riderLean.body.mass, r.body.mass);
+  const VehicleModel model(s);
+  EXPECT_GE(findCoordinate(model, "rider_lean"), 0);
+  EXPECT_EQ(model.getIndices().extension.size(), 1u);
+}
+
+TEST(RiderLean, MalformedInputNamesFileLineColumnAndKey) {
+  const std::string ok = "  hinge_height_m: 0.85\n  mass_kg: 25\n  com_m: [0.3, 0, 1.1]\n"
+                         "  inertia_kgm2: {xx: 1.2, yy: 1.3, zz: 0.4, xy: 0, xz: 0, yz: 0}\n"
+                         "  stiffness_Nm_per_rad: 1000\n";
+  const std::string head = "rider_lean:\n";
+  expectBadInputs(kWhipple, "rider_lean_bad",
+                  {
+                      {head + ok + "  damping_Nms_per_rad: -1\n", 3, "rider_lean.damping_Nms_per_rad"},
+                      {head + ok + "  damping_Nms_per_rad: .nan\n", 3, "rider_lean.damping_Nms_per_rad"},
+                      {head + ok + "  damping_Nms_per_rad: 1\n  lean_axis: x\n", 3, "rider_lean.lean_axis"},
+                      {head + "  damping_Nms_per_rad: 1\n" + ok + "  stiffness: 5\n", 3, "rider_lean.stiffness"},
+                      {"rider_lean:\n  damping_Nms_per_rad: 1\n  mass_kg: 25\n  com_m: [0.3, 0, 1.1]\n"
+                       "  inertia_kgm2: {xx: 1.2, yy: 1.3, zz: 0.4, xy: 0, xz: 0, yz: 0}\n  stiffness_Nm_per_rad: 1000\n"
+                       "  hinge_height_m: -0.9\n", 3, "rider_lean.hinge_height_m"},
+                      {"rider_lean:\n  damping_Nms_per_rad: 1\n  hinge_height_m: 0.85\n  com_m: [0.3, 0, 1.1]\n"
+                       "  inertia_kgm2: {xx: 1.2, yy: 1.3, zz: 0.4, xy: 0, xz: 0, yz: 0}\n  stiffness_Nm_per_rad: 1000\n"
+                       "  mass_kg: 90\n", 3, "rider_lean.mass_kg"},  // more than the rear frame's 85 kg
+                      {"rider_lean:\n  damping_Nms_per_rad: 1\n  hinge_height_m: 0.85\n  mass_kg: 25\n"
+                       "  inertia_kgm2: {xx: 1.2, yy: 1.3, zz: 0.4, xy: 0, xz: 0, yz: 0}\n  stiffness_Nm_per_rad: 1000\n"
+                       "  com_m: [0.3, 0.1, 1.1]\n", 3, "rider_lean.com_m"},
+                      {"rider_lean:\n  damping_Nms_per_rad: 1\n  hinge_height_m: 0.85\n  mass_kg: 25\n"
+                       "  inertia_kgm2: {xx: 1.2, yy: 1.3, zz: 0.4, xy: 0, xz: 0, yz: 0}\n  stiffness_Nm_per_rad: 1000\n"
+                       "  com_m: high\n", 3, "rider_lean.com_m"},
+                      {"rider_lean:\n  damping_Nms_per_rad: 1\n  hinge_height_m: 0.85\n  mass_kg: 25\n"
+                       "  com_m: [0.3, 0, 1.1]\n  inertia_kgm2: {xx: 1.2, yy: 1.3, zz: 0.4, xy: 0, xz: 0, yz: 0}\n"
+                       "  stiffness_Nm_per_rad: -1000\n", 3, "rider_lean.stiffness_Nm_per_rad"},
+                  });
+}
+
+}  // namespace
+}  // namespace motostab

@@ -1,0 +1,174 @@
+// Steering damper (vehicle/steer_damper.h, scenario `steer_damper`): against an independent linear
+// model, the zero-damping limit, the linearised Coulomb friction, --set and malformed input.
+#include <gtest/gtest.h>
+
+#include <Eigen/Eigenvalues>
+#include <cmath>
+
+#include "extension_test_util.h"
+#include "vehicle/steer_damper.h"
+
+namespace motostab {
+namespace {
+
+using namespace motostab::testing;
+
+// Meijaard, Papadopoulos, Ruina, Schwab (2007), Proc. R. Soc. A 463:1955-1982, Appendix A
+// (eqs. A1-A27): M, C1, K0, K2 of the linearised Whipple bicycle from its Table 1 parameters, in the
+// paper's frame (z down, steer positive right). Written here from the paper, not from motostab.
+struct Benchmark {
+  Eigen::Matrix2d M, C1, K0, K2;
+};
+
+Benchmark calcMeijaardMatrices(const Scenario& s) {
+  const double w = s.geometry.wheelbase, c = s.geometry.trail, lam = s.geometry.steerAxisTilt;
+  const double rR = s.rearWheel.radius, mR = s.rearWheel.mass, IRxx = s.rearWheel.diametralInertia,
+               IRyy = s.rearWheel.axialInertia;
+  const double rF = s.frontWheel.radius, mF = s.frontWheel.mass, IFxx = s.frontWheel.diametralInertia,
+               IFyy = s.frontWheel.axialInertia;
+  // Design frame (z up) to the paper's (z down): z and the xz products change sign.
+  const BodySpec &B = s.rearFrame, &H = s.frontFrame;
+  const double xB = B.com[0], zB = -B.com[2], mB = B.mass;
+  const double IBxx = B.inertia.xx, IBzz = B.inertia.zz, IBxz = -B.inertia.xz;
+  const double xH = H.com[0], zH = -H.com[2], mH = H.mass;
+  const double IHxx = H.inertia.xx, IHzz = H.inertia.zz, IHxz = -H.inertia.xz;
+  const double IRzz = IRxx, IFzz = IFxx;
+  const double mT = mR + mB + mH + mF;                                   // A1
+  const double xT = (xB * mB + xH * mH + w * mF) / mT;                   // A2
+  const double zT = (-rR * mR + zB * mB + zH * mH - rF * mF) / mT;       // A3
+  const double ITxx = IRxx + IBxx + IHxx + IFxx + mR * rR * rR + mB * zB * zB + mH * zH * zH + mF * rF * rF;  // A4
+  const double ITxz = IBxz + IHxz - mB * xB * zB - mH * xH * zH + mF * w * rF;                                // A5
+  const double ITzz = IRzz + IBzz + IHzz + IFzz + mB * xB * xB + mH * xH * xH + mF * w * w;                  // A6, A7
+  const double mA = mH + mF;                                                                                 // A8
+  const double xA = (xH * mH + w * mF) / mA, zA = (zH * mH - rF * mF) / mA;                                  // A9
+  const double IAxx = IHxx + IFxx + mH * (zH - zA) * (zH - zA) + mF * (rF + zA) * (rF + zA);                 // A10
+  const double IAxz = IHxz - mH * (xH - xA) * (zH - zA) + mF * (w - xA) * (rF + zA);
+  const double IAzz = IHzz + IFzz + mH * (xH - xA) * (xH - xA) + mF * (w - xA) * (w - xA);
+  const double uA = (xA - w - c) * std::cos(lam) - zA * std::sin(lam);                                       // A11
+  const double sl = std::sin(lam), cl = std::cos(lam);
+  const double IAll = mA * uA * uA + IAxx * sl * sl + 2 * IAxz * sl * cl + IAzz * cl * cl;                   // A12
+  const double IAlx = -mA * uA * zA + IAxx * sl + IAxz * cl;
+  const double IAlz = mA * uA * xA + IAxz * sl + IAzz * cl;
+  const double mu = c / w * cl;                                                                              // A13
+  const double SR = IRyy / rR, SF = IFyy / rF, ST = SR + SF;                                                 // A14
+  const double SA = mA * uA + mu * mT * xT;                                                                  // A15
+  Benchmark b;
+  b.M << ITxx, IAlx + mu * ITxz, IAlx + mu * ITxz, IAll + 2 * mu * IAlz + mu * mu * ITzz;                    // A16
+  b.K0 << mT * zT, -SA, -SA, -SA * sl;                                                                       // A17
+  b.K2 << 0, (ST - mT * zT) / w * cl, 0, (SA + SF * sl) / w * cl;                                            // A18
+  b.C1 << 0, mu * ST + SF * cl + ITxz / w * cl - mu * mT * zT,                                               // A19-A23
+      -(mu * ST + SF * cl), IAlz / w * cl + mu * (SA + ITzz / w * cl);
+  return b;
+}
+
+// Eigenvalues of M q'' + (v C1 + diag(0, c)) q' + (g K0 + v^2 K2) q = 0.
+Eigen::VectorXcd calcBenchmarkEigenvalues(const Benchmark& b, double g, double v, double c) {
+  const Eigen::Matrix2d C = v * b.C1 + Eigen::Vector2d(0, c).asDiagonal().toDenseMatrix();
+  const Eigen::Matrix2d K = g * b.K0 + v * v * b.K2;
+  const Eigen::Matrix2d Minv = b.M.inverse();
+  Eigen::Matrix4d A = Eigen::Matrix4d::Zero();
+  A.topRightCorner<2, 2>().setIdentity();
+  A.bottomLeftCorner<2, 2>() = -Minv * K;
+  A.bottomRightCorner<2, 2>() = -Minv * C;
+  return Eigen::EigenSolver<Eigen::Matrix4d>(A).eigenvalues();
+}
+
+// All eigenvalues at 0..10 m/s within 1e-8 (relative to max(1, |lambda|)); the model's one extra
+// eigenvalue (forward speed) is zero.
+void expectMatchesBenchmark(const Scenario& s, double c) {
+  const Benchmark b = calcMeijaardMatrices(s);
+  for (int v = 0; v <= 10; ++v) {
+    const Eigen::VectorXcd ref = calcBenchmarkEigenvalues(b, s.gravity, v, c);
+    const Eigen::VectorXcd got = calcEigenvaluesAt(s, v);
+    ASSERT_EQ(got.size(), 5);
+    EXPECT_LT(calcSpectrumDistance(ref, got), 1e-8) << "v = " << v << "\nref " << ref.transpose() << "\ngot " << got.transpose();
+    EXPECT_LT(calcSpectrumDistance(got, (Eigen::VectorXcd(5) << ref, cd(0)).finished()), 1e-8) << "v = " << v;
+  }
+}
+
+TEST(SteerDamper, BenchmarkBicycleMatchesMeijaardWithDampingInC) {
+  Scenario s = loadScenario(kWhipple, {"steer_damper={damping_Nms_per_rad: 0.5}"});
+  ASSERT_TRUE(s.hasSteerDamper);
+  expectMatchesBenchmark(s, 0.5);
+}
+
+// A randomly drawn bicycle (seeded): frame masses, rear-frame CoM and the damping vary.
+TEST(SteerDamper, RandomBicycleMatchesMeijaard) {
+  std::mt19937_64 rng(20260410);
+  Scenario s = loadScenario(kWhipple);
+  s.rearFrame.mass *= drawUniform(rng, 0.7, 1.3);
+  s.rearFrame.com[0] *= drawUniform(rng, 0.8, 1.2);
+  s.rearFrame.com[2] *= drawUniform(rng, 0.9, 1.1);
+  s.frontFrame.mass *= drawUniform(rng, 0.7, 1.3);
+  s.geometry.trail *= drawUniform(rng, 0.7, 1.3);
+  s.hasSteerDamper = true;
+  s.steerDamper.damping = drawUniform(rng, 0.1, 2.0);
+  expectMatchesBenchmark(s, s.steerDamper.damping);
+}
+
+TEST(SteerDamper, ZeroDampingReproducesTheUndampedModel) {
+  const Scenario base = loadScenario(kWhipple);
+  const Scenario zero = loadScenario(kWhipple, {"steer_damper={damping_Nms_per_rad: 0}"});
+  for (double v : {2.0, 5.0, 8.0}) EXPECT_LT(calcSpectrumDistance(calcEigenvaluesAt(base, v), calcEigenvaluesAt(zero, v)), 1e-4);
+
+  const SweepResult a = runScenarioSweep(loadScenario(kEnduro), 10, 30, 1);
+  const SweepResult b = runScenarioSweep(loadScenario(kEnduro, {"steer_damper={damping_Nms_per_rad: 0}"}), 10, 30, 1);
+  for (size_t k : {0, 10, 20})
+    for (const char* mode : {"weave", "wobble"}) {
+      const cd la = findLabelled(a, mode, k), lb = findLabelled(b, mode, k);
+      ASSERT_TRUE(std::isfinite(la.real()) && std::isfinite(lb.real())) << mode;
+      EXPECT_LT(std::abs(la - lb) / std::abs(la), 1e-3) << mode << " at " << a.speeds[k];
+    }
+}
+
+// Damping raises wobble damping on the enduro (Cossalter 2006 sec. 8.5; Sharp & Limebeer 2001).
+TEST(SteerDamper, DampingStabilisesWobble) {
+  const SweepResult a = runScenarioSweep(loadScenario(kEnduro), 20, 30, 10);
+  const SweepResult b = runScenarioSweep(loadScenario(kEnduro, {"steer_damper={damping_Nms_per_rad: 10}"}), 20, 30, 10);
+  for (size_t k : {0, 1}) EXPECT_LT(findLabelled(b, "wobble", k).real(), findLabelled(a, "wobble", k).real() - 0.5);
+}
+
+// Linearised, the smoothed friction f tanh(delta'/omega_s) is a viscous damper f/omega_s.
+TEST(SteerDamper, LinearisedCoulombFrictionIsViscous) {
+  std::mt19937_64 rng(77);
+  const double f = drawUniform(rng, 0.05, 0.5), ws = drawUniform(rng, 0.5, 5.0), c = drawUniform(rng, 0.0, 1.0);
+  const Scenario dry = loadScenario(kWhipple, {"steer_damper={damping_Nms_per_rad: " + std::to_string(c) +
+                                                   ", coulomb_Nm: " + std::to_string(f) +
+                                                   ", coulomb_smoothing_rad_per_s: " + std::to_string(ws) + "}"});
+  ASSERT_NEAR(dry.steerDamper.coulomb, f, 1e-6);
+  Scenario viscous = loadScenario(kWhipple);
+  viscous.hasSteerDamper = true;
+  viscous.steerDamper.damping = dry.steerDamper.damping + dry.steerDamper.coulomb / dry.steerDamper.coulombSmoothing;
+  for (double v : {3.0, 6.0}) EXPECT_LT(calcSpectrumDistance(calcEigenvaluesAt(viscous, v), calcEigenvaluesAt(dry, v)), 1e-7);
+  // The torque law itself, at a rate drawn at random.
+  const double rate = drawUniform(rng, -3, 3);
+  EXPECT_NEAR(calcSteerDamperTorque(dry.steerDamper, rate),
+              -dry.steerDamper.damping * rate - dry.steerDamper.coulomb * std::tanh(rate / dry.steerDamper.coulombSmoothing), 1e-14);
+}
+
+TEST(SteerDamper, SetCreatesAndEditsTheSection) {
+  const Scenario s = loadScenario(kWhipple, {"steer_damper={damping_Nms_per_rad: 0.4}", "steer_damper.coulomb_Nm=0.3"});
+  EXPECT_TRUE(s.hasSteerDamper);
+  EXPECT_DOUBLE_EQ(s.steerDamper.damping, 0.4);
+  EXPECT_DOUBLE_EQ(s.steerDamper.coulomb, 0.3);
+  EXPECT_FALSE(loadScenario(kWhipple).hasSteerDamper);
+}
+
+TEST(SteerDamper, MalformedInputNamesFileLineColumnAndKey) {
+  expectBadInputs(kWhipple, "steer_damper_bad",
+                  {
+                      {"steer_damper:\n  damping_Nms_per_rad: -0.5\n", 3, "steer_damper.damping_Nms_per_rad"},
+                      {"steer_damper:\n  damping_Nms_per_rad: .nan\n", 3, "steer_damper.damping_Nms_per_rad"},
+                      {"steer_damper:\n  damping_Nms_per_rad: [1]\n", 3, "steer_damper.damping_Nms_per_rad"},
+                      {"steer_damper:\n  damping_Nms_per_rad: soft\n", 3, "steer_damper.damping_Nms_per_rad"},
+                      {"steer_damper:\n  damping_Nms_per_rad: 1\n  damping: 0.5\n", 3, "steer_damper.damping"},
+                      {"steer_damper:\n  coulomb_Nm: 1\n", 3, "steer_damper"},  // missing damping: at the map
+                      {"steer_damper:\n  damping_Nms_per_rad: 1\n  coulomb_Nm: -1\n", 3, "steer_damper.coulomb_Nm"},
+                      {"steer_damper:\n  damping_Nms_per_rad: 1\n  coulomb_smoothing_rad_per_s: 0\n", 3,
+                       "steer_damper.coulomb_smoothing_rad_per_s"},
+                      {"steer_damper: 0.5\n", 1, "steer_damper"},
+                  });
+}
+
+}  // namespace
+}  // namespace motostab

@@ -1,0 +1,17 @@
+#include "vehicle/body_builder.h"
+
+namespace motostab {
+
+SimTK::Body::Rigid makeBody(const BodySpec& b, const SimTK::Vec3& origin_D) {
+  const SimTK::Vec3 com_B = toVec3(b.com) - origin_D;
+  const SimTK::Inertia I_com(SimTK::Vec3(b.inertia.xx, b.inertia.yy, b.inertia.zz),
+                             SimTK::Vec3(b.inertia.xy, b.inertia.xz, b.inertia.yz));
+  return SimTK::Body::Rigid(SimTK::MassProperties(b.mass, com_B, I_com.shiftFromMassCenter(-com_B, b.mass)));
+}
+
+void addPinSpringDamper(BuildContext& ctx, const SimTK::MobilizedBody& pin, double stiffness, double damping) {
+  SimTK::Force::MobilityLinearSpring(ctx.forces, pin, SimTK::MobilizerQIndex(0), stiffness, 0.0);
+  SimTK::Force::MobilityLinearDamper(ctx.forces, pin, SimTK::MobilizerUIndex(0), damping);
+}
+
+}  // namespace motostab

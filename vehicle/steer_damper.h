@@ -1,0 +1,24 @@
+#pragma once
+// Steering damper (issue 10, `steer_damper`): a rotary damper between the front frame and the rear
+// frame about the steer axis. With delta' the steer rate (rad/s, front frame relative to rear frame),
+// the torque on the front frame about the steer axis (its reaction on the rear frame) is
+//   T = -c delta' - f tanh(delta' / omega_s)                     (N m)
+// c viscous damping (N m s/rad), f Coulomb friction (N m), omega_s the smoothing rate (rad/s): the
+// friction reaches tanh(1) = 76 % of f at delta' = omega_s and 99.9 % at 4 omega_s.
+// Linearised about straight running (delta' = 0) the friction is a viscous damper of f/omega_s: the
+// linear models (linearize, sweep) see c + f/omega_s. A dry damper is therefore best studied in the
+// time domain (simulate); sweeps of dampers with friction show the locked-steer limit as f/omega_s grows.
+// Viscous steering dampers in the literature: Meijaard et al. (2007) sec. 4 (c added to the steer
+// entry of C), Cossalter (2006) sec. 8.5, Sharp & Limebeer (2001) (c about 6.8 N m s/rad on a sports bike).
+#include "plugins/plugin_api.h"
+#include "scenario/scenario.h"
+
+namespace motostab {
+
+/// Adds the damper to the steer mobilizer of `frontFrame` (a one-DOF Pin whose u is the steer rate).
+void addSteerDamper(BuildContext& context, const SimTK::MobilizedBody& frontFrame, const SteerDamperSpec& spec);
+
+/// The damper torque T (N m) at steer rate `steerRate` (rad/s), as above.
+double calcSteerDamperTorque(const SteerDamperSpec& spec, double steerRate);
+
+}  // namespace motostab
