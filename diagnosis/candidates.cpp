@@ -53,6 +53,19 @@ Candidate makeForkCompliance(const YAML::Node& tree) {
           {makeStiffness("stiffness_Nm_per_rad", "fork_compliance.stiffness_Nm_per_rad", k)}};
 }
 
+// Slipping tyres (relaxation_linear, bicycle preset) on a vehicle modelled with rolling constraints:
+// the normalised cornering stiffness of both tyres free (preset 15 /rad); rolling is its stiff limit.
+void addTyreSlipCandidate(const YAML::Node& tree, std::vector<Candidate>& out) {
+  const YAML::Node c = tree["contact"];
+  if (!c || !c.IsMap() || !c["model"] || c["model"].Scalar() != "rolling_no_slip") return;
+  CandidateParameter k = makeStiffness("cornering_stiffness_per_rad", "contact.front.cornering_stiffness_per_rad", 15);
+  k.alsoPaths = {"contact.rear.cornering_stiffness_per_rad"};
+  out.push_back({"tyre_slip",
+                 {"contact={model: relaxation_linear, preset: bicycle, front: {cornering_stiffness_per_rad: 15}, "
+                  "rear: {cornering_stiffness_per_rad: 15}}"},
+                 {k}});
+}
+
 void addSwingarmCandidates(const YAML::Node& tree, std::vector<Candidate>& out) {
   const YAML::Node sw = tree["swingarm"];
   if (!sw || !sw.IsMap()) return;
@@ -98,6 +111,7 @@ std::vector<Candidate> listCandidates(const YAML::Node& tree,
   if (!tree["steer_damper"]) out.push_back(makeSteerDamper(tree));
   if (!tree["fork_compliance"]) out.push_back(makeForkCompliance(tree));
   addSwingarmCandidates(tree, out);
+  addTyreSlipCandidate(tree, out);
   for (const ScalarParameter& p : listScalarParameters(tree)) {
     const double sigma = findSigma(p, uncertainty);
     if (sigma > 0) out.push_back(makeParameterCandidate(p, sigma));

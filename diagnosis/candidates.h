@@ -21,6 +21,7 @@ struct CandidateParameter {
   bool offAtInfinity = false;  ///< the effect vanishes as value -> infinity (a stiffness)
   bool offAtBound = false;  ///< "off" is a bound (damping 0): the likelihood ratio uses the 50:50 mixture
   double priorMean = 0, priorSigma = 0;  ///< Gaussian prior (measured parameters); sigma 0: none
+  std::vector<std::string> alsoPaths;  ///< further keys set to the same value (both tyres)
 };
 
 struct Candidate {
@@ -31,8 +32,10 @@ struct Candidate {
 
 /// Every candidate the scenario (its YAML tree after base overrides, and the measured parameters'
 /// uncertainties given as path -> sigma) admits: model extensions this build knows, swingarm
-/// compliance variants for scenarios with a swingarm, and one `parameter:<path>` per scalar of the
-/// geometry, bodies and wheels.
+/// compliance variants for scenarios with a swingarm, the bicycle tyre preset (tyre_slip) for
+/// scenarios on rolling constraints, and one `parameter:<path>` per scalar of the geometry, bodies and
+/// wheels. `rider_lean` is no default candidate: it needs the rider's upper-body mass properties,
+/// which a scenario does not hold.
 std::vector<Candidate> listCandidates(const YAML::Node& scenarioTree,
                                       const std::vector<std::pair<std::string, double>>& uncertainty);
 

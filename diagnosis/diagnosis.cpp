@@ -123,7 +123,7 @@ void crossValidate(const FitProblem& problem, const ModelSpec& model, FitSummary
   double total = 0;
   int count = 0;
   for (int f = 0; f < K; ++f) {
-    const Eigen::VectorXd x = model.size() ? fitModel(problem, model, s.x, f, 10).x : s.x;
+    const Eigen::VectorXd x = model.size() ? fitModel(problem, model, s.x, f, 6).x : s.x;
     const Eigen::VectorXd r = problem.calcResiduals(problem.predict(model, x));
     double sum = 0;
     int m = 0;
@@ -199,7 +199,7 @@ void fitStep(const FitProblem& problem, Step& step, const DiagnosisOptions& opt,
 
 // Noise of unknown components from the best fit of the step (lowest chi2), then everything refitted.
 void estimateNoise(FitProblem& problem, Step& step, const DiagnosisOptions& opt, const std::string& stage) {
-  for (int pass = 0; pass < 2; ++pass) {
+  for (int pass = 0; pass < 1; ++pass) {  // one refit: a second changes sigma by well under 1 %
     const FitSummary* best = &step.baseline;
     const Candidate* bestCandidate = nullptr;
     for (size_t i = 0; i < step.fits.size(); ++i)

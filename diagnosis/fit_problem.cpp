@@ -39,6 +39,7 @@ std::vector<std::string> ModelSpec::makeOverrides(const Eigen::VectorXd& x) cons
     out.insert(out.end(), c->fixedOverrides.begin(), c->fixedOverrides.end());
     for (const auto& p : c->parameters) {
       out.push_back(formatOverride(p.path, p.logScale ? std::exp(x(i)) : x(i)));
+      for (const auto& also : p.alsoPaths) out.push_back(formatOverride(also, p.logScale ? std::exp(x(i)) : x(i)));
       ++i;
     }
   }

@@ -34,21 +34,33 @@ Eigen::MatrixXd calcOutputRows(const LinearModel& lin, const ResponseRun& run) {
   return C;
 }
 
-// basis[j](i, :) = c_j exp(A (t_i - t_0)).
+// basis[j](i, :) = c_j exp(A (t_i - t0)) = c_j V diag(exp(lambda (t_i - t0))) V^-1 from the model's
+// eigen-decomposition; by exponentials of A dt (Pade, Eigen's MatrixFunctions) when V is ill-conditioned.
 std::vector<Eigen::MatrixXd> calcFreeResponseBasis(const LinearModel& lin, const ResponseRun& run) {
   const Eigen::MatrixXd C = calcOutputRows(lin, run);
   const int n = static_cast<int>(lin.A.rows()), m = static_cast<int>(run.time.size());
   std::vector<Eigen::MatrixXd> basis(run.signals.size(), Eigen::MatrixXd(m, n));
+  const Eigen::PartialPivLU<Eigen::MatrixXcd> lu(lin.eigenvectors);
+  const Eigen::MatrixXcd Vinv = lu.inverse();
+  const bool modal = lin.eigenvectors.rows() == n && Vinv.allFinite() &&
+                     lin.eigenvectors.norm() * Vinv.norm() < 1e8;
+  const Eigen::MatrixXcd CV = C * lin.eigenvectors;
   Eigen::MatrixXd E = Eigen::MatrixXd::Identity(n, n), step;
   double lastDt = -1;
   for (int i = 0; i < m; ++i) {
-    if (i > 0) {
-      const double dt = run.time[i] - run.time[i - 1];
-      if (std::abs(dt - lastDt) > 1e-12 * std::max(1.0, dt)) step = (lin.A * dt).exp();
-      lastDt = dt;
-      E = step * E;
+    Eigen::MatrixXd row;
+    if (modal) {
+      const Eigen::VectorXcd e = (lin.eigenvalues * (run.time[i] - run.time[0])).array().exp();
+      row = ((CV * e.asDiagonal()) * Vinv).real();
+    } else {
+      if (i > 0) {
+        const double dt = run.time[i] - run.time[i - 1];
+        if (std::abs(dt - lastDt) > 1e-12 * std::max(1.0, dt)) step = (lin.A * dt).exp();
+        lastDt = dt;
+        E = step * E;
+      }
+      row = C * E;
     }
-    const Eigen::MatrixXd row = C * E;
     for (size_t j = 0; j < basis.size(); ++j) basis[j].row(i) = row.row(static_cast<int>(j));
   }
   return basis;
