@@ -181,7 +181,7 @@ SweepResult runSweep(const VehicleModel& model, const SweepOptions& opt) {
         workers,
         [&](size_t w) {
           std::unique_ptr<VehicleModel> own;
-          if (w > 0) own = std::make_unique<VehicleModel>(model.getScenario());
+          if (w > 0) own = model.makeReplica();
           runChain(w > 0 ? *own : model, span[w / 2], w % 2 == 1, w == 0);
         },
         [&]() {
@@ -218,7 +218,7 @@ SweepResult runSweep(const VehicleModel& model, const SweepOptions& opt) {
   } else {
     runWorkers(refiners, [&](size_t w) {
       std::unique_ptr<VehicleModel> own;
-      if (w > 0) own = std::make_unique<VehicleModel>(model.getScenario());
+      if (w > 0) own = model.makeReplica();
       for (size_t i = w; i < crossings.size(); i += refiners) refine(w > 0 ? *own : model, crossings[i]);
     });
   }

@@ -4,6 +4,7 @@
 #include <memory>
 
 #include "apps/commands.h"
+#include "io/output_folder.h"
 #include "response/modes_json.h"
 #include "response/response_csv.h"
 
@@ -31,7 +32,9 @@ void runResponseIdentify(ResponseArgs args) {
       args.out.empty() ? std::filesystem::path(std::filesystem::path(args.csv).stem().string() + "-modes")
                        : std::filesystem::path(args.out);
   std::cout << response::formatModesTable(result, record.signalColumns);
-  response::writeResponseReport(out, record, result);
+  OutputFolder folder(out);
+  response::writeResponseReport(folder.getPath(), record, result);
+  folder.commit();
   std::cout << "wrote " << (out / "modes.json").string() << " and " << (out / "response_fit.png").string() << "\n";
 }
 

@@ -6,7 +6,9 @@
 #include <string>
 
 #include "apps/commands.h"
+#include "apps/common_options.h"
 #include "io/input_error.h"
+#include "io/output_folder.h"
 #include "swingarm/identification/decomposition.h"
 #include "swingarm/identification/frf_test.h"
 #include "swingarm/identification/mass_properties.h"
@@ -51,7 +53,9 @@ void registerSwingarmIdentifyCommands(CLI::App& identify) {
   st->callback([args] {
     const auto t = id::readStaticTest(args->first);
     const auto r = id::identifyStatic(t, id::readStaticReadings(t));
-    id::writeStaticOutputs(t, r, args->out);
+    OutputFolder out(args->out);
+    id::writeStaticOutputs(t, r, out.getPath());
+    out.commit();
     printStatic(r);
   });
 
@@ -61,7 +65,9 @@ void registerSwingarmIdentifyCommands(CLI::App& identify) {
   fr->callback([args] {
     const auto t = id::readFrfTest(args->first);
     const auto r = id::identifyFrf(t, id::readHits(t));
-    id::writeFrfOutputs(t, r, args->out);
+    OutputFolder out(args->out);
+    id::writeFrfOutputs(t, r, out.getPath());
+    out.commit();
     printFrf(r);
   });
 
@@ -77,10 +83,12 @@ void registerSwingarmIdentifyCommands(CLI::App& identify) {
     if (std::abs(st.forcePoint.x - ft.forcePoint.x) > 1e-3 || std::abs(st.forcePoint.z - ft.forcePoint.z) > 1e-3)
       throw InputError({ft.file.string(), 0, 0, "force_point"}, "the hammer test's force point differs from the static test's");
     const auto swr = id::identifySwingarm(sr, fr);
+    OutputFolder folder(args->out);
+    id::writeStaticOutputs(st, sr, folder.getPath());
+    id::writeFrfOutputs(ft, fr, folder.getPath() / "frf");
+    id::writeSwingarmOutputs(swr, st, ft, folder.getPath());
+    folder.commit();
     const std::filesystem::path out(args->out);
-    id::writeStaticOutputs(st, sr, out);
-    id::writeFrfOutputs(ft, fr, out / "frf");
-    id::writeSwingarmOutputs(swr, st, ft, out);
     printStatic(sr);
     printFrf(fr);
     std::printf("swingarm: k_b %.6g +/- %.2g, k_t %.6g +/- %.2g Nm/rad; c_b %.4g, c_t %.4g, c_tw %.4g Nms/rad -> %s\n",
@@ -95,7 +103,9 @@ void registerSwingarmIdentifyCommands(CLI::App& identify) {
   cg->callback([args] {
     const auto t = id::readCogTest(args->first);
     const auto r = id::identifyCog(t);
-    id::writeCogOutputs(t, r, args->out);
+    OutputFolder out(args->out);
+    id::writeCogOutputs(t, r, out.getPath());
+    out.commit();
     std::printf("cog: mass %.4f +/- %.4f kg, CoG (%.5f, %.5f, %.5f) +/- (%.5f, %.5f, %.5f) m\n", r.mass, r.massStderr,
                 r.cog[0], r.cog[1], r.cog[2], r.cogStderr[0], r.cogStderr[1], r.cogStderr[2]);
   });
@@ -106,17 +116,20 @@ void registerSwingarmIdentifyCommands(CLI::App& identify) {
   in->callback([args] {
     const auto t = id::readInertiaTest(args->first);
     const auto r = id::identifyInertia(t);
-    id::writeInertiaOutputs(t, r, args->out);
+    OutputFolder out(args->out);
+    id::writeInertiaOutputs(t, r, out.getPath());
+    out.commit();
     std::printf("inertia about CoG: Ixx %.5f +/- %.5f, Iyy %.5f +/- %.5f, Izz %.5f +/- %.5f kg m^2\n", r.tensor(0, 0),
                 r.tensorStderr(0, 0), r.tensor(1, 1), r.tensorStderr(1, 1), r.tensor(2, 2), r.tensorStderr(2, 2));
   });
 
   CLI::App* vr = identify.add_subcommand("virtual-rig", "Write synthetic test inputs from the virtual rig (known truth)");
   vr->add_option("--out", args->out, "output folder")->required();
-  vr->add_option("--noise-factor", args->noiseFactor, "scale every noise figure (1 = realistic)")->check(CLI::PositiveNumber);
+  vr->add_option("--noise-factor", args->noiseFactor, "scale every noise figure (1 = realistic)")->check(makeNumberCheck(0, 1e6, true));
   vr->add_option("--seed", args->seed, "random seed");
   vr->callback([args] {
-    const std::filesystem::path out(args->out);
+    OutputFolder folder(args->out);
+    const std::filesystem::path out = folder.getPath();
     const id::VirtualSwingarm rig;
     const auto noise = id::RigNoise().scaled(args->noiseFactor);
     std::vector<double> loads;  // load and unload, 0-4000-0 N in 250 N steps
@@ -127,7 +140,9 @@ void registerSwingarmIdentifyCommands(CLI::App& identify) {
     const id::VirtualPart part;
     id::writeCogTestFiles(out, part, {0.05, 0.0, 0.04}, 0.05 * args->noiseFactor, args->seed + 2);
     id::writeInertiaTestFiles(out, part, 1e-3 * args->noiseFactor, args->seed + 3);
-    std::printf("virtual rig inputs written to %s (truth: docs/swingarm-identification.md, 'Virtual rig')\n", out.c_str());
+    folder.commit();
+    std::printf("virtual rig inputs written to %s (truth: docs/swingarm-identification.md, 'Virtual rig')\n",
+                folder.getTarget().c_str());
   });
 }
 

@@ -8,6 +8,8 @@
 #include <memory>
 
 #include "apps/commands.h"
+#include "apps/common_options.h"
+#include "io/output_folder.h"
 #include "response/modes_json.h"
 #include "simulation/simulation_output.h"
 
@@ -61,8 +63,10 @@ void runSimulate(SimulateArgs a) {
   o.integrator = simulation::parseIntegratorKind(a.integrator);
   o.fallRollLimit = a.fallLimitDeg * M_PI / 180;
   const Scenario scenario = loadScenario(a.scenario, a.overrides);
-  const std::filesystem::path out = a.out.empty() ? std::filesystem::path(scenario.name + "-simulation")
-                                                    : std::filesystem::path(a.out);
+  const std::filesystem::path target = a.out.empty() ? std::filesystem::path(scenario.name + "-simulation")
+                                                       : std::filesystem::path(a.out);
+  OutputFolder folder(target);
+  const std::filesystem::path& out = folder.getPath();
 
   ProgressBar bar(o.duration);
   if (o.duration >= 5) o.progress = [&bar](double t) { bar.update(t); };
@@ -74,17 +78,18 @@ void runSimulate(SimulateArgs a) {
             << result.wallSeconds << " s wall (" << result.steps << " " << result.integrator << " steps, "
             << result.endTime / std::max(result.wallSeconds, 1e-9) << "x real time)\n";
   if (result.status != simulation::SimulationStatus::Completed) std::cout << result.message << "\n";
-  std::cout << "Wrote " << (out / "timeseries.csv").string() << "\n";
+  std::cout << "Wrote " << (target / "timeseries.csv").string() << "\n";
   if (result.rows.size() >= 2) {
     writeResponsePlot(out, result, scenario.name + " at " + std::to_string(o.speed).substr(0, 5) + " m/s");
-    std::cout << "Wrote " << (out / "response.{png,svg,gp}").string() << "\n";
+    std::cout << "Wrote " << (target / "response.{png,svg,gp}").string() << "\n";
   }
   if (a.identify) {
     const double t0 = simulation::getFreeResponseStart(o.perturbations);
     const std::vector<std::string> signals{"roll_rate", "steer_rate"};
     const auto modes = simulation::writeSimulatedModes(out, result, t0, describeSettings(a), signals);
-    std::cout << response::formatModesTable(modes, signals) << "Wrote " << (out / "modes.json").string() << "\n";
+    std::cout << response::formatModesTable(modes, signals) << "Wrote " << (target / "modes.json").string() << "\n";
   }
+  folder.commit();  // also after a fall or a failure: the samples up to it are the run's outputs
   // A failure is reported after the data up to it has been written.
   if (result.status == simulation::SimulationStatus::Failed) throw std::runtime_error(result.message);
 }
@@ -95,20 +100,26 @@ void registerSimulateCommands(CLI::App& app) {
   auto a = std::make_shared<SimulateArgs>();
   CLI::App* cmd = app.add_subcommand("simulate", "Nonlinear perturbation response from the trim at one speed");
   cmd->add_option("scenario", a->scenario, "Scenario YAML file")->required()->check(CLI::ExistingFile);
-  cmd->add_option("--speed", a->options.speed, "Trim and target forward speed, m/s")->required();
+  cmd->add_option("--speed", a->options.speed, "Trim and target forward speed, m/s")
+      ->required()
+      ->check(makeNumberCheck(0, 1e3));
   cmd->add_option("--perturb", a->perturb,
                   "Perturbation (repeatable):\n" + simulation::getPerturbationSyntax());
-  cmd->add_option("--duration", a->options.duration, "Simulated time, s")->required();
+  cmd->add_option("--duration", a->options.duration, "Simulated time, s")->required()->check(makeNumberCheck(0, 1e6, true));
   cmd->add_option("--out", a->out, "Output folder (default: <scenario name>-simulation)");
   cmd->add_option("--speed-control", a->speedControl, "none (coast) or pi (drive-torque PI controller)")
       ->capture_default_str();
   cmd->add_option("--integrator", a->integrator, "auto (ROS34PW2 without constraints, else RungeKuttaMerson), ROS34PW2, RungeKuttaMerson, RungeKutta3, CPodes or Verlet")
       ->capture_default_str();
-  cmd->add_option("--accuracy", a->options.accuracy, "Integrator relative accuracy")->capture_default_str();
+  cmd->add_option("--accuracy", a->options.accuracy, "Integrator relative accuracy")
+      ->capture_default_str()
+      ->check(makeNumberCheck(0, 1, true));
   cmd->add_option("--output-step", a->options.outputStep, "Sampling interval of the outputs, s")
-      ->capture_default_str();
+      ->capture_default_str()
+      ->check(makeNumberCheck(0, 1e6, true));
   cmd->add_option("--fall-limit", a->fallLimitDeg, "Roll angle that ends the run as a fall, deg")
-      ->capture_default_str();
+      ->capture_default_str()
+      ->check(makeNumberCheck(0, 180, true));
   cmd->add_flag("--identify", a->identify, "Identify modes from roll and steer rate after the last pulse: modes.json");
   cmd->add_option("--set", a->overrides, "Override a scenario value, e.g. --set geometry.trail_m=0.1");
   cmd->callback([a]() { runSimulate(*a); });

@@ -4,6 +4,7 @@
 
 #include "apps/commands.h"
 #include "apps/common_options.h"
+#include "io/output_folder.h"
 #include "output/study_report.h"
 #include "output/sweep_output.h"
 
@@ -18,15 +19,18 @@ void registerStabilityCommands(CLI::App& app) {
   auto sweepArgs = std::make_shared<SweepArgs>();
   CLI::App* sweep = app.add_subcommand("sweep", "Linear stability sweep over speed: eigenvalues, modes, critical speeds, plots");
   sweep->add_option("scenario", sweepArgs->scenario, "Scenario YAML file")->required()->check(CLI::ExistingFile);
-  sweep->add_option("--speeds", sweepArgs->speeds, "START:STOP:STEP in m/s (default: the scenario's speeds_mps)");
+  sweep->add_option("--speeds", sweepArgs->speeds, "START:STOP:STEP in m/s (default: the scenario's speeds_mps)")
+      ->check(makeSpeedRangeCheck());
   sweep->add_option("--out", sweepArgs->out, "Output folder (default: named after the scenario)");
   sweep->add_option("--set", sweepArgs->overrides, "Override a scenario value, e.g. --set geometry.trail_m=0.1");
   sweep->add_option("--threads", sweepArgs->threads,
                     "Worker threads (2: about 1.8x faster; results then agree with one thread to the trim "
                     "tolerance, not to the bit)")
-      ->check(CLI::Range(1, 256));
+      ->check(makeThreadsCheck());
   sweep->callback([sweepArgs]() {
     const Scenario scenario = loadScenario(sweepArgs->scenario, sweepArgs->overrides);
+    const std::string out = sweepArgs->out.empty() ? scenario.name : sweepArgs->out;
+    OutputFolder folder(out);  // first: a kill from here on leaves the old outputs whole
     const VehicleModel model(scenario);
     SweepOptions opt;
     opt.start = scenario.speeds.start;
@@ -35,8 +39,8 @@ void registerStabilityCommands(CLI::App& app) {
     if (!sweepArgs->speeds.empty()) parseSpeedRange(sweepArgs->speeds, opt.start, opt.stop, opt.step);
     opt.threads = sweepArgs->threads;
     const SweepResult result = runSweep(model, opt);
-    const std::string out = sweepArgs->out.empty() ? scenario.name : sweepArgs->out;
-    writeSweepOutputs(out, scenario.name, result);
+    writeSweepOutputs(folder.getPath(), scenario.name, result);
+    folder.commit();
     std::cout << "Scenario " << scenario.name << ": " << result.speeds.size() << " speeds\n"
               << formatSweepTable(result) << "Wrote " << out << "/{eigenvalues.csv, summary.json, root_locus.{png,svg,gp}, "
               << "real_part_vs_speed.{png,svg,gp}}\n";
@@ -50,15 +54,17 @@ void registerStabilityCommands(CLI::App& app) {
   auto linArgs = std::make_shared<LinArgs>();
   CLI::App* lin = app.add_subcommand("linearize", "Trim at one speed and write A, B and the eigenvectors");
   lin->add_option("scenario", linArgs->scenario, "Scenario YAML file")->required()->check(CLI::ExistingFile);
-  lin->add_option("--speed", linArgs->speed, "Forward speed, m/s")->required();
+  lin->add_option("--speed", linArgs->speed, "Forward speed, m/s")->required()->check(makeNumberCheck(0, 1e3));
   lin->add_option("--out", linArgs->out, "Output folder")->required();
   lin->add_option("--set", linArgs->overrides, "Override a scenario value");
   lin->callback([linArgs]() {
     const Scenario scenario = loadScenario(linArgs->scenario, linArgs->overrides);
+    OutputFolder folder(linArgs->out);
     const VehicleModel model(scenario);
     const TrimResult trim = calcTrim(model, linArgs->speed);
     const LinearModel lm = linearize(model, trim);
-    writeLinearModel(linArgs->out, lm);
+    writeLinearModel(folder.getPath(), lm);
+    folder.commit();
     std::cout << "Trim at " << linArgs->speed << " m/s: residual " << trim.residualNorm << " after " << trim.iterations
               << " iterations; " << lm.states.size() << " states. Wrote " << linArgs->out
               << "/{A.csv, B.csv, eigenvalues.csv, eigenvectors.csv, linear_model.json}\n";
@@ -75,14 +81,19 @@ void registerStabilityCommands(CLI::App& app) {
   auto st = std::make_shared<StudyArgs>();
   CLI::App* study = app.add_subcommand("study", "Swingarm study of seed sec. 4: rigid/bending/torsion/twist sweeps, Figs. 9-12, report");
   study->add_option("scenario", st->scenario, "Motorcycle scenario with a swingarm section")->required()->check(CLI::ExistingFile);
-  study->add_option("--speeds", st->speeds, "START:STOP:STEP in m/s (default: the scenario's speeds_mps)");
+  study->add_option("--speeds", st->speeds, "START:STOP:STEP in m/s (default: the scenario's speeds_mps)")
+      ->check(makeSpeedRangeCheck());
   study->add_option("--out", st->out, "Output folder (default: SCENARIO-study)");
   study->add_option("--set", st->overrides, "Override a scenario value for every variant");
   study->add_option("--compare", st->variants, "Compliance variants to compare")->delimiter(',');
-  study->add_option("--stiffness-scale", st->stiffnessScale, "Stiffness factor of the second set (seed Fig. 11: 0.5)");
-  study->add_option("--damping-scale", st->dampingScale, "Damping factor of the second set (seed: 1/sqrt(2))");
-  study->add_option("--shape-speeds", st->shapeSpeeds, "Speeds of the weave mode-shape compass plots, m/s")->delimiter(',');
-  study->add_option("--threads", st->threads, "Variants swept in parallel");
+  study->add_option("--stiffness-scale", st->stiffnessScale, "Stiffness factor of the second set (seed Fig. 11: 0.5)")
+      ->check(makeNumberCheck(0, 1e6, true));
+  study->add_option("--damping-scale", st->dampingScale, "Damping factor of the second set (seed: 1/sqrt(2))")
+      ->check(makeNumberCheck(0, 1e6));
+  study->add_option("--shape-speeds", st->shapeSpeeds, "Speeds of the weave mode-shape compass plots, m/s")
+      ->delimiter(',')
+      ->check(makeNumberCheck(0, 1e3));
+  study->add_option("--threads", st->threads, "Variants swept in parallel")->check(makeThreadsCheck());
   study->callback([st]() {
     const Scenario scenario = loadScenario(st->scenario, st->overrides);
     StudyOptions opt;
@@ -96,9 +107,11 @@ void registerStabilityCommands(CLI::App& app) {
     opt.shapeSpeeds = st->shapeSpeeds;
     opt.overrides = st->overrides;
     opt.threads = st->threads;
-    const StudyResult result = runStudy(st->scenario, opt);
     const std::string out = st->out.empty() ? scenario.name + "-study" : st->out;
-    writeStudyOutputs(out, result, opt);
+    OutputFolder folder(out);
+    const StudyResult result = runStudy(st->scenario, opt);
+    writeStudyOutputs(folder.getPath(), result, opt);
+    folder.commit();
     std::cout << makeStudyReport(result, opt) << "\nWrote " << out
               << "/{report.md, study_modes.csv, weave_shapes.csv, fig09..fig12 (.gp/.png/.svg), nominal/, halved/}\n";
   });

@@ -1,9 +1,22 @@
 #pragma once
+// Options and checks shared by the motostab subcommands. Every number on the command line passes
+// through parseFiniteNumber (io/number.h) in a CLI11 validator, so NaN, infinities and values out
+// of range are CLI11 validation errors: exit code 2, like every other input error.
+#include <CLI/CLI.hpp>
+
 #include <string>
 
 namespace motostab::cli {
 
-/// Parses "START:STOP:STEP" (m/s); throws InputError naming the option on bad input.
+/// Parses "START:STOP:STEP" (m/s; 0 <= START <= STOP, STEP > 0, finite, at most 1e6 speeds);
+/// throws InputError naming the option on bad input.
 void parseSpeedRange(const std::string& text, double& start, double& stop, double& step);
+
+/// A CLI11 check: a finite number in [low, high] (low itself excluded when `excludeLow`).
+CLI::Validator makeNumberCheck(double low, double high, bool excludeLow = false);
+/// A CLI11 check of "START:STOP:STEP" by parseSpeedRange.
+CLI::Validator makeSpeedRangeCheck();
+/// The worker-thread option range, 1..256.
+CLI::Validator makeThreadsCheck();
 
 }  // namespace motostab::cli

@@ -18,7 +18,8 @@ int main(int argc, char** argv) {
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
-    return app.exit(e);
+    // --help and --version exit 0; every parse or validation error is bad input: 2, not CLI11's code.
+    return app.exit(e) == 0 ? 0 : 2;
   } catch (const motostab::InputError& e) {
     std::cerr << "motostab: input error: " << e.what() << "\n";
     return 2;

@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "io/input_error.h"
+#include "io/number.h"
 
 namespace motostab {
 namespace {
@@ -80,11 +81,11 @@ CsvTable readCsv(const std::filesystem::path& path, const std::vector<std::strin
         row[j] = std::nan("");
         continue;
       }
-      char* end = nullptr;
-      row[j] = std::strtod(c.c_str(), &end);
-      if (c.empty() || end != c.c_str() + c.size() || !std::isfinite(row[j]))
+      const auto v = parseFiniteNumber(c);
+      if (!v)
         throw InputError({table.source, lineNo, static_cast<int>(j + 1), table.header[j]},
                          "not a finite number: '" + c + "'");
+      row[j] = *v;
     }
     table.rows.push_back(std::move(row));
     table.text.push_back(std::move(text));

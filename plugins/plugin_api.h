@@ -1,17 +1,22 @@
 #pragma once
-// The motostab plugin API. A plugin is a named factory with its own validated parameters.
-// Built-in plugins live in tyres/ and swingarm/; third-party plugins are shared libraries that
-// export MOTOSTAB_PLUGIN_ENTRY (see docs/plugins.md).
+// The motostab plugin API: the narrow, versioned interface a plugin sees. A plugin is a named
+// factory with its own validated parameters (a strict YamlMap of its scenario section). Built-in
+// plugins live in tyres/ and swingarm/; third-party plugins are shared libraries that define
+// MOTOSTAB_PLUGIN_ENTRY (see docs/plugins.md). This header needs Simbody and the YAML reader only,
+// not the scenario model; the registry that loads libraries is plugins/plugin_registry.h.
 #include <functional>
-#include <map>
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "Simbody.h"
 
-#include "scenario/scenario.h"
 #include "scenario/yaml_map.h"
+
+/// Version of this interface. A library built against another version is refused at load; bump it
+/// whenever a type in this header changes layout or meaning.
+#define MOTOSTAB_PLUGIN_API_VERSION 2
 
 namespace motostab {
 
@@ -84,27 +89,13 @@ class SwingarmModel {
 /// `compliance` are consumed by the loader; the plugin reads its own keys).
 using SwingarmModelFactory = std::function<std::unique_ptr<SwingarmModel>(YamlMap& params)>;
 
-/// Plugins registered by name. Names are unique across built-in and loaded plugins.
-class PluginRegistry {
+/// What a plugin's entry point registers into: factories by name. Names are unique across all
+/// plugins (built-in and loaded); a duplicate is reported when the registration is committed.
+class PluginRegistrar {
  public:
-  /// Registers a contact model; a duplicate name throws std::runtime_error.
-  void addContactModel(const std::string& name, ContactModelFactory factory);
-  /// Creates the contact model a scenario names; an unknown name is an InputError at spec.path.model.
-  std::unique_ptr<ContactModel> createContactModel(const PluginSpec& spec) const;
-  std::vector<std::string> getContactModelNames() const;
-  /// Registers a swingarm compliance model; a duplicate name throws std::runtime_error.
-  void addSwingarmModel(const std::string& name, SwingarmModelFactory factory);
-  /// Creates the model named by `swingarm.compliance`; unknown names are InputErrors there.
-  std::unique_ptr<SwingarmModel> createSwingarmModel(const SwingarmSpec& spec) const;
-  std::vector<std::string> getSwingarmModelNames() const;
-  /// Loads a plugin library and calls its entry point; failures are InputErrors at `where`.
-  void loadLibrary(const std::string& path, const InputLocation& where);
-
- private:
-  void checkUnique(const std::string& name) const;
-  std::map<std::string, ContactModelFactory> contactModels_;
-  std::map<std::string, SwingarmModelFactory> swingarmModels_;
-  std::string loadingLibrary_;  ///< set while a library registers, for messages
+  virtual ~PluginRegistrar() = default;
+  virtual void addContactModel(const std::string& name, ContactModelFactory factory) = 0;
+  virtual void addSwingarmModel(const std::string& name, SwingarmModelFactory factory) = 0;
 };
 
 /// A revolute joint about axis n_C (unit, child-body frame) through point p_C (child frame), with
@@ -114,5 +105,8 @@ SimTK::MobilizedBody::Pin addPinAtDesignPose(SimTK::MobilizedBody& parent, const
 
 }  // namespace motostab
 
-/// Entry point a plugin library defines: MOTOSTAB_PLUGIN_ENTRY { registry.addContactModel(...); }
-#define MOTOSTAB_PLUGIN_ENTRY extern "C" void motostab_register_plugins(motostab::PluginRegistry& registry)
+/// Entry point a plugin library defines: MOTOSTAB_PLUGIN_ENTRY { registry.addContactModel(...); }.
+/// It also exports the API version the library was built against, checked before registration.
+#define MOTOSTAB_PLUGIN_ENTRY                                                          \
+  extern "C" int motostab_plugin_api_version() { return MOTOSTAB_PLUGIN_API_VERSION; } \
+  extern "C" void motostab_register_plugins(motostab::PluginRegistrar& registry)

@@ -1,8 +1,10 @@
+#include "plugins/plugin_registry.h"
+
 #include <dlfcn.h>
 
+#include <filesystem>
+#include <mutex>
 #include <stdexcept>
-
-#include "plugins/plugin_api.h"
 
 namespace motostab {
 
@@ -18,12 +20,71 @@ std::string joinNames(const std::vector<std::string>& names) {
   for (const auto& n : names) out += (out.empty() ? "" : ", ") + n;
   return out;
 }
+
+// What one library's entry point registered, in order: replayed into every registry that loads it.
+struct LibraryRegistrations : PluginRegistrar {
+  std::vector<std::pair<std::string, ContactModelFactory>> contacts;
+  std::vector<std::pair<std::string, SwingarmModelFactory>> swingarms;
+  void addContactModel(const std::string& name, ContactModelFactory f) override { contacts.emplace_back(name, std::move(f)); }
+  void addSwingarmModel(const std::string& name, SwingarmModelFactory f) override { swingarms.emplace_back(name, std::move(f)); }
+};
+
+// Opens `file` (canonical) and runs its entry point into a fresh record; the handle is never closed,
+// since the factories' code lives in the library.
+std::shared_ptr<const LibraryRegistrations> openLibrary(const std::string& file, const InputLocation& where) {
+  void* handle = dlopen(file.c_str(), RTLD_NOW | RTLD_LOCAL);
+  if (!handle) throw InputError(where, std::string("cannot load plugin library: ") + dlerror());
+  using Version = int (*)();
+  using Entry = void (*)(PluginRegistrar&);
+  auto version = reinterpret_cast<Version>(dlsym(handle, "motostab_plugin_api_version"));
+  auto entry = reinterpret_cast<Entry>(dlsym(handle, "motostab_register_plugins"));
+  if (!version || !entry)
+    throw InputError(where, "plugin library " + file + " has no MOTOSTAB_PLUGIN_ENTRY (motostab_plugin_api_version, "
+                            "motostab_register_plugins)");
+  if (version() != MOTOSTAB_PLUGIN_API_VERSION)
+    throw InputError(where, "plugin library " + file + " was built for plugin API version " + std::to_string(version()) +
+                                "; this motostab has version " + std::to_string(MOTOSTAB_PLUGIN_API_VERSION));
+  auto record = std::make_shared<LibraryRegistrations>();
+  try {
+    entry(*record);
+  } catch (const std::exception& e) {
+    throw InputError(where, "plugin library " + file + " failed while registering: " + e.what());
+  }
+  return record;
+}
+
+// The process-wide record of each library, by canonical path: each is opened once per process.
+std::shared_ptr<const LibraryRegistrations> getLibrary(const std::string& file, const InputLocation& where) {
+  static std::mutex lock;
+  static std::map<std::string, std::shared_ptr<const LibraryRegistrations>> opened;
+  std::lock_guard<std::mutex> guard(lock);
+  auto& slot = opened[file];
+  if (!slot) {
+    try {
+      slot = openLibrary(file, where);
+    } catch (...) {
+      opened.erase(file);
+      throw;
+    }
+  }
+  return slot;
+}
+
+// The canonical path of a plugin library named in input; a bare file name is refused.
+std::string resolveLibraryPath(const std::string& path, const InputLocation& where) {
+  if (path.find('/') == std::string::npos)
+    throw InputError(where, "plugin library '" + path + "' must be given by a path (e.g. ./" + path +
+                                "), not a bare name searched on the system library path");
+  std::error_code ec;
+  const auto canonical = std::filesystem::canonical(path, ec);
+  if (ec) throw InputError(where, "cannot load plugin library: " + path + ": " + ec.message());
+  return canonical.string();
+}
 }  // namespace
 
 void PluginRegistry::checkUnique(const std::string& name) const {
   if (contactModels_.count(name) || swingarmModels_.count(name))
-    throw std::runtime_error("plugin name '" + name + "' is registered twice" +
-                             (loadingLibrary_.empty() ? "" : " (by " + loadingLibrary_ + ")"));
+    throw std::runtime_error("plugin name '" + name + "' is registered twice");
 }
 
 void PluginRegistry::addContactModel(const std::string& name, ContactModelFactory factory) {
@@ -70,19 +131,20 @@ SimTK::MobilizedBody::Pin addPinAtDesignPose(SimTK::MobilizedBody& parent, const
 }
 
 void PluginRegistry::loadLibrary(const std::string& path, const InputLocation& where) {
-  void* handle = dlopen(path.c_str(), RTLD_NOW | RTLD_LOCAL);
-  if (!handle) throw InputError(where, std::string("cannot load plugin library: ") + dlerror());
-  using Entry = void (*)(PluginRegistry&);
-  auto entry = reinterpret_cast<Entry>(dlsym(handle, "motostab_register_plugins"));
-  if (!entry) throw InputError(where, "plugin library " + path + " has no motostab_register_plugins entry point");
-  loadingLibrary_ = path;
+  const std::string file = resolveLibraryPath(path, where);
+  for (const auto& l : libraries_)
+    if (l == file) return;
+  const auto record = getLibrary(file, where);
+  // All or nothing: every name is checked (against this registry and within the library) first.
+  PluginRegistry staged = *this;
   try {
-    entry(*this);
+    for (const auto& [name, f] : record->contacts) staged.addContactModel(name, f);
+    for (const auto& [name, f] : record->swingarms) staged.addSwingarmModel(name, f);
   } catch (const std::exception& e) {
-    loadingLibrary_.clear();
-    throw InputError(where, e.what());
+    throw InputError(where, std::string(e.what()) + " (by " + file + ")");
   }
-  loadingLibrary_.clear();
+  staged.libraries_.push_back(file);
+  *this = std::move(staged);
 }
 
 }  // namespace motostab

@@ -8,6 +8,7 @@
 #include "io/atomic_file.h"
 #include "io/csv.h"
 #include "io/input_error.h"
+#include "io/number.h"
 #include "io/plot.h"
 #include "response/modes_json.h"
 
@@ -15,11 +16,9 @@ namespace motostab::response {
 namespace {
 
 double parseTime(const std::string& text, const std::string& source, const std::string& window) {
-  char* end = nullptr;
-  const double v = std::strtod(text.c_str(), &end);
-  if (text.empty() || end != text.c_str() + text.size() || !std::isfinite(v))
-    throw InputError({source, 0, 0, "--window"}, "'" + window + "' is not T0:T1 (two times in s)");
-  return v;
+  const auto v = parseFiniteNumber(text);
+  if (!v) throw InputError({source, 0, 0, "--window"}, "'" + window + "' is not T0:T1 (two finite times in s)");
+  return *v;
 }
 
 std::string joinColumns(const std::vector<std::string>& names) {

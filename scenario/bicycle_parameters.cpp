@@ -6,6 +6,7 @@
 
 #include "io/csv.h"
 #include "io/input_error.h"
+#include "io/number.h"
 
 namespace motostab {
 
@@ -29,11 +30,9 @@ std::map<std::string, double> readBicycleParameters(const std::string& file) {
     int count = 0;
     while (std::getline(values, item, ',')) {
       const std::string v = item.substr(0, item.find("+/-"));
-      char* end = nullptr;
-      const double x = std::strtod(v.c_str(), &end);
-      if (end == v.c_str() || v.find_first_not_of(" \t\r", end - v.c_str()) != std::string::npos || !std::isfinite(x))
-        throw InputError({file, lineNo, 0, key}, "not a number: '" + v + "'");
-      sum += x;
+      const auto x = parseFiniteNumber(v);
+      if (!x) throw InputError({file, lineNo, 0, key}, "not a finite number: '" + v + "'");
+      sum += *x;
       ++count;
     }
     if (count == 0) throw InputError({file, lineNo, 0, key}, "no value");

@@ -105,12 +105,41 @@ std::string checkInertia(const InertiaSpec& I) {
   return "";
 }
 
+namespace {
+
+// The key path an override "a.b=value" sets ("a.b").
+std::string getOverridePath(const std::string& assignment) { return assignment.substr(0, assignment.find('=')); }
+
+// An error at a value an override set names the override, not only the scenario's line.
+[[noreturn]] void rethrowNamingOverride(const InputError& e, const std::vector<std::string>& overrides) {
+  const std::string& key = e.getLocation().key;
+  for (auto o = overrides.rbegin(); o != overrides.rend(); ++o) {
+    const std::string p = getOverridePath(*o);
+    if (key == p || key.rfind(p + ".", 0) == 0 || key.rfind(p + "[", 0) == 0)
+      throw InputError(e.getLocation(), e.getReason() + " (value from --set " + *o + ")");
+  }
+  throw e;
+}
+
+Scenario readScenario(const std::string& file, YamlMap& m);
+
+}  // namespace
+
 Scenario loadScenario(const std::string& file, const std::vector<std::string>& overrides) {
   YamlMap root = loadYamlFile(file);
   YAML::Node tree = root.getNode();
   for (const auto& o : overrides) applyOverride(tree, o);
-  YamlMap m(tree, file, "");
+  try {
+    YamlMap m(tree, file, "");
+    return readScenario(file, m);
+  } catch (const InputError& e) {
+    rethrowNamingOverride(e, overrides);
+  }
+}
 
+namespace {
+
+Scenario readScenario(const std::string& file, YamlMap& m) {
   Scenario s;
   s.sourceFile = file;
   s.name = m.getString("name");
@@ -175,10 +204,20 @@ Scenario loadScenario(const std::string& file, const std::vector<std::string>& o
     a.finish();
   }
   readExtensions(m, s);
-  if (m.has("plugins")) s.plugins = m.getStringList("plugins");
+  if (m.has("plugins")) {
+    // Plugin libraries by path only (never searched by bare name), relative to the scenario.
+    const auto names = m.getStringList("plugins");
+    for (size_t i = 0; i < names.size(); ++i)
+      if (names[i].find('/') == std::string::npos)
+        m.failElement("plugins", i, "a plugin library is named by its path (e.g. ./" + names[i] +
+                                        "), relative to this file; a bare name is not searched for");
+    s.plugins = m.getFilePathList("plugins");
+  }
   m.finish();
   return s;
 }
+
+}  // namespace
 
 namespace {
 // Inertia tensor about the design origin of a body given about its CoM (parallel axes).

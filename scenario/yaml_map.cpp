@@ -1,13 +1,44 @@
 #include "scenario/yaml_map.h"
 
-#include <cmath>
+#include <filesystem>
+#include <map>
+
+#include "io/number.h"
 
 namespace motostab {
+namespace {
+
+InputLocation locationOf(const YAML::Node& n, const std::string& file, const std::string& path) {
+  const YAML::Mark m = n.Mark();
+  return {file, m.line >= 0 ? m.line + 1 : 0, m.column >= 0 ? m.column + 1 : 0, path};
+}
+
+std::string joinPath(const std::string& path, const std::string& key) { return path.empty() ? key : path + "." + key; }
+
+// Keys of a mapping must be scalars and unique; `recursive` checks every mapping below it too.
+void checkKeys(const YAML::Node& node, const std::string& file, const std::string& path, bool recursive) {
+  if (node.IsSequence() && recursive) {
+    for (size_t i = 0; i < node.size(); ++i) checkKeys(node[i], file, path + "[" + std::to_string(i) + "]", true);
+  }
+  if (!node.IsMap()) return;
+  std::map<std::string, int> seen;  // key -> line of its first occurrence
+  for (const auto& kv : node) {
+    if (!kv.first.IsScalar()) throw InputError(locationOf(kv.first, file, path), "a key must be a plain name");
+    const std::string k = kv.first.Scalar();
+    const InputLocation at = locationOf(kv.first, file, joinPath(path, k));
+    if (!seen.emplace(k, at.line).second)
+      throw InputError(at, "duplicate key (first given on line " + std::to_string(seen[k]) + ")");
+    if (recursive) checkKeys(kv.second, file, joinPath(path, k), true);
+  }
+}
+
+}  // namespace
 
 YamlMap::YamlMap(const YAML::Node& node, std::string file, std::string path)
     : node_(node), file_(std::move(file)), path_(std::move(path)),
       used_(std::make_shared<std::set<std::string>>()) {
   if (!node_.IsMap()) fail("", "expected a mapping of keys to values");
+  checkKeys(node_, file_, path_, false);
 }
 
 std::string YamlMap::childPath(const std::string& key) const {
@@ -15,16 +46,34 @@ std::string YamlMap::childPath(const std::string& key) const {
 }
 
 InputLocation YamlMap::locate(const std::string& key) const {
-  YAML::Mark mark = node_.Mark();
   if (!key.empty()) {
     for (const auto& kv : node_)
-      if (kv.first.as<std::string>() == key) mark = kv.first.Mark();
+      if (kv.first.Scalar() == key) return locationOf(kv.first, file_, childPath(key));
   }
-  return {file_, mark.line >= 0 ? mark.line + 1 : 0, mark.column >= 0 ? mark.column + 1 : 0, childPath(key)};
+  return locationOf(node_, file_, childPath(key));
 }
 
 void YamlMap::fail(const std::string& key, const std::string& message) const {
   throw InputError(locate(key), message);
+}
+
+void YamlMap::failElement(const std::string& key, size_t index, const std::string& message) const {
+  const YAML::Node list = static_cast<const YAML::Node&>(node_)[key];
+  const std::string at = childPath(key) + "[" + std::to_string(index) + "]";
+  if (list && list.IsSequence() && index < list.size()) throw InputError(locationOf(list[index], file_, at), message);
+  InputLocation where = locate(key);
+  where.key = at;
+  throw InputError(where, message);
+}
+
+double YamlMap::toFinite(const YAML::Node& n, const std::string& key, size_t index) const {
+  const auto v = n.IsScalar() ? parseFiniteNumber(n.Scalar()) : std::nullopt;
+  if (!v) {
+    const std::string got = n.IsScalar() ? " (got '" + n.Scalar() + "')" : "";
+    if (index == static_cast<size_t>(-1)) fail(key, "expected a finite number" + got);
+    failElement(key, index, "expected a finite number" + got);
+  }
+  return *v;
 }
 
 bool YamlMap::has(const std::string& key) const { return static_cast<bool>(node_[key]); }
@@ -38,13 +87,7 @@ YAML::Node YamlMap::require(const std::string& key) {
   return n;
 }
 
-double YamlMap::getDouble(const std::string& key) {
-  const YAML::Node n = require(key);
-  double v = 0;
-  if (!n.IsScalar() || !YAML::convert<double>::decode(n, v) || !std::isfinite(v))
-    fail(key, "expected a finite number");
-  return v;
-}
+double YamlMap::getDouble(const std::string& key) { return toFinite(require(key), key, static_cast<size_t>(-1)); }
 
 double YamlMap::getDouble(const std::string& key, double fallback) {
   return has(key) ? getDouble(key) : fallback;
@@ -60,6 +103,12 @@ double YamlMap::getNonNegative(const std::string& key) {
   const double v = getDouble(key);
   if (v < 0) fail(key, "must not be negative (got " + std::to_string(v) + ")");
   return v;
+}
+
+double YamlMap::getPositive(const std::string& key, double fallback) { return has(key) ? getPositive(key) : fallback; }
+
+double YamlMap::getNonNegative(const std::string& key, double fallback) {
+  return has(key) ? getNonNegative(key) : fallback;
 }
 
 int YamlMap::getInt(const std::string& key) {
@@ -87,17 +136,23 @@ std::string YamlMap::getString(const std::string& key, const std::string& fallba
   return has(key) ? getString(key) : fallback;
 }
 
-std::vector<double> YamlMap::getDoubleList(const std::string& key) {
+YAML::Node YamlMap::requireList(const std::string& key) {
   const YAML::Node n = require(key);
-  if (!n.IsSequence()) fail(key, "expected a list of numbers");
+  if (!n.IsSequence()) fail(key, "expected a list");
+  return n;
+}
+
+std::vector<double> YamlMap::getDoubleList(const std::string& key) {
+  const YAML::Node n = requireList(key);
   std::vector<double> out;
-  for (const auto& e : n) {
-    double v = 0;
-    if (!e.IsScalar() || !YAML::convert<double>::decode(e, v) || !std::isfinite(v))
-      fail(key, "expected a list of finite numbers");
-    out.push_back(v);
-  }
+  for (size_t i = 0; i < n.size(); ++i) out.push_back(toFinite(n[i], key, i));
   return out;
+}
+
+std::vector<double> YamlMap::getDoubleList(const std::string& key, size_t size) {
+  const auto v = getDoubleList(key);
+  if (v.size() != size) fail(key, "expected " + std::to_string(size) + " numbers, found " + std::to_string(v.size()));
+  return v;
 }
 
 std::array<double, 3> YamlMap::getVec3(const std::string& key) {
@@ -107,12 +162,11 @@ std::array<double, 3> YamlMap::getVec3(const std::string& key) {
 }
 
 std::vector<std::string> YamlMap::getStringList(const std::string& key) {
-  const YAML::Node n = require(key);
-  if (!n.IsSequence()) fail(key, "expected a list of strings");
+  const YAML::Node n = requireList(key);
   std::vector<std::string> out;
-  for (const auto& e : n) {
-    if (!e.IsScalar()) fail(key, "expected a list of strings");
-    out.push_back(e.as<std::string>());
+  for (size_t i = 0; i < n.size(); ++i) {
+    if (!n[i].IsScalar()) failElement(key, i, "expected a string");
+    out.push_back(n[i].Scalar());
   }
   return out;
 }
@@ -123,13 +177,41 @@ YamlMap YamlMap::getMap(const std::string& key) {
   return YamlMap(n, file_, childPath(key));
 }
 
+std::vector<YamlMap> YamlMap::getMapList(const std::string& key) {
+  const YAML::Node n = requireList(key);
+  std::vector<YamlMap> out;
+  for (size_t i = 0; i < n.size(); ++i) {
+    if (!n[i].IsMap()) failElement(key, i, "expected a mapping");
+    out.emplace_back(n[i], file_, childPath(key) + "[" + std::to_string(i) + "]");
+  }
+  return out;
+}
+
+std::string resolveRelativeTo(const std::string& namingFile, const std::string& name) {
+  const std::filesystem::path p(name);
+  if (p.is_absolute()) return name;
+  return (std::filesystem::path(namingFile).parent_path() / p).lexically_normal().string();
+}
+
+std::string YamlMap::getFilePath(const std::string& key) {
+  const std::string name = getString(key);
+  if (name.empty()) fail(key, "expected a file name");
+  return resolveRelativeTo(file_, name);
+}
+
+std::vector<std::string> YamlMap::getFilePathList(const std::string& key) {
+  std::vector<std::string> out = getStringList(key);
+  for (size_t i = 0; i < out.size(); ++i) {
+    if (out[i].empty()) failElement(key, i, "expected a file name");
+    out[i] = resolveRelativeTo(file_, out[i]);
+  }
+  return out;
+}
+
 void YamlMap::finish() const {
   for (const auto& kv : node_) {
-    const std::string k = kv.first.as<std::string>();
-    if (!used_->count(k)) {
-      const YAML::Mark m = kv.first.Mark();
-      throw InputError({file_, m.line + 1, m.column + 1, childPath(k)}, "unknown key");
-    }
+    const std::string k = kv.first.Scalar();
+    if (!used_->count(k)) throw InputError(locationOf(kv.first, file_, childPath(k)), "unknown key");
   }
 }
 
@@ -142,6 +224,7 @@ YamlMap loadYamlFile(const std::string& file) {
   } catch (const YAML::ParserException& e) {
     throw InputError({file, e.mark.line + 1, e.mark.column + 1, ""}, "YAML syntax error: " + e.msg);
   }
+  checkKeys(root, file, "", true);
   return YamlMap(root, file, "");
 }
 
@@ -197,13 +280,14 @@ void applyOverride(YAML::Node& root, const std::string& assignment) {
   try {
     value = YAML::Load(assignment.substr(eq + 1));
   } catch (const YAML::Exception& e) {
-    throw InputError({"--set", 0, 0, path}, "value is not valid YAML (" + e.msg + ") in '" + assignment + "'");
+    throw InputError({"--set", 0, 0, assignment}, "the value is not valid YAML: " + e.msg);
   }
+  checkKeys(value, "--set " + assignment, path, true);
   std::vector<KeyPathSegment> segments;
   try {
     segments = parseKeyPath(path);
   } catch (const InputError& e) {
-    throw InputError({"--set", 0, 0, path}, e.getReason());
+    throw InputError({"--set", 0, 0, assignment}, e.getReason());
   }
   // yaml-cpp nodes are handles: walk with fresh handles so the tree itself is edited.
   std::vector<YAML::Node> chain{root};

@@ -6,6 +6,7 @@
 
 #include "io/csv.h"
 #include "io/input_error.h"
+#include "io/number.h"
 
 namespace motostab::simulation {
 
@@ -16,10 +17,9 @@ namespace {
 }
 
 double parseNumber(const std::string& spec, const std::string& field, const std::string& what) {
-  char* end = nullptr;
-  const double v = std::strtod(field.c_str(), &end);
-  if (field.empty() || *end != '\0' || !std::isfinite(v)) fail(spec, what + " '" + field + "' is not a finite number");
-  return v;
+  const auto v = parseFiniteNumber(field);
+  if (!v) fail(spec, what + " '" + field + "' is not a finite number");
+  return *v;
 }
 
 void checkFieldCount(const std::string& spec, const std::vector<std::string>& f, size_t lo, size_t hi) {

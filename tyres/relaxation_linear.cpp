@@ -162,7 +162,7 @@ LinearTyreParameters getRelaxationLinearPreset(const std::string& name) {
 
 std::vector<std::string> getRelaxationLinearPresetNames() { return {"bicycle"}; }
 
-void registerRelaxationLinear(PluginRegistry& registry) {
+void registerRelaxationLinear(PluginRegistrar& registry) {
   registry.addContactModel("relaxation_linear", [](YamlMap& m) -> std::unique_ptr<ContactModel> {
     if (!m.has("preset")) return std::make_unique<RelaxationLinear>(readTyre(m.getMap("front"), nullptr), readTyre(m.getMap("rear"), nullptr));
     const std::string name = m.getString("preset");

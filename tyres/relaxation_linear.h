@@ -41,6 +41,6 @@ std::vector<std::string> getRelaxationLinearPresetNames();
 
 /// Registers `relaxation_linear` (parameters under `front` and `rear`, or `preset: NAME` with
 /// optional `front`/`rear` maps whose keys override the preset's values).
-void registerRelaxationLinear(PluginRegistry& registry);
+void registerRelaxationLinear(PluginRegistrar& registry);
 
 }  // namespace motostab

@@ -119,7 +119,7 @@ class RollingNoSlip : public ContactModel {
 
 }  // namespace
 
-void registerRollingNoSlip(PluginRegistry& registry) {
+void registerRollingNoSlip(PluginRegistrar& registry) {
   registry.addContactModel("rolling_no_slip", [](YamlMap&) { return std::make_unique<RollingNoSlip>(); });
 }
 

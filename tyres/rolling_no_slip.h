@@ -18,6 +18,6 @@ struct TorusContact {
 TorusContact calcTorusContact(const SimTK::Rotation& R_GW, const SimTK::Vec3& w_GW_G, double R, double rho);
 
 /// Registers `rolling_no_slip` (no parameters).
-void registerRollingNoSlip(PluginRegistry& registry);
+void registerRollingNoSlip(PluginRegistrar& registry);
 
 }  // namespace motostab

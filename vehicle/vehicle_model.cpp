@@ -57,10 +57,17 @@ VehicleModel::VehicleModel(const Scenario& scenario) : scenario_(scenario), matt
   build(registry, {});
 }
 
+std::unique_ptr<VehicleModel> VehicleModel::makeReplica() const {
+  PluginRegistry registry = registry_;
+  return std::make_unique<VehicleModel>(scenario_, registry, extensions_);
+}
+
 void VehicleModel::build(PluginRegistry& registry, const std::vector<ModelExtension>& extensions) {
   const Scenario& s = scenario_;
   for (size_t i = 0; i < s.plugins.size(); ++i)
     registry.loadLibrary(s.plugins[i], {s.sourceFile, 0, 0, "plugins[" + std::to_string(i) + "]"});
+  registry_ = registry;
+  extensions_ = extensions;
   auto contact = registry.createContactModel(s.contact);
 
   const double w = s.geometry.wheelbase, c = s.geometry.trail, lambda = s.geometry.steerAxisTilt;

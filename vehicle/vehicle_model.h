@@ -15,7 +15,7 @@
 #include <vector>
 
 #include "Simbody.h"
-#include "plugins/plugin_api.h"
+#include "plugins/plugin_registry.h"
 #include "scenario/scenario.h"
 
 namespace motostab {
@@ -49,6 +49,10 @@ class VehicleModel {
   VehicleModel(const Scenario& scenario, PluginRegistry& registry, const std::vector<ModelExtension>& extensions = {});
   /// Same, with the built-in registry.
   explicit VehicleModel(const Scenario& scenario);
+  /// A new, independent model built like this one: same scenario, a copy of the plugin registry it
+  /// was built with (loaded libraries included) and the same extensions, called again. For worker
+  /// threads, which must not share Simbody caches.
+  std::unique_ptr<VehicleModel> makeReplica() const;
   VehicleModel(const VehicleModel&) = delete;
   VehicleModel& operator=(const VehicleModel&) = delete;
 
@@ -95,6 +99,8 @@ class VehicleModel {
   void build(PluginRegistry& registry, const std::vector<ModelExtension>& extensions);
 
   Scenario scenario_;
+  PluginRegistry registry_;                 ///< as used by build(), for replicas
+  std::vector<ModelExtension> extensions_;  ///< as used by build(), for replicas
   SimTK::MultibodySystem system_;
   SimTK::SimbodyMatterSubsystem matter_;
   SimTK::GeneralForceSubsystem forces_;

@@ -34,7 +34,15 @@ class VerticalSpringContact : public motostab::ContactModel {
 
 }  // namespace
 
+namespace {
+int entryCalls = 0;
+}
+
+/// How often the entry point ran in this process (tests check that a library loads once).
+extern "C" int motostab_example_entry_calls() { return entryCalls; }
+
 MOTOSTAB_PLUGIN_ENTRY {
+  ++entryCalls;
   registry.addContactModel("example_vertical_spring", [](motostab::YamlMap& params) -> std::unique_ptr<motostab::ContactModel> {
     return std::make_unique<VerticalSpringContact>(params.getPositive("stiffness_N_per_m"));
   });

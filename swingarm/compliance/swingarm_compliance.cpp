@@ -126,9 +126,7 @@ SwingarmModelFactory makeFactory(std::vector<std::string> axisNames) {
     if (m.has("identification")) m.markUsed("identification");  // provenance only
     // Axes written by `motostab identify swingarm`, used unchanged (path relative to the scenario).
     if (m.has("axes_from")) {
-      std::filesystem::path file = m.getString("axes_from");
-      if (file.is_relative()) file = std::filesystem::path(m.getFile()).parent_path() / file;
-      YamlMap fragment = loadYamlFile(file.string());
+      YamlMap fragment = loadYamlFile(m.getFilePath("axes_from"));
       if (fragment.has("identification")) fragment.markUsed("identification");
       for (const char* key : {"bending", "torsion", "twist"}) {
         const bool inline_ = std::any_of(present.begin(), present.end(), [&](const auto& p) { return p.first == key; });
@@ -150,7 +148,7 @@ SwingarmModelFactory makeFactory(std::vector<std::string> axisNames) {
 
 }  // namespace
 
-void registerSwingarmModels(PluginRegistry& registry) {
+void registerSwingarmModels(PluginRegistrar& registry) {
   registry.addSwingarmModel("rigid", makeFactory({}));
   registry.addSwingarmModel("bending", makeFactory({"bending"}));
   registry.addSwingarmModel("torsion", makeFactory({"torsion"}));

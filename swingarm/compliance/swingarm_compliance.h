@@ -19,6 +19,6 @@ struct ComplianceAxis {
 ComplianceAxis makeAxisFromArm(const SimTK::Vec3& p_SH, double arm, double beta, double stiffness, double damping);
 
 /// Registers rigid, bending, torsion, twist and bending+torsion.
-void registerSwingarmModels(PluginRegistry& registry);
+void registerSwingarmModels(PluginRegistrar& registry);
 
 }  // namespace motostab

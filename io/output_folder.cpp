@@ -1,0 +1,99 @@
+#include "io/output_folder.h"
+
+#include <fcntl.h>
+#include <signal.h>
+#include <stdio.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstring>
+#include <stdexcept>
+#include <string>
+
+#include "io/input_error.h"
+
+namespace motostab {
+namespace fs = std::filesystem;
+
+namespace {
+
+// ".NAME.KIND-PID" beside `target`.
+fs::path makeSibling(const fs::path& target, const std::string& kind, long pid) {
+  return target.parent_path() / ("." + target.filename().string() + "." + kind + "-" + std::to_string(pid));
+}
+
+// The pid in a sibling's name ".NAME.KIND-PID", or -1 when the name is not one of ours.
+long parseSiblingPid(const std::string& entry, const std::string& prefix) {
+  if (entry.rfind(prefix, 0) != 0) return -1;
+  const std::string digits = entry.substr(prefix.size());
+  if (digits.empty() || digits.find_first_not_of("0123456789") != std::string::npos || digits.size() > 9) return -1;
+  return std::stol(digits);
+}
+
+bool isProcessAlive(long pid) { return pid == getpid() || kill(static_cast<pid_t>(pid), 0) == 0 || errno == EPERM; }
+
+// Removes what killed runs into `target` left behind: their partial folders, and restores a backup
+// when the target itself is missing (a kill between the two renames of the fallback commit).
+void cleanUpAfterKilledRuns(const fs::path& target) {
+  const fs::path dir = target.parent_path().empty() ? fs::path(".") : target.parent_path();
+  const std::string name = target.filename().string();
+  std::error_code ec;
+  for (const auto& entry : fs::directory_iterator(dir, ec)) {
+    const std::string e = entry.path().filename().string();
+    for (const char* kind : {"partial", "backup"}) {
+      const long pid = parseSiblingPid(e, "." + name + "." + kind + "-");
+      if (pid < 0 || isProcessAlive(pid)) continue;
+      if (std::string(kind) == "backup" && !fs::exists(target)) fs::rename(entry.path(), target, ec);
+      else fs::remove_all(entry.path(), ec);
+    }
+  }
+}
+
+}  // namespace
+
+OutputFolder::OutputFolder(fs::path target) : target_(std::move(target)) {
+  if (target_.empty()) throw InputError({"command line", 0, 0, "--out"}, "the output folder name is empty");
+  if (!target_.has_filename()) target_ = target_.parent_path();  // "out/" -> "out"
+  if (fs::exists(target_) && !fs::is_directory(target_))
+    throw InputError({"command line", 0, 0, "--out"}, "'" + target_.string() + "' exists and is not a folder");
+  if (!target_.parent_path().empty()) fs::create_directories(target_.parent_path());
+  cleanUpAfterKilledRuns(target_);
+  temporary_ = makeSibling(target_, "partial", getpid());
+  std::error_code ec;
+  fs::remove_all(temporary_, ec);
+  if (!fs::create_directory(temporary_, ec) || ec)
+    throw std::runtime_error("cannot create the output folder " + temporary_.string() + ": " + ec.message());
+}
+
+OutputFolder::~OutputFolder() {
+  if (committed_) return;
+  std::error_code ec;
+  fs::remove_all(temporary_, ec);
+}
+
+void OutputFolder::commit() {
+  if (committed_) throw std::logic_error("OutputFolder::commit called twice for " + target_.string());
+  std::error_code ec;
+  if (!fs::exists(target_)) {
+    fs::rename(temporary_, target_, ec);
+    if (ec) throw std::runtime_error("cannot move the outputs into " + target_.string() + ": " + ec.message());
+  } else if (renameat2(AT_FDCWD, temporary_.c_str(), AT_FDCWD, target_.c_str(), RENAME_EXCHANGE) == 0) {
+    fs::remove_all(temporary_, ec);  // now the old outputs
+  } else {
+    // No atomic exchange on this file system: keep the old folder as a backup until the rename.
+    const fs::path backup = makeSibling(target_, "backup", getpid());
+    fs::remove_all(backup, ec);
+    fs::rename(target_, backup, ec);
+    if (ec) throw std::runtime_error("cannot set aside the old outputs in " + target_.string() + ": " + ec.message());
+    fs::rename(temporary_, target_, ec);
+    if (ec) {
+      std::error_code restore;
+      fs::rename(backup, target_, restore);
+      throw std::runtime_error("cannot move the outputs into " + target_.string() + ": " + ec.message());
+    }
+    fs::remove_all(backup, ec);
+  }
+  committed_ = true;
+}
+
+}  // namespace motostab

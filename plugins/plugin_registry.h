@@ -1,0 +1,47 @@
+#pragma once
+// The plugin registry: built-in and shared-library plugins by name, and the creation of the models a
+// scenario selects. Libraries come from explicit paths only, are loaded once per process, must
+// export the plugin API version of plugins/plugin_api.h, and register all their names or none.
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "plugins/plugin_api.h"
+#include "scenario/scenario.h"
+
+namespace motostab {
+
+/// Plugins registered by name. Names are unique across built-in and loaded plugins. A registry is a
+/// value: copying it copies the factories (sweep workers build their models from a copy).
+class PluginRegistry : public PluginRegistrar {
+ public:
+  /// Registers a contact model; a duplicate name throws std::runtime_error.
+  void addContactModel(const std::string& name, ContactModelFactory factory) override;
+  /// Creates the contact model a scenario names; an unknown name is an InputError at spec.path.model.
+  std::unique_ptr<ContactModel> createContactModel(const PluginSpec& spec) const;
+  std::vector<std::string> getContactModelNames() const;
+  /// Registers a swingarm compliance model; a duplicate name throws std::runtime_error.
+  void addSwingarmModel(const std::string& name, SwingarmModelFactory factory) override;
+  /// Creates the model named by `swingarm.compliance`; unknown names are InputErrors there.
+  std::unique_ptr<SwingarmModel> createSwingarmModel(const SwingarmSpec& spec) const;
+  std::vector<std::string> getSwingarmModelNames() const;
+
+  /// Adds the plugins of the library at `path` (absolute, or relative to the working directory;
+  /// a bare file name is refused rather than searched on the system path). The library is opened
+  /// and its entry point called once per process; later loads reuse what it registered. A library
+  /// already added to this registry is skipped. Its API version must equal
+  /// MOTOSTAB_PLUGIN_API_VERSION. Registration is all-or-nothing: on any failure (entry point
+  /// throws, duplicate name) no name of the library is added. Failures are InputErrors at `where`.
+  void loadLibrary(const std::string& path, const InputLocation& where);
+  /// Canonical paths of the libraries added to this registry, in load order.
+  const std::vector<std::string>& getLibraries() const { return libraries_; }
+
+ private:
+  void checkUnique(const std::string& name) const;
+  std::map<std::string, ContactModelFactory> contactModels_;
+  std::map<std::string, SwingarmModelFactory> swingarmModels_;
+  std::vector<std::string> libraries_;
+};
+
+}  // namespace motostab

@@ -1,0 +1,95 @@
+// Every input error exits with code 2 and names what was wrong (issue 13): CLI11's own parse and
+// validation errors, non-finite or out-of-range numbers, bad --set overrides, bad scenario files.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+
+#include "tests/apps/run_motostab.h"
+
+namespace motostab {
+namespace {
+
+const std::string kWhipple = std::string(MOTOSTAB_SOURCE_DIR) + "/scenarios/whipple-benchmark.yaml";
+
+struct Outcome {
+  int code;
+  std::string output;
+};
+
+Outcome run(const std::vector<std::string>& args) {
+  const auto dir = std::filesystem::temp_directory_path() / "motostab_cli_errors";
+  std::filesystem::create_directories(dir);
+  const std::string log = (dir / "log.txt").string();
+  const int code = test::waitForExit(test::startMotostab(args, dir.string(), log));
+  return {code, test::readLog(log)};
+}
+
+// Exit code 2 with `needle` in the message.
+void expectInputError(const std::vector<std::string>& args, const std::string& needle) {
+  const Outcome o = run(args);
+  std::string cmd;
+  for (const auto& a : args) cmd += a + " ";
+  EXPECT_EQ(o.code, 2) << cmd << "\n" << o.output;
+  EXPECT_NE(o.output.find(needle), std::string::npos) << cmd << "\n" << o.output;
+}
+
+TEST(CliInput, SpeedsMustBeFinite) {
+  expectInputError({"sweep", kWhipple, "--speeds", "nan:10:0.1"}, "--speeds");  // segfaulted before issue 13
+  expectInputError({"sweep", kWhipple, "--speeds", "0:inf:0.1"}, "--speeds");
+  expectInputError({"sweep", kWhipple, "--speeds", "0:10:0"}, "--speeds");
+  expectInputError({"sweep", kWhipple, "--speeds", "5:1:0.1"}, "--speeds");
+  expectInputError({"sweep", kWhipple, "--speeds", "0:1e9:1e-9"}, "at most 1e6 speeds");
+  expectInputError({"study", kWhipple, "--speeds", "0:10"}, "--speeds");
+}
+
+TEST(CliInput, ThreadsBetween1And256) {
+  expectInputError({"sweep", kWhipple, "--threads", "0"}, "--threads");
+  expectInputError({"sweep", kWhipple, "--threads", "257"}, "--threads");
+  expectInputError({"sweep", kWhipple, "--threads", "two"}, "--threads");
+  expectInputError({"study", kWhipple, "--threads", "0"}, "--threads");
+}
+
+TEST(CliInput, NumbersMustBeFiniteAndInRange) {
+  expectInputError({"linearize", kWhipple, "--speed", "nan", "--out", "x"}, "--speed");
+  expectInputError({"linearize", kWhipple, "--speed", "-1", "--out", "x"}, "--speed");
+  expectInputError({"simulate", kWhipple, "--speed", "5", "--duration", "inf"}, "--duration");
+  expectInputError({"simulate", kWhipple, "--speed", "5", "--duration", "1", "--accuracy", "0"}, "--accuracy");
+  expectInputError({"simulate", kWhipple, "--speed", "5", "--duration", "1", "--output-step", "-0.1"}, "--output-step");
+  expectInputError({"simulate", kWhipple, "--speed", "5", "--duration", "1", "--perturb", "roll-rate:nan"}, "--perturb");
+  expectInputError({"study", kWhipple, "--stiffness-scale", "0"}, "--stiffness-scale");
+  expectInputError({"study", kWhipple, "--shape-speeds", "10,nan"}, "--shape-speeds");
+  expectInputError({"identify", "virtual-rig", "--out", "x", "--noise-factor", "inf"}, "--noise-factor");
+}
+
+TEST(CliInput, ParseErrorsExit2NotCli11Codes) {
+  expectInputError({"sweep", kWhipple, "--no-such-option"}, "--no-such-option");
+  expectInputError({"sweep"}, "scenario");                           // missing positional
+  expectInputError({"sweep", "/nonexistent/scenario.yaml"}, "scenario");  // ExistingFile check
+  expectInputError({"no-such-command"}, "subcommand");
+  expectInputError({"linearize", kWhipple, "--out", "x"}, "--speed");  // required option
+  EXPECT_EQ(run({"--help"}).code, 0);
+}
+
+TEST(CliInput, BadSetNamesTheOverride) {
+  expectInputError({"check", kWhipple, "--set", "geometry.trail_m=abc"}, "--set geometry.trail_m=abc");
+  expectInputError({"check", kWhipple, "--set", "geometry.trail_m=.nan"}, "--set geometry.trail_m=.nan");
+  expectInputError({"check", kWhipple, "--set", "geometry.trail_m=[1,"}, "geometry.trail_m=[1,");
+  expectInputError({"check", kWhipple, "--set", "geometry.trail_m.x=1"}, "--set");
+  expectInputError({"check", kWhipple, "--set", "noequals"}, "KEY.PATH=VALUE");
+  expectInputError({"check", kWhipple, "--set", "geometry={wheelbase_m: 1, wheelbase_m: 2}"}, "duplicate key");
+}
+
+TEST(CliInput, BadScenarioFiles) {
+  const auto dir = std::filesystem::temp_directory_path() / "motostab_cli_errors";
+  std::filesystem::create_directories(dir);
+  const auto dup = (dir / "dup.yaml").string();
+  std::ofstream(dup) << "name: a\ngravity_mps2: 9.81\nname: b\n";
+  expectInputError({"check", dup}, "dup.yaml:3:1: name: duplicate key (first given on line 1)");
+  const auto syntax = (dir / "syntax.yaml").string();
+  std::ofstream(syntax) << "name: [a\n";
+  expectInputError({"sweep", syntax}, "syntax.yaml:");
+}
+
+}  // namespace
+}  // namespace motostab

@@ -1,0 +1,107 @@
+// Whole-run outputs (io/output_folder.h): the target holds the complete old or the complete new
+// outputs, never a mix.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <set>
+#include <sstream>
+
+#include "io/input_error.h"
+#include "io/output_folder.h"
+
+namespace motostab {
+namespace {
+namespace fs = std::filesystem;
+
+fs::path freshDir(const std::string& name) {
+  const fs::path d = fs::temp_directory_path() / ("motostab_output_folder_" + name);
+  fs::remove_all(d);
+  fs::create_directories(d);
+  return d;
+}
+
+std::set<std::string> listNames(const fs::path& dir) {
+  std::set<std::string> out;
+  for (const auto& e : fs::directory_iterator(dir)) out.insert(e.path().filename().string());
+  return out;
+}
+
+std::string readText(const fs::path& p) {
+  std::ifstream in(p);
+  std::stringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
+}
+
+TEST(OutputFolder, CommitReplacesTheOldFolderAsAWhole) {
+  const fs::path dir = freshDir("commit");
+  const fs::path target = dir / "out";
+  fs::create_directories(target / "sub");
+  std::ofstream(target / "old.txt") << "old";
+  std::ofstream(target / "sub" / "old.csv") << "1";
+  {
+    OutputFolder out(target);
+    EXPECT_NE(out.getPath(), target);
+    EXPECT_EQ(out.getPath().parent_path(), target.parent_path());  // a sibling: the rename stays on one file system
+    EXPECT_TRUE(listNames(out.getPath()).empty());
+    std::ofstream(out.getPath() / "new.txt") << "new";
+    EXPECT_EQ(readText(target / "old.txt"), "old");  // untouched before commit
+    out.commit();
+  }
+  EXPECT_EQ(listNames(target), std::set<std::string>{"new.txt"});
+  EXPECT_EQ(readText(target / "new.txt"), "new");
+  EXPECT_EQ(listNames(dir), std::set<std::string>{"out"});  // no temporary or backup left
+}
+
+TEST(OutputFolder, FailedRunLeavesTheOldOutputs) {
+  const fs::path dir = freshDir("fail");
+  const fs::path target = dir / "out";
+  fs::create_directories(target);
+  std::ofstream(target / "old.txt") << "old";
+  try {
+    OutputFolder out(target);
+    std::ofstream(out.getPath() / "half.txt") << "partial";
+    throw std::runtime_error("computation failed");
+  } catch (const std::runtime_error&) {
+  }
+  EXPECT_EQ(listNames(target), std::set<std::string>{"old.txt"});
+  EXPECT_EQ(listNames(dir), std::set<std::string>{"out"});
+}
+
+TEST(OutputFolder, NewTargetAndNestedParents) {
+  const fs::path dir = freshDir("new");
+  const fs::path target = dir / "a" / "b" / "out";
+  OutputFolder out(target);
+  std::ofstream(out.getPath() / "x.txt") << "x";
+  out.commit();
+  EXPECT_EQ(listNames(target), std::set<std::string>{"x.txt"});
+}
+
+TEST(OutputFolder, TargetThatIsAFileIsAnInputError) {
+  const fs::path dir = freshDir("file");
+  std::ofstream(dir / "out") << "not a folder";
+  EXPECT_THROW(OutputFolder out(dir / "out"), InputError);
+}
+
+TEST(OutputFolder, LeftoversOfKilledRunsAreCleanedUp) {
+  const fs::path dir = freshDir("stale");
+  const fs::path target = dir / "out";
+  // A run killed mid-write (pid 999999999 is above any Linux pid_max, so never alive) ...
+  fs::create_directories(dir / ".out.partial-999999999");
+  std::ofstream(dir / ".out.partial-999999999" / "half.txt") << "partial";
+  // ... and one killed between the fallback's two renames: only its backup holds the outputs.
+  fs::create_directories(dir / ".out.backup-999999998");
+  std::ofstream(dir / ".out.backup-999999998" / "old.txt") << "old";
+  {
+    OutputFolder out(target);
+    EXPECT_EQ(listNames(target), std::set<std::string>{"old.txt"});  // restored before anything else
+    std::ofstream(out.getPath() / "new.txt") << "new";
+    out.commit();
+  }
+  EXPECT_EQ(listNames(dir), std::set<std::string>{"out"});
+  EXPECT_EQ(listNames(target), std::set<std::string>{"new.txt"});
+}
+
+}  // namespace
+}  // namespace motostab
