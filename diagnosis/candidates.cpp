@@ -126,7 +126,7 @@ std::vector<Candidate> filterCandidates(const std::vector<Candidate>& all, const
   for (const auto& c : all) {
     bool take = false;
     for (size_t i = 0; i < patterns.size(); ++i)
-      if (fnmatch(patterns[i].c_str(), c.name.c_str(), 0) == 0) take = used[i] = true;
+      if (patterns[i] == c.name || fnmatch(patterns[i].c_str(), c.name.c_str(), 0) == 0) take = used[i] = true;  // [i] is no glob class here
     if (take) out.push_back(c);
   }
   for (size_t i = 0; i < patterns.size(); ++i)
