@@ -109,151 +109,217 @@ LinearModel linearize(const VehicleModel& model, const TrimResult& trim, const L
   return linearizeInPlace(model, work, opt);
 }
 
-LinearModel linearizeInPlace(const VehicleModel& model, TrimResult& trim, const LinearizeOptions& opt) {
-  const StateFunction fn(model);
-  const CoordinateIndices& ix = model.getIndices();
-  SimTK::State& s = trim.state;
-  const int nq = model.getNumQ(), nu = model.getNumU(), nz = model.getNumZ();
-  auto yDot = [&](const SimTK::State& st, Eigen::VectorXd& out) { fn.calcYDot(st, out); };
-  auto errors = [&](const SimTK::State& st, Eigen::VectorXd& out) { fn.calcConstraintErrors(st, out); };
-  auto stepFor = [&](const StateEntry& e) { return opt.step * std::max(1.0, std::abs(fn.get(s, e))); };
+namespace {
 
-  // Constraint Jacobian G = d[qerr; uerr]/d[q; u].
-  Eigen::VectorXd err0, col;
-  fn.calcConstraintErrors(s, err0);
-  const int m = static_cast<int>(err0.size());
-  const int mp = s.getNQErr();
-  Eigen::MatrixXd G(m, nq + nu);
-  const auto cyclic = model.getCyclicQ();
-  auto isCyclicQ = [&](const StateEntry& e) {
+using Direction = std::vector<std::pair<StateEntry, double>>;
+
+// What every stage of linearizeInPlace reads: the model, its state function, the trim state (perturbed
+// and restored in place) and the options.
+struct LinearizeContext {
+  const VehicleModel& model;
+  const StateFunction fn;
+  SimTK::State& s;
+  const LinearizeOptions& opt;
+  const int nq, nu, nz;
+  const std::vector<int> cyclic;
+  LinearizeContext(const VehicleModel& m, SimTK::State& state, const LinearizeOptions& o)
+      : model(m), fn(m), s(state), opt(o), nq(m.getNumQ()), nu(m.getNumU()), nz(m.getNumZ()), cyclic(m.getCyclicQ()) {}
+  double stepFor(const StateEntry& e) const { return opt.step * std::max(1.0, std::abs(fn.get(s, e))); }
+  bool isCyclicQ(const StateEntry& e) const {
     return e.slot == Slot::Q && std::find(cyclic.begin(), cyclic.end(), e.index) != cyclic.end();
-  };
-  for (int j = 0; j < nq + nu && m > 0; ++j) {  // no constraints: G has no rows
+  }
+  // Row of a q, u or z in ydot.
+  int rowOf(const StateEntry& e) const { return e.slot == Slot::Q ? e.index : e.slot == Slot::U ? nq + e.index : nq + nu + e.index; }
+};
+
+// The constraint Jacobian G = d[qerr; uerr]/d[q; u] at the trim, and the count of its position rows.
+struct ConstraintJacobian {
+  Eigen::MatrixXd G;
+  int m = 0, mp = 0;
+};
+
+ConstraintJacobian calcConstraintJacobian(const LinearizeContext& c) {
+  const int nq = c.nq, nu = c.nu;
+  auto errors = [&](const SimTK::State& st, Eigen::VectorXd& out) { c.fn.calcConstraintErrors(st, out); };
+  Eigen::VectorXd err0, col;
+  c.fn.calcConstraintErrors(c.s, err0);
+  ConstraintJacobian out;
+  out.m = static_cast<int>(err0.size());
+  out.mp = c.s.getNQErr();
+  Eigen::MatrixXd& G = out.G;
+  G.resize(out.m, nq + nu);
+  for (int j = 0; j < nq + nu && out.m > 0; ++j) {  // no constraints: G has no rows
     const StateEntry e{j < nq ? Slot::Q : Slot::U, j < nq ? j : j - nq};
-    if (isCyclicQ(e) && !opt.computeCyclicColumns) {
+    if (c.isCyclicQ(e) && !c.opt.computeCyclicColumns) {
       G.col(j).setZero();
       continue;
     }
     if (e.slot == Slot::U) continue;  // below, exactly
-    fn.calcDirectionalDerivative(s, {{e, 1.0}}, stepFor(e), opt.order, errors, col);
+    c.fn.calcDirectionalDerivative(c.s, {{e, 1.0}}, c.stepFor(e), c.opt.order, errors, col);
     G.col(j) = col;
   }
   // The constraint errors are affine in u: one-sided unit differences are exact.
-  for (int j = 0; j < nu && m > 0; ++j) {
+  for (int j = 0; j < nu && out.m > 0; ++j) {
     const StateEntry e{Slot::U, j};
-    const double base = fn.get(s, e);
-    fn.set(s, e, base + 1.0);
-    fn.calcConstraintErrors(s, col);
-    fn.set(s, e, base);
+    const double base = c.fn.get(c.s, e);
+    c.fn.set(c.s, e, base + 1.0);
+    c.fn.calcConstraintErrors(c.s, col);
+    c.fn.set(c.s, e, base);
     G.col(nq + j) = col - err0;
   }
+  return out;
+}
 
+// The tangent space of the constraints: dependent q and u, and the solve for their increments.
+struct TangentSpace {
+  std::vector<int> depQ, depU, depCols;  ///< depCols: q index, or nq + u index
+  Eigen::PartialPivLU<Eigen::MatrixXd> GdepLU;
+};
+
+TangentSpace chooseTangentSpace(const LinearizeContext& c, const ConstraintJacobian& cj) {
   // Dependent coordinates: heights and pitch first, then the rates that the contact fixes.
-  std::vector<int> depQ, depU;
+  const CoordinateIndices& ix = c.model.getIndices();
+  const int nq = c.nq, nu = c.nu, m = cj.m, mp = cj.mp;
+  TangentSpace t;
   if (m > 0) {
-    depQ = chooseDependentColumns(G.topLeftCorner(mp, nq), withPriority({ix.height, ix.pitch}, nq));
-    depU = chooseDependentColumns(G.bottomRightCorner(m - mp, nu),
-                           withPriority({ix.height, ix.pitch, ix.rearSpin, ix.frontSpin, ix.y, ix.yaw}, nu));
-    if (static_cast<int>(depQ.size()) != mp || static_cast<int>(depU.size()) != m - mp)
+    t.depQ = chooseDependentColumns(cj.G.topLeftCorner(mp, nq), withPriority({ix.height, ix.pitch}, nq));
+    t.depU = chooseDependentColumns(cj.G.bottomRightCorner(m - mp, nu),
+                                    withPriority({ix.height, ix.pitch, ix.rearSpin, ix.frontSpin, ix.y, ix.yaw}, nu));
+    if (static_cast<int>(t.depQ.size()) != mp || static_cast<int>(t.depU.size()) != m - mp)
       throw std::runtime_error("linearize: constraints are redundant or singular at the trim");
   }
-  std::vector<int> depCols;
-  for (int q : depQ) depCols.push_back(q);
-  for (int u : depU) depCols.push_back(nq + u);
-  Eigen::MatrixXd Gdep(m, depCols.size());
-  for (size_t k = 0; k < depCols.size(); ++k) Gdep.col(k) = G.col(depCols[k]);
-  const Eigen::PartialPivLU<Eigen::MatrixXd> GdepLU = m > 0 ? Gdep.partialPivLu() : Eigen::PartialPivLU<Eigen::MatrixXd>();
+  for (int q : t.depQ) t.depCols.push_back(q);
+  for (int u : t.depU) t.depCols.push_back(nq + u);
+  Eigen::MatrixXd Gdep(m, t.depCols.size());
+  for (size_t k = 0; k < t.depCols.size(); ++k) Gdep.col(k) = cj.G.col(t.depCols[k]);
+  if (m > 0) t.GdepLU = Gdep.partialPivLu();
+  return t;
+}
 
-  // Independent states in model order: q, u, z.
-  LinearModel lin;
-  lin.speed = trim.speed;
-  for (int i = 0; i < nq; ++i)
-    if (std::find(depQ.begin(), depQ.end(), i) == depQ.end()) lin.states.push_back({model.getQNames()[i], {Slot::Q, i}});
-  for (int i = 0; i < nu; ++i)
-    if (std::find(depU.begin(), depU.end(), i) == depU.end()) lin.states.push_back({model.getUNames()[i], {Slot::U, i}});
-  for (int i = 0; i < nz; ++i) lin.states.push_back({model.getZNames()[i], {Slot::Z, i}});
-  const int n = static_cast<int>(lin.states.size());
-  auto rowOf = [&](const StateEntry& e) { return e.slot == Slot::Q ? e.index : e.slot == Slot::U ? nq + e.index : nq + nu + e.index; };
+// Independent states in model order: q, u, z.
+std::vector<LinearState> listIndependentStates(const LinearizeContext& c, const TangentSpace& t) {
+  std::vector<LinearState> states;
+  for (int i = 0; i < c.nq; ++i)
+    if (std::find(t.depQ.begin(), t.depQ.end(), i) == t.depQ.end()) states.push_back({c.model.getQNames()[i], {Slot::Q, i}});
+  for (int i = 0; i < c.nu; ++i)
+    if (std::find(t.depU.begin(), t.depU.end(), i) == t.depU.end()) states.push_back({c.model.getUNames()[i], {Slot::U, i}});
+  for (int i = 0; i < c.nz; ++i) states.push_back({c.model.getZNames()[i], {Slot::Z, i}});
+  return states;
+}
 
-  // Columns: directional derivatives along the tangent-space basis vectors, grouped ones together.
-  auto addDirection = [&](int j, double scale, std::vector<std::pair<StateEntry, double>>& dir) {
-    const StateEntry& e = lin.states[j].entry;
-    dir.push_back({e, scale});
-    if (e.slot == Slot::Z || m == 0) return;
-    const Eigen::VectorXd dDep = GdepLU.solve(-G.col(rowOf(e)));
-    for (size_t k = 0; k < depCols.size(); ++k) {
-      const int c = depCols[k];
-      dir.push_back({{c < nq ? Slot::Q : Slot::U, c < nq ? c : c - nq}, scale * dDep[k]});
-    }
-  };
-  Eigen::MatrixXd A(n, n);
-  std::vector<bool> done(n, false);
+// The perturbation along independent state `e` scaled by `scale`, with the dependent coordinates
+// moved to stay on the constraints.
+void addDirection(const LinearizeContext& c, const ConstraintJacobian& cj, const TangentSpace& t, const StateEntry& e,
+                  double scale, Direction& dir) {
+  dir.push_back({e, scale});
+  if (e.slot == Slot::Z || cj.m == 0) return;
+  const Eigen::VectorXd dDep = t.GdepLU.solve(-cj.G.col(c.rowOf(e)));
+  for (size_t k = 0; k < t.depCols.size(); ++k) {
+    const int col = t.depCols[k];
+    dir.push_back({{col < c.nq ? Slot::Q : Slot::U, col < c.nq ? col : col - c.nq}, scale * dDep[k]});
+  }
+}
+
+// Columns of A evaluated together (opt.grouping); marks them in `done`.
+void differenceGroupedColumns(const LinearizeContext& c, const ConstraintJacobian& cj, const TangentSpace& t,
+                              const LinearModel& lin, Eigen::MatrixXd& A, std::vector<bool>& done) {
+  const ColumnGrouping& grouping = c.opt.grouping;
+  auto yDot = [&](const SimTK::State& st, Eigen::VectorXd& out) { c.fn.calcYDot(st, out); };
   std::vector<int> linearIndexOf;  // grouping's state index -> lin.states index
-  for (const auto& name : opt.grouping.states) linearIndexOf.push_back(lin.findState(name));
-  const bool grouped = !opt.grouping.groups.empty() &&
+  for (const auto& name : grouping.states) linearIndexOf.push_back(lin.findState(name));
+  const bool grouped = !grouping.groups.empty() &&
                        std::find(linearIndexOf.begin(), linearIndexOf.end(), -1) == linearIndexOf.end();
-  for (const auto& group : grouped ? opt.grouping.groups : std::vector<std::vector<int>>{}) {
-    std::vector<std::pair<StateEntry, double>> dir;
-    for (int g : group) addDirection(linearIndexOf[g], stepFor(lin.states[linearIndexOf[g]].entry), dir);
-    fn.calcDirectionalDerivative(s, dir, 1.0, opt.order, yDot, col);  // sum of h_j times column j
+  if (!grouped) return;
+  Eigen::VectorXd col;
+  for (const auto& group : grouping.groups) {
+    Direction dir;
+    for (int g : group) addDirection(c, cj, t, lin.states[linearIndexOf[g]].entry, c.stepFor(lin.states[linearIndexOf[g]].entry), dir);
+    c.fn.calcDirectionalDerivative(c.s, dir, 1.0, c.opt.order, yDot, col);  // sum of h_j times column j
     for (int g : group) {
       const int j = linearIndexOf[g];
-      const double h = stepFor(lin.states[j].entry);
+      const double h = c.stepFor(lin.states[j].entry);
       A.col(j).setZero();
       for (size_t r = 0; r < linearIndexOf.size(); ++r)
-        if (opt.grouping.pattern(r, g)) A(linearIndexOf[r], j) = col[rowOf(lin.states[linearIndexOf[r]].entry)] / h;
+        if (grouping.pattern(r, g)) A(linearIndexOf[r], j) = col[c.rowOf(lin.states[linearIndexOf[r]].entry)] / h;
       done[j] = true;
     }
   }
+}
+
+// A: directional derivatives along the tangent-space basis vectors, grouped ones together.
+Eigen::MatrixXd differenceColumns(const LinearizeContext& c, const ConstraintJacobian& cj, const TangentSpace& t,
+                                  const LinearModel& lin) {
+  const int n = static_cast<int>(lin.states.size());
+  const int yaw = c.model.getIndices().yaw;
+  auto yDot = [&](const SimTK::State& st, Eigen::VectorXd& out) { c.fn.calcYDot(st, out); };
+  Eigen::MatrixXd A(n, n);
+  std::vector<bool> done(n, false);
+  differenceGroupedColumns(c, cj, t, lin, A, done);
+  Eigen::VectorXd col;
   for (int j = 0; j < n; ++j) {
     if (done[j]) continue;
     const StateEntry& e = lin.states[j].entry;
-    const bool knownDeadYaw = e.slot == Slot::Q && e.index == ix.yaw && opt.removeYaw == 1;
-    if ((isCyclicQ(e) && !opt.computeCyclicColumns) || knownDeadYaw) {
+    const bool knownDeadYaw = e.slot == Slot::Q && e.index == yaw && c.opt.removeYaw == 1;
+    if ((c.isCyclicQ(e) && !c.opt.computeCyclicColumns) || knownDeadYaw) {
       A.col(j).setZero();
       continue;
     }
-    std::vector<std::pair<StateEntry, double>> dir;
-    addDirection(j, 1.0, dir);
-    fn.calcDirectionalDerivative(s, dir, stepFor(e), opt.order, yDot, col);
-    for (int i = 0; i < n; ++i) A(i, j) = col[rowOf(lin.states[i].entry)];
+    Direction dir;
+    addDirection(c, cj, t, e, 1.0, dir);
+    c.fn.calcDirectionalDerivative(c.s, dir, c.stepFor(e), c.opt.order, yDot, col);
+    for (int i = 0; i < n; ++i) A(i, j) = col[c.rowOf(lin.states[i].entry)];
   }
-  lin.inputNames = VehicleModel::getInputNames();
-  // Accelerations are affine in the generalized input forces: a one-sided unit difference is exact.
-  Eigen::MatrixXd B(n, opt.computeB ? kNumInputs : 0);
+  return A;
+}
+
+// B: accelerations are affine in the generalized input forces, so a one-sided unit difference is exact.
+Eigen::MatrixXd differenceInputColumns(const LinearizeContext& c, const LinearModel& lin) {
+  const int n = static_cast<int>(lin.states.size());
+  Eigen::MatrixXd B(n, c.opt.computeB ? kNumInputs : 0);
   Eigen::VectorXd y0, y1;
-  if (opt.computeB) fn.calcYDot(s, y0);
+  if (c.opt.computeB) c.fn.calcYDot(c.s, y0);
   for (int k = 0; k < B.cols(); ++k) {
     const StateEntry in{Slot::Input, k};
-    const double base = fn.get(s, in);
-    fn.set(s, in, base + 1.0);
-    fn.calcYDot(s, y1);
-    fn.set(s, in, base);
-    for (int i = 0; i < n; ++i) B(i, k) = y1[rowOf(lin.states[i].entry)] - y0[rowOf(lin.states[i].entry)];
+    const double base = c.fn.get(c.s, in);
+    c.fn.set(c.s, in, base + 1.0);
+    c.fn.calcYDot(c.s, y1);
+    c.fn.set(c.s, in, base);
+    for (int i = 0; i < n; ++i) B(i, k) = y1[c.rowOf(lin.states[i].entry)] - y0[c.rowOf(lin.states[i].entry)];
   }
+  return B;
+}
 
-  // Remove cyclic coordinates; yaw too when no kept row depends on it (rolling constraints).
+// Columns (states) to remove: the cyclic coordinates, and yaw when no kept row depends on it.
+std::vector<int> chooseRemovedStates(const LinearizeContext& c, const LinearModel& lin, const Eigen::MatrixXd& A) {
+  const int n = static_cast<int>(lin.states.size());
   std::vector<int> remove;
   int yawCol = -1;
   for (int j = 0; j < n; ++j) {
     const StateEntry& e = lin.states[j].entry;
     if (e.slot != Slot::Q) continue;
-    if (isCyclicQ(e)) remove.push_back(j);
-    if (e.index == ix.yaw) yawCol = j;
+    if (c.isCyclicQ(e)) remove.push_back(j);
+    if (e.index == c.model.getIndices().yaw) yawCol = j;
   }
   if (yawCol >= 0) {
     double yawInfluence = 0;
     for (int i = 0; i < n; ++i)
       if (std::find(remove.begin(), remove.end(), i) == remove.end())
         yawInfluence = std::max(yawInfluence, std::abs(A(i, yawCol)));
-    const bool dead = yawInfluence < opt.zeroColumnTolerance * std::max(1.0, A.lpNorm<Eigen::Infinity>());
-    if (opt.removeYaw == 1 || (opt.removeYaw < 0 && dead)) remove.push_back(yawCol);
+    const bool dead = yawInfluence < c.opt.zeroColumnTolerance * std::max(1.0, A.lpNorm<Eigen::Infinity>());
+    if (c.opt.removeYaw == 1 || (c.opt.removeYaw < 0 && dead)) remove.push_back(yawCol);
   }
+  return remove;
+}
+
+// Keeps the other states in lin (A, B, states); records the removed columns' kept rows.
+void removeStates(const LinearizeContext& c, const std::vector<int>& remove, const Eigen::MatrixXd& A,
+                  const Eigen::MatrixXd& B, LinearModel& lin) {
+  const int n = static_cast<int>(lin.states.size());
   std::vector<int> keep;
   for (int j = 0; j < n; ++j)
     if (std::find(remove.begin(), remove.end(), j) == remove.end()) keep.push_back(j);
   for (int j : remove) {
-    if (isCyclicQ(lin.states[j].entry) && !opt.computeCyclicColumns) continue;
+    if (c.isCyclicQ(lin.states[j].entry) && !c.opt.computeCyclicColumns) continue;
     Eigen::VectorXd kept(keep.size());
     for (size_t a = 0; a < keep.size(); ++a) kept[a] = A(keep[a], j);
     lin.removedColumns.push_back({lin.states[j].name, kept});
@@ -267,11 +333,29 @@ LinearModel linearizeInPlace(const VehicleModel& model, TrimResult& trim, const 
     for (size_t b = 0; b < keep.size(); ++b) lin.A(a, b) = A(keep[a], keep[b]);
   }
   lin.states = kept;
+}
 
+void solveEigen(LinearModel& lin) {
   Eigen::EigenSolver<Eigen::MatrixXd> es(lin.A);
   lin.eigenvalues = es.eigenvalues();
   lin.eigenvectors = es.eigenvectors();
   for (int k = 0; k < lin.eigenvectors.cols(); ++k) lin.eigenvectors.col(k).normalize();
+}
+
+}  // namespace
+
+LinearModel linearizeInPlace(const VehicleModel& model, TrimResult& trim, const LinearizeOptions& opt) {
+  const LinearizeContext c(model, trim.state, opt);
+  const ConstraintJacobian cj = calcConstraintJacobian(c);
+  const TangentSpace tangent = chooseTangentSpace(c, cj);
+  LinearModel lin;
+  lin.speed = trim.speed;
+  lin.states = listIndependentStates(c, tangent);
+  const Eigen::MatrixXd A = differenceColumns(c, cj, tangent, lin);
+  lin.inputNames = VehicleModel::getInputNames();
+  const Eigen::MatrixXd B = differenceInputColumns(c, lin);
+  removeStates(c, chooseRemovedStates(c, lin, A), A, B, lin);
+  solveEigen(lin);
   return lin;
 }
 

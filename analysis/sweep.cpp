@@ -60,139 +60,189 @@ double findRoot(const std::function<double(double)>& f, double a, double b, doub
   return b;
 }
 
-}  // namespace
+// The speeds of a sweep shared among its workers. Warm-started chains of speeds: on a span shared by
+// two workers one goes up and the other down from its top, each taking the next speed until they
+// meet, so that within a span neither waits for the other whatever the cost per speed (where they
+// meet depends on timing: threaded results agree with the serial sweep to the trim tolerance, not to
+// the bit). The lead (worker 0) starts at the first speed of at least 1 m/s, sweeps down to its
+// span's bottom, then turns and goes up.
+struct Span {
+  std::mutex lock;
+  size_t lo = 0, hi = 0;  // speeds [lo, hi) not yet taken
+};
 
-SweepResult runSweep(const VehicleModel& model, const SweepOptions& opt) {
-  SweepResult out;
-  out.speeds = makeSpeedGrid(opt.start, opt.stop, opt.step);
+struct SweepPlan {
+  size_t n = 0, workers = 1;
+  std::vector<Span> spans;
+  size_t leadFirst = 0;    ///< the lead's first speed
+  bool leadTurns = false;  ///< else worker 0 just goes up from 0
+  size_t leadDown = 0;     ///< speeds leadFirst, ..., 0 before the turn
+};
+
+SweepPlan planSweep(const std::vector<double>& speeds, int threads) {
+  SweepPlan p;
+  p.n = speeds.size();
+  p.workers = std::max<size_t>(1, std::min<size_t>(static_cast<size_t>(std::max(1, threads)), p.n));
+  p.spans = std::vector<Span>((p.workers + 1) / 2);
+  for (size_t k = 0; k < p.spans.size(); ++k)  // shares of the speeds: two per two-worker span
+    p.spans[k].lo = p.n * std::min(2 * k, p.workers) / p.workers,
+    p.spans[k].hi = p.n * std::min(2 * k + 2, p.workers) / p.workers;
+  p.leadFirst = static_cast<size_t>(std::find_if(speeds.begin(), speeds.end(), [](double v) { return v >= 1.0; }) -
+                                    speeds.begin());
+  p.leadTurns = p.leadFirst < p.spans[0].hi;
+  p.leadDown = p.leadTurns ? p.leadFirst + 1 : 0;
+  if (p.leadTurns) p.spans[0].lo = p.leadFirst + 1;
+  return p;
+}
+
+// One sweep in progress: the chains of trims and linearisations, shared by the workers.
+class SweepRun {
+ public:
+  SweepRun(const VehicleModel& model, const SweepOptions& opt) : model_(model), opt_(opt), fixed_(opt) {
+    out_.speeds = makeSpeedGrid(opt.start, opt.stop, opt.step);
+    plan_ = planSweep(out_.speeds, opt.threads);
+    out_.trims.resize(plan_.n);
+    out_.models.resize(plan_.n);
+    costs_.resize(plan_.n);
+  }
+
   // The states must not change with speed: decide on yaw once, from a reference linearisation away
   // from standstill (every speed-dependent coupling present; also a sample of the column pattern).
-  // It is the lead chain's first: worker 0 starts at the first speed of at least 1 m/s, sweeps down
-  // to its span's bottom, then turns and goes up; the other workers make their first, cold trim
-  // meanwhile (its partner's, at the top speed, is the slowest) and take the reference before
-  // linearising it.
-  const size_t n = out.speeds.size();
-  const size_t workers = std::max<size_t>(1, std::min<size_t>(static_cast<size_t>(std::max(1, opt.threads)), n));
-  struct Span {
-    std::mutex lock;
-    size_t lo = 0, hi = 0;  // speeds [lo, hi) not yet taken
-  };
-  const size_t spans = (workers + 1) / 2;
-  std::vector<Span> span(spans);
-  for (size_t p = 0; p < spans; ++p)  // shares of the speeds: two per two-worker span
-    span[p].lo = n * std::min(2 * p, workers) / workers, span[p].hi = n * std::min(2 * p + 2, workers) / workers;
-  const size_t leadFirst = static_cast<size_t>(
-      std::find_if(out.speeds.begin(), out.speeds.end(), [](double v) { return v >= 1.0; }) - out.speeds.begin());
-  const bool leadTurns = leadFirst < span[0].hi;  // else worker 0 just goes up from 0
-  const size_t leadDown = leadTurns ? leadFirst + 1 : 0;  // speeds leadFirst, ..., 0 before the turn
-  if (leadTurns) span[0].lo = leadFirst + 1;
-  SweepOptions fixed = opt;
-  const bool decideYaw = fixed.linearize.removeYaw < 0;
-  std::optional<LinearModel> ownReference;
-  const LinearModel* ref = nullptr;
-  std::promise<void> refPromise;
-  std::shared_future<void> refReady;
-  std::atomic<bool> refSettled{false}, failed{false};
-  auto settleReference = [&](std::exception_ptr e) {  // once: the value, or the failure that stops the sweep
-    if (!refReady.valid() || refSettled.exchange(true)) return;
-    if (e) refPromise.set_exception(e);
-    else refPromise.set_value();
-  };
-  if (decideYaw && leadTurns) {
-    refReady = refPromise.get_future().share();
-  } else if (decideYaw) {  // no speed of 1 m/s or more in the lead's span: a separate reference
-    TrimResult top = calcTrim(model, std::max(1.0, opt.stop), opt.trim);
-    ownReference = linearizeInPlace(model, top, opt.linearize);
-    ref = &*ownReference;
-    fixed.linearize.removeYaw = ref->findState("yaw") < 0 ? 1 : 0;  // the sweep's states are ref's
+  // It is the lead chain's first; the other workers make their first, cold trim meanwhile (its
+  // partner's, at the top speed, is the slowest) and take the reference before linearising it.
+  void prepareReference() {
+    const bool decideYaw = fixed_.linearize.removeYaw < 0;
+    if (decideYaw && plan_.leadTurns) {
+      refReady_ = refPromise_.get_future().share();
+    } else if (decideYaw) {  // no speed of 1 m/s or more in the lead's span: a separate reference
+      TrimResult top = calcTrim(model_, std::max(1.0, opt_.stop), opt_.trim);
+      ownReference_ = linearizeInPlace(model_, top, opt_.linearize);
+      ref_ = &*ownReference_;
+      fixed_.linearize.removeYaw = ref_->findState("yaw") < 0 ? 1 : 0;  // the sweep's states are ref's
+    }
   }
-  out.trims.resize(n);
-  out.models.resize(n);
-  std::vector<Eigen::MatrixXd> costs(n);  // costs[k]: calcMatchCosts(models[k - 1], models[k])
-  // Warm-started chains of speeds: on a span shared by two workers one goes up and the other down
-  // from its top, each taking the next speed until they meet, so that within a span neither waits
-  // for the other whatever the cost per speed (where they meet depends on timing: threaded results
-  // agree with the serial sweep to the trim tolerance, not to the bit). Each chain trims in place
-  // on one State (no State copies). Without constraints the next speed's trim Jacobian is read off
-  // this speed's A, keeping the input columns of the one this trim used (a differentiated one costs
-  // two realizations per unknown), and extrapolated along speed.
-  auto runChain = [&](const VehicleModel& m, Span& sp, bool downwards, bool lead) {
-    auto take = [&](size_t& k) {
-      std::lock_guard<std::mutex> guard(sp.lock);
-      if (sp.lo == sp.hi || failed) return false;
-      k = downwards ? --sp.hi : sp.lo++;
-      return true;
-    };
+
+  // Every chain, on the calling thread or on one worker each (a worker builds its own model replica:
+  // no shared Simbody caches). A failure stops the others at their next speed and releases any wait
+  // for the reference. The lead's partner takes at least its first speed; the lead computes the
+  // reference before taking any shared speed.
+  void runChains() {
+    if (plan_.workers == 1) {
+      runChain(model_, plan_.spans[0], false, true);
+      return;
+    }
+    runWorkers(
+        plan_.workers,
+        [&](size_t w) {
+          std::unique_ptr<VehicleModel> own;
+          if (w > 0) own = model_.makeReplica();
+          runChain(w > 0 ? *own : model_, plan_.spans[w / 2], w % 2 == 1, w == 0);
+        },
+        [&]() {
+          failed_ = true;
+          settleReference(std::make_exception_ptr(std::runtime_error("sweep stopped: another worker failed")));
+        });
+  }
+
+  SweepResult takeTrackedResult() {
+    out_.branches = trackModes(out_.models, model_.getScenario().geometry.wheelbase, opt_.threads, std::move(costs_));
+    return std::move(out_);
+  }
+  /// The options every speed was linearised with (removeYaw decided).
+  const SweepOptions& getFixedOptions() const { return fixed_; }
+
+ private:
+  void settleReference(std::exception_ptr e) {  // once: the value, or the failure that stops the sweep
+    if (!refReady_.valid() || refSettled_.exchange(true)) return;
+    if (e) refPromise_.set_exception(e);
+    else refPromise_.set_value();
+  }
+
+  // The next speed of a chain: the lead's way down first, then its span's from its end.
+  bool takeNext(Span& sp, bool downwards, bool lead, size_t i, size_t& k) {
+    if (lead && i < plan_.leadDown) {
+      k = plan_.leadFirst - i;
+      return !failed_;
+    }
+    std::lock_guard<std::mutex> guard(sp.lock);
+    if (sp.lo == sp.hi || failed_) return false;
+    k = downwards ? --sp.hi : sp.lo++;
+    return true;
+  }
+
+  // A chain's first speed: a cold trim; the lead's is the reference.
+  void linearizeFirst(const VehicleModel& m, size_t k, bool lead, TrimResult& work, LinearizeOptions& lo) {
+    work = calcTrim(m, out_.speeds[k], opt_.trim);
+    const bool isReference = lead && refReady_.valid();  // removeYaw automatic
+    if (refReady_.valid() && !isReference) refReady_.get();
+    out_.models[k] = linearizeInPlace(m, work, isReference ? opt_.linearize : fixed_.linearize);
+    if (isReference) {
+      ref_ = &out_.models[k];
+      fixed_.linearize.removeYaw = ref_->findState("yaw") < 0 ? 1 : 0;
+      settleReference(nullptr);  // a failure reaches the waiting workers through onFirstFailure
+    }
+    lo = fixed_.linearize;
+  }
+
+  // Without constraints the next speed's trim Jacobian is read off this speed's A, keeping the
+  // input columns of the one this trim used (a differentiated one costs two realizations per
+  // unknown), and extrapolated along speed.
+  void updateTrimJacobian(const VehicleModel& m, size_t k, size_t previous, size_t i, TrimResult& work,
+                          Eigen::MatrixXd& lastJ) {
+    Eigen::MatrixXd J = calcTrimJacobian(m, out_.models[k], work.jacobian);
+    if (J.size() == 0) return;
+    if (i > 0 && lastJ.rows() == J.rows() && lastJ.cols() == J.cols())
+      work.jacobianPerSpeed = (J - lastJ) / (out_.speeds[k] - out_.speeds[previous]);
+    lastJ = J;
+    work.jacobian = std::move(J);
+  }
+
+  // One warm-started chain: trims in place on one State (no State copies).
+  void runChain(const VehicleModel& m, Span& sp, bool downwards, bool lead) {
     LinearizeOptions lo;
     TrimResult work, turn;  // turn: the lead's first trim, from which it goes up
     Eigen::MatrixXd lastJ, turnJ;  // the previous speed's trim Jacobian read off its A
     size_t k = 0, previous = 0;
-    for (size_t i = 0;; ++i, previous = k) {
-      if (lead && i < leadDown) {
-        if (failed) break;
-        k = leadFirst - i;
-      } else if (!take(k)) {
-        break;
-      } else if (lead && i == leadDown && leadDown > 1) {
-        work = std::move(turn), lastJ = std::move(turnJ), previous = leadFirst;
-      }
+    for (size_t i = 0; takeNext(sp, downwards, lead, i, k); ++i, previous = k) {
+      if (lead && i == plan_.leadDown && plan_.leadDown > 1)
+        work = std::move(turn), lastJ = std::move(turnJ), previous = plan_.leadFirst;
       if (i == 0) {
-        work = calcTrim(m, out.speeds[k], opt.trim);
-        const bool isReference = lead && refReady.valid();  // removeYaw automatic
-        if (refReady.valid() && !isReference) refReady.get();
-        out.models[k] = linearizeInPlace(m, work, isReference ? opt.linearize : fixed.linearize);
-        if (isReference) {
-          ref = &out.models[k];
-          fixed.linearize.removeYaw = ref->findState("yaw") < 0 ? 1 : 0;
-          settleReference(nullptr);  // a failure reaches the waiting workers through onFirstFailure
-        }
-        lo = fixed.linearize;
+        linearizeFirst(m, k, lead, work, lo);
       } else {
-        updTrim(m, out.speeds[k], opt.trim, work);
-        out.models[k] = linearizeInPlace(m, work, lo);
+        updTrim(m, out_.speeds[k], opt_.trim, work);
+        out_.models[k] = linearizeInPlace(m, work, lo);
       }
       if (i > 0) {  // the match costs of this step, for the tracking
         const size_t low = std::min(k, previous);
-        costs[low + 1] = calcMatchCosts(out.models[low], out.models[low + 1]);
+        costs_[low + 1] = calcMatchCosts(out_.models[low], out_.models[low + 1]);
       }
-      if (opt.groupColumns && i == 1) {
-        std::vector<const LinearModel*> samples{&out.models[previous], &out.models[k]};
-        if (ref) samples.push_back(ref);
+      if (opt_.groupColumns && i == 1) {
+        std::vector<const LinearModel*> samples{&out_.models[previous], &out_.models[k]};
+        if (ref_) samples.push_back(ref_);
         lo.grouping = calcColumnGrouping(samples);
       }
-      Eigen::MatrixXd J = calcTrimJacobian(m, out.models[k], work.jacobian);
-      if (J.size() > 0) {
-        if (i > 0 && lastJ.rows() == J.rows() && lastJ.cols() == J.cols())
-          work.jacobianPerSpeed = (J - lastJ) / (out.speeds[k] - out.speeds[previous]);
-        lastJ = J;
-        work.jacobian = std::move(J);
-      }
-      out.trims[k] = makeTrimPoint(m, work);
-      if (lead && i == 0 && leadDown > 1) turn = work, turnJ = lastJ;  // one State copy
+      updateTrimJacobian(m, k, previous, i, work, lastJ);
+      out_.trims[k] = makeTrimPoint(m, work);
+      if (lead && i == 0 && plan_.leadDown > 1) turn = work, turnJ = lastJ;  // one State copy
     }
-  };
-  if (workers == 1) {
-    runChain(model, span[0], false, true);
-  } else {
-    // Each worker builds its own model (no shared Simbody caches); a failure stops the others at
-    // their next speed and releases any wait for the reference. The lead's partner takes at
-    // least its first speed; the lead computes the reference before taking any shared speed.
-    runWorkers(
-        workers,
-        [&](size_t w) {
-          std::unique_ptr<VehicleModel> own;
-          if (w > 0) own = model.makeReplica();
-          runChain(w > 0 ? *own : model, span[w / 2], w % 2 == 1, w == 0);
-        },
-        [&]() {
-          failed = true;
-          settleReference(std::make_exception_ptr(std::runtime_error("sweep stopped: another worker failed")));
-        });
   }
-  out.branches = trackModes(out.models, model.getScenario().geometry.wheelbase, opt.threads, std::move(costs));
 
-  // Every sign change of a labelled mode's real part, refined by Brent's method; crossings are
-  // independent, so workers share them (each with its own model).
+  const VehicleModel& model_;
+  const SweepOptions& opt_;
+  SweepOptions fixed_;
+  SweepPlan plan_;
+  SweepResult out_;
+  std::vector<Eigen::MatrixXd> costs_;  // costs_[k]: calcMatchCosts(models[k - 1], models[k])
+  std::optional<LinearModel> ownReference_;
+  const LinearModel* ref_ = nullptr;
+  std::promise<void> refPromise_;
+  std::shared_future<void> refReady_;
+  std::atomic<bool> refSettled_{false}, failed_{false};
+};
+
+// Every sign change of a labelled mode's real part, refined by Brent's method; crossings are
+// independent, so workers share them (each with its own model replica).
+void findCriticalSpeeds(const VehicleModel& model, const SweepOptions& opt, const SweepOptions& fixed, SweepResult& out) {
   struct Crossing {
     const ModeBranch* branch;
     size_t k;
@@ -201,7 +251,7 @@ SweepResult runSweep(const VehicleModel& model, const SweepOptions& opt) {
   std::vector<Crossing> crossings;
   for (const ModeBranch& br : out.branches) {
     if (br.label == "neutral" || br.label == "other") continue;
-    for (size_t k = 0; k + 1 < n; ++k) {
+    for (size_t k = 0; k + 1 < out.speeds.size(); ++k) {
       const double f0 = br.eigenvalue[k].real(), f1 = br.eigenvalue[k + 1].real();
       // One member of a complex pair stands for both.
       if ((f0 * f1 < 0 || (f1 == 0 && f0 != 0)) && br.eigenvalue[k].imag() >= 0) crossings.push_back({&br, k});
@@ -228,6 +278,17 @@ SweepResult runSweep(const VehicleModel& model, const SweepOptions& opt) {
       if (e.mode == c.branch->label && std::abs(e.speed - c.speed) < 1e-6) duplicate = true;
     if (!duplicate) out.criticalSpeeds.push_back({c.branch->label, c.speed, c.branch->eigenvalue[c.k].real() > 0});
   }
+}
+
+}  // namespace
+
+SweepResult runSweep(const VehicleModel& model, const SweepOptions& opt) {
+  SweepRun run(model, opt);
+  run.prepareReference();
+  run.runChains();
+  const SweepOptions fixed = run.getFixedOptions();
+  SweepResult out = run.takeTrackedResult();
+  findCriticalSpeeds(model, opt, fixed, out);
   return out;
 }
 

@@ -110,8 +110,11 @@ namespace {
 // The key path an override "a.b=value" sets ("a.b").
 std::string getOverridePath(const std::string& assignment) { return assignment.substr(0, assignment.find('=')); }
 
-// An error at a value an override set names the override, not only the scenario's line.
-[[noreturn]] void rethrowNamingOverride(const InputError& e, const std::vector<std::string>& overrides) {
+Scenario readScenario(const std::string& file, YamlMap& m);
+
+}  // namespace
+
+void rethrowNamingOverride(const InputError& e, const std::vector<std::string>& overrides) {
   const std::string& key = e.getLocation().key;
   for (auto o = overrides.rbegin(); o != overrides.rend(); ++o) {
     const std::string p = getOverridePath(*o);
@@ -121,17 +124,15 @@ std::string getOverridePath(const std::string& assignment) { return assignment.s
   throw e;
 }
 
-Scenario readScenario(const std::string& file, YamlMap& m);
-
-}  // namespace
-
 Scenario loadScenario(const std::string& file, const std::vector<std::string>& overrides) {
   YamlMap root = loadYamlFile(file);
   YAML::Node tree = root.getNode();
   for (const auto& o : overrides) applyOverride(tree, o);
   try {
     YamlMap m(tree, file, "");
-    return readScenario(file, m);
+    Scenario s = readScenario(file, m);
+    s.overrides = overrides;
+    return s;
   } catch (const InputError& e) {
     rethrowNamingOverride(e, overrides);
   }

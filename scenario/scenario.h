@@ -151,12 +151,17 @@ struct Scenario {
   bool hasRiderLean = false;
   RiderLeanSpec riderLean;
   std::vector<std::string> plugins;     ///< shared libraries to load before building
+  std::vector<std::string> overrides;   ///< the --set assignments applied, for messages
   std::vector<ParameterUncertainty> uncertainty;  ///< stated parameter uncertainties (may be empty)
 };
 
 /// Loads and validates a scenario file. `overrides` are "a.b=value" assignments applied first.
 /// Every problem is an InputError naming file, line, column and key.
 Scenario loadScenario(const std::string& file, const std::vector<std::string>& overrides = {});
+
+/// Rethrows `error`, naming the override that set the value it is about ("(value from --set
+/// a.b=...)") when one did: for errors found after loading, e.g. by a plugin reading its section.
+[[noreturn]] void rethrowNamingOverride(const InputError& error, const std::vector<std::string>& overrides);
 
 /// Checks an inertia tensor: symmetric positive definite and principal moments satisfying the
 /// triangle inequality. Returns an empty string if valid, else the reason.

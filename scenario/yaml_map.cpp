@@ -82,7 +82,11 @@ void YamlMap::markUsed(const std::string& key) { used_->insert(key); }
 
 YAML::Node YamlMap::require(const std::string& key) {
   const YAML::Node n = static_cast<const YAML::Node&>(node_)[key];
-  if (!n) fail("", "missing key '" + childPath(key) + "'");
+  if (!n) {
+    std::string given;  // a typo of the missing key is usually among them
+    for (const auto& kv : node_) given += (given.empty() ? "" : ", ") + kv.first.Scalar();
+    fail("", "missing key '" + childPath(key) + "' (keys given here: " + (given.empty() ? "none" : given) + ")");
+  }
   used_->insert(key);
   return n;
 }

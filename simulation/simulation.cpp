@@ -196,47 +196,38 @@ SimulationResult runSimulation(const Scenario& scenario, const SimulationOptions
   return runSimulation(scenario, registry, options);
 }
 
-SimulationResult runSimulation(const Scenario& scenario, PluginRegistry& registry, const SimulationOptions& opt) {
-  checkOptions(opt);
-  // The trim runs on the bare model: the controller's integral state would make it singular.
-  PluginRegistry trimRegistry = registry;  // a library must not register twice in one registry
-  const VehicleModel trimModel(scenario, trimRegistry);
-  checkPerturbations(trimModel, opt.perturbations);
-  const TrimResult trim = calcTrim(trimModel, opt.speed, opt.trim);
+namespace {
 
-  std::vector<Perturbation> pulses;
+// Segment boundaries: pulse switch times and road-step times inside (0, duration), from 0. Switch
+// times closer than 1e-12 s (e.g. 0.1 + 0.2 and 0.3) are one switch, at the later time: a pulse
+// ending there is then off, and a road step there is applied once.
+std::vector<double> calcSegmentStarts(const SimulationOptions& opt) {
   std::vector<double> segmentStarts{0.0};
   for (const auto& p : opt.perturbations)
-    if (p.isPulse()) {
-      pulses.push_back(p);
+    if (p.isPulse())
       for (double t : p.getSwitchTimes())
         if (t > 0 && t < opt.duration) segmentStarts.push_back(t);
-    }
   for (const auto& p : opt.perturbations)
     if (p.kind == PerturbationKind::RoadStep && p.start > 0 && p.start < opt.duration) segmentStarts.push_back(p.start);
-  // Switch times closer than 1e-12 s (e.g. 0.1 + 0.2 and 0.3) are one switch, at the later time:
-  // a pulse ending there is then off, and a road step there is applied once.
   std::sort(segmentStarts.begin(), segmentStarts.end());
   std::vector<double> merged;
   for (double t : segmentStarts)
     if (!merged.empty() && t - merged.back() < 1e-12) merged.back() = t;
     else merged.push_back(t);
-  segmentStarts = merged;
+  return merged;
+}
 
-  const bool control = opt.speedControl == SpeedControl::PI;
-  const double massRadius = calcMassSummary(scenario).mass * scenario.rearWheel.radius;
-  const PerturbationForce* force = nullptr;
-  ModelExtension extension = [&](BuildContext& ctx, const VehicleModel& m) {
-    auto* impl = new PerturbationForce(ctx.forces, m, pulses, segmentStarts, control, opt.speedGainP * massRadius,
-                                       opt.speedGainI * massRadius, opt.speed);
-    SimTK::Force::Custom(ctx.forces, impl);  // the subsystem owns impl
-    force = impl;
-    return control ? std::vector<std::string>{"speed_control_integral"} : std::vector<std::string>{};
-  };
-  const VehicleModel model(scenario, registry, {extension});
-  const SimTK::MultibodySystem& system = model.getSystem();
+std::vector<Perturbation> listPulses(const SimulationOptions& opt) {
+  std::vector<Perturbation> pulses;
+  for (const auto& p : opt.perturbations)
+    if (p.isPulse()) pulses.push_back(p);
+  return pulses;
+}
 
-  // Initial state: the trim, then the rate offsets.
+// The trim of the bare model carried over to the model with the perturbation force: q, u, the
+// contact states and the trim inputs, at time 0 in segment 0.
+State makeInitialState(const VehicleModel& model, const VehicleModel& trimModel, const TrimResult& trim,
+                       const PerturbationForce& force) {
   State s = model.getDefaultState();
   s.updQ() = trim.state.getQ();
   s.updU() = trim.state.getU();
@@ -244,66 +235,81 @@ SimulationResult runSimulation(const Scenario& scenario, PluginRegistry& registr
   for (Input in : {Input::SteerTorque, Input::DriveTorque, Input::RollTorque})
     model.setInput(s, in, trimModel.getInput(trim.state, in));
   s.setTime(0);
-  force->setSegment(s, 0);
+  force.setSegment(s, 0);
+  return s;
+}
 
-  SimulationResult res;
-  res.columns.push_back("time");
-  res.numQ = model.getNumQ();
-  for (const auto& n : model.getQNames()) res.columns.push_back(n);
-  for (const auto& n : model.getUNames()) res.columns.push_back(n);
-  for (const auto& n : model.getZNames()) res.columns.push_back(n);
-  for (const char* n : {"steer_torque", "drive_torque", "lateral_force", "forward_speed", "energy"})
-    res.columns.push_back(n);
-  for (const auto& n : model.getContactOutputNames()) res.columns.push_back(n);
-  for (const auto& c : opt.extraOutputs) res.columns.push_back(c.name);
-  // Outputs are evaluated on one working State (assigning y costs less than copying a State).
-  State w = s;
-  auto makeRow = [&](double t, const SimTK::Vector& y, int segment) {
-    w.setTime(t);
-    w.updY() = y;
-    force->setSegment(w, segment);
-    system.realize(w, SimTK::Stage::Dynamics);
+std::vector<std::string> listColumns(const VehicleModel& model, const SimulationOptions& opt) {
+  std::vector<std::string> columns{"time"};
+  for (const auto& n : model.getQNames()) columns.push_back(n);
+  for (const auto& n : model.getUNames()) columns.push_back(n);
+  for (const auto& n : model.getZNames()) columns.push_back(n);
+  for (const char* n : {"steer_torque", "drive_torque", "lateral_force", "forward_speed", "energy"}) columns.push_back(n);
+  for (const auto& n : model.getContactOutputNames()) columns.push_back(n);
+  for (const auto& c : opt.extraOutputs) columns.push_back(c.name);
+  return columns;
+}
+
+// Output rows from sampled states, evaluated on one working State (assigning y costs less than
+// copying a State); record() also ends the run on a non-finite value or a fall.
+class SampleRecorder {
+ public:
+  SampleRecorder(const VehicleModel& model, const PerturbationForce& force, const SimulationOptions& opt,
+                 const State& s, SimulationResult& res)
+      : model_(model), force_(force), opt_(opt), w_(s), res_(res) {}
+
+  std::vector<double> makeRow(double t, const SimTK::Vector& y, int segment) {
+    w_.setTime(t);
+    w_.updY() = y;
+    force_.setSegment(w_, segment);
+    model_.getSystem().realize(w_, SimTK::Stage::Dynamics);
     std::vector<double> row{t};
-    for (int i = 0; i < w.getNQ(); ++i) row.push_back(w.getQ()[i]);
-    for (int i = 0; i < w.getNU(); ++i) row.push_back(w.getU()[i]);
-    for (int i = 0; i < w.getNZ(); ++i) row.push_back(w.getZ()[i]);
-    row.push_back(model.getInput(w, Input::SteerTorque) + force->calcPulses(w, PerturbationKind::SteerTorque));
-    row.push_back(model.getInput(w, Input::DriveTorque) + force->calcControlTorque(w));
-    row.push_back(force->calcPulses(w, PerturbationKind::LateralForce));
-    row.push_back(calcHeadingSpeed(model, w));
-    row.push_back(system.calcEnergy(w));
-    for (double v : model.calcContactOutputs(w)) row.push_back(v);
-    for (const auto& c : opt.extraOutputs) row.push_back(c.calc(model, w));
+    for (int i = 0; i < w_.getNQ(); ++i) row.push_back(w_.getQ()[i]);
+    for (int i = 0; i < w_.getNU(); ++i) row.push_back(w_.getU()[i]);
+    for (int i = 0; i < w_.getNZ(); ++i) row.push_back(w_.getZ()[i]);
+    row.push_back(model_.getInput(w_, Input::SteerTorque) + force_.calcPulses(w_, PerturbationKind::SteerTorque));
+    row.push_back(model_.getInput(w_, Input::DriveTorque) + force_.calcControlTorque(w_));
+    row.push_back(force_.calcPulses(w_, PerturbationKind::LateralForce));
+    row.push_back(calcHeadingSpeed(model_, w_));
+    row.push_back(model_.getSystem().calcEnergy(w_));
+    for (double v : model_.calcContactOutputs(w_)) row.push_back(v);
+    for (const auto& c : opt_.extraOutputs) row.push_back(c.calc(model_, w_));
     return row;
-  };
-  res.trimRow = makeRow(0, s.getY(), 0);
-  applyInitialRates(model, s, opt.perturbations);
-  applyRoadSteps(model, s, opt.perturbations, 0.0);
+  }
 
-  const int rollColumn = res.getColumnIndex("roll");
-  auto record = [&](double t, const SimTK::Vector& y, int segment) {
-    res.rows.push_back(makeRow(t, y, segment));
-    res.endTime = t;
-    const double roll = res.rows.back()[rollColumn];
-    for (double v : res.rows.back())
+  /// Appends a sample; false when the run ends there (non-finite state or a fall).
+  bool record(double t, const SimTK::Vector& y, int segment) {
+    res_.rows.push_back(makeRow(t, y, segment));
+    res_.endTime = t;
+    const double roll = res_.rows.back()[rollColumn_];
+    for (double v : res_.rows.back())
       if (!std::isfinite(v)) {
-        res.status = SimulationStatus::Failed;
-        res.message = "the state became non-finite at t = " + std::to_string(t) + " s";
+        res_.status = SimulationStatus::Failed;
+        res_.message = "the state became non-finite at t = " + std::to_string(t) + " s";
         return false;
       }
-    if (std::abs(roll) > opt.fallRollLimit) {
+    if (std::abs(roll) > opt_.fallRollLimit) {
       std::ostringstream os;
       os << "fell: |roll| = " << std::abs(roll) * 180 / M_PI << " deg exceeds the limit "
-         << opt.fallRollLimit * 180 / M_PI << " deg at t = " << t << " s";
-      res.status = SimulationStatus::Fell;
-      res.message = os.str();
+         << opt_.fallRollLimit * 180 / M_PI << " deg at t = " << t << " s";
+      res_.status = SimulationStatus::Fell;
+      res_.message = os.str();
       return false;
     }
-    if (opt.progress) opt.progress(t);
+    if (opt_.progress) opt_.progress(t);
     return true;
-  };
+  }
 
-  const auto wall0 = std::chrono::steady_clock::now();
+ private:
+  const VehicleModel& model_;
+  const PerturbationForce& force_;
+  const SimulationOptions& opt_;
+  State w_;
+  SimulationResult& res_;
+  const int rollColumn_ = res_.getColumnIndex("roll");
+};
+
+StepperOptions makeStepperOptions(const VehicleModel& model, const SimulationOptions& opt, const State& s) {
   StepperOptions so;
   so.kind = opt.integrator;
   so.accuracy = opt.accuracy;
@@ -315,48 +321,92 @@ SimulationResult runSimulation(const Scenario& scenario, PluginRegistry& registr
     throw InputError({"command line", 0, 0, "--integrator"},
                      "ROS34PW2 integrates models without constraints only (force-based tyres); this model has "
                      "rolling constraints: use auto or RungeKuttaMerson");
+  return so;
+}
+
+// Integrates to opt.duration, recording samples on the output grid from cubic Hermite interpolation
+// of y between internal steps (y and ydot at both ends; the same order as Simbody's own
+// interpolation, without its State copies), and switching segments at their starts.
+void integrate(Stepper& integ, const VehicleModel& model, const PerturbationForce& force, const SimulationOptions& opt,
+               const std::vector<double>& segmentStarts, SampleRecorder& recorder) {
+  int segment = 0, nextReport = 1;
+  const int reports = static_cast<int>(std::ceil(opt.duration / opt.outputStep - 1e-9));
+  auto getReportTime = [&](int k) { return std::min(k * opt.outputStep, opt.duration); };
+  double t0 = integ.getTime();
+  SimTK::Vector y0 = integ.getY(), yd0 = integ.getYDot();
+  bool running = recorder.record(t0, y0, segment);
+  SimTK::Vector y(y0.size());
+  while (running && nextReport <= reports) {
+    const double tEvent = segment + 1 < static_cast<int>(segmentStarts.size()) ? segmentStarts[segment + 1]
+                                                                               : SimTK::Infinity;
+    integ.step(opt.duration, tEvent);
+    const double t1 = integ.getTime();
+    if (!(t1 > t0)) continue;
+    const SimTK::Vector& y1 = integ.getY();
+    const SimTK::Vector& yd1 = integ.getYDot();
+    const double h = t1 - t0, eps = 1e-12 * std::max(1.0, t1);
+    // Samples strictly inside the step (a sample at t1 waits for a pulse switch at t1).
+    for (double tr; running && nextReport <= reports && (tr = getReportTime(nextReport)) < t1 - eps; ++nextReport) {
+      const double x = (tr - t0) / h, x2 = x * x, x3 = x2 * x;
+      for (int i = 0; i < y.size(); ++i)
+        y[i] = (2 * x3 - 3 * x2 + 1) * y0[i] + (x3 - 2 * x2 + x) * h * yd0[i] + (3 * x2 - 2 * x3) * y1[i] +
+               (x3 - x2) * h * yd1[i];
+      running = recorder.record(tr, y, segment);
+    }
+    t0 = t1, y0 = y1, yd0 = yd1;
+    if (t1 >= tEvent) {  // switch pulses on or off (samples are right-continuous)
+      force.setSegment(integ.updState(), ++segment);
+      applyRoadSteps(model, integ.updState(), opt.perturbations, segmentStarts[segment]);
+      integ.reinitialize();
+      y0 = integ.getY(), yd0 = integ.getYDot();
+    }
+    if (running && nextReport <= reports && getReportTime(nextReport) <= t1 + eps) {
+      running = recorder.record(getReportTime(nextReport), integ.getY(), segment);  // after any road step
+      ++nextReport;
+    }
+  }
+}
+
+}  // namespace
+
+SimulationResult runSimulation(const Scenario& scenario, PluginRegistry& registry, const SimulationOptions& opt) {
+  checkOptions(opt);
+  // The trim runs on the bare model: the controller's integral state would make it singular.
+  PluginRegistry trimRegistry = registry;  // a copy: the caller's registry gains the libraries below
+  const VehicleModel trimModel(scenario, trimRegistry);
+  checkPerturbations(trimModel, opt.perturbations);
+  const TrimResult trim = calcTrim(trimModel, opt.speed, opt.trim);
+
+  const std::vector<Perturbation> pulses = listPulses(opt);
+  const std::vector<double> segmentStarts = calcSegmentStarts(opt);
+  const bool control = opt.speedControl == SpeedControl::PI;
+  const double massRadius = calcMassSummary(scenario).mass * scenario.rearWheel.radius;
+  const PerturbationForce* force = nullptr;
+  ModelExtension extension = [&](BuildContext& ctx, const VehicleModel& m) {
+    auto* impl = new PerturbationForce(ctx.forces, m, pulses, segmentStarts, control, opt.speedGainP * massRadius,
+                                       opt.speedGainI * massRadius, opt.speed);
+    SimTK::Force::Custom(ctx.forces, impl);  // the subsystem owns impl
+    force = impl;
+    return control ? std::vector<std::string>{"speed_control_integral"} : std::vector<std::string>{};
+  };
+  const VehicleModel model(scenario, registry, {extension});
+
+  State s = makeInitialState(model, trimModel, trim, *force);
+  SimulationResult res;
+  res.columns = listColumns(model, opt);
+  res.numQ = model.getNumQ();
+  SampleRecorder recorder(model, *force, opt, s, res);
+  res.trimRow = recorder.makeRow(0, s.getY(), 0);
+  applyInitialRates(model, s, opt.perturbations);
+  applyRoadSteps(model, s, opt.perturbations, 0.0);
+
+  const auto wall0 = std::chrono::steady_clock::now();
+  const StepperOptions so = makeStepperOptions(model, opt, s);
   std::unique_ptr<Stepper> integ;
   try {
-    integ = makeStepper(system, s, so);
+    integ = makeStepper(model.getSystem(), s, so);
     res.integrator = integ->getName();
-    // Samples come from cubic Hermite interpolation of y between internal steps (y and ydot at both
-    // ends; the same order as Simbody's own interpolation, without its State copies).
-    int segment = 0, nextReport = 1;
-    const int reports = static_cast<int>(std::ceil(opt.duration / opt.outputStep - 1e-9));
-    auto getReportTime = [&](int k) { return std::min(k * opt.outputStep, opt.duration); };
-    double t0 = integ->getTime();
-    SimTK::Vector y0 = integ->getY(), yd0 = integ->getYDot();
-    bool running = record(t0, y0, segment);
-    SimTK::Vector y(y0.size());
-    while (running && nextReport <= reports) {
-      const double tEvent = segment + 1 < static_cast<int>(segmentStarts.size()) ? segmentStarts[segment + 1]
-                                                                                 : SimTK::Infinity;
-      integ->step(opt.duration, tEvent);
-      const double t1 = integ->getTime();
-      if (!(t1 > t0)) continue;
-      const SimTK::Vector& y1 = integ->getY();
-      const SimTK::Vector& yd1 = integ->getYDot();
-      const double h = t1 - t0, eps = 1e-12 * std::max(1.0, t1);
-      // Samples strictly inside the step (a sample at t1 waits for a pulse switch at t1).
-      for (double tr; running && nextReport <= reports && (tr = getReportTime(nextReport)) < t1 - eps; ++nextReport) {
-        const double x = (tr - t0) / h, x2 = x * x, x3 = x2 * x;
-        for (int i = 0; i < y.size(); ++i)
-          y[i] = (2 * x3 - 3 * x2 + 1) * y0[i] + (x3 - 2 * x2 + x) * h * yd0[i] + (3 * x2 - 2 * x3) * y1[i] +
-                 (x3 - x2) * h * yd1[i];
-        running = record(tr, y, segment);
-      }
-      t0 = t1, y0 = y1, yd0 = yd1;
-      if (t1 >= tEvent) {  // switch pulses on or off (samples are right-continuous)
-        force->setSegment(integ->updState(), ++segment);
-        applyRoadSteps(model, integ->updState(), opt.perturbations, segmentStarts[segment]);
-        integ->reinitialize();
-        y0 = integ->getY(), yd0 = integ->getYDot();
-      }
-      if (running && nextReport <= reports && getReportTime(nextReport) <= t1 + eps) {
-        running = record(getReportTime(nextReport), integ->getY(), segment);  // after any road step
-        ++nextReport;
-      }
-    }
+    integrate(*integ, model, *force, opt, segmentStarts, recorder);
   } catch (const std::exception& e) {
     res.status = SimulationStatus::Failed;
     std::ostringstream os;

@@ -49,12 +49,20 @@ MobilizedBody::Pin addSuspension(BuildContext& ctx, MobilizedBody& rearFrame, co
 VehicleModel::VehicleModel(const Scenario& scenario, PluginRegistry& registry,
                            const std::vector<ModelExtension>& extensions)
     : scenario_(scenario), matter_(system_), forces_(system_) {
-  build(registry, extensions);
+  try {
+    build(registry, extensions);
+  } catch (const InputError& e) {  // e.g. a plugin parameter set by --set
+    rethrowNamingOverride(e, scenario_.overrides);
+  }
 }
 
 VehicleModel::VehicleModel(const Scenario& scenario) : scenario_(scenario), matter_(system_), forces_(system_) {
   PluginRegistry registry = makeBuiltinRegistry();
-  build(registry, {});
+  try {
+    build(registry, {});
+  } catch (const InputError& e) {
+    rethrowNamingOverride(e, scenario_.overrides);
+  }
 }
 
 std::unique_ptr<VehicleModel> VehicleModel::makeReplica() const {

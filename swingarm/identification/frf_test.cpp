@@ -47,73 +47,69 @@ std::vector<cd> getOds(const std::vector<std::vector<cd>>& h, size_t bin) {
 
 }  // namespace
 
+namespace {
+
+// The optional `processing` mapping of a hammer test.
+void readFrfProcessing(YamlMap p, FrfTest& t) {
+  if (p.has("band_hz")) {
+    const auto b = p.getDoubleList("band_hz", 2);
+    if (!(b[0] >= 0 && b[1] > b[0])) p.fail("band_hz", "need 0 <= low < high");
+    t.bandMinHz = b[0], t.bandMaxHz = b[1];
+  }
+  if (p.has("model_order")) {
+    const auto o = p.getDoubleList("model_order", 2);
+    if (!(o[0] >= 2 && o[1] >= o[0] && o[1] <= 200 && o[0] == std::floor(o[0]) && o[1] == std::floor(o[1])))
+      p.fail("model_order", "need integers 2 <= min <= max <= 200");
+    t.minOrder = static_cast<int>(o[0]), t.maxOrder = static_cast<int>(o[1]);
+  }
+  t.exponentialEndValue = p.getPositive("exponential_end_value", t.exponentialEndValue);
+  if (t.exponentialEndValue > 1) p.fail("exponential_end_value", "must be in (0, 1]");
+  t.forceWindow = p.getBool("force_window", t.forceWindow);
+  t.doubleHitFraction = p.getPositive("double_hit_fraction", t.doubleHitFraction);
+  t.forceRange = p.getPositive("force_range_N", 0.0);
+  t.responseRange = p.getPositive("response_range_mps2", 0.0);
+  t.bendingModeHz = p.getPositive("bending_mode_hz", 0.0);
+  t.torsionModeHz = p.getPositive("torsion_mode_hz", 0.0);
+  const std::string from = p.getString("modal_axes_from", "ods");
+  if (from != "ods" && from != "modal_model") p.fail("modal_axes_from", "expected 'ods' or 'modal_model'");
+  t.axesFromModalModel = from == "modal_model";
+  p.finish();
+}
+
+}  // namespace
+
 FrfTest readFrfTest(const std::filesystem::path& file) {
-  const YamlInput in(file);
-  const YAML::Node& root = in.getRoot();
-  in.checkMap(root, "", {"test", "frame", "force_point", "channels", "hits", "time_column", "force_column", "processing"});
-  in.checkTestKind("frf");
+  YamlMap root = openTestFile(file, "frf");
   FrfTest t;
   t.file = file;
-  t.frame = in.getString(root, "", "frame", "");
-  const YAML::Node fp = in.getChild(root, "", "force_point");
-  in.checkMap(fp, "force_point", {"x", "z"});
-  t.forcePoint = {in.getDouble(fp, "force_point", "x"), in.getDouble(fp, "force_point", "z")};
-  const YAML::Node ch = in.getChild(root, "", "channels");
-  if (!ch.IsSequence() || ch.size() == 0) in.fail(ch, "channels", "expected a non-empty list of channels");
+  t.frame = root.getString("frame", "");
+  YamlMap fp = root.getMap("force_point");
+  t.forcePoint = {fp.getDouble("x"), fp.getDouble("z")};
+  fp.finish();
+  std::vector<YamlMap> channels = root.getMapList("channels");
+  if (channels.empty()) root.fail("channels", "expected a non-empty list of channels");
   std::set<std::string> names;
   std::vector<PlatePoint> pts;
-  for (size_t i = 0; i < ch.size(); ++i) {
-    const std::string path = "channels[" + std::to_string(i) + "]";
-    in.checkMap(ch[i], path, {"name", "x", "z", "column"});
+  for (YamlMap& m : channels) {
     FrfChannel c;
-    c.name = in.getString(ch[i], path, "name");
-    c.column = in.getString(ch[i], path, "column", c.name + "_mps2");
-    c.position = {in.getDouble(ch[i], path, "x"), in.getDouble(ch[i], path, "z")};
-    if (!names.insert(c.name).second) in.fail(ch[i], path + ".name", "duplicate channel name '" + c.name + "'");
+    c.name = m.getString("name");
+    c.column = m.getString("column", c.name + "_mps2");
+    c.position = {m.getDouble("x"), m.getDouble("z")};
+    if (!names.insert(c.name).second) m.fail("name", "duplicate channel name '" + c.name + "'");
+    m.finish();
     pts.push_back(c.position);
     t.channels.push_back(c);
   }
   if (pts.size() >= 3) {
     const std::string why = checkPlaneGeometry(pts);
-    if (!why.empty()) in.fail(ch, "channels", why);
+    if (!why.empty()) root.fail("channels", why);
   }
-  const YAML::Node hits = in.getChild(root, "", "hits");
-  if (!hits.IsSequence() || hits.size() == 0) in.fail(hits, "hits", "expected a non-empty list of CSV files");
-  for (size_t i = 0; i < hits.size(); ++i) {
-    if (!hits[i].IsScalar()) in.fail(hits[i], "hits[" + std::to_string(i) + "]", "expected a file name");
-    t.hits.push_back(in.resolvePath(hits[i].Scalar()));
-  }
-  t.timeColumn = in.getString(root, "", "time_column", t.timeColumn);
-  t.forceColumn = in.getString(root, "", "force_column", t.forceColumn);
-  if (const YAML::Node p = root["processing"]) {
-    const std::string pp = "processing";
-    in.checkMap(p, pp, {"band_hz", "model_order", "exponential_end_value", "force_window", "double_hit_fraction",
-                        "force_range_N", "response_range_mps2", "bending_mode_hz", "torsion_mode_hz",
-                        "modal_axes_from"});
-    if (p["band_hz"]) {
-      const auto b = in.getNumbers(p, pp, "band_hz", 2);
-      if (!(b[0] >= 0 && b[1] > b[0])) in.fail(p["band_hz"], pp + ".band_hz", "need 0 <= low < high");
-      t.bandMinHz = b[0], t.bandMaxHz = b[1];
-    }
-    if (p["model_order"]) {
-      const auto o = in.getNumbers(p, pp, "model_order", 2);
-      if (!(o[0] >= 2 && o[1] >= o[0] && o[1] <= 200 && o[0] == std::floor(o[0]) && o[1] == std::floor(o[1])))
-        in.fail(p["model_order"], pp + ".model_order", "need integers 2 <= min <= max <= 200");
-      t.minOrder = static_cast<int>(o[0]), t.maxOrder = static_cast<int>(o[1]);
-    }
-    t.exponentialEndValue = in.getPositive(p, pp, "exponential_end_value", t.exponentialEndValue);
-    if (t.exponentialEndValue > 1) in.fail(p["exponential_end_value"], pp + ".exponential_end_value", "must be in (0, 1]");
-    t.forceWindow = in.getBool(p, pp, "force_window", t.forceWindow);
-    t.doubleHitFraction = in.getPositive(p, pp, "double_hit_fraction", t.doubleHitFraction);
-    t.forceRange = in.getPositive(p, pp, "force_range_N", 0.0);
-    t.responseRange = in.getPositive(p, pp, "response_range_mps2", 0.0);
-    t.bendingModeHz = in.getPositive(p, pp, "bending_mode_hz", 0.0);
-    t.torsionModeHz = in.getPositive(p, pp, "torsion_mode_hz", 0.0);
-    const std::string from = in.getString(p, pp, "modal_axes_from", "ods");
-    if (from != "ods" && from != "modal_model")
-      in.fail(p["modal_axes_from"], pp + ".modal_axes_from", "expected 'ods' or 'modal_model'");
-    t.axesFromModalModel = from == "modal_model";
-  }
+  for (const auto& hit : root.getFilePathList("hits")) t.hits.push_back(hit);
+  if (t.hits.empty()) root.fail("hits", "expected a non-empty list of CSV files");
+  t.timeColumn = root.getString("time_column", t.timeColumn);
+  t.forceColumn = root.getString("force_column", t.forceColumn);
+  if (root.has("processing")) readFrfProcessing(root.getMap("processing"), t);
+  root.finish();
   return t;
 }
 

@@ -32,32 +32,25 @@ MeanStat calcMean(const std::vector<double>& v, double floorSd) {
 }  // namespace
 
 CogTest readCogTest(const std::filesystem::path& file) {
-  const YamlInput in(file);
-  const YAML::Node& root = in.getRoot();
-  in.checkMap(root, "", {"test", "frame", "load_cells", "readings", "tare", "g_mps2", "load_cell_resolution_N",
-                         "part_origin_m"});
-  in.checkTestKind("cog");
+  YamlMap root = openTestFile(file, "cog");
   CogTest t;
   t.file = file;
-  t.frame = in.getString(root, "", "frame", "");
-  const YAML::Node cells = in.getChild(root, "", "load_cells");
-  if (!cells.IsSequence()) in.fail(cells, "load_cells", "expected a list of load cells");
+  t.frame = root.getString("frame", "");
   std::vector<PlatePoint> pts;
   std::set<std::string> names;
-  for (size_t i = 0; i < cells.size(); ++i) {
-    const std::string p = "load_cells[" + std::to_string(i) + "]";
-    in.checkMap(cells[i], p, {"name", "x", "y"});
-    LoadCell c{in.getString(cells[i], p, "name"), in.getDouble(cells[i], p, "x"), in.getDouble(cells[i], p, "y")};
-    if (!names.insert(c.name).second) in.fail(cells[i], p + ".name", "duplicate load cell name");
+  for (YamlMap& m : root.getMapList("load_cells")) {
+    LoadCell c{m.getString("name"), m.getDouble("x"), m.getDouble("y")};
+    if (!names.insert(c.name).second) m.fail("name", "duplicate load cell name");
+    m.finish();
     pts.push_back({c.x, c.y});
     t.cells.push_back(c);
   }
   const std::string why = checkPlaneGeometry(pts);
-  if (!why.empty()) in.fail(cells, "load_cells", "load cells: " + why);
-  t.g = in.getPositive(root, "", "g_mps2", t.g);
-  t.cellResolution = in.getPositive(root, "", "load_cell_resolution_N", t.cellResolution);
-  if (root["part_origin_m"]) {
-    const auto o = in.getNumbers(root, "", "part_origin_m", 3);
+  if (!why.empty()) root.fail("load_cells", "load cells: " + why);
+  t.g = root.getPositive("g_mps2", t.g);
+  t.cellResolution = root.getPositive("load_cell_resolution_N", t.cellResolution);
+  if (root.has("part_origin_m")) {
+    const auto o = root.getDoubleList("part_origin_m", 3);
     t.partOrigin = Eigen::Vector3d(o[0], o[1], o[2]);
   }
   auto readTable = [&](const std::filesystem::path& csvPath, std::vector<double>& tilt, Eigen::MatrixXd& loads) {
@@ -73,13 +66,13 @@ CogTest readCogTest(const std::filesystem::path& file) {
       if (tilt[i] < 0 || tilt[i] > 60)
         throw InputError({csvPath.string(), csv.lineNumbers[i], tc, "tilt_deg"}, "tilt angle outside 0..60 deg");
   };
-  const auto readings = in.resolvePath(in.getString(root, "", "readings"));
+  const std::filesystem::path readings = root.getFilePath("readings");
   readTable(readings, t.tiltDeg, t.loads);
   std::set<double> angles(t.tiltDeg.begin(), t.tiltDeg.end());
   if (angles.size() < 2 || *angles.rbegin() == 0)
     throw InputError({readings.string(), 0, 0, "tilt_deg"}, "need at least two distinct tilt angles, one of them non-zero");
-  if (root["tare"]) {
-    const auto tare = in.resolvePath(in.getString(root, "", "tare"));
+  if (root.has("tare")) {
+    const std::filesystem::path tare = root.getFilePath("tare");
     std::vector<double> tt;
     Eigen::MatrixXd tl;
     readTable(tare, tt, tl);
@@ -87,6 +80,7 @@ CogTest readCogTest(const std::filesystem::path& file) {
       throw InputError({tare.string(), 0, 0, "tilt_deg"}, "tare rows must have the same tilt angles as the readings");
     t.loads -= tl;
   }
+  root.finish();
   return t;
 }
 
@@ -150,45 +144,48 @@ void writeCogOutputs(const CogTest& t, const CogResult& r, const std::filesystem
                 "plot 'cog_fit.csv' using 2:3 with points pt 7 title 'measured', '' using 2:4 with lines title 'fit'\n");
 }
 
+namespace {
+
+// A non-empty list of positive periods, s.
+std::vector<double> readPeriods(YamlMap& m, const std::string& key) {
+  const auto v = m.getDoubleList(key);
+  if (v.empty()) m.fail(key, "needs at least one period");
+  for (size_t i = 0; i < v.size(); ++i)
+    if (!(v[i] > 0)) m.failElement(key, i, "periods must be positive");
+  return v;
+}
+
+}  // namespace
+
 InertiaTest readInertiaTest(const std::filesystem::path& file) {
-  const YamlInput in(file);
-  const YAML::Node& root = in.getRoot();
-  in.checkMap(root, "", {"test", "frame", "pendulum", "g_mps2", "period_resolution_s", "plate_periods_s",
-                         "part_mass_kg", "setups"});
-  in.checkTestKind("inertia");
+  YamlMap root = openTestFile(file, "inertia");
   InertiaTest t;
   t.file = file;
-  const YAML::Node p = in.getChild(root, "", "pendulum");
-  in.checkMap(p, "pendulum", {"wire_length_m", "radius_m", "plate_mass_kg"});
-  t.wireLength = in.getPositive(p, "pendulum", "wire_length_m");
-  t.radius = in.getPositive(p, "pendulum", "radius_m");
-  t.plateMass = in.getPositive(p, "pendulum", "plate_mass_kg");
-  t.g = in.getPositive(root, "", "g_mps2", t.g);
-  t.periodResolution = in.getPositive(root, "", "period_resolution_s", t.periodResolution);
-  t.partMass = in.getPositive(root, "", "part_mass_kg");
-  auto periods = [&](const YAML::Node& map, const std::string& path, const std::string& key) {
-    const auto v = in.getNumbers(map, path, key);
-    if (v.empty()) in.fail(map[key], path.empty() ? key : path + "." + key, "needs at least one period");
-    for (double x : v)
-      if (!(x > 0)) in.fail(map[key], path.empty() ? key : path + "." + key, "periods must be positive");
-    return v;
-  };
-  t.platePeriods = periods(root, "", "plate_periods_s");
-  const YAML::Node s = in.getChild(root, "", "setups");
-  if (!s.IsSequence() || s.size() < 3) in.fail(s, "setups", "expected a list of at least three set-ups");
-  for (size_t i = 0; i < s.size(); ++i) {
-    const std::string path = "setups[" + std::to_string(i) + "]";
-    in.checkMap(s[i], path, {"name", "axis", "cog_offset_m", "periods_s"});
+  root.getString("frame", "");  // documentation only
+  YamlMap p = root.getMap("pendulum");
+  t.wireLength = p.getPositive("wire_length_m");
+  t.radius = p.getPositive("radius_m");
+  t.plateMass = p.getPositive("plate_mass_kg");
+  p.finish();
+  t.g = root.getPositive("g_mps2", t.g);
+  t.periodResolution = root.getPositive("period_resolution_s", t.periodResolution);
+  t.partMass = root.getPositive("part_mass_kg");
+  t.platePeriods = readPeriods(root, "plate_periods_s");
+  std::vector<YamlMap> setups = root.getMapList("setups");
+  if (setups.size() < 3) root.fail("setups", "expected a list of at least three set-ups");
+  for (YamlMap& m : setups) {
     PendulumSetup u;
-    u.name = in.getString(s[i], path, "name");
-    const auto ax = in.getNumbers(s[i], path, "axis", 3);
+    u.name = m.getString("name");
+    const auto ax = m.getDoubleList("axis", 3);
     u.axis = Eigen::Vector3d(ax[0], ax[1], ax[2]);
-    if (u.axis.norm() < 1e-9) in.fail(s[i]["axis"], path + ".axis", "axis must not be zero");
+    if (u.axis.norm() < 1e-9) m.fail("axis", "axis must not be zero");
     u.axis.normalize();
-    u.cogOffset = in.getPositive(s[i], path, "cog_offset_m", true);
-    u.periods = periods(s[i], path, "periods_s");
+    u.cogOffset = m.getNonNegative("cog_offset_m");
+    u.periods = readPeriods(m, "periods_s");
+    m.finish();
     t.setups.push_back(u);
   }
+  root.finish();
   return t;
 }
 

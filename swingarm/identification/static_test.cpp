@@ -14,33 +14,27 @@
 namespace motostab::identification {
 
 StaticTest readStaticTest(const std::filesystem::path& file) {
-  const YamlInput in(file);
-  const YAML::Node& root = in.getRoot();
-  in.checkMap(root, "", {"test", "frame", "force_point", "sensors", "readings", "sensor_resolution_m"});
-  in.checkTestKind("static");
+  YamlMap root = openTestFile(file, "static");
   StaticTest t;
   t.file = file;
-  t.frame = in.getString(root, "", "frame", "");
-  const YAML::Node fp = in.getChild(root, "", "force_point");
-  in.checkMap(fp, "force_point", {"x", "z"});
-  t.forcePoint = {in.getDouble(fp, "force_point", "x"), in.getDouble(fp, "force_point", "z")};
-  const YAML::Node sensors = in.getChild(root, "", "sensors");
-  if (!sensors.IsSequence()) in.fail(sensors, "sensors", "expected a list of sensors");
+  t.frame = root.getString("frame", "");
+  YamlMap fp = root.getMap("force_point");
+  t.forcePoint = {fp.getDouble("x"), fp.getDouble("z")};
+  fp.finish();
   std::set<std::string> names;
   std::vector<PlatePoint> points;
-  for (size_t i = 0; i < sensors.size(); ++i) {
-    const std::string path = "sensors[" + std::to_string(i) + "]";
-    in.checkMap(sensors[i], path, {"name", "x", "z"});
-    PlateSensor s{in.getString(sensors[i], path, "name"),
-                  {in.getDouble(sensors[i], path, "x"), in.getDouble(sensors[i], path, "z")}};
-    if (!names.insert(s.name).second) in.fail(sensors[i], path + ".name", "duplicate sensor name '" + s.name + "'");
+  for (YamlMap& m : root.getMapList("sensors")) {
+    PlateSensor s{m.getString("name"), {m.getDouble("x"), m.getDouble("z")}};
+    if (!names.insert(s.name).second) m.fail("name", "duplicate sensor name '" + s.name + "'");
+    m.finish();
     points.push_back(s.position);
     t.sensors.push_back(s);
   }
   const std::string why = checkPlaneGeometry(points);
-  if (!why.empty()) in.fail(sensors, "sensors", why);
-  t.readings = in.resolvePath(in.getString(root, "", "readings"));
-  t.sensorResolution = in.getPositive(root, "", "sensor_resolution_m", 4e-6);
+  if (!why.empty()) root.fail("sensors", why);
+  t.readings = root.getFilePath("readings");
+  t.sensorResolution = root.getPositive("sensor_resolution_m", 4e-6);
+  root.finish();
   return t;
 }
 

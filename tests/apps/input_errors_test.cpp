@@ -20,9 +20,12 @@ struct Outcome {
 Outcome run(const std::vector<std::string>& args) {
   const auto dir = std::filesystem::temp_directory_path() / "motostab_cli_errors";
   std::filesystem::create_directories(dir);
-  const std::string log = (dir / "log.txt").string();
+  static int calls = 0;  // ctest runs the cases of this file in parallel processes: one log per run
+  const std::string log = (dir / ("log-" + std::to_string(getpid()) + "-" + std::to_string(++calls) + ".txt")).string();
   const int code = test::waitForExit(test::startMotostab(args, dir.string(), log));
-  return {code, test::readLog(log)};
+  Outcome out{code, test::readLog(log)};
+  std::filesystem::remove(log);
+  return out;
 }
 
 // Exit code 2 with `needle` in the message.
@@ -77,6 +80,11 @@ TEST(CliInput, BadSetNamesTheOverride) {
   expectInputError({"check", kWhipple, "--set", "geometry.trail_m=[1,"}, "geometry.trail_m=[1,");
   expectInputError({"check", kWhipple, "--set", "geometry.trail_m.x=1"}, "--set");
   expectInputError({"check", kWhipple, "--set", "noequals"}, "KEY.PATH=VALUE");
+  // Read by the contact plugin while the model is built, not by the scenario loader.
+  const std::string enduro = std::string(MOTOSTAB_SOURCE_DIR) + "/scenarios/enduro.yaml";
+  expectInputError({"check", enduro, "--set", "contact.front.relaxation_length_m=-1"},
+                   "contact.front.relaxation_length_m: must not be negative (got -1.000000) (value from --set "
+                   "contact.front.relaxation_length_m=-1)");
   expectInputError({"check", kWhipple, "--set", "geometry={wheelbase_m: 1, wheelbase_m: 2}"}, "duplicate key");
 }
 

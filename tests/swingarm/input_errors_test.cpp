@@ -61,7 +61,7 @@ TEST(StaticInput, TooFewSensors) {
                                        "readings: s.csv\n");
   const InputError e = catchInputError([&] { readStaticTest(y); });
   EXPECT_EQ(e.getLocation().key, "sensors");
-  EXPECT_EQ(e.getLocation().line, 5);
+  EXPECT_EQ(e.getLocation().line, 4);  // the key (YamlMap locates keys)
   EXPECT_NE(e.getReason().find("at least three"), std::string::npos);
 }
 
@@ -107,8 +107,11 @@ TEST(StaticInput, UnknownKeyNegativeValueAndWrongKind) {
   EXPECT_EQ(e.getLocation().key, "test");
   y = f.write("s.yaml", std::string(kStaticHead) + "sensors:\n  - {name: L1, x: 0.5, zz: 0.04}\n");
   e = catchInputError([&] { readStaticTest(y); });
-  EXPECT_EQ(e.getLocation().key, "sensors[0].zz");
+  // The sensor misses z; the message shows the keys given, so the typo zz is named.
+  EXPECT_EQ(e.getLocation().key, "sensors[0]");
   EXPECT_EQ(e.getLocation().line, 5);
+  EXPECT_NE(e.getReason().find("missing key 'sensors[0].z' (keys given here: name, x, zz)"), std::string::npos)
+      << e.getReason();
 }
 
 const char* kFrfYaml =
