@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <fstream>
 
+#include "diagnosis/diagnosis.h"
 #include "hidden_effect.h"
 
 namespace motostab {
@@ -82,6 +83,32 @@ TEST(Prediction, FreeResponseWithFreeGain) {
   EXPECT_NEAR(r.responses[0].vaf[0], 100, 1e-6);
   EXPECT_NEAR(r.responses[0].vaf[1], 100, 1e-6);
   fs::remove_all(dir);
+}
+
+// extended.yaml (the base tree with overrides applied) swept at a row's speed gives the exact
+// prediction to 1e-9 (issue 11, item 5).
+TEST(Prediction, SweepOfTheExtendedTreeReproducesPredictions) {
+  const double v = testing::Draw(31).uniform(3, 7);
+  MeasuredData data;
+  data.eigenvalues = {makeRow(v, "weave", 0, 0)};
+  const std::vector<std::string> ov = {"steer_damper={damping_Nms_per_rad: 0.2}", "geometry.trail_m=0.09"};
+  const Prediction r = Predictor(kBenchmark, {}, data).predict(ov, {});
+  const fs::path file = fs::temp_directory_path() / ("motostab-extended-" + std::to_string(::getpid()) + ".yaml");
+  YAML::Emitter e;
+  e << makeScenarioTree(kBenchmark, ov);
+  std::ofstream(file) << e.c_str() << "\n";
+  SweepOptions opt;
+  opt.start = opt.stop = v;
+  const SweepResult s = runSweep(VehicleModel(loadScenario(file.string())), opt);
+  fs::remove(file);
+  bool found = false;
+  for (const auto& b : s.branches)
+    if (b.label == "weave") {
+      found = true;
+      EXPECT_NEAR(b.eigenvalue[0].real(), r.eigenvalues[0].real(), 1e-9);
+      EXPECT_NEAR(std::abs(b.eigenvalue[0].imag()), r.eigenvalues[0].imag(), 1e-9);
+    }
+  EXPECT_TRUE(found);
 }
 
 }  // namespace
