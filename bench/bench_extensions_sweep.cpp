@@ -57,3 +57,5 @@ void BM_EnduroExtensionsSweep401(benchmark::State& st) {
 BENCHMARK(BM_EnduroExtensionsSweep401)->Unit(benchmark::kMillisecond)->Iterations(9)->UseRealTime();
 
 }  // namespace
+
+BENCHMARK_MAIN();
