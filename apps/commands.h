@@ -8,6 +8,7 @@ void registerScenarioCommands(CLI::App& app);   ///< check, import (apps/cmd_sce
 void registerStabilityCommands(CLI::App& app);  ///< sweep, linearize (apps/cmd_stability.cpp)
 void registerSimulateCommands(CLI::App& app);   ///< simulate (apps/cmd_simulate.cpp)
 void registerUncertaintyCommands(CLI::App& app);  ///< uncertainty (apps/cmd_uncertainty.cpp)
+void registerDiagnoseCommands(CLI::App& app);   ///< diagnose (apps/cmd_diagnose.cpp)
 /// identify static|frf|swingarm|cog|inertia (apps/cmd_identify_swingarm.cpp); `identify` is the parent.
 void registerSwingarmIdentifyCommands(CLI::App& identify);
 /// identify response (apps/cmd_identify_response.cpp); `identify` is the parent.

@@ -12,6 +12,7 @@ int main(int argc, char** argv) {
   motostab::cli::registerStabilityCommands(app);
   motostab::cli::registerSimulateCommands(app);
   motostab::cli::registerUncertaintyCommands(app);
+  motostab::cli::registerDiagnoseCommands(app);
   CLI::App* identify = app.add_subcommand("identify", "Identify model parameters from lab tests or responses");
   identify->require_subcommand(1);
   motostab::cli::registerSwingarmIdentifyCommands(*identify);

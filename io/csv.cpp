@@ -46,13 +46,14 @@ std::vector<double> extractColumn(const std::vector<std::vector<double>>& rows, 
 
 std::vector<double> CsvTable::getColumn(const std::string& name) const { return extractColumn(rows, getColumnIndex(name)); }
 
-CsvTable readCsv(const std::filesystem::path& path) {
+CsvTable readCsv(const std::filesystem::path& path, const std::vector<std::string>& textColumns) {
   CsvTable table;
   table.source = path.string();
   std::ifstream in(path);
   if (!in) throw InputError({table.source, 0, 0, ""}, "cannot open CSV file");
   std::string line;
   int lineNo = 0;
+  std::vector<int> textIndex;  // per column: its index among the text columns, or -1
   while (std::getline(in, line)) {
     ++lineNo;
     const std::string t = trim(line);
@@ -60,6 +61,11 @@ CsvTable readCsv(const std::filesystem::path& path) {
     auto cells = splitFields(t, ',');
     if (table.header.empty()) {
       for (auto& c : cells) table.header.push_back(trim(c));
+      table.headerLine = lineNo;
+      textIndex.assign(cells.size(), -1);
+      for (size_t k = 0; k < textColumns.size(); ++k)
+        for (size_t j = 0; j < cells.size(); ++j)
+          if (table.header[j] == textColumns[k]) textIndex[j] = static_cast<int>(k);
       continue;
     }
     if (cells.size() != table.header.size())
@@ -67,8 +73,14 @@ CsvTable readCsv(const std::filesystem::path& path) {
                        "expected " + std::to_string(table.header.size()) + " cells, found " +
                            std::to_string(cells.size()));
     std::vector<double> row(cells.size());
+    std::vector<std::string> text(textColumns.size());
     for (size_t j = 0; j < cells.size(); ++j) {
       const std::string c = trim(cells[j]);
+      if (textIndex[j] >= 0) {
+        text[textIndex[j]] = c;
+        row[j] = std::nan("");
+        continue;
+      }
       const auto v = parseFiniteNumber(c);
       if (!v)
         throw InputError({table.source, lineNo, static_cast<int>(j + 1), table.header[j]},
@@ -76,6 +88,7 @@ CsvTable readCsv(const std::filesystem::path& path) {
       row[j] = *v;
     }
     table.rows.push_back(std::move(row));
+    table.text.push_back(std::move(text));
     table.lineNumbers.push_back(lineNo);
   }
   if (table.header.empty()) throw InputError({table.source, 0, 0, ""}, "no header row");

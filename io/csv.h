@@ -16,6 +16,10 @@ struct CsvTable {
   std::vector<std::string> header;        ///< column names
   std::vector<std::vector<double>> rows;  ///< rows[i][j]: row i, column j
   std::vector<int> lineNumbers;           ///< 1-based file line of each row
+  int headerLine = 0;                     ///< 1-based file line of the header
+  /// Cells of the text columns asked for (readCsv's textColumns), text[i][k] for row i and the
+  /// k-th such column; their numeric cells in `rows` are NaN.
+  std::vector<std::vector<std::string>> text;
 
   /// Index of a named column; throws InputError naming the file and the column if absent.
   int getColumnIndex(const std::string& name) const;
@@ -24,8 +28,9 @@ struct CsvTable {
 };
 
 /// Reads a CSV file. Every non-comment row must have as many numeric cells as the header; a bad
-/// cell is an InputError naming the file, line and column name.
-CsvTable readCsv(const std::filesystem::path& path);
+/// cell is an InputError naming the file, line and column name. Columns named in `textColumns`
+/// (if present) are kept as text (CsvTable::text) instead.
+CsvTable readCsv(const std::filesystem::path& path, const std::vector<std::string>& textColumns = {});
 
 /// Splits `text` at every `separator`; a trailing separator yields a trailing empty field.
 std::vector<std::string> splitFields(const std::string& text, char separator);

@@ -1,0 +1,68 @@
+// motostab diagnose: measured data -> what the model gets wrong, its cause, the extended model, the gain.
+#include <unistd.h>
+
+#include <cstdio>
+#include <filesystem>
+#include <iostream>
+
+#include "apps/commands.h"
+#include "diagnosis/diagnosis.h"
+#include "diagnosis/diagnosis_output.h"
+#include "io/csv.h"
+#include "scenario/scenario.h"
+
+namespace motostab::cli {
+namespace {
+
+// A one-line progress bar on stderr (only when stderr is a terminal).
+void showProgress(const std::string& stage, int done, int total) {
+  const int width = 30, filled = total > 0 ? width * done / total : 0;
+  std::fprintf(stderr, "\r%-34s [%s%s] %d/%d", stage.c_str(), std::string(filled, '#').c_str(),
+               std::string(width - filled, ' ').c_str(), done, total);
+  std::fflush(stderr);
+}
+
+}  // namespace
+
+void registerDiagnoseCommands(CLI::App& app) {
+  struct Args {
+    std::string scenario, measurements, out, candidates;
+    int maxCauses = 3, folds = 0, threads = 1;
+    std::vector<std::string> overrides;
+  };
+  auto a = std::make_shared<Args>();
+  CLI::App* cmd = app.add_subcommand("diagnose", "What the model gets wrong against measured data, its cause, the extended model and the gain");
+  cmd->add_option("scenario", a->scenario, "Scenario YAML file")->required()->check(CLI::ExistingFile);
+  cmd->add_option("measurements", a->measurements, "Measured-data YAML file (docs/measured-data-format.md)")->required();
+  cmd->add_option("--candidates", a->candidates, "Comma list of candidate names or globs (default: all)");
+  cmd->add_option("--max-causes", a->maxCauses, "Causes named at most (forward stepwise)")->check(CLI::Range(0, 20));
+  cmd->add_option("--folds", a->folds, "Cross-validation folds (default 5, or one per run)")->check(CLI::Range(2, 1000));
+  cmd->add_option("--threads", a->threads, "Candidates fitted in parallel")->check(CLI::Range(1, 256));
+  cmd->add_option("--out", a->out, "Output folder (default: diagnosis-<scenario name>)");
+  cmd->add_option("--set", a->overrides, "Override a scenario value, e.g. --set geometry.trail_m=0.1");
+  cmd->callback([a]() {
+    const Scenario scenario = loadScenario(a->scenario, a->overrides);
+    const MeasuredData data = loadMeasuredData(a->measurements);
+    DiagnosisOptions opt;
+    if (!a->candidates.empty()) opt.candidates = splitFields(a->candidates, ',');
+    opt.maxCauses = a->maxCauses;
+    opt.folds = a->folds;
+    opt.threads = a->threads;
+    opt.overrides = a->overrides;
+    const bool terminal = isatty(fileno(stderr));
+    if (terminal) opt.progress = showProgress;
+    DiagnosisResult result;
+    try {
+      result = runDiagnosis(a->scenario, data, opt);
+    } catch (const std::invalid_argument& e) {
+      throw InputError({"--candidates", 0, 0, a->candidates}, e.what());
+    }
+    if (terminal) std::fprintf(stderr, "\n");
+    const std::string out = a->out.empty() ? "diagnosis-" + scenario.name : a->out;
+    writeDiagnosisOutputs(out, result);
+    std::cout << makeDiagnosisReport(result) << "\nWrote " << out
+              << "/{diagnosis.json, report.md, residuals.csv, extended.yaml, plots}\n";
+  });
+}
+
+}  // namespace motostab::cli

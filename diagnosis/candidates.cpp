@@ -1,0 +1,137 @@
+#include "diagnosis/candidates.h"
+
+#include <fnmatch.h>
+
+#include <cmath>
+#include <stdexcept>
+
+#include "io/csv.h"
+#include "scenario/parameter_paths.h"
+
+namespace motostab {
+namespace {
+
+double getScalar(const YAML::Node& tree, const char* section, const char* key, double fallback) {
+  const YAML::Node s = tree[section];
+  if (!s || !s.IsMap() || !s[key] || !s[key].IsScalar()) return fallback;
+  try {
+    return s[key].as<double>();
+  } catch (const YAML::Exception&) {
+    return fallback;
+  }
+}
+
+// A steer torque per steer rate that matters for the vehicle: front weight times trail times 1 s.
+double calcSteerDampingScale(const YAML::Node& tree) {
+  const double m = getScalar(tree, "front_frame", "mass_kg", 5) + getScalar(tree, "front_wheel", "mass_kg", 2);
+  const double trail = std::abs(getScalar(tree, "geometry", "trail_m", getScalar(tree, "geometry", "normal_trail_m", 0.08)));
+  return std::max(m * 9.81 * std::max(trail, 0.02), 1e-3);
+}
+
+Candidate makeSteerDamper(const YAML::Node& tree) {
+  const double s = calcSteerDampingScale(tree);
+  CandidateParameter c{"damping_Nms_per_rad", "steer_damper.damping_Nms_per_rad", 0, 20 * s, 0.05 * s, 1e-3 * s};
+  c.off = 0;
+  c.offAtBound = true;
+  return {"steer_damper", {"steer_damper={damping_Nms_per_rad: 0}"}, {c}};
+}
+
+// A stiffness fitted on a log scale from `start` within [start/1e3, start*1e3]; off at infinity.
+CandidateParameter makeStiffness(const std::string& name, const std::string& path, double start) {
+  CandidateParameter c{name, path, start * 1e-3, start * 1e3, start, 1e-4};
+  c.logScale = true;
+  c.offAtInfinity = true;
+  return c;
+}
+
+Candidate makeForkCompliance(const YAML::Node& tree) {
+  // Start: a fork bending stiffness whose wheel-load deflection is ~1 mrad per kg of vehicle.
+  const double m = getScalar(tree, "rear_frame", "mass_kg", 50) + getScalar(tree, "front_frame", "mass_kg", 5);
+  const double k = std::max(1e3, 200.0 * m);
+  return {"fork_compliance",
+          {"fork_compliance={stiffness_Nm_per_rad: " + formatNumber(k) + ", damping_Nms_per_rad: 0}"},
+          {makeStiffness("stiffness_Nm_per_rad", "fork_compliance.stiffness_Nm_per_rad", k)}};
+}
+
+// Slipping tyres (relaxation_linear, bicycle preset) on a vehicle modelled with rolling constraints:
+// the normalised cornering stiffness of both tyres free (preset 15 /rad); rolling is its stiff limit.
+void addTyreSlipCandidate(const YAML::Node& tree, std::vector<Candidate>& out) {
+  const YAML::Node c = tree["contact"];
+  if (!c || !c.IsMap() || !c["model"] || c["model"].Scalar() != "rolling_no_slip") return;
+  CandidateParameter k = makeStiffness("cornering_stiffness_per_rad", "contact.front.cornering_stiffness_per_rad", 15);
+  k.alsoPaths = {"contact.rear.cornering_stiffness_per_rad"};
+  out.push_back({"tyre_slip",
+                 {"contact={model: relaxation_linear, preset: bicycle, front: {cornering_stiffness_per_rad: 15}, "
+                  "rear: {cornering_stiffness_per_rad: 15}}"},
+                 {k}});
+}
+
+void addSwingarmCandidates(const YAML::Node& tree, std::vector<Candidate>& out) {
+  const YAML::Node sw = tree["swingarm"];
+  if (!sw || !sw.IsMap()) return;
+  const std::string current = sw["compliance"] && sw["compliance"].IsScalar() ? sw["compliance"].Scalar() : "rigid";
+  for (const char* variant : {"bending", "torsion", "twist"}) {
+    if (!sw[variant] || current == variant) continue;
+    Candidate c{std::string("swingarm_") + variant, {std::string("swingarm.compliance=") + variant},
+                {makeStiffness("stiffness_scale", "swingarm.stiffness_scale", 1.0)}};
+    c.parameters[0].lower = 0.02;
+    c.parameters[0].upper = 50;
+    out.push_back(c);
+  }
+}
+
+double findSigma(const ScalarParameter& p, const std::vector<std::pair<std::string, double>>& uncertainty) {
+  for (const auto& u : uncertainty)
+    if (u.first == p.path) return u.second;
+  return getDefaultSigma(p);
+}
+
+// Bounds keep the vehicle physical: masses, inertias and positive lengths stay above a tenth of their
+// value; everything within 30 sigma (and within a factor 5 of positive masses and inertias).
+Candidate makeParameterCandidate(const ScalarParameter& p, double sigma) {
+  CandidateParameter c{"value", p.path, p.value - 30 * sigma, p.value + 30 * sigma, p.value, 1e-3 * sigma};
+  const bool positive = p.value > 0 && (p.kind == ParameterKind::Mass || p.kind == ParameterKind::Inertia ||
+                                        (p.kind == ParameterKind::Length && p.path.find("com_m") == std::string::npos &&
+                                         p.path.find("pivot") == std::string::npos));
+  if (positive) {
+    c.lower = std::max(c.lower, 0.1 * p.value);
+    if (p.kind != ParameterKind::Length) c.upper = std::min(c.upper, 5 * p.value);
+  }
+  c.off = p.value;
+  c.priorMean = p.value;
+  c.priorSigma = sigma;
+  return {"parameter:" + p.path, {}, {c}};
+}
+
+}  // namespace
+
+std::vector<Candidate> listCandidates(const YAML::Node& tree,
+                                      const std::vector<std::pair<std::string, double>>& uncertainty) {
+  std::vector<Candidate> out;
+  if (!tree["steer_damper"]) out.push_back(makeSteerDamper(tree));
+  if (!tree["fork_compliance"]) out.push_back(makeForkCompliance(tree));
+  addSwingarmCandidates(tree, out);
+  addTyreSlipCandidate(tree, out);
+  for (const ScalarParameter& p : listScalarParameters(tree)) {
+    const double sigma = findSigma(p, uncertainty);
+    if (sigma > 0) out.push_back(makeParameterCandidate(p, sigma));
+  }
+  return out;
+}
+
+std::vector<Candidate> filterCandidates(const std::vector<Candidate>& all, const std::vector<std::string>& patterns) {
+  if (patterns.empty()) return all;
+  std::vector<Candidate> out;
+  std::vector<bool> used(patterns.size(), false);
+  for (const auto& c : all) {
+    bool take = false;
+    for (size_t i = 0; i < patterns.size(); ++i)
+      if (patterns[i] == c.name || fnmatch(patterns[i].c_str(), c.name.c_str(), 0) == 0) take = used[i] = true;  // [i] is no glob class here
+    if (take) out.push_back(c);
+  }
+  for (size_t i = 0; i < patterns.size(); ++i)
+    if (!used[i]) throw std::invalid_argument("--candidates: '" + patterns[i] + "' matches no candidate of this scenario");
+  return out;
+}
+
+}  // namespace motostab

@@ -1,0 +1,46 @@
+#pragma once
+// Candidate causes of a model's misfit (issue 11, item 2). A candidate is data: `--set` overrides that
+// switch an effect on, and free parameters (each an override key path with bounds and, for a measured
+// scenario parameter, a Gaussian prior). Nothing here touches the model: the diagnosis applies the
+// overrides to the scenario's YAML tree through loadScenario(file, overrides).
+#include <yaml-cpp/yaml.h>
+
+#include <string>
+#include <vector>
+
+namespace motostab {
+
+struct CandidateParameter {
+  std::string name;         ///< JSON key: the scenario key (damping_Nms_per_rad) or "value" for parameter:*
+  std::string path;         ///< override key path, e.g. steer_damper.damping_Nms_per_rad
+  double lower = 0, upper = 0;  ///< bounds, in the key's unit
+  double start = 0;         ///< first guess
+  double step = 0;          ///< forward-difference step (key unit; relative when logScale)
+  bool logScale = false;    ///< fitted as ln(value) (stiffnesses and scales)
+  double off = 0;           ///< value at which the effect vanishes (when !offAtInfinity)
+  bool offAtInfinity = false;  ///< the effect vanishes as value -> infinity (a stiffness)
+  bool offAtBound = false;  ///< "off" is a bound (damping 0): the likelihood ratio uses the 50:50 mixture
+  double priorMean = 0, priorSigma = 0;  ///< Gaussian prior (measured parameters); sigma 0: none
+  std::vector<std::string> alsoPaths;  ///< further keys set to the same value (both tyres)
+};
+
+struct Candidate {
+  std::string name;                         ///< steer_damper, parameter:geometry.trail_m, ...
+  std::vector<std::string> fixedOverrides;  ///< applied before the parameters' (switch the effect on)
+  std::vector<CandidateParameter> parameters;
+};
+
+/// Every candidate the scenario (its YAML tree after base overrides, and the measured parameters'
+/// uncertainties given as path -> sigma) admits: model extensions this build knows, swingarm
+/// compliance variants for scenarios with a swingarm, the bicycle tyre preset (tyre_slip) for
+/// scenarios on rolling constraints, and one `parameter:<path>` per scalar of the geometry, bodies and
+/// wheels. `rider_lean` is no default candidate: it needs the rider's upper-body mass properties,
+/// which a scenario does not hold.
+std::vector<Candidate> listCandidates(const YAML::Node& scenarioTree,
+                                      const std::vector<std::pair<std::string, double>>& uncertainty);
+
+/// Candidates whose name matches one of the comma-separated names or globs (fnmatch); all when
+/// `patterns` is empty. An entry that matches nothing is an error (std::invalid_argument naming it).
+std::vector<Candidate> filterCandidates(const std::vector<Candidate>& all, const std::vector<std::string>& patterns);
+
+}  // namespace motostab

@@ -1,0 +1,20 @@
+#pragma once
+// Writers of a diagnosis (issue 11, Outputs): diagnosis.json (pinned keys), report.md, residuals.csv,
+// extended.yaml and gnuplot plots. They format what runDiagnosis computed.
+#include <filesystem>
+#include <string>
+
+#include "diagnosis/diagnosis.h"
+#include "nlohmann/json.hpp"
+
+namespace motostab {
+
+/// The diagnosis.json document.
+nlohmann::json makeDiagnosisJson(const DiagnosisResult& result);
+/// report.md: the data; what the model gets wrong; candidates; the cause and what it cannot be told
+/// apart from; the extension; the gain.
+std::string makeDiagnosisReport(const DiagnosisResult& result);
+/// Writes every output into `dir` (each file atomically); plots need gnuplot.
+void writeDiagnosisOutputs(const std::filesystem::path& dir, const DiagnosisResult& result);
+
+}  // namespace motostab

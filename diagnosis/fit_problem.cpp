@@ -1,0 +1,169 @@
+#include "diagnosis/fit_problem.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+
+#include "scenario/parameter_paths.h"
+
+namespace motostab {
+
+int ModelSpec::size() const {
+  int n = 0;
+  for (const auto* c : parts) n += static_cast<int>(c->parameters.size());
+  return n;
+}
+
+std::vector<const CandidateParameter*> ModelSpec::getParameters() const {
+  std::vector<const CandidateParameter*> out;
+  for (const auto* c : parts)
+    for (const auto& p : c->parameters) out.push_back(&p);
+  return out;
+}
+
+Eigen::VectorXd ModelSpec::getStart() const {
+  const auto ps = getParameters();
+  Eigen::VectorXd x(ps.size());
+  for (size_t i = 0; i < ps.size(); ++i) x(i) = ps[i]->logScale ? std::log(ps[i]->start) : ps[i]->start;
+  return x;
+}
+
+double ModelSpec::getValue(int i, const Eigen::VectorXd& x) const {
+  return getParameters()[i]->logScale ? std::exp(x(i)) : x(i);
+}
+
+std::vector<std::string> ModelSpec::makeOverrides(const Eigen::VectorXd& x) const {
+  std::vector<std::string> out;
+  int i = 0;
+  for (const auto* c : parts) {
+    out.insert(out.end(), c->fixedOverrides.begin(), c->fixedOverrides.end());
+    for (const auto& p : c->parameters) {
+      out.push_back(formatOverride(p.path, p.logScale ? std::exp(x(i)) : x(i)));
+      for (const auto& also : p.alsoPaths) out.push_back(formatOverride(also, p.logScale ? std::exp(x(i)) : x(i)));
+      ++i;
+    }
+  }
+  return out;
+}
+
+Eigen::VectorXd ModelSpec::calcPriorResiduals(const Eigen::VectorXd& x) const {
+  const auto ps = getParameters();
+  std::vector<double> r;
+  for (size_t i = 0; i < ps.size(); ++i)
+    if (ps[i]->priorSigma > 0) r.push_back((getValue(static_cast<int>(i), x) - ps[i]->priorMean) / ps[i]->priorSigma);
+  return Eigen::Map<Eigen::VectorXd>(r.data(), static_cast<int>(r.size()));
+}
+
+FitProblem::FitProblem(const Predictor& predictor, const MeasuredData& data, int folds)
+    : predictor_(predictor), data_(data) {
+  addEigenvalueObservations();
+  addResponseObservations();
+  assignFolds(folds);
+}
+
+int FitProblem::addComponent(const std::string& name, bool known) {
+  const auto it = std::find(components.begin(), components.end(), name);
+  if (it != components.end()) return static_cast<int>(it - components.begin());
+  components.push_back(name);
+  componentSigma.push_back(1.0);
+  componentKnown.push_back(known);
+  return static_cast<int>(components.size()) - 1;
+}
+
+void FitProblem::addEigenvalueObservations() {
+  for (size_t i = 0; i < data_.eigenvalues.size(); ++i) {
+    const auto& e = data_.eigenvalues[i];
+    const std::string mode = e.mode.empty() ? "nearest" : e.mode;
+    for (int part = 0; part < (e.imag != 0 ? 2 : 1); ++part) {
+      Observation o;
+      o.value = part ? e.imag : e.real;
+      o.knownSigma = part ? e.imagStderr : e.realStderr;
+      o.component = addComponent(mode + (part ? ".imag" : ".real"), false);
+      o.unit = static_cast<int>(i);
+      o.speed = e.speed;
+      o.row = static_cast<int>(i);
+      o.part = part;
+      observations.push_back(o);
+    }
+  }
+}
+
+void FitProblem::addResponseObservations() {
+  const int rows = static_cast<int>(data_.eigenvalues.size());
+  for (size_t r = 0; r < data_.responses.size(); ++r) {
+    const auto& run = data_.responses[r];
+    for (size_t j = 0; j < run.signals.size(); ++j) {
+      const int c = addComponent("run" + std::to_string(r + 1) + "." + run.signals[j].column, false);
+      if (run.signals[j].noiseStd > 0) componentSigma[c] = run.signals[j].noiseStd, componentKnown[c] = true;
+      for (size_t s = 0; s < run.time.size(); ++s) {
+        Observation o;
+        o.value = run.signals[j].values[s];
+        o.knownSigma = run.signals[j].noiseStd;
+        o.component = c;
+        o.unit = rows + static_cast<int>(r);
+        o.speed = run.speed;
+        o.run = static_cast<int>(r);
+        o.signal = static_cast<int>(j);
+        o.sample = static_cast<int>(s);
+        observations.push_back(o);
+      }
+    }
+  }
+}
+
+// Units (rows and runs) sorted by speed and cut into contiguous blocks.
+void FitProblem::assignFolds(int folds) {
+  const int rows = static_cast<int>(data_.eigenvalues.size()), runs = static_cast<int>(data_.responses.size());
+  const int units = rows + runs;
+  if (folds <= 0) folds = rows == 0 ? runs : 5;
+  numFolds = std::max(1, std::min(folds, units));
+  std::vector<double> speed(units);
+  for (int i = 0; i < rows; ++i) speed[i] = data_.eigenvalues[i].speed;
+  for (int r = 0; r < runs; ++r) speed[rows + r] = data_.responses[r].speed;
+  std::vector<int> order(units), foldOf(units);
+  std::iota(order.begin(), order.end(), 0);
+  std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return speed[a] < speed[b]; });
+  for (int k = 0; k < units; ++k) foldOf[order[k]] = k * numFolds / units;
+  for (auto& o : observations) o.fold = foldOf[o.unit];
+}
+
+std::vector<std::vector<double>> FitProblem::getResponseSigma() const {
+  std::vector<std::vector<double>> s(data_.responses.size());
+  for (const auto& o : observations)
+    if (o.run >= 0 && o.sample == 0) s[o.run].push_back(getSigma(o));
+  return s;
+}
+
+Prediction FitProblem::predict(const ModelSpec& model, const Eigen::VectorXd& x, bool exact) const {
+  return predictor_.predict(model.makeOverrides(x), getResponseSigma(), exact);
+}
+
+double FitProblem::getPredicted(const Prediction& p, const Observation& o) const {
+  if (o.row >= 0) return o.part ? p.eigenvalues[o.row].imag() : p.eigenvalues[o.row].real();
+  return p.responses[o.run].predicted[o.signal][o.sample];
+}
+
+Eigen::VectorXd FitProblem::calcResiduals(const Prediction& p) const {
+  Eigen::VectorXd r(observations.size());
+  for (size_t i = 0; i < observations.size(); ++i)
+    r(i) = (observations[i].value - getPredicted(p, observations[i])) / getSigma(observations[i]);
+  return r;
+}
+
+void FitProblem::updateSigma(const Eigen::VectorXd& r, int k) {
+  const int n = static_cast<int>(observations.size());
+  const double dof = n > k ? static_cast<double>(n) / (n - k) : 1.0;
+  std::vector<double> rss(components.size(), 0.0);
+  std::vector<int> count(components.size(), 0);
+  for (int i = 0; i < n; ++i) {
+    const Observation& o = observations[i];
+    if (o.knownSigma > 0) continue;
+    const double raw = r(i) * componentSigma[o.component];
+    rss[o.component] += raw * raw;
+    ++count[o.component];
+  }
+  for (size_t c = 0; c < components.size(); ++c)
+    if (!componentKnown[c] && count[c] > 0) componentSigma[c] = std::max(std::sqrt(rss[c] / count[c] * dof), 1e-12);
+}
+
+}  // namespace motostab

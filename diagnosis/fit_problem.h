@@ -1,0 +1,66 @@
+#pragma once
+// The weighted least-squares problem of a diagnosis: observations, their noise, and models made of
+// candidates (internal coordinates: ln(value) for log-scale parameters, else the value).
+#include <Eigen/Dense>
+#include <string>
+#include <vector>
+
+#include "diagnosis/candidates.h"
+#include "diagnosis/prediction.h"
+
+namespace motostab {
+
+/// One scalar observation: the real or imaginary part of an eigenvalue row, or one response sample.
+struct Observation {
+  double value = 0;         ///< measured (1/s, rad/s, or the signal column's unit)
+  double knownSigma = 0;    ///< stderr / noise_std when given, else 0
+  int component = 0;        ///< index into FitProblem::components
+  int unit = 0;             ///< eigenvalue row index, or numRows + run index
+  int fold = 0;
+  double speed = 0;         ///< m/s
+  int row = -1, part = 0;   ///< eigenvalue row and part (0 real, 1 imag)
+  int run = -1, signal = 0, sample = 0;
+};
+
+/// A model: the candidates switched on together, with their parameters stacked.
+struct ModelSpec {
+  std::vector<const Candidate*> parts;
+  int size() const;
+  std::vector<const CandidateParameter*> getParameters() const;
+  Eigen::VectorXd getStart() const;
+  std::vector<std::string> makeOverrides(const Eigen::VectorXd& x) const;
+  double getValue(int i, const Eigen::VectorXd& x) const;  ///< key-unit value of parameter i
+  Eigen::VectorXd calcPriorResiduals(const Eigen::VectorXd& x) const;
+};
+
+class FitProblem {
+ public:
+  FitProblem(const Predictor& predictor, const MeasuredData& data, int folds);
+  std::vector<Observation> observations;
+  std::vector<std::string> components;   ///< weave.real, weave.imag, run1.gyro_V, ...
+  std::vector<double> componentSigma;    ///< current sigma of each component (unknown ones estimated)
+  std::vector<bool> componentKnown;
+  int numFolds = 1;
+
+  double getSigma(const Observation& o) const { return o.knownSigma > 0 ? o.knownSigma : componentSigma[o.component]; }
+  /// Per run and signal sigma, for the response fits.
+  std::vector<std::vector<double>> getResponseSigma() const;
+  /// Fast (interpolated) predictions unless `exact`.
+  Prediction predict(const ModelSpec& model, const Eigen::VectorXd& x, bool exact = false) const;
+  /// (measured - predicted) / sigma of every observation.
+  Eigen::VectorXd calcResiduals(const Prediction& p) const;
+  double getPredicted(const Prediction& p, const Observation& o) const;
+  /// Sets unknown components' sigma from normalised residuals `r` of a fit with k parameters.
+  void updateSigma(const Eigen::VectorXd& r, int k);
+  const MeasuredData& getData() const { return data_; }
+
+ private:
+  void addEigenvalueObservations();
+  void addResponseObservations();
+  void assignFolds(int folds);
+  int addComponent(const std::string& name, bool known);
+  const Predictor& predictor_;
+  const MeasuredData& data_;
+};
+
+}  // namespace motostab

@@ -1,0 +1,153 @@
+#include "diagnosis/least_squares.h"
+
+#include <cmath>
+#include <limits>
+
+namespace motostab {
+namespace {
+
+Eigen::MatrixXd calcJacobian(const LeastSquaresProblem& p, const Eigen::VectorXd& x, const Eigen::VectorXd& r,
+                             int& evaluations) {
+  Eigen::MatrixXd J(r.size(), x.size());
+  for (int i = 0; i < x.size(); ++i) {
+    // Inside the box first; a rejected point (an unphysical vehicle) tries the other side; a
+    // parameter rejected on both sides gets a zero column.
+    const double h0 = (x(i) + p.step(i) <= p.upper(i)) ? p.step(i) : -p.step(i);
+    J.col(i).setZero();
+    for (double h : {h0, -h0}) {
+      Eigen::VectorXd xp = x;
+      xp(i) += h;
+      ++evaluations;
+      try {
+        J.col(i) = (p.residual(xp) - r) / h;
+        break;
+      } catch (const std::exception&) {
+      }
+    }
+  }
+  return J;
+}
+
+// Parameters at a bound whose gradient pushes outwards are frozen for this step.
+Eigen::VectorXi findFrozen(const LeastSquaresProblem& p, const Eigen::VectorXd& x, const Eigen::VectorXd& g) {
+  Eigen::VectorXi frozen = Eigen::VectorXi::Zero(x.size());
+  for (int i = 0; i < x.size(); ++i)
+    frozen(i) = (x(i) <= p.lower(i) && g(i) > 0) || (x(i) >= p.upper(i) && g(i) < 0);
+  return frozen;
+}
+
+Eigen::VectorXd solveDampedStep(const Eigen::MatrixXd& JtJ, const Eigen::VectorXd& g, const Eigen::VectorXi& frozen,
+                                double mu) {
+  Eigen::MatrixXd H = JtJ;
+  for (int i = 0; i < H.rows(); ++i) {
+    H(i, i) += mu * std::max(JtJ(i, i), 1e-12);
+    if (frozen(i)) {
+      H.row(i).setZero();
+      H.col(i).setZero();
+      H(i, i) = 1;
+    }
+  }
+  Eigen::VectorXd rhs = -g;
+  for (int i = 0; i < rhs.size(); ++i)
+    if (frozen(i)) rhs(i) = 0;
+  return H.ldlt().solve(rhs);
+}
+
+void calcStatistics(const LeastSquaresProblem& p, const Eigen::MatrixXd& J, LeastSquaresResult& res) {
+  const int n = p.numData > 0 ? p.numData : static_cast<int>(res.residual.size());
+  const int np = static_cast<int>(res.x.size());
+  const double s2 = n > np ? res.chi2 / (n - np) : 1.0;
+  Eigen::CompleteOrthogonalDecomposition<Eigen::MatrixXd> cod(J.transpose() * J);
+  res.covariance = s2 * cod.pseudoInverse();
+  res.stderr_ = res.covariance.diagonal().cwiseMax(0).cwiseSqrt();
+  res.correlation = Eigen::MatrixXd::Identity(np, np);
+  for (int i = 0; i < np; ++i)
+    for (int j = 0; j < np; ++j)
+      if (i != j && res.stderr_(i) > 0 && res.stderr_(j) > 0)
+        res.correlation(i, j) = res.covariance(i, j) / (res.stderr_(i) * res.stderr_(j));
+  res.atBound = Eigen::VectorXi::Zero(np);
+  for (int i = 0; i < np; ++i) res.atBound(i) = res.x(i) <= p.lower(i) || res.x(i) >= p.upper(i);
+}
+
+}  // namespace
+
+LeastSquaresResult solveBoundedLeastSquares(const LeastSquaresProblem& p, const Eigen::VectorXd& x0,
+                                            const LeastSquaresOptions& options) {
+  LeastSquaresResult res;
+  res.x = x0.cwiseMax(p.lower).cwiseMin(p.upper);
+  res.residual = p.residual(res.x);
+  res.chi2 = res.residual.squaredNorm();
+  res.evaluations = 1;
+  res.stop = "iteration limit";
+  double mu = 1e-3;
+  Eigen::MatrixXd J = calcJacobian(p, res.x, res.residual, res.evaluations);
+  for (res.iterations = 0; res.iterations < options.maxIterations; ++res.iterations) {
+    const Eigen::MatrixXd JtJ = J.transpose() * J;
+    const Eigen::VectorXd g = J.transpose() * res.residual;
+    const Eigen::VectorXi frozen = findFrozen(p, res.x, g);
+    bool improved = false;
+    double drop = 0;
+    for (int tries = 0; tries < 12 && !improved; ++tries, mu *= 10) {
+      const Eigen::VectorXd x = (res.x + solveDampedStep(JtJ, g, frozen, mu)).cwiseMax(p.lower).cwiseMin(p.upper);
+      if ((x - res.x).norm() == 0) break;
+      Eigen::VectorXd r;
+      try {
+        r = p.residual(x);
+        ++res.evaluations;
+      } catch (const std::exception&) {
+        continue;
+      }
+      const double chi2 = r.squaredNorm();
+      if (std::isfinite(chi2) && chi2 < res.chi2) {
+        drop = res.chi2 - chi2;
+        res.x = x, res.residual = r, res.chi2 = chi2;
+        improved = true;
+        mu = std::max(mu / 30, 1e-9);
+      }
+    }
+    if (!improved) {
+      res.stop = "step too small";
+      break;
+    }
+    J = calcJacobian(p, res.x, res.residual, res.evaluations);
+    if (drop <= options.relativeTolerance * std::max(res.chi2, 1e-300)) {
+      res.stop = "converged";
+      break;
+    }
+  }
+  if (res.stop == "step too small") res.stop = "converged";  // no descent left from the solution
+  calcStatistics(p, J, res);
+  return res;
+}
+
+double calcChiSquareSurvival(double x, int df) {
+  if (x <= 0) return 1.0;
+  const double a = 0.5 * df, z = 0.5 * x;
+  if (z < a + 1) {  // series for P(a, z)
+    double term = 1.0 / a, sum = term;
+    for (int n = 1; n < 500; ++n) {
+      term *= z / (a + n);
+      sum += term;
+      if (term < sum * 1e-16) break;
+    }
+    return 1.0 - sum * std::exp(-z + a * std::log(z) - std::lgamma(a));
+  }
+  // continued fraction for Q(a, z) (modified Lentz)
+  const double tiny = 1e-300;
+  double b = z + 1 - a, c = 1 / tiny, d = 1 / b, h = d;
+  for (int i = 1; i < 500; ++i) {
+    const double an = -i * (i - a);
+    b += 2;
+    d = an * d + b;
+    if (std::abs(d) < tiny) d = tiny;
+    c = b + an / c;
+    if (std::abs(c) < tiny) c = tiny;
+    d = 1 / d;
+    const double del = d * c;
+    h *= del;
+    if (std::abs(del - 1) < 1e-16) break;
+  }
+  return std::exp(-z + a * std::log(z) - std::lgamma(a)) * h;
+}
+
+}  // namespace motostab

@@ -1,0 +1,223 @@
+#include "diagnosis/measured_data.h"
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <map>
+
+#include "io/csv.h"
+#include "scenario/yaml_map.h"
+
+namespace motostab {
+namespace {
+
+namespace fs = std::filesystem;
+
+Quantity parseQuantity(YamlMap& m, const std::string& key) {
+  const std::string s = m.getString(key);
+  for (Quantity q : {Quantity::RollAngle, Quantity::RollRate, Quantity::SteerAngle, Quantity::SteerRate, Quantity::YawRate})
+    if (getQuantityName(q) == s) return q;
+  m.fail(key, "unknown quantity '" + s + "' (roll_angle, roll_rate, steer_angle, steer_rate, yaw_rate)");
+}
+
+// The list under `key` (absent: empty), each element as a strict map.
+std::vector<YamlMap> getMapList(YamlMap& m, const std::string& key) {
+  std::vector<YamlMap> out;
+  if (!m.has(key)) return out;
+  m.markUsed(key);
+  const YAML::Node list = m.getNode()[key];
+  if (!list.IsSequence()) m.fail(key, "expected a list");
+  for (size_t i = 0; i < list.size(); ++i)
+    out.emplace_back(list[i], m.getFile(), key + "[" + std::to_string(i) + "]");
+  return out;
+}
+
+fs::path resolve(const YamlMap& m, const std::string& key, const std::string& name) {
+  const fs::path p = fs::path(m.getFile()).parent_path() / name;
+  if (!fs::is_regular_file(p)) m.fail(key, "no such file: " + p.string());
+  return p;
+}
+
+[[noreturn]] void failRow(const CsvTable& t, size_t i, const std::string& column, const std::string& msg) {
+  throw InputError({t.source, t.lineNumbers[i], 0, column}, msg);
+}
+
+int requireColumn(const CsvTable& t, const std::string& name) {
+  for (size_t j = 0; j < t.header.size(); ++j)
+    if (t.header[j] == name) return static_cast<int>(j);
+  throw InputError({t.source, t.headerLine, 0, name}, "missing column '" + name + "'");
+}
+
+int findColumn(const CsvTable& t, const std::string& name) {
+  const auto it = std::find(t.header.begin(), t.header.end(), name);
+  return it == t.header.end() ? -1 : static_cast<int>(it - t.header.begin());
+}
+
+void checkEigenvalueColumns(const CsvTable& t) {
+  static const std::vector<std::string> known{"speed_mps", "mode", "real", "imag", "real_stderr",
+                                              "imag_stderr", "speed_min_mps", "speed_max_mps"};
+  for (const auto& h : t.header)
+    if (std::find(known.begin(), known.end(), h) == known.end())
+      throw InputError({t.source, t.headerLine, 0, h}, "unknown column '" + h + "'");
+  if ((findColumn(t, "speed_min_mps") < 0) != (findColumn(t, "speed_max_mps") < 0))
+    throw InputError({t.source, t.headerLine, 0, "speed_min_mps"}, "speed_min_mps and speed_max_mps go together");
+}
+
+MeasuredEigenvalue readEigenvalueRow(const CsvTable& t, size_t i) {
+  const auto& r = t.rows[i];
+  auto opt = [&](const char* c) { const int j = findColumn(t, c); return j < 0 ? 0.0 : r[j]; };
+  MeasuredEigenvalue e;
+  e.speed = r[requireColumn(t, "speed_mps")];
+  e.mode = t.text[i][0];
+  e.real = r[requireColumn(t, "real")];
+  e.imag = r[requireColumn(t, "imag")];
+  e.realStderr = opt("real_stderr");
+  e.imagStderr = opt("imag_stderr");
+  e.where = {t.source, t.lineNumbers[i], 0, ""};
+  e.hasRange = findColumn(t, "speed_min_mps") >= 0;
+  e.speedMin = e.hasRange ? opt("speed_min_mps") : e.speed;
+  e.speedMax = e.hasRange ? opt("speed_max_mps") : e.speed;
+  if (e.speed < 0) failRow(t, i, "speed_mps", "speed must be >= 0");
+  if (e.imag < 0) failRow(t, i, "imag", "one row per complex pair, with imag >= 0");
+  if (e.realStderr < 0) failRow(t, i, "real_stderr", "stderr must be >= 0");
+  if (e.imagStderr < 0) failRow(t, i, "imag_stderr", "stderr must be >= 0");
+  if (e.hasRange && !(e.speedMin >= 0 && e.speedMin <= e.speed && e.speed <= e.speedMax))
+    failRow(t, i, "speed_min_mps", "need 0 <= speed_min_mps <= speed_mps <= speed_max_mps");
+  const auto& labels = getModeLabels();
+  if (!e.mode.empty() && std::find(labels.begin(), labels.end(), e.mode) == labels.end())
+    failRow(t, i, "mode", "unknown mode label '" + e.mode + "'");
+  return e;
+}
+
+void readEigenvalueFile(YamlMap entry, MeasuredData& data) {
+  const fs::path p = resolve(entry, "file", entry.getString("file"));
+  entry.finish();
+  const CsvTable t = readCsv(p, {"mode"});
+  requireColumn(t, "mode");
+  checkEigenvalueColumns(t);
+  if (t.rows.empty()) throw InputError({t.source, t.headerLine, 0, ""}, "no rows");
+  for (size_t i = 0; i < t.rows.size(); ++i) data.eigenvalues.push_back(readEigenvalueRow(t, i));
+  data.eigenvalueFiles.push_back(p.string());
+}
+
+// Samples of `column` with time in [w0, w1].
+std::vector<double> cut(const CsvTable& t, int column, const std::vector<bool>& keep) {
+  std::vector<double> out;
+  for (size_t i = 0; i < t.rows.size(); ++i)
+    if (keep[i]) out.push_back(t.rows[i][column]);
+  return out;
+}
+
+ResponseSignal readSignal(YamlMap s, const CsvTable& t, const std::vector<bool>& keep) {
+  ResponseSignal sig;
+  sig.column = s.getString("column");
+  sig.quantity = parseQuantity(s, "quantity");
+  if (s.has("scale")) {
+    const YAML::Node n = s.getNode()["scale"];
+    if (n.IsScalar() && n.Scalar() == "free") {
+      sig.freeScale = true;
+      s.markUsed("scale");
+    } else {
+      sig.scale = s.getDouble("scale");
+      if (sig.scale == 0) s.fail("scale", "must be 'free' or a nonzero factor to rad or rad/s");
+    }
+  }
+  s.finish();
+  const int j = findColumn(t, sig.column);
+  if (j < 0) s.fail("column", "no column '" + sig.column + "' in " + t.source + " (line " + std::to_string(t.headerLine) + ")");
+  sig.values = cut(t, j, keep);
+  return sig;
+}
+
+void readNoise(YamlMap& run, ResponseRun& r) {
+  if (!run.has("noise_std")) return;
+  YamlMap noise = run.getMap("noise_std");
+  for (auto& sig : r.signals)
+    if (noise.has(sig.column)) sig.noiseStd = noise.getPositive(sig.column);
+  noise.finish();
+}
+
+std::vector<bool> selectWindow(YamlMap& run, const std::vector<double>& time) {
+  double w0 = -HUGE_VAL, w1 = HUGE_VAL;
+  if (run.has("window_s")) {
+    const auto w = run.getDoubleList("window_s");
+    if (w.size() != 2 || !(w[0] < w[1])) run.fail("window_s", "expected [start, end] with start < end (s)");
+    w0 = w[0];
+    w1 = w[1];
+  }
+  std::vector<bool> keep(time.size());
+  int n = 0;
+  for (size_t i = 0; i < time.size(); ++i) n += (keep[i] = time[i] >= w0 && time[i] <= w1);
+  if (n < 20) run.fail(run.has("window_s") ? "window_s" : "file", "the window holds " + std::to_string(n) + " samples; need at least 20");
+  return keep;
+}
+
+void checkTimeIncreasing(const CsvTable& t, int column) {
+  for (size_t i = 1; i < t.rows.size(); ++i)
+    if (!(t.rows[i][column] > t.rows[i - 1][column])) failRow(t, i, t.header[column], "time must increase");
+}
+
+ResponseRun readRun(YamlMap run) {
+  ResponseRun r;
+  r.where = run.locate();
+  const fs::path p = resolve(run, "file", run.getString("file"));
+  r.file = p.string();
+  const CsvTable t = readCsv(p);
+  const std::string timeKey = run.getString("time_column");
+  const int tc = findColumn(t, timeKey);
+  if (tc < 0) run.fail("time_column", "no column '" + timeKey + "' in " + t.source);
+  checkTimeIncreasing(t, tc);
+  const std::vector<bool> keep = selectWindow(run, t.getColumn(timeKey));
+  r.time = cut(t, tc, keep);
+  if (run.has("speed_mps") == run.has("speed_column")) run.fail("", "give exactly one of speed_mps and speed_column");
+  if (run.has("speed_mps")) {
+    r.speed = run.getNonNegative("speed_mps");
+  } else {
+    const std::string sc = run.getString("speed_column");
+    const int j = findColumn(t, sc);
+    if (j < 0) run.fail("speed_column", "no column '" + sc + "' in " + t.source);
+    const auto v = cut(t, j, keep);
+    for (double x : v) r.speed += x / v.size();
+  }
+  auto signals = getMapList(run, "signals");
+  if (signals.empty()) run.fail("signals", "a run needs at least one signal");
+  for (auto& s : signals) r.signals.push_back(readSignal(s, t, keep));
+  readNoise(run, r);
+  run.finish();
+  return r;
+}
+
+}  // namespace
+
+std::string getQuantityName(Quantity q) {
+  switch (q) {
+    case Quantity::RollAngle: return "roll_angle";
+    case Quantity::RollRate: return "roll_rate";
+    case Quantity::SteerAngle: return "steer_angle";
+    case Quantity::SteerRate: return "steer_rate";
+    case Quantity::YawRate: return "yaw_rate";
+  }
+  return "";
+}
+
+const std::vector<std::string>& getModeLabels() {
+  static const std::vector<std::string> labels{"weave", "capsize", "castor", "wobble", "swingarm_bending",
+                                               "swingarm_torsion", "swingarm_twist", "bounce", "pitch",
+                                               "rear_hop", "relaxation", "neutral", "other"};
+  return labels;
+}
+
+MeasuredData loadMeasuredData(const std::string& path) {
+  YamlMap root = loadYamlFile(path);
+  MeasuredData data;
+  data.file = path;
+  data.name = root.getString("name", fs::path(path).stem().string());
+  for (auto& e : getMapList(root, "eigenvalues")) readEigenvalueFile(e, data);
+  for (auto& r : getMapList(root, "responses")) data.responses.push_back(readRun(r));
+  root.finish();
+  if (data.eigenvalues.empty() && data.responses.empty())
+    root.fail("", "no measurements: give eigenvalues and/or responses");
+  return data;
+}
+
+}  // namespace motostab

@@ -1,0 +1,64 @@
+#pragma once
+// Measured data for `motostab diagnose` (format: docs/measured-data-format.md): eigenvalues of
+// labelled modes at measured speeds, and free-response runs with their signals. Signs are those of
+// the design frame (ISO 8855): roll > 0 leans right, steer > 0 steers left, yaw rate > 0 turns left.
+#include <string>
+#include <vector>
+
+#include "io/input_error.h"
+
+namespace motostab {
+
+/// One measured eigenvalue (one complex pair with imag >= 0, or a real eigenvalue with imag = 0).
+struct MeasuredEigenvalue {
+  double speed = 0;            ///< m/s (the middle of the speed range when one is given)
+  double speedMin = 0, speedMax = 0;  ///< m/s; equal to speed without a range
+  bool hasRange = false;
+  std::string mode;            ///< motostab label (weave, capsize, ...) or empty: the nearest eigenvalue
+  double real = 0, imag = 0;   ///< 1/s, rad/s
+  double realStderr = 0, imagStderr = 0;  ///< 0: unknown (estimated from the best fit's residuals)
+  InputLocation where;         ///< file and line of the row
+};
+
+/// A measured quantity of a response signal (rad, rad/s).
+enum class Quantity { RollAngle, RollRate, SteerAngle, SteerRate, YawRate };
+/// "roll_angle", ... ; the inverse of parseQuantity.
+std::string getQuantityName(Quantity q);
+
+/// One signal of a response run.
+struct ResponseSignal {
+  std::string column;     ///< CSV column name
+  Quantity quantity = Quantity::RollRate;
+  bool freeScale = false; ///< uncalibrated: a gain is fitted (else the column is in rad or rad/s)
+  double scale = 1;       ///< calibrated: factor to rad or rad/s
+  double noiseStd = 0;    ///< in the column's unit; 0: estimated from the best fit's residuals
+  std::vector<double> values;  ///< samples in the window, column unit
+};
+
+/// A free-response run (output-error fit of the linear free response at the run's speed).
+struct ResponseRun {
+  std::string file;       ///< resolved CSV path
+  double speed = 0;       ///< m/s (given, or the mean of the speed column in the window)
+  std::vector<double> time;  ///< s, samples in the window
+  std::vector<ResponseSignal> signals;
+  InputLocation where;    ///< the run's entry in the YAML file
+};
+
+struct MeasuredData {
+  std::string name;
+  std::string file;       ///< the YAML file
+  std::vector<MeasuredEigenvalue> eigenvalues;
+  std::vector<ResponseRun> responses;
+  std::vector<std::string> eigenvalueFiles;  ///< resolved CSV paths
+};
+
+/// Reads a measurement YAML file and every CSV it names (paths relative to it). Strict: an unknown
+/// key, a missing file or column, a bad or non-finite cell, a negative stderr, an unknown mode label
+/// or quantity, or a response window with fewer than 20 samples is an InputError naming the file and
+/// line (and column for YAML).
+MeasuredData loadMeasuredData(const std::string& path);
+
+/// Mode labels accepted in eigenvalue files (those analysis/modes.h assigns).
+const std::vector<std::string>& getModeLabels();
+
+}  // namespace motostab

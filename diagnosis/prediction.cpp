@@ -1,0 +1,324 @@
+#include "diagnosis/prediction.h"
+
+#include <algorithm>
+#include <cmath>
+#include <unsupported/Eigen/MatrixFunctions>
+
+#include "scenario/scenario.h"
+#include "vehicle/vehicle_model.h"
+
+namespace motostab {
+namespace {
+
+std::string getStateName(Quantity q) {
+  switch (q) {
+    case Quantity::RollAngle: return "roll";
+    case Quantity::RollRate: return "roll_rate";
+    case Quantity::SteerAngle: return "steer";
+    case Quantity::SteerRate: return "steer_rate";
+    case Quantity::YawRate: return "yaw_rate";
+  }
+  return "";
+}
+
+// Rows c_j of the outputs: signal j reads state getStateName(quantity).
+Eigen::MatrixXd calcOutputRows(const LinearModel& lin, const ResponseRun& run) {
+  Eigen::MatrixXd C = Eigen::MatrixXd::Zero(static_cast<int>(run.signals.size()), lin.A.rows());
+  for (size_t j = 0; j < run.signals.size(); ++j) {
+    const int k = lin.findState(getStateName(run.signals[j].quantity));
+    if (k < 0)
+      throw InputError(run.where, "quantity " + getQuantityName(run.signals[j].quantity) +
+                                      " is not a state of this model's linearisation");
+    C(static_cast<int>(j), k) = 1;
+  }
+  return C;
+}
+
+// basis[j](i, :) = c_j exp(A (t_i - t0)) = c_j V diag(exp(lambda (t_i - t0))) V^-1 from the model's
+// eigen-decomposition; by exponentials of A dt (Pade, Eigen's MatrixFunctions) when V is ill-conditioned.
+std::vector<Eigen::MatrixXd> calcFreeResponseBasis(const LinearModel& lin, const ResponseRun& run) {
+  const Eigen::MatrixXd C = calcOutputRows(lin, run);
+  const int n = static_cast<int>(lin.A.rows()), m = static_cast<int>(run.time.size());
+  std::vector<Eigen::MatrixXd> basis(run.signals.size(), Eigen::MatrixXd(m, n));
+  const Eigen::PartialPivLU<Eigen::MatrixXcd> lu(lin.eigenvectors);
+  const Eigen::MatrixXcd Vinv = lu.inverse();
+  const bool modal = lin.eigenvectors.rows() == n && Vinv.allFinite() &&
+                     lin.eigenvectors.norm() * Vinv.norm() < 1e8;
+  const Eigen::MatrixXcd CV = C * lin.eigenvectors;
+  Eigen::MatrixXd E = Eigen::MatrixXd::Identity(n, n), step;
+  double lastDt = -1;
+  for (int i = 0; i < m; ++i) {
+    Eigen::MatrixXd row;
+    if (modal) {
+      const Eigen::VectorXcd e = (lin.eigenvalues * (run.time[i] - run.time[0])).array().exp();
+      row = ((CV * e.asDiagonal()) * Vinv).real();
+    } else {
+      if (i > 0) {
+        const double dt = run.time[i] - run.time[i - 1];
+        if (std::abs(dt - lastDt) > 1e-12 * std::max(1.0, dt)) step = (lin.A * dt).exp();
+        lastDt = dt;
+        E = step * E;
+      }
+      row = C * E;
+    }
+    for (size_t j = 0; j < basis.size(); ++j) basis[j].row(i) = row.row(static_cast<int>(j));
+  }
+  return basis;
+}
+
+struct BilinearFit {
+  Eigen::VectorXd x0;
+  std::vector<double> gains, offsets;
+  double cost = 0;
+};
+
+double calcCost(const std::vector<Eigen::MatrixXd>& basis, const ResponseRun& run, const std::vector<double>& sigma,
+                BilinearFit& f) {
+  f.cost = 0;
+  for (size_t j = 0; j < basis.size(); ++j) {
+    const Eigen::VectorXd y = Eigen::Map<const Eigen::VectorXd>(run.signals[j].values.data(), basis[j].rows());
+    f.cost += ((f.gains[j] * (basis[j] * f.x0)).array() + f.offsets[j] - y.array()).matrix().squaredNorm() /
+              (sigma[j] * sigma[j]);
+  }
+  return f.cost;
+}
+
+// x0 and offsets for fixed gains: one weighted least-squares problem (minimum norm: unobservable
+// directions of x0 stay zero).
+void solveStateAndOffsets(const std::vector<Eigen::MatrixXd>& basis, const ResponseRun& run,
+                          const std::vector<double>& sigma, BilinearFit& f) {
+  const int n = static_cast<int>(basis[0].cols()), ns = static_cast<int>(basis.size());
+  const int m = static_cast<int>(basis[0].rows());
+  Eigen::MatrixXd M = Eigen::MatrixXd::Zero(m * ns, n + ns);
+  Eigen::VectorXd y(m * ns);
+  for (int j = 0; j < ns; ++j) {
+    M.block(j * m, 0, m, n) = f.gains[j] * basis[j] / sigma[j];
+    M.block(j * m, n + j, m, 1).setConstant(1.0 / sigma[j]);
+    y.segment(j * m, m) = Eigen::Map<const Eigen::VectorXd>(run.signals[j].values.data(), m) / sigma[j];
+  }
+  Eigen::CompleteOrthogonalDecomposition<Eigen::MatrixXd> cod(M);
+  cod.setThreshold(1e-10);
+  const Eigen::VectorXd s = cod.solve(y);
+  f.x0 = s.head(n);
+  for (int j = 0; j < ns; ++j) f.offsets[j] = s(n + j);
+}
+
+// Gain and offset of signal j for fixed x0.
+void solveGain(const Eigen::MatrixXd& basis, const ResponseSignal& sig, BilinearFit& f, size_t j) {
+  const Eigen::VectorXd z = basis * f.x0;
+  const Eigen::VectorXd y = Eigen::Map<const Eigen::VectorXd>(sig.values.data(), z.size());
+  Eigen::MatrixXd M(z.size(), 2);
+  M.col(0) = z;
+  M.col(1).setOnes();
+  const Eigen::VectorXd s = M.colPivHouseholderQr().solve(y);
+  f.gains[j] = s(0);
+  f.offsets[j] = s(1);
+}
+
+double calcVaf(const std::vector<double>& y, const std::vector<double>& yhat) {
+  double my = 0, mr = 0;
+  for (size_t i = 0; i < y.size(); ++i) {
+    my += y[i] / y.size();
+    mr += (y[i] - yhat[i]) / y.size();
+  }
+  double vy = 0, vr = 0;
+  for (size_t i = 0; i < y.size(); ++i) {
+    vy += (y[i] - my) * (y[i] - my);
+    vr += (y[i] - yhat[i] - mr) * (y[i] - yhat[i] - mr);
+  }
+  return vy > 0 ? 100.0 * (1.0 - vr / vy) : 0.0;
+}
+
+std::vector<double> makeSortedUnique(std::vector<double> v) {
+  std::sort(v.begin(), v.end());
+  v.erase(std::unique(v.begin(), v.end()), v.end());
+  return v;
+}
+
+size_t findSpeed(const std::vector<double>& speeds, double v) {
+  return std::lower_bound(speeds.begin(), speeds.end(), v) - speeds.begin();
+}
+
+// Barycentric interpolation on Chebyshev points of the second kind x_j (weights (-1)^j, halved at the ends).
+std::complex<double> interpolate(const std::vector<double>& x, const std::vector<std::complex<double>>& f, double v) {
+  std::complex<double> num = 0;
+  double den = 0;
+  const size_t n = x.size();
+  for (size_t j = 0; j < n; ++j) {
+    if (v == x[j]) return f[j];
+    const double w = ((j % 2) ? -1.0 : 1.0) * ((j == 0 || j + 1 == n) ? 0.5 : 1.0) / (v - x[j]);
+    num += w * f[j];
+    den += w;
+  }
+  return num / den;
+}
+
+}  // namespace
+
+ResponseFit fitFreeResponse(const LinearModel& lin, const ResponseRun& run, const std::vector<double>& sigma) {
+  const std::vector<Eigen::MatrixXd> basis = calcFreeResponseBasis(lin, run);
+  const size_t ns = run.signals.size();
+  BilinearFit f;
+  f.gains.resize(ns);
+  f.offsets.assign(ns, 0.0);
+  int reference = -1, numFree = 0;  // the free gain held at 1 when no signal is calibrated
+  bool anyCalibrated = false;
+  for (size_t j = 0; j < ns; ++j) {
+    f.gains[j] = run.signals[j].freeScale ? 1.0 : 1.0 / run.signals[j].scale;
+    anyCalibrated |= !run.signals[j].freeScale;
+    numFree += run.signals[j].freeScale;
+    if (run.signals[j].freeScale && reference < 0) reference = static_cast<int>(j);
+  }
+  if (anyCalibrated) reference = -1;
+  double last = HUGE_VAL;
+  for (int it = 0; it < 200; ++it) {
+    solveStateAndOffsets(basis, run, sigma, f);
+    for (size_t j = 0; j < ns; ++j)
+      if (run.signals[j].freeScale && static_cast<int>(j) != reference) solveGain(basis[j], run.signals[j], f, j);
+    const double cost = calcCost(basis, run, sigma, f);
+    if (numFree - (reference >= 0) == 0 || last - cost <= 1e-13 * cost) break;
+    last = cost;
+  }
+  ResponseFit r;
+  r.initialState = f.x0;
+  r.gains = f.gains;
+  r.offsets = f.offsets;
+  r.numLinear = static_cast<int>(f.x0.size() + ns) + numFree - (reference >= 0);
+  for (size_t j = 0; j < ns; ++j) {
+    const Eigen::VectorXd yhat = (f.gains[j] * (basis[j] * f.x0)).array() + f.offsets[j];
+    r.predicted.emplace_back(yhat.data(), yhat.data() + yhat.size());
+    r.vaf.push_back(calcVaf(run.signals[j].values, r.predicted.back()));
+  }
+  return r;
+}
+
+std::vector<double> getEvaluationSpeeds(const MeasuredEigenvalue& row) {
+  if (!row.hasRange || row.speedMax - row.speedMin < 1e-9) return {row.speed};
+  const double m = 0.5 * (row.speedMin + row.speedMax), h = 0.5 * (row.speedMax - row.speedMin);
+  return {m - h / std::sqrt(3.0), m + h / std::sqrt(3.0)};
+}
+
+Predictor::Predictor(std::string scenarioFile, std::vector<std::string> baseOverrides, const MeasuredData& data)
+    : scenarioFile_(std::move(scenarioFile)), baseOverrides_(std::move(baseOverrides)), data_(data) {
+  for (const auto& row : data.eigenvalues)
+    for (double v : getEvaluationSpeeds(row)) speeds_.push_back(v);
+  for (const auto& run : data.responses) speeds_.push_back(run.speed);
+  speeds_ = makeSortedUnique(speeds_);
+  double lo = HUGE_VAL, hi = -HUGE_VAL;
+  std::vector<double> others;
+  int labelled = 0;
+  for (const auto& row : data.eigenvalues)
+    for (double v : getEvaluationSpeeds(row)) {
+      if (row.mode.empty()) others.push_back(v);
+      else lo = std::min(lo, v), hi = std::max(hi, v), ++labelled;
+    }
+  const int n = std::clamp(static_cast<int>(std::ceil((hi - lo) / 0.25)) + 1, 6, 16);
+  if (labelled > n && hi > lo)
+    for (int j = n - 1; j >= 0; --j) nodes_.push_back(0.5 * (lo + hi) + 0.5 * (hi - lo) * std::cos(M_PI * j / (n - 1)));
+  for (const auto& run : data.responses) others.push_back(run.speed);
+  fastSpeeds_ = nodes_;
+  fastSpeeds_.insert(fastSpeeds_.end(), others.begin(), others.end());
+  fastSpeeds_ = makeSortedUnique(fastSpeeds_);
+  const Scenario scenario = loadScenario(scenarioFile_, baseOverrides_);
+  const VehicleModel model(scenario);
+  SweepOptions opt;
+  opt.step = std::min(scenario.speeds.step, 0.1);
+  opt.start = std::min(scenario.speeds.start, std::floor(speeds_.front() / opt.step) * opt.step);
+  opt.stop = std::max(scenario.speeds.stop, std::ceil(speeds_.back() / opt.step) * opt.step);
+  opt.threads = 2;
+  reference_ = std::make_shared<SweepResult>(runSweep(model, opt));
+}
+
+// The sweep's trims and linearisations (warm-started in increasing speed, columns grouped after the
+// first two speeds as runSweep groups them).
+std::vector<LinearModel> Predictor::calcLinearModels(const std::vector<std::string>& overrides,
+                                                     const std::vector<double>& speeds) const {
+  std::vector<std::string> all = baseOverrides_;
+  all.insert(all.end(), overrides.begin(), overrides.end());
+  const Scenario scenario = loadScenario(scenarioFile_, all);
+  const VehicleModel model(scenario);
+  SweepOptions sweep;
+  TrimResult trim = calcTrim(model, speeds.front(), sweep.trim);
+  std::vector<LinearModel> out;
+  for (size_t i = 0; i < speeds.size(); ++i) {
+    if (i > 0) updTrim(model, speeds[i], sweep.trim, trim);
+    out.push_back(linearizeInPlace(model, trim, sweep.linearize));
+    if (i == 1 && sweep.groupColumns) {
+      sweep.linearize.removeYaw = out[0].findState("yaw") < 0 ? 1 : 0;
+      sweep.linearize.grouping = calcColumnGrouping({&out[0], &out[1]});
+    }
+  }
+  return out;
+}
+
+std::vector<std::complex<double>> Predictor::predictInterpolated(const std::vector<LinearModel>& models,
+                                                                 const std::vector<double>& speeds) const {
+  std::vector<std::complex<double>> out;
+  std::vector<std::string> modes;
+  std::vector<std::vector<std::complex<double>>> atNodes;  // per mode, per node
+  for (const auto& row : data_.eigenvalues) {
+    std::complex<double> sum = 0;
+    const std::vector<double> vs = getEvaluationSpeeds(row);
+    for (double v : vs) {
+      if (row.mode.empty()) {
+        sum += pickEigenvalue(models[findSpeed(speeds, v)], row);
+        continue;
+      }
+      size_t m = std::find(modes.begin(), modes.end(), row.mode) - modes.begin();
+      if (m == modes.size()) {
+        modes.push_back(row.mode);
+        atNodes.emplace_back();
+        for (double x : nodes_) atNodes.back().push_back(pickEigenvalue(models[findSpeed(speeds, x)], row));
+      }
+      sum += interpolate(nodes_, atNodes[m], v);
+    }
+    out.push_back(sum / static_cast<double>(vs.size()));
+  }
+  return out;
+}
+
+std::complex<double> Predictor::pickEigenvalue(const LinearModel& lin, const MeasuredEigenvalue& row) const {
+  std::complex<double> best;
+  if (row.mode.empty()) {
+    double dmin = HUGE_VAL;
+    for (int k = 0; k < lin.eigenvalues.size(); ++k) {
+      const std::complex<double> l = lin.eigenvalues(k);
+      const double d = std::abs(std::complex<double>(l.real(), std::abs(l.imag())) - std::complex<double>(row.real, row.imag));
+      if (d < dmin) dmin = d, best = l;
+    }
+  } else {
+    const SweepResult& ref = *reference_;
+    const size_t k = std::min_element(ref.speeds.begin(), ref.speeds.end(), [&](double a, double b) {
+                       return std::abs(a - lin.speed) < std::abs(b - lin.speed);
+                     }) - ref.speeds.begin();
+    const auto branch = std::find_if(ref.branches.begin(), ref.branches.end(),
+                                     [&](const ModeBranch& b) { return b.label == row.mode && b.index[k] >= 0; });
+    if (branch == ref.branches.end())
+      throw InputError(row.where, "the scenario has no " + row.mode + " mode near " + std::to_string(lin.speed) + " m/s");
+    best = lin.eigenvalues(findBestMatch(ref.models[k], branch->index[k], lin));
+  }
+  return {best.real(), std::abs(best.imag())};
+}
+
+Prediction Predictor::predict(const std::vector<std::string>& overrides,
+                              const std::vector<std::vector<double>>& sigma, bool exact) const {
+  const bool fast = !exact && !nodes_.empty();
+  const std::vector<double>& speeds = fast ? fastSpeeds_ : speeds_;
+  const std::vector<LinearModel> models = calcLinearModels(overrides, speeds);
+  Prediction p;
+  if (fast) p.eigenvalues = predictInterpolated(models, speeds);
+  for (const auto& row : data_.eigenvalues) {
+    if (fast) break;
+    const std::vector<double> nodes = getEvaluationSpeeds(row);
+    std::complex<double> sum = 0;
+    for (double v : nodes) sum += pickEigenvalue(models[findSpeed(speeds, v)], row);
+    p.eigenvalues.push_back(sum / static_cast<double>(nodes.size()));
+  }
+  for (size_t r = 0; r < data_.responses.size(); ++r) {
+    p.responses.push_back(fitFreeResponse(models[findSpeed(speeds, data_.responses[r].speed)], data_.responses[r], sigma[r]));
+    p.numLinear += p.responses.back().numLinear;
+  }
+  return p;
+}
+
+}  // namespace motostab

@@ -1,0 +1,91 @@
+#pragma once
+// Predictions of measured data by a scenario (with --set overrides): labelled eigenvalues at the
+// measured speeds and output-error fits of the linear free responses.
+//
+// Eigenvalues: the scenario is trimmed and linearised (the sweep's options: analysis/sweep.h) at each
+// needed speed, in increasing order with warm starts. A row's mode is found by continuity from the
+// base scenario's labelled sweep (findBestMatch against the base model at the nearest sweep speed);
+// a row without a label takes the eigenvalue (imag >= 0) nearest the measured one. A row with a
+// speed range [a, b] (the speed fell during the fit window) is predicted by the mean of the model's
+// eigenvalue over the range, by two-point Gauss-Legendre quadrature at m -/+ h/sqrt(3) (m, h: the
+// range's middle and half width; exact for a cubic in speed).
+//
+// Fast predictions (predict with exact = false, used inside fits): labelled rows are interpolated
+// from the model's eigenvalues at Chebyshev points of the second kind spanning the labelled rows'
+// speeds (barycentric formula, Berrut & Trefethen 2004, SIAM Review 46:501; one point per 0.25 m/s,
+// 6 to 16 points), when that needs fewer linearisations than the rows' own speeds. Reported
+// predictions are exact (exact = true), so a sweep of the extended scenario reproduces them.
+//
+// Responses: x' = A x at the run's speed, y_j(t) = g_j c_j x(t) + o_j, x(t) = exp(A (t - t0)) x0
+// (t0: the window's first sample). The initial state x0 and the offsets o_j enter linearly; the free
+// gains g_j (scale: free) make the fit bilinear, solved by alternating least squares (a nested fit:
+// x0 and offsets by minimum-norm least squares for fixed gains, then each free gain with its offset),
+// to a relative change of the weighted residual below 1e-13. With no calibrated signal the first
+// free gain is 1 (the overall scale is in x0). Calibrated: g_j = 1/scale.
+#include <Eigen/Dense>
+#include <complex>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "analysis/sweep.h"
+#include "diagnosis/measured_data.h"
+
+namespace motostab {
+
+/// The fitted free response of one run.
+struct ResponseFit {
+  std::vector<std::vector<double>> predicted;  ///< per signal, per sample (column unit)
+  Eigen::VectorXd initialState;                ///< x0 in the linear model's states
+  std::vector<double> gains, offsets;          ///< per signal (column unit per rad(/s); column unit)
+  std::vector<double> vaf;                     ///< per signal, % (100 (1 - var(residual)/var(signal)))
+  int numLinear = 0;                           ///< fitted linear/bilinear parameters (x0, offsets, free gains)
+};
+
+/// Everything a scenario predicts for a measurement set.
+struct Prediction {
+  std::vector<std::complex<double>> eigenvalues;  ///< per measured row (imag >= 0), 1/s
+  std::vector<ResponseFit> responses;            ///< per run
+  int numLinear = 0;                             ///< sum over runs of ResponseFit::numLinear
+};
+
+/// Fits one run's free response for a linear model (A at the run's speed). `sigma` per signal
+/// (column unit) weights the signals. Throws InputError (at the run) if a signal's quantity is not
+/// a state of the model.
+ResponseFit fitFreeResponse(const LinearModel& lin, const ResponseRun& run, const std::vector<double>& sigma);
+
+/// Predicts measured data for a scenario file with overrides. Thread-safe: predict() builds its own
+/// model on each call.
+class Predictor {
+ public:
+  /// Sweeps the base scenario (`overrides` applied) once for the mode labels.
+  Predictor(std::string scenarioFile, std::vector<std::string> baseOverrides, const MeasuredData& data);
+  /// Predictions with `overrides` added to the base overrides; `sigma` per response run and signal.
+  Prediction predict(const std::vector<std::string>& overrides, const std::vector<std::vector<double>>& sigma,
+                     bool exact = true) const;
+  /// Linear models at `speeds` (sorted, unique; m/s) for `overrides`.
+  std::vector<LinearModel> calcLinearModels(const std::vector<std::string>& overrides, const std::vector<double>& speeds) const;
+  /// The sorted, unique speeds predict() linearises at, m/s.
+  const std::vector<double>& getSpeeds() const { return speeds_; }
+  const std::string& getScenarioFile() const { return scenarioFile_; }
+  const std::vector<std::string>& getBaseOverrides() const { return baseOverrides_; }
+  const SweepResult& getReferenceSweep() const { return *reference_; }
+
+ private:
+  std::vector<std::complex<double>> predictInterpolated(const std::vector<LinearModel>& models,
+                                                        const std::vector<double>& speeds) const;
+  std::complex<double> pickEigenvalue(const LinearModel& lin, const MeasuredEigenvalue& row) const;
+
+  std::string scenarioFile_;
+  std::vector<std::string> baseOverrides_;
+  const MeasuredData& data_;
+  std::vector<double> speeds_;
+  std::vector<double> nodes_;       ///< Chebyshev points of the fast predictions (empty: none)
+  std::vector<double> fastSpeeds_;  ///< speeds of the fast predictions (nodes, runs, unlabelled rows)
+  std::shared_ptr<SweepResult> reference_;
+};
+
+/// The speeds at which a row is evaluated (one, or two Gauss-Legendre nodes of its range), m/s.
+std::vector<double> getEvaluationSpeeds(const MeasuredEigenvalue& row);
+
+}  // namespace motostab

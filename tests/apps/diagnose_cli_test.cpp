@@ -1,0 +1,39 @@
+// motostab diagnose on bad measurement files: exit 2, the message names file and line, and the
+// output folder is neither created nor changed (issue 11, Bad input).
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+
+#include "tests/apps/run_motostab.h"
+
+namespace motostab {
+namespace {
+
+namespace fs = std::filesystem;
+const std::string kWhipple = std::string(MOTOSTAB_SOURCE_DIR) + "/scenarios/whipple-benchmark.yaml";
+
+TEST(DiagnoseCli, BadMeasurementsExit2AndLeaveTheFolderAlone) {
+  const fs::path dir = fs::temp_directory_path() / ("motostab_diagnose_cli_" + std::to_string(::getpid()));
+  fs::create_directories(dir);
+  std::ofstream(dir / "e.csv") << "speed_mps,mode,real,imag\n4,weave,0.4,3\n5,weave,nan,4\n";
+  const std::vector<std::pair<std::string, std::string>> cases = {
+      {"eigenvalues:\n  - file: e.csv\n", "e.csv:3"},                     // NaN cell
+      {"eigenvalues:\n  - file: missing.csv\n", "m.yaml:2:5"},           // missing file
+      {"eigenvalues:\n  - {file: e.csv, colour: red}\n", "m.yaml:2"},    // unknown key
+  };
+  for (const auto& [yaml, needle] : cases) {
+    std::ofstream(dir / "m.yaml") << yaml;
+    const std::string log = (dir / "log.txt").string();
+    const int code = test::waitForExit(test::startMotostab(
+        {"diagnose", kWhipple, (dir / "m.yaml").string(), "--out", (dir / "out").string()}, dir.string(), log));
+    const std::string out = test::readLog(log);
+    EXPECT_EQ(code, 2) << out;
+    EXPECT_NE(out.find(needle), std::string::npos) << out;
+    EXPECT_FALSE(fs::exists(dir / "out"));
+  }
+  fs::remove_all(dir);
+}
+
+}  // namespace
+}  // namespace motostab
