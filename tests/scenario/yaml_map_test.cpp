@@ -2,6 +2,8 @@
 // rule, and errors located by file:line:column and key path.
 #include <gtest/gtest.h>
 
+#include "tests/support/catch_input_error.h"
+
 #include <filesystem>
 #include <fstream>
 
@@ -19,15 +21,7 @@ std::string writeYaml(const std::string& name, const std::string& text) {
   return p.string();
 }
 
-InputError catchInputError(const std::function<void()>& f) {
-  try {
-    f();
-  } catch (const InputError& e) {
-    return e;
-  }
-  ADD_FAILURE() << "no InputError";
-  return InputError({}, "");
-}
+using motostab::test::catchInputError;
 
 TEST(YamlMap, DuplicateKeysAnywhereAreRejectedAtTheSecond) {
   struct Case {

@@ -1,6 +1,8 @@
 // Bad input is an InputError naming the file, line and key (issue 4, item 6).
 #include <gtest/gtest.h>
 
+#include "tests/support/catch_input_error.h"
+
 #include <fstream>
 #include <functional>
 
@@ -28,15 +30,7 @@ struct Files {
   }
 };
 
-InputError catchInputError(const std::function<void()>& f) {
-  try {
-    f();
-  } catch (const InputError& e) {
-    return e;
-  }
-  ADD_FAILURE() << "no InputError";
-  return InputError({}, "none");
-}
+using motostab::test::catchInputError;
 
 TEST(StaticInput, AcceptsTheIssueFormatAsIs) {
   const Files f{makeTempDir("static_ok")};
