@@ -9,6 +9,7 @@
 #include "diagnosis/diagnosis.h"
 #include "diagnosis/diagnosis_output.h"
 #include "io/csv.h"
+#include "io/output_folder.h"
 #include "scenario/scenario.h"
 
 namespace motostab::cli {
@@ -51,6 +52,8 @@ void registerDiagnoseCommands(CLI::App& app) {
     opt.overrides = a->overrides;
     const bool terminal = isatty(fileno(stderr));
     if (terminal) opt.progress = showProgress;
+    const std::string out = a->out.empty() ? "diagnosis-" + scenario.name : a->out;
+    OutputFolder folder(out);  // inputs read; from here an error or a kill leaves the old outputs whole
     DiagnosisResult result;
     try {
       result = runDiagnosis(a->scenario, data, opt);
@@ -58,8 +61,8 @@ void registerDiagnoseCommands(CLI::App& app) {
       throw InputError({"--candidates", 0, 0, a->candidates}, e.what());
     }
     if (terminal) std::fprintf(stderr, "\n");
-    const std::string out = a->out.empty() ? "diagnosis-" + scenario.name : a->out;
-    writeDiagnosisOutputs(out, result);
+    writeDiagnosisOutputs(folder.getPath(), result);
+    folder.commit();
     std::cout << makeDiagnosisReport(result) << "\nWrote " << out
               << "/{diagnosis.json, report.md, residuals.csv, extended.yaml, plots}\n";
   });

@@ -14,7 +14,8 @@ nlohmann::json makeDiagnosisJson(const DiagnosisResult& result);
 /// report.md: the data; what the model gets wrong; candidates; the cause and what it cannot be told
 /// apart from; the extension; the gain.
 std::string makeDiagnosisReport(const DiagnosisResult& result);
-/// Writes every output into `dir` (each file atomically); plots need gnuplot.
+/// Writes every output into the existing folder `dir` (each file atomically; the CLI passes an
+/// OutputFolder, io/output_folder.h, so the folder is replaced as a whole); plots need gnuplot.
 void writeDiagnosisOutputs(const std::filesystem::path& dir, const DiagnosisResult& result);
 
 }  // namespace motostab

@@ -35,5 +35,39 @@ TEST(DiagnoseCli, BadMeasurementsExit2AndLeaveTheFolderAlone) {
   fs::remove_all(dir);
 }
 
+// An existing output folder keeps exactly its old contents when the run fails, both before the
+// outputs are prepared (bad measurements) and after (an unknown candidate, found inside the run).
+TEST(DiagnoseCli, FailedRunLeavesExistingFolderWhole) {
+  const fs::path dir = fs::temp_directory_path() / ("motostab_diagnose_keep_" + std::to_string(::getpid()));
+  fs::create_directories(dir / "out");
+  std::ofstream(dir / "out" / "old.txt") << "old outputs\n";
+  std::ofstream(dir / "e.csv") << "speed_mps,mode,real,imag\n4,weave,0.4,3\n5,weave,0.3,4\n";
+  std::ofstream(dir / "good.yaml") << "eigenvalues:\n  - file: e.csv\n";
+  std::ofstream(dir / "bad.yaml") << "eigenvalues:\n  - {file: e.csv, colour: red}\n";
+  const std::vector<std::pair<std::vector<std::string>, std::string>> cases = {
+      {{"bad.yaml"}, "bad.yaml:2"},
+      {{"good.yaml", "--candidates", "no_such_candidate"}, "no_such_candidate"},
+  };
+  for (const auto& [args, needle] : cases) {
+    std::vector<std::string> argv = {"diagnose", kWhipple, (dir / args[0]).string(), "--out", (dir / "out").string()};
+    argv.insert(argv.end(), args.begin() + 1, args.end());
+    const std::string log = (dir / "log.txt").string();
+    const int code = test::waitForExit(test::startMotostab(argv, dir.string(), log));
+    const std::string out = test::readLog(log);
+    EXPECT_EQ(code, 2) << out;
+    EXPECT_NE(out.find(needle), std::string::npos) << out;
+    std::vector<std::string> names;
+    for (const auto& e : fs::directory_iterator(dir / "out")) names.push_back(e.path().filename().string());
+    EXPECT_EQ(names, std::vector<std::string>{"old.txt"});
+    std::ifstream in(dir / "out" / "old.txt");
+    std::string line;
+    std::getline(in, line);
+    EXPECT_EQ(line, "old outputs");
+    for (const auto& e : fs::directory_iterator(dir))  // no temporary folder left behind
+      EXPECT_EQ(e.path().filename().string().find(".out."), std::string::npos) << e.path();
+  }
+  fs::remove_all(dir);
+}
+
 }  // namespace
 }  // namespace motostab
