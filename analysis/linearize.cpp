@@ -2,6 +2,8 @@
 
 #include <Eigen/Eigenvalues>
 #include <algorithm>
+#include <cmath>
+#include <limits>
 
 namespace motostab {
 
@@ -35,6 +37,24 @@ std::vector<int> withPriority(const std::vector<int>& first, int n) {
   for (int i = 0; i < n; ++i)
     if (std::find(out.begin(), out.end(), i) == out.end()) out.push_back(i);
   return out;
+}
+
+// The pattern's connected block holding roll as mirror signs (-1 in it, +1 elsewhere); empty without
+// roll or when the block is everything.
+std::vector<int> proposeMirror(const ColumnGrouping& g) {
+  const int n = static_cast<int>(g.states.size());
+  const auto roll = std::find(g.states.begin(), g.states.end(), "roll");
+  if (roll == g.states.end()) return {};
+  std::vector<int> sign(n, 1), stack{static_cast<int>(roll - g.states.begin())};
+  sign[stack.back()] = -1;
+  int count = 1;
+  while (!stack.empty()) {
+    const int i = stack.back();
+    stack.pop_back();
+    for (int j = 0; j < n; ++j)
+      if (sign[j] == 1 && (g.pattern(i, j) || g.pattern(j, i))) sign[j] = -1, ++count, stack.push_back(j);
+  }
+  return count == n ? std::vector<int>{} : sign;
 }
 
 }  // namespace
@@ -79,11 +99,14 @@ ColumnGrouping calcColumnGrouping(const std::vector<const LinearModel*>& samples
   }
   for (const auto& st : first.states) g.states.push_back(st.name);
   g.pattern.setConstant(n, n, false);
+  g.rowScale.assign(n, 0.0);
   for (const LinearModel* m : samples)
     for (int i = 0; i < n; ++i) {
       const double rowMax = m->A.row(i).cwiseAbs().maxCoeff();
+      g.rowScale[i] = std::max(g.rowScale[i], rowMax);
       for (int j = 0; j < n; ++j) g.pattern(i, j) = g.pattern(i, j) || std::abs(m->A(i, j)) > tolerance * rowMax;
     }
+  g.mirror = proposeMirror(g);
   std::vector<int> order;  // coordinates first, then rates, then auxiliary states
   for (Slot slot : {Slot::Q, Slot::U, Slot::Z})
     for (int j = 0; j < n; ++j)
@@ -220,21 +243,71 @@ void addDirection(const LinearizeContext& c, const ConstraintJacobian& cj, const
   }
 }
 
-// Columns of A evaluated together (opt.grouping); marks them in `done`.
+// Grouping state index -> lin.states index (-1 where lin lacks the state).
+std::vector<int> mapGroupingStates(const ColumnGrouping& g, const LinearModel& lin) {
+  std::vector<int> out;
+  for (const auto& name : g.states) out.push_back(lin.findState(name));
+  return out;
+}
+
+bool isLateralGroup(const ColumnGrouping& g, const std::vector<int>& group) {
+  if (g.mirror.empty()) return false;
+  return std::all_of(group.begin(), group.end(), [&](int j) { return g.mirror[j] == -1; });
+}
+
+// A trim symmetric to 1e-9 of the difference steps: every lateral state, the steer and the roll torque
+// below that (the mirror identity is then off by at most that fraction of a column).
+bool isTrimSymmetric(const LinearizeContext& c, const ColumnGrouping& g, const LinearModel& lin,
+                     const std::vector<int>& linearIndexOf) {
+  for (size_t r = 0; r < linearIndexOf.size(); ++r) {
+    const StateEntry& e = lin.states[linearIndexOf[r]].entry;
+    if (g.mirror[r] == -1 && std::abs(c.fn.get(c.s, e)) > 1e-9 * c.stepFor(e)) return false;
+  }
+  for (Input in : {Input::SteerTorque, Input::RollTorque})
+    if (std::abs(c.model.getInput(c.s, in)) > 1e-9 * c.opt.step) return false;
+  return true;
+}
+
+// Mirror signs of the rows of ydot: g.mirror on the linear states' rows, +1 on the others.
+Eigen::VectorXd calcRowMirror(const LinearizeContext& c, const ColumnGrouping& g, const LinearModel& lin,
+                              const std::vector<int>& linearIndexOf) {
+  Eigen::VectorXd sign = Eigen::VectorXd::Ones(c.nq + c.nu + c.nz);
+  for (size_t r = 0; r < linearIndexOf.size(); ++r) sign[c.rowOf(lin.states[linearIndexOf[r]].entry)] = g.mirror[r];
+  return sign;
+}
+
+// The group's direction with each column's step (rad, m, rad/s, m/s).
+Direction makeGroupDirection(const LinearizeContext& c, const ConstraintJacobian& cj, const TangentSpace& t,
+                             const LinearModel& lin, const std::vector<int>& linearIndexOf, const std::vector<int>& group) {
+  Direction dir;
+  for (int g : group) {
+    const StateEntry& e = lin.states[linearIndexOf[g]].entry;
+    addDirection(c, cj, t, e, c.stepFor(e), dir);
+  }
+  return dir;
+}
+
+// Columns of A evaluated together (opt.grouping); marks them in `done`. Lateral groups at a symmetric
+// trim take one evaluation (checkMirrorSymmetry): (f(y0 + d) - f(y0 - d)) / 2 with f(y0 - d) = S f(y0 + d).
 void differenceGroupedColumns(const LinearizeContext& c, const ConstraintJacobian& cj, const TangentSpace& t,
                               const LinearModel& lin, Eigen::MatrixXd& A, std::vector<bool>& done) {
   const ColumnGrouping& grouping = c.opt.grouping;
   auto yDot = [&](const SimTK::State& st, Eigen::VectorXd& out) { c.fn.calcYDot(st, out); };
-  std::vector<int> linearIndexOf;  // grouping's state index -> lin.states index
-  for (const auto& name : grouping.states) linearIndexOf.push_back(lin.findState(name));
+  const std::vector<int> linearIndexOf = mapGroupingStates(grouping, lin);
   const bool grouped = !grouping.groups.empty() &&
                        std::find(linearIndexOf.begin(), linearIndexOf.end(), -1) == linearIndexOf.end();
   if (!grouped) return;
+  const bool mirrored = grouping.useMirror && cj.m == 0 && isTrimSymmetric(c, grouping, lin, linearIndexOf);
+  const Eigen::VectorXd rowMirror = mirrored ? calcRowMirror(c, grouping, lin, linearIndexOf) : Eigen::VectorXd();
   Eigen::VectorXd col;
   for (const auto& group : grouping.groups) {
-    Direction dir;
-    for (int g : group) addDirection(c, cj, t, lin.states[linearIndexOf[g]].entry, c.stepFor(lin.states[linearIndexOf[g]].entry), dir);
-    c.fn.calcDirectionalDerivative(c.s, dir, 1.0, c.opt.order, yDot, col);  // sum of h_j times column j
+    const Direction dir = makeGroupDirection(c, cj, t, lin, linearIndexOf, group);
+    if (mirrored && isLateralGroup(grouping, group)) {
+      c.fn.calcDisplaced(c.s, dir, 1.0, yDot, col);
+      col = (col - rowMirror.cwiseProduct(col)) / 2;
+    } else {
+      c.fn.calcDirectionalDerivative(c.s, dir, 1.0, c.opt.order, yDot, col);  // sum of h_j times column j
+    }
     for (int g : group) {
       const int j = linearIndexOf[g];
       const double h = c.stepFor(lin.states[j].entry);
@@ -343,6 +416,59 @@ void solveEigen(LinearModel& lin) {
 }
 
 }  // namespace
+
+namespace {
+
+// The lateral groups of g and the lateral columns in no group (as singletons).
+std::vector<std::vector<int>> listLateralGroups(const ColumnGrouping& g, std::vector<std::vector<int>>& singletons) {
+  std::vector<std::vector<int>> out;
+  std::vector<bool> grouped(g.states.size(), false);
+  for (const auto& group : g.groups) {
+    for (int j : group) grouped[j] = true;
+    if (isLateralGroup(g, group)) out.push_back(group);
+  }
+  for (size_t j = 0; j < g.states.size(); ++j)
+    if (!grouped[j] && g.mirror[j] == -1) singletons.push_back({static_cast<int>(j)}), out.push_back({static_cast<int>(j)});
+  return out;
+}
+
+}  // namespace
+
+bool checkMirrorSymmetry(const VehicleModel& model, TrimResult& trim, const LinearizeOptions& opt,
+                         ColumnGrouping& g, double tolerance, double* defect) {
+  if (defect) *defect = INFINITY;
+  g.useMirror = false;
+  if (g.mirror.empty() || trim.state.getNQErr() + trim.state.getNUErr() > 0) return false;
+  const LinearizeContext c(model, trim.state, opt);
+  const ConstraintJacobian cj;  // no constraints: the tangent space is every state
+  const TangentSpace tangent;
+  LinearModel lin;
+  lin.states = listIndependentStates(c, tangent);
+  const std::vector<int> idx = mapGroupingStates(g, lin);
+  if (std::find(idx.begin(), idx.end(), -1) != idx.end() || !isTrimSymmetric(c, g, lin, idx)) return false;
+  const Eigen::VectorXd rowMirror = calcRowMirror(c, g, lin, idx);
+  auto yDot = [&](const SimTK::State& st, Eigen::VectorXd& out) { c.fn.calcYDot(st, out); };
+  std::vector<std::vector<int>> singletons;
+  double worst = 0;
+  Eigen::VectorXd fp, fm;
+  for (const auto& group : listLateralGroups(g, singletons)) {
+    const Direction dir = makeGroupDirection(c, cj, tangent, lin, idx, group);
+    c.fn.calcDisplaced(c.s, dir, 1.0, yDot, fp);
+    c.fn.calcDisplaced(c.s, dir, -1.0, yDot, fm);
+    double h = INFINITY;  // the defect in units of A: divided by the smallest step of the group
+    for (int j : group) h = std::min(h, c.stepFor(lin.states[idx[j]].entry));
+    for (size_t r = 0; r < idx.size(); ++r) {
+      const int row = c.rowOf(lin.states[idx[r]].entry);
+      const double d = std::abs(fm[row] - rowMirror[row] * fp[row]) / (2 * h);
+      worst = std::max(worst, d == 0 ? 0.0 : d / std::max(g.rowScale[r], std::numeric_limits<double>::min()));
+    }
+  }
+  if (defect) *defect = worst;
+  if (!(worst <= tolerance)) return false;
+  g.groups.insert(g.groups.end(), singletons.begin(), singletons.end());
+  g.useMirror = true;
+  return true;
+}
 
 LinearModel linearizeInPlace(const VehicleModel& model, TrimResult& trim, const LinearizeOptions& opt) {
   const LinearizeContext c(model, trim.state, opt);

@@ -15,6 +15,13 @@ struct ColumnGrouping {
   std::vector<std::string> states;            ///< names of the linear states (rows and columns)
   Eigen::Matrix<bool, Eigen::Dynamic, Eigen::Dynamic> pattern;  ///< pattern(i, j): A(i, j) may be nonzero
   std::vector<std::vector<int>> groups;       ///< column indices into `states`; singletons omitted
+  /// Proposed mirror image (y -> -y) of the states: -1 for the pattern's connected block holding
+  /// `roll` (the lateral states), +1 for the others; empty when the pattern does not split.
+  std::vector<int> mirror;
+  std::vector<double> rowScale;  ///< largest |A(i, j)| of row i over the samples (1/s, ...)
+  /// Set by checkMirrorSymmetry: each group of lateral columns then needs one evaluation, f(x0 - h d)
+  /// being the mirror image of f(x0 + h d) (groups then also hold the lateral singletons).
+  bool useMirror = false;
 };
 
 struct LinearizeOptions {
@@ -71,6 +78,19 @@ Eigen::MatrixXd calcTrimJacobian(const VehicleModel& model, const LinearModel& l
 /// first so that cheap rate columns share the evaluations of position columns. Empty if the samples
 /// differ in their states.
 ColumnGrouping calcColumnGrouping(const std::vector<const LinearModel*>& samples, double tolerance = 1e-11);
+
+/// For a laterally symmetric vehicle f(S y) = S f(y), S the mirror image y -> -y (S = diag(mirror)),
+/// so at a symmetric trim y0 the central difference of a lateral direction d needs only f(y0 + h d):
+/// f(y0 - h d) = S f(y0 + h d). Checks this at `trim` for every group of lateral columns of
+/// `grouping` (model without constraints, linear states from a linearisation with these options):
+/// the mirror defect |f_i(y0 - h d) - S_i f_i(y0 + h d)| / 2h must stay below `tolerance` times
+/// rowScale[i] in every row i, i.e. the one-evaluation column equals the central one to that
+/// fraction of each row's scale (a force that is not mirror-symmetric at second order fails). On
+/// success sets grouping.useMirror and adds the lateral singletons as groups. Costs two evaluations
+/// per lateral group; `trim` is restored. `defect`, if given, receives the worst ratio (infinite
+/// when the check does not apply: constraints, no proposed mirror, or an asymmetric trim).
+bool checkMirrorSymmetry(const VehicleModel& model, TrimResult& trim, const LinearizeOptions& options,
+                         ColumnGrouping& grouping, double tolerance = 1e-8, double* defect = nullptr);
 
 /// Linearises `model` about `trim` (seed eq. 26) and computes eigenvalues and eigenvectors.
 LinearModel linearize(const VehicleModel& model, const TrimResult& trim, const LinearizeOptions& options = {});

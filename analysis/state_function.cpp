@@ -50,26 +50,29 @@ void StateFunction::set(SimTK::State& s, const StateEntry& e, double value) cons
   }
 }
 
+void StateFunction::calcDisplaced(SimTK::State& s, const std::vector<std::pair<StateEntry, double>>& dir,
+                                  double step, const std::function<void(const SimTK::State&, Eigen::VectorXd&)>& fn,
+                                  Eigen::VectorXd& out) const {
+  std::vector<double> base(dir.size());
+  for (size_t k = 0; k < dir.size(); ++k) base[k] = get(s, dir[k].first);
+  for (size_t k = 0; k < dir.size(); ++k) set(s, dir[k].first, base[k] + step * dir[k].second);
+  fn(s, out);
+  for (size_t k = 0; k < dir.size(); ++k) set(s, dir[k].first, base[k]);
+}
+
 void StateFunction::calcDirectionalDerivative(
     SimTK::State& s, const std::vector<std::pair<StateEntry, double>>& dir, double h, int order,
     const std::function<void(const SimTK::State&, Eigen::VectorXd&)>& fn, Eigen::VectorXd& out) const {
-  std::vector<double> base(dir.size());
-  for (size_t k = 0; k < dir.size(); ++k) base[k] = get(s, dir[k].first);
   Eigen::VectorXd fp, fm;
-  auto evalAt = [&](double step, Eigen::VectorXd& f) {
-    for (size_t k = 0; k < dir.size(); ++k) set(s, dir[k].first, base[k] + step * dir[k].second);
-    fn(s, f);
-  };
-  evalAt(h, fp);
-  evalAt(-h, fm);
+  calcDisplaced(s, dir, h, fn, fp);
+  calcDisplaced(s, dir, -h, fn, fm);
   out = (fp - fm) / (2 * h);
   if (order >= 4) {
     Eigen::VectorXd fp2, fm2;
-    evalAt(2 * h, fp2);
-    evalAt(-2 * h, fm2);
+    calcDisplaced(s, dir, 2 * h, fn, fp2);
+    calcDisplaced(s, dir, -2 * h, fn, fm2);
     out = (8 * (fp - fm) - (fp2 - fm2)) / (12 * h);
   }
-  for (size_t k = 0; k < dir.size(); ++k) set(s, dir[k].first, base[k]);
 }
 
 }  // namespace motostab

@@ -40,6 +40,11 @@ class StateFunction {
                                  const std::function<void(const SimTK::State&, Eigen::VectorXd&)>& fn,
                                  Eigen::VectorXd& out) const;
 
+  /// `fn` at the state displaced by `step` times the direction (as above); the state is restored.
+  void calcDisplaced(SimTK::State& s, const std::vector<std::pair<StateEntry, double>>& dir, double step,
+                     const std::function<void(const SimTK::State&, Eigen::VectorXd&)>& fn,
+                     Eigen::VectorXd& out) const;
+
   const VehicleModel& getModel() const { return model_; }
 
  private:

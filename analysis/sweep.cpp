@@ -95,6 +95,10 @@ SweepPlan planSweep(const std::vector<double>& speeds, int threads) {
   return p;
 }
 
+// A lateral group's one-evaluation column may differ from the central one by this fraction of each
+// row's scale (checkMirrorSymmetry); symmetric vehicles show 1e-16 or less.
+constexpr double kMirrorTolerance = 1e-8;
+
 // One sweep in progress: the chains of trims and linearisations, shared by the workers.
 class SweepRun {
  public:
@@ -197,12 +201,29 @@ class SweepRun {
     work.jacobian = std::move(J);
   }
 
+  // A chain's column grouping, from its first two speeds and the reference; lateral symmetry (one
+  // evaluation per lateral group) is checked at the first speed with a symmetric trim, if any.
+  void updateGrouping(const VehicleModel& m, size_t k, size_t previous, size_t i, TrimResult& work,
+                      LinearizeOptions& lo, bool& mirrorPending) {
+    if (opt_.groupColumns && i == 1) {
+      std::vector<const LinearModel*> samples{&out_.models[previous], &out_.models[k]};
+      if (ref_) samples.push_back(ref_);
+      lo.grouping = calcColumnGrouping(samples);
+      mirrorPending = opt_.mirrorLateralColumns && !lo.grouping.mirror.empty();
+    }
+    if (!mirrorPending) return;
+    double defect = INFINITY;  // stays infinite, without any evaluation, while the trim is not symmetric
+    checkMirrorSymmetry(m, work, lo, lo.grouping, kMirrorTolerance, &defect);
+    mirrorPending = !std::isfinite(defect);
+  }
+
   // One warm-started chain: trims in place on one State (no State copies).
   void runChain(const VehicleModel& m, Span& sp, bool downwards, bool lead) {
     LinearizeOptions lo;
     TrimResult work, turn;  // turn: the lead's first trim, from which it goes up
     Eigen::MatrixXd lastJ, turnJ;  // the previous speed's trim Jacobian read off its A
     size_t k = 0, previous = 0;
+    bool mirrorPending = false;  // lateral symmetry proposed by the grouping, not yet checked
     for (size_t i = 0; takeNext(sp, downwards, lead, i, k); ++i, previous = k) {
       if (lead && i == plan_.leadDown && plan_.leadDown > 1)
         work = std::move(turn), lastJ = std::move(turnJ), previous = plan_.leadFirst;
@@ -216,11 +237,7 @@ class SweepRun {
         const size_t low = std::min(k, previous);
         costs_[low + 1] = calcMatchCosts(out_.models[low], out_.models[low + 1]);
       }
-      if (opt_.groupColumns && i == 1) {
-        std::vector<const LinearModel*> samples{&out_.models[previous], &out_.models[k]};
-        if (ref_) samples.push_back(ref_);
-        lo.grouping = calcColumnGrouping(samples);
-      }
+      updateGrouping(m, k, previous, i, work, lo, mirrorPending);
       updateTrimJacobian(m, k, previous, i, work, lastJ);
       out_.trims[k] = makeTrimPoint(m, work);
       if (lead && i == 0 && plan_.leadDown > 1) turn = work, turnJ = lastJ;  // one State copy

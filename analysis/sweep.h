@@ -27,6 +27,10 @@ struct SweepOptions {
   /// of the reference speed and each worker's first two speeds. Eigenvalues agree with column-by-
   /// column differences to the difference error (tests/analysis/sweep_grouping_test.cpp).
   bool groupColumns = true;
+  /// With groupColumns, on a laterally symmetric vehicle without constraints (checkMirrorSymmetry,
+  /// at each worker's second speed) lateral groups take one evaluation instead of two, at every
+  /// speed whose trim is symmetric.
+  bool mirrorLateralColumns = true;
   /// Worker threads. Each worker builds its own model from the scenario (no shared Simbody
   /// caches) and trims a chain of speeds with warm starts, two workers sharing a span of speeds
   /// from both ends. Where they meet depends on timing, so threaded results equal the serial
