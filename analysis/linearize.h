@@ -13,6 +13,7 @@ namespace motostab {
 /// laterally symmetric vehicle the in-plane and lateral columns pair up.
 struct ColumnGrouping {
   std::vector<std::string> states;            ///< names of the linear states (rows and columns)
+  std::vector<Slot> slots;                    ///< q, u or z of each state
   Eigen::Matrix<bool, Eigen::Dynamic, Eigen::Dynamic> pattern;  ///< pattern(i, j): A(i, j) may be nonzero
   std::vector<std::vector<int>> groups;       ///< column indices into `states`; singletons omitted
   /// Proposed mirror image (y -> -y) of the states: -1 for the pattern's connected block holding
@@ -20,7 +21,8 @@ struct ColumnGrouping {
   std::vector<int> mirror;
   std::vector<double> rowScale;  ///< largest |A(i, j)| of row i over the samples (1/s, ...)
   /// Set by checkMirrorSymmetry: each group of lateral columns then needs one evaluation, f(x0 - h d)
-  /// being the mirror image of f(x0 + h d) (groups then also hold the lateral singletons).
+  /// being the mirror image of f(x0 + h d); `groups` then hold every column (singletons too), lateral
+  /// groups merged with in-plane ones where that saves evaluation cost.
   bool useMirror = false;
 };
 
@@ -86,8 +88,8 @@ ColumnGrouping calcColumnGrouping(const std::vector<const LinearModel*>& samples
 /// the mirror defect |f_i(y0 - h d) - S_i f_i(y0 + h d)| / 2h must stay below `tolerance` times
 /// rowScale[i] in every row i, i.e. the one-evaluation column equals the central one to that
 /// fraction of each row's scale (a force that is not mirror-symmetric at second order fails). On
-/// success sets grouping.useMirror and adds the lateral singletons as groups. Costs two evaluations
-/// per lateral group; `trim` is restored. `defect`, if given, receives the worst ratio (infinite
+/// success sets grouping.useMirror and regroups the columns for one-evaluation lateral groups
+/// (lateral and in-plane groups merged where that saves cost). Costs two evaluations per lateral group; `trim` is restored. `defect`, if given, receives the worst ratio (infinite
 /// when the check does not apply: constraints, no proposed mirror, or an asymmetric trim).
 bool checkMirrorSymmetry(const VehicleModel& model, TrimResult& trim, const LinearizeOptions& options,
                          ColumnGrouping& grouping, double tolerance = 1e-8, double* defect = nullptr);
