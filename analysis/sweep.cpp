@@ -105,6 +105,7 @@ class SweepRun {
   SweepRun(const VehicleModel& model, const SweepOptions& opt) : model_(model), opt_(opt), fixed_(opt) {
     out_.speeds = makeSpeedGrid(opt.start, opt.stop, opt.step);
     plan_ = planSweep(out_.speeds, opt.threads);
+    replicas_.resize(plan_.workers);
     out_.trims.resize(plan_.n);
     out_.models.resize(plan_.n);
     costs_.resize(plan_.n);
@@ -138,9 +139,8 @@ class SweepRun {
     runWorkers(
         plan_.workers,
         [&](size_t w) {
-          std::unique_ptr<VehicleModel> own;
-          if (w > 0) own = model_.makeReplica();
-          runChain(w > 0 ? *own : model_, plan_.spans[w / 2], w % 2 == 1, w == 0);
+          if (w > 0) replicas_[w] = model_.makeReplica();
+          runChain(w > 0 ? *replicas_[w] : model_, plan_.spans[w / 2], w % 2 == 1, w == 0);
         },
         [&]() {
           failed_ = true;
@@ -154,6 +154,8 @@ class SweepRun {
   }
   /// The options every speed was linearised with (removeYaw decided).
   const SweepOptions& getFixedOptions() const { return fixed_; }
+  /// The workers' model replicas (empty for the calling thread's worker 0), for reuse after the chains.
+  std::vector<std::unique_ptr<VehicleModel>>& updReplicas() { return replicas_; }
 
  private:
   void settleReference(std::exception_ptr e) {  // once: the value, or the failure that stops the sweep
@@ -250,6 +252,7 @@ class SweepRun {
   SweepPlan plan_;
   SweepResult out_;
   std::vector<Eigen::MatrixXd> costs_;  // costs_[k]: calcMatchCosts(models[k - 1], models[k])
+  std::vector<std::unique_ptr<VehicleModel>> replicas_;  // replicas_[w]: worker w's model (w > 0)
   std::optional<LinearModel> ownReference_;
   const LinearModel* ref_ = nullptr;
   std::promise<void> refPromise_;
@@ -258,8 +261,10 @@ class SweepRun {
 };
 
 // Every sign change of a labelled mode's real part, refined by Brent's method; crossings are
-// independent, so workers share them (each with its own model replica).
-void findCriticalSpeeds(const VehicleModel& model, const SweepOptions& opt, const SweepOptions& fixed, SweepResult& out) {
+// independent, so workers share them (each with its own model replica: the chains' where given,
+// replicas[w] for worker w > 0, else a new one).
+void findCriticalSpeeds(const VehicleModel& model, const SweepOptions& opt, const SweepOptions& fixed, SweepResult& out,
+                        std::vector<std::unique_ptr<VehicleModel>>& replicas) {
   struct Crossing {
     const ModeBranch* branch;
     size_t k;
@@ -283,10 +288,10 @@ void findCriticalSpeeds(const VehicleModel& model, const SweepOptions& opt, cons
   if (refiners == 1) {
     for (auto& c : crossings) refine(model, c);
   } else {
+    replicas.resize(std::max(replicas.size(), refiners));
     runWorkers(refiners, [&](size_t w) {
-      std::unique_ptr<VehicleModel> own;
-      if (w > 0) own = model.makeReplica();
-      for (size_t i = w; i < crossings.size(); i += refiners) refine(w > 0 ? *own : model, crossings[i]);
+      if (w > 0 && !replicas[w]) replicas[w] = model.makeReplica();
+      for (size_t i = w; i < crossings.size(); i += refiners) refine(w > 0 ? *replicas[w] : model, crossings[i]);
     });
   }
   for (const auto& c : crossings) {
@@ -305,7 +310,7 @@ SweepResult runSweep(const VehicleModel& model, const SweepOptions& opt) {
   run.runChains();
   const SweepOptions fixed = run.getFixedOptions();
   SweepResult out = run.takeTrackedResult();
-  findCriticalSpeeds(model, opt, fixed, out);
+  findCriticalSpeeds(model, opt, fixed, out, run.updReplicas());
   return out;
 }
 

@@ -6,6 +6,9 @@
 
 #include <algorithm>
 #include <chrono>
+#include <functional>
+#include <memory>
+#include <thread>
 
 #include "analysis/sweep.h"
 #include "bench/realize_loop.h"
@@ -50,24 +53,41 @@ BENCHMARK(BM_EnduroTwistSweep401)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)
 
 // Serial and two-thread sweeps alternated, so that both see the same machine state (the build VM's
 // speed drifts by up to 2x): counter speedup = median over pairs of serial / parallel wall time.
+// The machine's own yardstick, in the same iterations: two independent serial sweeps (one model
+// each, nothing shared) on two threads of this process against the same two one after the other
+// (counter machine_speedup, median of the ratios); fraction = median of speedup / machine_speedup.
 void BM_EnduroTwistSweepSpeedup(benchmark::State& st) {
   const motostab::VehicleModel model(motostab::loadScenario(kEnduro, {"swingarm.compliance=twist"}));
-  motostab::SweepOptions opt;
-  opt.start = 0, opt.stop = 40, opt.step = 0.1;
-  auto timeSweep = [&](int threads) {
+  const std::unique_ptr<motostab::VehicleModel> replica = model.makeReplica();
+  auto sweep = [](const motostab::VehicleModel& m, int threads) {
+    motostab::SweepOptions opt;
+    opt.start = 0, opt.stop = 40, opt.step = 0.1;
     opt.threads = threads;
-    const auto t0 = std::chrono::steady_clock::now();
-    auto r = motostab::runSweep(model, opt);
+    auto r = motostab::runSweep(m, opt);
     benchmark::DoNotOptimize(r.criticalSpeeds.data());
+  };
+  auto seconds = [](const std::function<void()>& f) {
+    const auto t0 = std::chrono::steady_clock::now();
+    f();
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   };
-  std::vector<double> ratios, serial;
+  std::vector<double> ratios, serial, machine, fraction;
   for (auto _ : st) {
-    serial.push_back(timeSweep(1));
-    ratios.push_back(serial.back() / timeSweep(2));
+    serial.push_back(seconds([&] { sweep(model, 1); }));
+    ratios.push_back(serial.back() / seconds([&] { sweep(model, 2); }));
+    const double together = seconds([&] {
+      std::thread other([&] { sweep(*replica, 1); });
+      sweep(model, 1);
+      other.join();
+    });
+    const double oneAfterOther = seconds([&] { sweep(model, 1), sweep(*replica, 1); });
+    machine.push_back(oneAfterOther / together);
+    fraction.push_back(ratios.back() / machine.back());
   }
   st.counters["speedup"] = median(ratios);
   st.counters["serial_ms"] = median(serial) * 1e3;
+  st.counters["machine_speedup"] = median(machine);
+  st.counters["fraction"] = median(fraction);
 }
 BENCHMARK(BM_EnduroTwistSweepSpeedup)->Unit(benchmark::kMillisecond)->Iterations(15)->UseRealTime();
 
