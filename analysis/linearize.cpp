@@ -461,10 +461,11 @@ void solveEigen(LinearModel& lin) {
     Eigen::MatrixXd sub(m, m);
     for (Eigen::Index i = 0; i < m; ++i)
       for (Eigen::Index j = 0; j < m; ++j) sub(i, j) = lin.A(b[i], b[j]);
-    Eigen::EigenSolver<Eigen::MatrixXd> es(sub);
+    const Eigen::EigenSolver<Eigen::MatrixXd> es(sub);
+    const Eigen::MatrixXcd vectors = es.eigenvectors();  // assembled on each call
     for (Eigen::Index c = 0; c < m; ++c, ++k) {
       lin.eigenvalues[k] = es.eigenvalues()[c];
-      for (Eigen::Index i = 0; i < m; ++i) lin.eigenvectors(b[i], k) = es.eigenvectors()(i, c);
+      for (Eigen::Index i = 0; i < m; ++i) lin.eigenvectors(b[i], k) = vectors(i, c);
       lin.eigenvectors.col(k).normalize();
     }
   }
