@@ -216,3 +216,35 @@ TEST(MirrorSymmetry, NotProposedForATiltedAxisNorUsedWithConstraints) {
 
 }  // namespace
 }  // namespace motostab
+
+namespace motostab {
+namespace {
+
+// Every bundled vehicle without constraints, mirrored or not: the same eigenvalues to the difference
+// noise and the same critical speeds (the asymmetric ones keep central differences).
+TEST(MirrorSymmetry, BundledScenariosMatchCentralDifferences) {
+  const std::string dir = std::string(MOTOSTAB_SOURCE_DIR) + "/scenarios/";
+  const std::vector<std::pair<std::string, std::vector<std::string>>> cases = {
+      {"supersport.yaml", {"swingarm.compliance=rigid"}},   {"supersport.yaml", {"swingarm.compliance=bending"}},
+      {"supersport.yaml", {"swingarm.compliance=torsion"}}, {"supersport.yaml", {"swingarm.compliance=bending+torsion"}},
+      {"enduro.yaml", {"swingarm.compliance=twist"}},       {"whipple-benchmark-tyres.yaml", {}},
+      {"browser-jason-rider.yaml", {"contact={model: relaxation_linear, preset: bicycle}"}}};
+  for (const auto& [file, sets] : cases) {
+    const VehicleModel model(loadScenario(dir + file, sets));
+    SweepOptions opt;
+    opt.start = 0, opt.stop = file == "supersport.yaml" ? 50 : file == "enduro.yaml" ? 40 : 10;
+    opt.step = opt.stop / 40;
+    const SweepResult mirrored = runSweep(model, opt);
+    opt.mirrorLateralColumns = false;
+    const SweepResult central = runSweep(model, opt);
+    const double worst = compareEigenvalues(mirrored, central);
+    std::cout << file << (sets.empty() ? "" : " " + sets.front()) << ": " << worst << "\n";
+    EXPECT_LT(worst, 1e-9) << file;
+    ASSERT_EQ(mirrored.criticalSpeeds.size(), central.criticalSpeeds.size()) << file;
+    for (size_t c = 0; c < central.criticalSpeeds.size(); ++c)
+      EXPECT_NEAR(mirrored.criticalSpeeds[c].speed, central.criticalSpeeds[c].speed, 1e-8) << file;
+  }
+}
+
+}  // namespace
+}  // namespace motostab
