@@ -15,7 +15,7 @@ struct ColumnGrouping {
   std::vector<std::string> states;            ///< names of the linear states (rows and columns)
   std::vector<Slot> slots;                    ///< q, u or z of each state
   Eigen::Matrix<bool, Eigen::Dynamic, Eigen::Dynamic> pattern;  ///< pattern(i, j): A(i, j) may be nonzero
-  std::vector<std::vector<int>> groups;       ///< column indices into `states`; singletons omitted
+  std::vector<std::vector<int>> groups;       ///< column indices into `states`; singletons omitted (but see useMirror)
   /// Proposed mirror image (y -> -y) of the states: -1 for the pattern's connected block holding
   /// `roll` (the lateral states), +1 for the others; empty when the pattern does not split.
   std::vector<int> mirror;
@@ -89,8 +89,10 @@ ColumnGrouping calcColumnGrouping(const std::vector<const LinearModel*>& samples
 /// rowScale[i] in every row i, i.e. the one-evaluation column equals the central one to that
 /// fraction of each row's scale (a force that is not mirror-symmetric at second order fails). On
 /// success sets grouping.useMirror and regroups the columns for one-evaluation lateral groups
-/// (lateral and in-plane groups merged where that saves cost). Costs two evaluations per lateral group; `trim` is restored. `defect`, if given, receives the worst ratio (infinite
-/// when the check does not apply: constraints, no proposed mirror, or an asymmetric trim).
+/// (lateral and in-plane groups merged where that saves cost). Costs two evaluations per lateral
+/// group; `trim` is restored. `defect`, if given, receives the worst ratio (infinite when the check
+/// does not apply: constraints, no proposed mirror, or a trim whose lateral states or steer and
+/// roll torques exceed 1e-9 of the difference step).
 bool checkMirrorSymmetry(const VehicleModel& model, TrimResult& trim, const LinearizeOptions& options,
                          ColumnGrouping& grouping, double tolerance = 1e-8, double* defect = nullptr);
 
