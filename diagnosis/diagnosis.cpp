@@ -6,6 +6,7 @@
 #include <mutex>
 
 #include "analysis/parallel.h"
+#include "diagnosis/cross_validation.h"
 #include "diagnosis/fit_problem.h"
 #include "diagnosis/least_squares.h"
 #include "scenario/scenario.h"
@@ -98,6 +99,7 @@ FitSummary summarise(const std::string& name, const FitProblem& problem, const M
   s.name = name;
   s.x = r.x;
   s.chi2 = r.chi2;
+  s.deviance = problem.calcDeviance(r.residual);
   const int n = static_cast<int>(problem.observations.size());
   s.rms = std::sqrt(r.residual.head(n).squaredNorm() / n);
   s.correlation = r.correlation;
@@ -113,30 +115,28 @@ FitSummary summarise(const std::string& name, const FitProblem& problem, const M
 void score(const FitProblem& problem, const Prediction& p, FitSummary& s, int numModel) {
   const int n = static_cast<int>(problem.observations.size());
   s.numParameters = numModel + p.numLinear;
-  s.bic = s.chi2 + s.numParameters * std::log(static_cast<double>(n));
+  s.bic = s.deviance + s.numParameters * std::log(static_cast<double>(n));
 }
 
-// K-fold cross-validation of a model around its full fit x.
+// K-fold cross-validation of a model around its full fit x (diagnosis/cross_validation.h guards the
+// folds whose fit fails or diverges).
 void crossValidate(const FitProblem& problem, const ModelSpec& model, FitSummary& s) {
-  const int K = problem.numFolds;
-  s.foldRms.assign(K, 0.0);
-  double total = 0;
-  int count = 0;
-  for (int f = 0; f < K; ++f) {
+  std::vector<int> foldOf;
+  for (const auto& o : problem.observations) foldOf.push_back(o.fold);
+  const auto fitFold = [&](int f) {
     const Eigen::VectorXd x = model.size() ? fitModel(problem, model, s.x, f, 6).x : s.x;
-    const Eigen::VectorXd r = problem.calcResiduals(problem.predict(model, x));
-    double sum = 0;
-    int m = 0;
-    for (size_t i = 0; i < problem.observations.size(); ++i)
-      if (problem.observations[i].fold == f) sum += r(i) * r(i), ++m;
-    s.foldRms[f] = m ? std::sqrt(sum / m) : 0.0;
-    total += sum;
-    count += m;
-  }
-  s.cvRms = std::sqrt(total / std::max(count, 1));
+    return Eigen::VectorXd(problem.calcResiduals(problem.predict(model, x)));
+  };
+  const FoldScores scores =
+      scoreFolds(problem.numFolds, foldOf, fitFold, problem.calcResiduals(problem.predict(model, s.x)));
+  s.foldRms = scores.rms;
+  s.foldFailed = scores.failed;
+  s.foldFailures.clear();
+  for (int f = 0; f < problem.numFolds; ++f)
+    if (scores.failed[f]) s.foldFailures.push_back("fold " + std::to_string(f + 1) + ": " + scores.reasons[f]);
+  s.cvRms = scores.cvRms;
   s.hasCv = true;
 }
-
 
 ModelSpec makeModel(const std::vector<const Candidate*>& causes, const Candidate* candidate) {
   ModelSpec m;
@@ -188,7 +188,7 @@ void fitStep(const FitProblem& problem, Step& step, const DiagnosisOptions& opt,
         step.fits[i] = FitSummary();
         step.fits[i].name = c.name;
         step.fits[i].x = x0;
-        step.fits[i].chi2 = step.fits[i].bic = step.fits[i].rms = HUGE_VAL;
+        step.fits[i].chi2 = step.fits[i].bic = step.fits[i].rms = step.fits[i].deviance = HUGE_VAL;
         step.fits[i].failed = {std::string("fit failed: ") + e.what()};
       }
       std::lock_guard<std::mutex> lock(progressMutex);
@@ -203,7 +203,7 @@ void estimateNoise(FitProblem& problem, Step& step, const DiagnosisOptions& opt,
     const FitSummary* best = &step.baseline;
     const Candidate* bestCandidate = nullptr;
     for (size_t i = 0; i < step.fits.size(); ++i)
-      if (step.fits[i].chi2 < best->chi2) best = &step.fits[i], bestCandidate = step.pool[i];
+      if (step.fits[i].deviance < best->deviance) best = &step.fits[i], bestCandidate = step.pool[i];
     const ModelSpec model = makeModel(step.causes, bestCandidate);
     const std::vector<double> before = problem.componentSigma;
     problem.updateSigma(problem.calcResiduals(problem.predict(model, best->x)), best->numParameters);
@@ -228,7 +228,7 @@ void judge(const FitProblem& problem, const Step& step, size_t i, FitSummary& fi
   const ModelSpec model = makeModel(step.causes, &c);
   if (!std::isfinite(fit.chi2)) return;
   fit.deltaBic = fit.bic - step.baseline.bic;
-  const double lr = std::max(0.0, step.baseline.chi2 - fit.chi2);
+  const double lr = std::max(0.0, step.baseline.deviance - fit.deviance);
   const int df = static_cast<int>(c.parameters.size());
   const bool bound = df == 1 && c.parameters[0].offAtBound;
   fit.pValue = (bound ? 0.5 : 1.0) * calcChiSquareSurvival(lr, df);
@@ -246,7 +246,8 @@ void judge(const FitProblem& problem, const Step& step, size_t i, FitSummary& fi
   if (fit.failed.empty() || alwaysCv) crossValidate(problem, model, fit);
   if (fit.hasCv) {
     fit.foldsBetter = 0;
-    for (size_t f = 0; f < fit.foldRms.size(); ++f) fit.foldsBetter += fit.foldRms[f] < step.baseline.foldRms[f];
+    for (size_t f = 0; f < fit.foldRms.size(); ++f)  // a failed fold never counts as better
+      fit.foldsBetter += !fit.foldFailed[f] && fit.foldRms[f] < step.baseline.foldRms[f];
     if (fit.foldsBetter < opt.minFoldShare * problem.numFolds - 1e-9) fit.failed.push_back("CV better in < 80 % of folds");
   }
 }

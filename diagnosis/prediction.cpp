@@ -251,25 +251,57 @@ std::vector<LinearModel> Predictor::calcLinearModels(const std::vector<std::stri
   return out;
 }
 
+// Index of mode `mode` in `lin`: the eigenvalue that best continues the base sweep's branch at the
+// nearest sweep speed plus, when given, the mode's eigenvalue `prevIndex` of `prev` (the same model at
+// the previous speed). -1 where the base sweep has no such branch.
+int Predictor::matchMode(const std::string& mode, const LinearModel& lin, const LinearModel* prev, int prevIndex) const {
+  const SweepResult& ref = *reference_;
+  const size_t k = std::min_element(ref.speeds.begin(), ref.speeds.end(), [&](double a, double b) {
+                     return std::abs(a - lin.speed) < std::abs(b - lin.speed);
+                   }) - ref.speeds.begin();
+  const auto branch = std::find_if(ref.branches.begin(), ref.branches.end(),
+                                   [&](const ModeBranch& b) { return b.label == mode && b.index[k] >= 0; });
+  if (branch == ref.branches.end()) return -1;
+  int best = -1;
+  double bestCost = HUGE_VAL;
+  for (int kb = 0; kb < lin.eigenvalues.size(); ++kb) {
+    double c = calcMatchCost(ref.models[k], branch->index[k], lin, kb);
+    if (prev && prevIndex >= 0) c += calcMatchCost(*prev, prevIndex, lin, kb);
+    if (c < bestCost) bestCost = c, best = kb;
+  }
+  return best;
+}
+
+std::vector<Predictor::ModeTrack> Predictor::trackModes(const std::vector<LinearModel>& models) const {
+  std::vector<ModeTrack> out;
+  for (const auto& row : data_.eigenvalues) {
+    if (row.mode.empty() || std::any_of(out.begin(), out.end(), [&](const ModeTrack& t) { return t.mode == row.mode; }))
+      continue;
+    ModeTrack t{row.mode, std::vector<int>(models.size(), -1)};
+    for (size_t k = 0; k < models.size(); ++k)
+      t.index[k] = matchMode(row.mode, models[k], k ? &models[k - 1] : nullptr, k ? t.index[k - 1] : -1);
+    out.push_back(t);
+  }
+  return out;
+}
+
 std::vector<std::complex<double>> Predictor::predictInterpolated(const std::vector<LinearModel>& models,
                                                                  const std::vector<double>& speeds) const {
   std::vector<std::complex<double>> out;
-  std::vector<std::string> modes;
-  std::vector<std::vector<std::complex<double>>> atNodes;  // per mode, per node
+  const std::vector<ModeTrack> tracks = trackModes(models);
+  std::vector<std::vector<std::complex<double>>> atNodes(tracks.size());  // per mode, per node
   for (const auto& row : data_.eigenvalues) {
     std::complex<double> sum = 0;
     const std::vector<double> vs = getEvaluationSpeeds(row);
     for (double v : vs) {
       if (row.mode.empty()) {
-        sum += pickEigenvalue(models[findSpeed(speeds, v)], row);
+        sum += pickEigenvalue(models, findSpeed(speeds, v), row, tracks);
         continue;
       }
-      size_t m = std::find(modes.begin(), modes.end(), row.mode) - modes.begin();
-      if (m == modes.size()) {
-        modes.push_back(row.mode);
-        atNodes.emplace_back();
-        for (double x : nodes_) atNodes.back().push_back(pickEigenvalue(models[findSpeed(speeds, x)], row));
-      }
+      const size_t m = std::find_if(tracks.begin(), tracks.end(), [&](const ModeTrack& t) { return t.mode == row.mode; }) -
+                       tracks.begin();
+      if (atNodes[m].empty())
+        for (double x : nodes_) atNodes[m].push_back(pickEigenvalue(models, findSpeed(speeds, x), row, tracks));
       sum += interpolate(nodes_, atNodes[m], v);
     }
     out.push_back(sum / static_cast<double>(vs.size()));
@@ -277,25 +309,22 @@ std::vector<std::complex<double>> Predictor::predictInterpolated(const std::vect
   return out;
 }
 
-std::complex<double> Predictor::pickEigenvalue(const LinearModel& lin, const MeasuredEigenvalue& row) const {
+std::complex<double> Predictor::pickEigenvalue(const std::vector<LinearModel>& models, size_t k,
+                                               const MeasuredEigenvalue& row, const std::vector<ModeTrack>& tracks) const {
+  const LinearModel& lin = models[k];
   std::complex<double> best;
   if (row.mode.empty()) {
     double dmin = HUGE_VAL;
-    for (int k = 0; k < lin.eigenvalues.size(); ++k) {
-      const std::complex<double> l = lin.eigenvalues(k);
+    for (int i = 0; i < lin.eigenvalues.size(); ++i) {
+      const std::complex<double> l = lin.eigenvalues(i);
       const double d = std::abs(std::complex<double>(l.real(), std::abs(l.imag())) - std::complex<double>(row.real, row.imag));
       if (d < dmin) dmin = d, best = l;
     }
   } else {
-    const SweepResult& ref = *reference_;
-    const size_t k = std::min_element(ref.speeds.begin(), ref.speeds.end(), [&](double a, double b) {
-                       return std::abs(a - lin.speed) < std::abs(b - lin.speed);
-                     }) - ref.speeds.begin();
-    const auto branch = std::find_if(ref.branches.begin(), ref.branches.end(),
-                                     [&](const ModeBranch& b) { return b.label == row.mode && b.index[k] >= 0; });
-    if (branch == ref.branches.end())
+    const auto t = std::find_if(tracks.begin(), tracks.end(), [&](const ModeTrack& m) { return m.mode == row.mode; });
+    if (t->index[k] < 0)
       throw InputError(row.where, "the scenario has no " + row.mode + " mode near " + std::to_string(lin.speed) + " m/s");
-    best = lin.eigenvalues(findBestMatch(ref.models[k], branch->index[k], lin));
+    best = lin.eigenvalues(t->index[k]);
   }
   return {best.real(), std::abs(best.imag())};
 }
@@ -307,11 +336,12 @@ Prediction Predictor::predict(const std::vector<std::string>& overrides,
   const std::vector<LinearModel> models = calcLinearModels(overrides, speeds);
   Prediction p;
   if (fast) p.eigenvalues = predictInterpolated(models, speeds);
+  const std::vector<ModeTrack> tracks = fast ? std::vector<ModeTrack>() : trackModes(models);
   for (const auto& row : data_.eigenvalues) {
     if (fast) break;
     const std::vector<double> nodes = getEvaluationSpeeds(row);
     std::complex<double> sum = 0;
-    for (double v : nodes) sum += pickEigenvalue(models[findSpeed(speeds, v)], row);
+    for (double v : nodes) sum += pickEigenvalue(models, findSpeed(speeds, v), row, tracks);
     p.eigenvalues.push_back(sum / static_cast<double>(nodes.size()));
   }
   for (size_t r = 0; r < data_.responses.size(); ++r) {

@@ -3,9 +3,11 @@
 // measured speeds and output-error fits of the linear free responses.
 //
 // Eigenvalues: the scenario is trimmed and linearised (the sweep's options: analysis/sweep.h) at each
-// needed speed, in increasing order with warm starts. A row's mode is found by continuity from the
-// base scenario's labelled sweep (findBestMatch against the base model at the nearest sweep speed);
-// a row without a label takes the eigenvalue (imag >= 0) nearest the measured one. A row with a
+// needed speed, in increasing order with warm starts. A row's mode is matched at each speed by the
+// sum of two match costs (analysis/modes.h calcMatchCost): against the base scenario's labelled branch
+// at the nearest sweep speed, and against the mode's eigenvalue at the previous speed of the model
+// being predicted (the candidate), so that the match follows the candidate's own modes by continuity
+// where a large change (a strong steer damper) moves them away from the base's; a row without a label takes the eigenvalue (imag >= 0) nearest the measured one. A row with a
 // speed range [a, b] (the speed fell during the fit window) is predicted by the mean of the model's
 // eigenvalue over the range, by two-point Gauss-Legendre quadrature at m -/+ h/sqrt(3) (m, h: the
 // range's middle and half width; exact for a cubic in speed).
@@ -74,7 +76,14 @@ class Predictor {
  private:
   std::vector<std::complex<double>> predictInterpolated(const std::vector<LinearModel>& models,
                                                         const std::vector<double>& speeds) const;
-  std::complex<double> pickEigenvalue(const LinearModel& lin, const MeasuredEigenvalue& row) const;
+  struct ModeTrack {
+    std::string mode;
+    std::vector<int> index;  ///< per model (-1: no such mode in the base sweep there)
+  };
+  int matchMode(const std::string& mode, const LinearModel& lin, const LinearModel* prev, int prevIndex) const;
+  std::vector<ModeTrack> trackModes(const std::vector<LinearModel>& models) const;
+  std::complex<double> pickEigenvalue(const std::vector<LinearModel>& models, size_t k, const MeasuredEigenvalue& row,
+                                      const std::vector<ModeTrack>& tracks) const;
 
   std::string scenarioFile_;
   std::vector<std::string> baseOverrides_;

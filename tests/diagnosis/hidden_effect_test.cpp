@@ -76,10 +76,13 @@ void expectFound(const DiagnosisResult& r, const std::string& name, const std::s
 std::string damper(double c) { return "steer_damper={damping_Nms_per_rad: " + formatNumber(c) + "}"; }
 
 TEST(HiddenEffect, SteerDamperFromEigenvalues) {
-  // Bicycle-sized dampers: above about 0.6 N m s/rad the damped weave's eigenvector is far from the
-  // undamped base sweep's and mode matching by continuity becomes unreliable (see docs/diagnosis.md).
-  const double c = testing::Draw(707).uniform(0.15, 0.45);
-  auto h = makeEffect(kBenchmark, 101, {damper(c)}, {"weave"});
+  // Weave and capsize rows (every mode the sweep labels between 3 and 8 m/s but the castor, whose
+  // large real part carries little information). Bicycle-sized dampers; seed 101 draws noise about 1.3
+  // times its nominal level on the weave rows, the case where a noise estimate fitted to the richer
+  // model's residuals named a spurious second cause (wheelbase) and pulled the damping 20-28 % low.
+  testing::Draw draw(707);
+  const double c = draw.uniform(0.15, 0.45);
+  auto h = makeEffect(kBenchmark, 101, {damper(c)}, {"weave", "capsize"});
   h.start = 3;  // where the damped weave is still oscillatory
   const DiagnosisResult r = runHidden(h, "damper", true, {}, "steer_damper,tyre_slip,parameter:geometry.*,parameter:front_frame.inertia_kgm2.zz", 3);
   expectFound(r, "steer_damper", "damping_Nms_per_rad", c);
