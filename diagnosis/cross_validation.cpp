@@ -2,7 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <atomic>
 #include <exception>
+
+#include "analysis/parallel.h"
 
 namespace motostab {
 namespace {
@@ -19,7 +22,19 @@ double sumFold(const Eigen::VectorXd& r, const std::vector<int>& foldOf, int f, 
 }  // namespace
 
 FoldScores scoreFolds(int numFolds, const std::vector<int>& foldOf, const std::function<Eigen::VectorXd(int)>& fitFold,
-                      const Eigen::VectorXd& fullFit, double divergence) {
+                      const Eigen::VectorXd& fullFit, double divergence, int threads) {
+  std::vector<Eigen::VectorXd> fitted(numFolds);
+  std::vector<std::string> errors(numFolds);
+  std::atomic<int> next{0};
+  runWorkers(static_cast<size_t>(std::clamp(threads, 1, std::max(numFolds, 1))), [&](size_t) {
+    for (int f; (f = next++) < numFolds;) {
+      try {
+        fitted[f] = fitFold(f);
+      } catch (const std::exception& e) {
+        errors[f] = std::string("fit failed: ") + e.what();
+      }
+    }
+  });
   FoldScores s;
   s.rms.assign(numFolds, 0.0);
   s.failed.assign(numFolds, false);
@@ -31,14 +46,12 @@ FoldScores scoreFolds(int numFolds, const std::vector<int>& foldOf, const std::f
     const double fallback = sumFold(fullFit, foldOf, f, m);
     const double fallbackRms = m ? std::sqrt(fallback / m) : 0.0;
     double sum = fallback;
-    try {
-      const Eigen::VectorXd r = fitFold(f);
-      sum = sumFold(r, foldOf, f, m);
+    s.reasons[f] = errors[f];
+    if (errors[f].empty()) {
+      sum = sumFold(fitted[f], foldOf, f, m);
       if (!std::isfinite(sum)) s.reasons[f] = "non-finite prediction";
       else if (m && std::sqrt(sum / m) > divergence * std::max(1.0, fallbackRms))
         s.reasons[f] = "diverged (held-out RMS " + std::to_string(std::sqrt(sum / m)) + ")";
-    } catch (const std::exception& e) {
-      s.reasons[f] = std::string("fit failed: ") + e.what();
     }
     if (!s.reasons[f].empty()) s.failed[f] = true, ++s.numFailed, sum = fallback;
     s.rms[f] = m ? std::sqrt(sum / m) : 0.0;

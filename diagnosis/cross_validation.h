@@ -23,8 +23,8 @@ struct FoldScores {
 /// max(1, the full fit's RMS on that fold) (a fit run off to a degenerate model: an RMS of order 1 is
 /// what noise gives). A failed fold keeps the full fit's residuals in the CV RMS (finite, and
 /// optimistic for that fold only) and is marked, so that the caller counts the candidate as not
-/// better there.
+/// better there. The folds are fitted on up to `threads` threads (fitFold must be thread-safe then).
 FoldScores scoreFolds(int numFolds, const std::vector<int>& foldOf, const std::function<Eigen::VectorXd(int)>& fitFold,
-                      const Eigen::VectorXd& fullFit, double divergence = 100);
+                      const Eigen::VectorXd& fullFit, double divergence = 100, int threads = 1);
 
 }  // namespace motostab

@@ -4,6 +4,7 @@
 #include <atomic>
 #include <cmath>
 #include <mutex>
+#include <stdexcept>
 
 #include "analysis/parallel.h"
 #include "diagnosis/cross_validation.h"
@@ -17,6 +18,9 @@ namespace {
 
 constexpr double kZ95 = 1.959963984540054;   // two-sided 95 % normal quantile
 constexpr double kChi95 = 3.841458820694124;  // chi-square(1) 95 % quantile
+// Fold refits (started from the full fit) stop when chi2 falls by less than this fraction: the fold's
+// held-out RMS then changes by well under 1e-4 of itself.
+constexpr double kFoldTolerance = 1e-6;
 
 // A fold of -1 fits every observation; else the observations outside fold `fold`.
 struct FitContext {
@@ -59,7 +63,7 @@ LeastSquaresProblem makeLeastSquares(const FitContext& c) {
 // Fits `model` from x0 (on every observation when fold < 0); a model without parameters is evaluated.
 // fixIndex >= 0 holds that parameter at its x0 value (profile likelihood).
 LeastSquaresResult fitModel(const FitProblem& problem, const ModelSpec& model, const Eigen::VectorXd& x0, int fold,
-                            int maxIterations = 30, int fixIndex = -1) {
+                            int maxIterations = 30, int fixIndex = -1, bool statistics = true) {
   const FitContext c{problem, model, fold};
   LeastSquaresProblem p = makeLeastSquares(c);
   if (fixIndex >= 0) p.lower(fixIndex) = p.upper(fixIndex) = x0(fixIndex);
@@ -73,6 +77,8 @@ LeastSquaresResult fitModel(const FitProblem& problem, const ModelSpec& model, c
   }
   LeastSquaresOptions opt;
   opt.maxIterations = maxIterations;
+  opt.statistics = statistics;
+  if (!statistics) opt.relativeTolerance = kFoldTolerance;
   return solveBoundedLeastSquares(p, x0, opt);
 }
 
@@ -120,15 +126,16 @@ void score(const FitProblem& problem, const Prediction& p, FitSummary& s, int nu
 
 // K-fold cross-validation of a model around its full fit x (diagnosis/cross_validation.h guards the
 // folds whose fit fails or diverges).
-void crossValidate(const FitProblem& problem, const ModelSpec& model, FitSummary& s) {
+
+void crossValidate(const FitProblem& problem, const ModelSpec& model, FitSummary& s, int threads = 1) {
   std::vector<int> foldOf;
   for (const auto& o : problem.observations) foldOf.push_back(o.fold);
   const auto fitFold = [&](int f) {
-    const Eigen::VectorXd x = model.size() ? fitModel(problem, model, s.x, f, 6).x : s.x;
+    const Eigen::VectorXd x = model.size() ? fitModel(problem, model, s.x, f, 6, -1, false).x : s.x;
     return Eigen::VectorXd(problem.calcResiduals(problem.predict(model, x)));
   };
   const FoldScores scores =
-      scoreFolds(problem.numFolds, foldOf, fitFold, problem.calcResiduals(problem.predict(model, s.x)));
+      scoreFolds(problem.numFolds, foldOf, fitFold, problem.calcResiduals(problem.predict(model, s.x)), 100, threads);
   s.foldRms = scores.rms;
   s.foldFailed = scores.failed;
   s.foldFailures.clear();
@@ -170,30 +177,34 @@ Eigen::VectorXd joinStart(const Eigen::VectorXd& xCauses, const Candidate& c) {
   return x;
 }
 
+// Calls fn(i) for i < n on up to `threads` workers, each taking the next index (dynamic balance).
+void forEachParallel(size_t n, int threads, const std::function<void(size_t)>& fn) {
+  std::atomic<size_t> next{0};
+  runWorkers(std::max<size_t>(1, std::min<size_t>(std::max(threads, 1), n)), [&](size_t) {
+    for (size_t i; (i = next++) < n;) fn(i);
+  });
+}
+
 void fitStep(const FitProblem& problem, Step& step, const DiagnosisOptions& opt, const std::string& stage) {
   const bool warm = !step.fits.empty();
   step.baseline = fitFull(problem, makeModel(step.causes, nullptr), warm ? step.baseline.x : step.xCauses, "baseline");
   step.fits.resize(step.pool.size());
-  std::atomic<size_t> next{0};
   std::atomic<int> done{0};
   std::mutex progressMutex;
-  const size_t workers = std::max<size_t>(1, std::min<size_t>(opt.threads, step.pool.size()));
-  runWorkers(workers, [&](size_t) {
-    for (size_t i; (i = next++) < step.pool.size();) {
-      const Candidate& c = *step.pool[i];
-      const Eigen::VectorXd x0 = warm ? step.fits[i].x : joinStart(step.baseline.x, c);
-      try {
-        step.fits[i] = fitFull(problem, makeModel(step.causes, &c), x0, c.name);
-      } catch (const std::exception& e) {  // its start is no valid vehicle, or a trim failed
-        step.fits[i] = FitSummary();
-        step.fits[i].name = c.name;
-        step.fits[i].x = x0;
-        step.fits[i].chi2 = step.fits[i].bic = step.fits[i].rms = step.fits[i].deviance = HUGE_VAL;
-        step.fits[i].failed = {std::string("fit failed: ") + e.what()};
-      }
-      std::lock_guard<std::mutex> lock(progressMutex);
-      if (opt.progress) opt.progress(stage, ++done, static_cast<int>(step.pool.size()));
+  forEachParallel(step.pool.size(), opt.threads, [&](size_t i) {
+    const Candidate& c = *step.pool[i];
+    const Eigen::VectorXd x0 = warm ? step.fits[i].x : joinStart(step.baseline.x, c);
+    try {
+      step.fits[i] = fitFull(problem, makeModel(step.causes, &c), x0, c.name);
+    } catch (const std::exception& e) {  // its start is no valid vehicle, or a trim failed
+      step.fits[i] = FitSummary();
+      step.fits[i].name = c.name;
+      step.fits[i].x = x0;
+      step.fits[i].chi2 = step.fits[i].bic = step.fits[i].rms = step.fits[i].deviance = HUGE_VAL;
+      step.fits[i].failed = {std::string("fit failed: ") + e.what()};
     }
+    std::lock_guard<std::mutex> lock(progressMutex);
+    if (opt.progress) opt.progress(stage, ++done, static_cast<int>(step.pool.size()));
   });
 }
 
@@ -389,8 +400,8 @@ void runSearch(FitProblem& problem, Step& step, const DiagnosisOptions& opt, Dia
     step.fits.clear();
     fitStep(problem, step, opt, stage);
     estimateNoise(problem, step, opt, stage);
-    crossValidate(problem, makeModel(step.causes, nullptr), step.baseline);
-    for (size_t i = 0; i < step.fits.size(); ++i) judge(problem, step, i, step.fits[i], opt, s == 0);
+    crossValidate(problem, makeModel(step.causes, nullptr), step.baseline, opt.threads);
+    forEachParallel(step.fits.size(), opt.threads, [&](size_t i) { judge(problem, step, i, step.fits[i], opt, s == 0); });
     if (s == 0) {
       result.candidates = step.fits;
       std::sort(result.candidates.begin(), result.candidates.end(), [](auto& a, auto& b) { return a.bic < b.bic; });
@@ -412,12 +423,12 @@ void runSearch(FitProblem& problem, Step& step, const DiagnosisOptions& opt, Dia
   }
 }
 
-void finish(FitProblem& problem, const Step& step, DiagnosisResult& result) {
+void finish(FitProblem& problem, const Step& step, DiagnosisResult& result, int threads) {
   const ModelSpec none, extended = makeModel(step.causes, nullptr);
   result.baseline = fitFull(problem, none, Eigen::VectorXd(), "baseline");
   crossValidate(problem, none, result.baseline);
   result.extended = fitFull(problem, extended, step.xCauses, "extended");
-  crossValidate(problem, extended, result.extended);
+  crossValidate(problem, extended, result.extended, threads);
   calcProfiles(problem, extended, result.extended);
   for (size_t c = 0, i = 0; c < result.causes.size(); ++c)
     for (auto& e : result.causes[c].fit.parameters) e = result.extended.allParameters[i++];
@@ -458,16 +469,23 @@ DiagnosisResult runDiagnosis(const std::string& scenarioFile, const MeasuredData
   if (opt.progress) opt.progress("reference sweep", 0, 1);
   const Predictor predictor(scenarioFile, opt.overrides, data);
   FitProblem problem(predictor, data, opt.folds);
-  const std::vector<Candidate> all =
-      filterCandidates(listCandidates(makeScenarioTree(scenarioFile, opt.overrides), getUncertainty(scenarioFile, opt)),
-                       opt.candidates);
+  const std::vector<Candidate> listed = listCandidates(makeScenarioTree(scenarioFile, opt.overrides),
+                                                      getUncertainty(scenarioFile, opt), &result.unavailable);
+  std::vector<Candidate> all;
+  try {
+    all = filterCandidates(listed, opt.candidates);
+  } catch (const std::invalid_argument& e) {  // say why a known candidate is missing
+    std::string why = e.what();
+    for (const auto& u : result.unavailable) why += "; " + u;
+    throw std::invalid_argument(why);
+  }
   result.extendedOverrides = opt.overrides;
   Step step;
   step.pool = probeCandidates(scenarioFile, opt, all, result.unavailable);
   const Prediction base = problem.predict(ModelSpec(), Eigen::VectorXd());
   problem.updateSigma(problem.calcResiduals(base), base.numLinear);  // provisional
   runSearch(problem, step, opt, result);
-  finish(problem, step, result);
+  finish(problem, step, result, opt.threads);
   return result;
 }
 

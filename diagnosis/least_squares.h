@@ -19,6 +19,9 @@ struct LeastSquaresProblem {
 struct LeastSquaresOptions {
   int maxIterations = 30;
   double relativeTolerance = 1e-8;  ///< stop when chi2 falls by less than this fraction
+  /// Compute the covariance at the solution (one more Jacobian); without it the result's
+  /// covariance, stderr_ and correlation are empty (cross-validation folds need only x).
+  bool statistics = true;
 };
 
 struct LeastSquaresResult {

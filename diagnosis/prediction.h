@@ -14,8 +14,9 @@
 //
 // Fast predictions (predict with exact = false, used inside fits): labelled rows are interpolated
 // from the model's eigenvalues at Chebyshev points of the second kind spanning the labelled rows'
-// speeds (barycentric formula, Berrut & Trefethen 2004, SIAM Review 46:501; one point per 0.25 m/s,
-// 6 to 16 points), when that needs fewer linearisations than the rows' own speeds. Reported
+// speeds (barycentric formula, Berrut & Trefethen 2004, SIAM Review 46:501), when that needs fewer
+// linearisations than the rows' own speeds: the fewest points (5 to 16) that reproduce the base
+// scenario's labelled modes at its reference sweep's speeds to 3e-4 (1 + |lambda|) 1/s. Reported
 // predictions are exact (exact = true), so a sweep of the extended scenario reproduces them.
 //
 // Responses: x' = A x at the run's speed, y_j(t) = g_j c_j x(t) + o_j, x(t) = exp(A (t - t0)) x0
@@ -80,6 +81,7 @@ class Predictor {
     std::string mode;
     std::vector<int> index;  ///< per model (-1: no such mode in the base sweep there)
   };
+  std::vector<double> chooseNodes(double lo, double hi, int labelled) const;
   int matchMode(const std::string& mode, const LinearModel& lin, const LinearModel* prev, int prevIndex) const;
   std::vector<ModeTrack> trackModes(const std::vector<LinearModel>& models) const;
   std::complex<double> pickEigenvalue(const std::vector<LinearModel>& models, size_t k, const MeasuredEigenvalue& row,
