@@ -121,7 +121,7 @@ LeastSquaresResult solveBoundedLeastSquares(const LeastSquaresProblem& p, const 
     }
   }
   if (res.stop == "step too small") res.stop = "converged";  // no descent left from the solution
-  if (options.statistics) calcStatistics(p, J, res);
+  if (options.statistics) calcStatistics(p, J, res), res.jacobian = J;
   else res.atBound = Eigen::VectorXi::Zero(res.x.size());
   return res;
 }
