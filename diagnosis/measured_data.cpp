@@ -34,7 +34,8 @@ std::vector<YamlMap> getMapList(YamlMap& m, const std::string& key) {
 
 fs::path resolve(const YamlMap& m, const std::string& key, const std::string& name) {
   const fs::path p = fs::path(m.getFile()).parent_path() / name;
-  if (!fs::is_regular_file(p)) m.fail(key, "no such file: " + p.string());
+  std::error_code ec;  // a name the file system rejects (too long, ...) is a missing file too
+  if (!fs::is_regular_file(p, ec)) m.fail(key, "no such file: " + p.string() + (ec ? " (" + ec.message() + ")" : ""));
   return p;
 }
 

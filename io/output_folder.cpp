@@ -54,12 +54,17 @@ void cleanUpAfterKilledRuns(const fs::path& target) {
 OutputFolder::OutputFolder(fs::path target) : target_(std::move(target)) {
   if (target_.empty()) throw InputError({"command line", 0, 0, "--out"}, "the output folder name is empty");
   if (!target_.has_filename()) target_ = target_.parent_path();  // "out/" -> "out"
-  if (fs::exists(target_) && !fs::is_directory(target_))
+  std::error_code ec;
+  const fs::file_status status = fs::status(target_, ec);
+  if (ec && status.type() != fs::file_type::not_found)
+    throw InputError({"command line", 0, 0, "--out"}, "'" + target_.string() + "': " + ec.message());
+  if (fs::exists(status) && !fs::is_directory(status))
     throw InputError({"command line", 0, 0, "--out"}, "'" + target_.string() + "' exists and is not a folder");
-  if (!target_.parent_path().empty()) fs::create_directories(target_.parent_path());
+  if (!target_.parent_path().empty() && (fs::create_directories(target_.parent_path(), ec), ec))
+    throw InputError({"command line", 0, 0, "--out"},
+                     "cannot create '" + target_.parent_path().string() + "': " + ec.message());
   cleanUpAfterKilledRuns(target_);
   temporary_ = makeSibling(target_, "partial", getpid());
-  std::error_code ec;
   fs::remove_all(temporary_, ec);
   if (!fs::create_directory(temporary_, ec) || ec)
     throw std::runtime_error("cannot create the output folder " + temporary_.string() + ": " + ec.message());

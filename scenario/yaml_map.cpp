@@ -317,7 +317,9 @@ void applyOverride(YAML::Node& root, const std::string& assignment) {
       chain.push_back(next);
       next = chain.back()[static_cast<size_t>(seg.index)];
     } else if (!next) {
-      throw InputError({"--set", 0, 0, path}, "'" + seg.key + "' is not a mapping in the scenario");
+      // A missing intermediate section is created; the scenario reader then validates its keys.
+      chain.back()[seg.key] = YAML::Node(YAML::NodeType::Map);
+      next = chain.back()[seg.key];
     }
     chain.push_back(next);
   }

@@ -98,10 +98,11 @@ std::vector<KeyPathSegment> parseKeyPath(const std::string& path);
 YAML::Node findKeyPath(const YAML::Node& root, const std::string& path);
 
 /// Applies "a.b.c=value" overrides (from --set) to a YAML tree; the value is parsed as YAML, and the
-/// last key may be new (so a whole section can be added: `steer_damper={damping_Nms_per_rad: 0.4}`).
-/// Sequence elements are addressed as `key[i]` (`rear_frame.com_m[2]=0.9`). A path through a
-/// missing key or a non-map, an index out of range, or a value that is not YAML is an InputError
-/// naming the override.
+/// last key may be new (so a whole section can be added: `steer_damper={damping_Nms_per_rad: 0.4}`),
+/// and missing intermediate maps are created (`swingarm.suspension.wheel_rate_N_per_m=2e4`); the
+/// scenario reader validates what was created. Sequence elements are addressed as `key[i]`
+/// (`rear_frame.com_m[2]=0.9`). A path through a non-map, an index out of range, or a value that
+/// is not YAML is an InputError naming the override.
 void applyOverride(YAML::Node& root, const std::string& assignment);
 
 }  // namespace motostab

@@ -149,12 +149,12 @@ LinearTyreParameters getRelaxationLinearPreset(const std::string& name) {
   if (name != "bicycle") throw std::invalid_argument("unknown relaxation_linear preset '" + name + "'");
   // docs/scenario-format.md, "Bicycle tyre preset", gives each value's source.
   LinearTyreParameters p;
-  p.corneringStiffness = 15.0;      // Dressel & Rahman (2012); Dressel (2013): 0.2-0.3 /deg normalised
-  p.camberStiffness = 0.9;          // Dressel & Rahman (2012): about 0.015 /deg normalised
-  p.selfAligningStiffness = -0.15;  // pneumatic trail about 10 mm times k_alpha (Dressel 2013)
-  p.twistingStiffness = 0.012;      // Dressel (2013) twisting torque coefficient, about 2e-4 m/deg
-  p.relaxationLength = 0.1;         // Dressel (2013) / VTI (2020) range 0.1-0.3 m, lower end
-  p.radialStiffness = 1.0e5;        // 4 mm deflection under 400 N, Dressel (2013) vertical stiffness
+  p.corneringStiffness = 15.0;      // Dressel (2013): 0.15-0.35 /deg normalised, mean about 0.25 /deg
+  p.camberStiffness = 0.9;          // Dell'Orto et al. (2024): 0.63-0.94 /rad; Dressel (2013) 0.43-0.86 /rad
+  p.selfAligningStiffness = -0.24;  // pneumatic trail about 16 mm times k_alpha (Dell'Orto et al. 2024)
+  p.twistingStiffness = 0.012;      // estimate, no published bicycle value found (see docs)
+  p.relaxationLength = 0.1;         // Hjort & Niska (2018): earlier study about 0.1 m, their estimate 0.2-0.3 m
+  p.radialStiffness = 1.0e5;        // Rothhaemel (2023): 31-147 N/mm, set by the inflation pressure
   p.radialDamping = 100;            // estimate (the linear modes barely depend on it)
   p.longitudinalStiffness = 20;     // estimate, motorcycle order (Cossalter 2006 ch. 2)
   return p;

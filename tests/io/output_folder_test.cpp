@@ -84,6 +84,23 @@ TEST(OutputFolder, TargetThatIsAFileIsAnInputError) {
   EXPECT_THROW(OutputFolder out(dir / "out"), InputError);
 }
 
+// Names the file system rejects (a 300-character component; a parent that is a file) are input
+// errors naming --out, not file-system exceptions (found by fuzz_measured_data for data files).
+TEST(OutputFolder, NamesTheFileSystemRejectsAreInputErrors) {
+  const fs::path dir = freshDir("rejected");
+  for (const fs::path& bad : {dir / std::string(300, 'x'), dir / std::string(300, 'y') / "out"}) {
+    try {
+      OutputFolder out(bad);
+      ADD_FAILURE() << "no error for " << bad;
+    } catch (const InputError& e) {
+      EXPECT_EQ(e.getLocation().key, "--out") << e.what();
+    }
+  }
+  std::ofstream(dir / "file") << "x";
+  EXPECT_THROW(OutputFolder out(dir / "file" / "out"), InputError);
+  EXPECT_EQ(listNames(dir), std::set<std::string>{"file"});
+}
+
 TEST(OutputFolder, LeftoversOfKilledRunsAreCleanedUp) {
   const fs::path dir = freshDir("stale");
   const fs::path target = dir / "out";

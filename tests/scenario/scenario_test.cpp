@@ -3,9 +3,12 @@
 
 #include <filesystem>
 #include <fstream>
+#include <functional>
+#include <random>
 #include <regex>
 #include <sstream>
 
+#include "scenario/parameter_paths.h"
 #include "scenario/scenario.h"
 #include "vehicle/vehicle_model.h"
 
@@ -161,6 +164,42 @@ TEST(Scenario, SuspensionWheelRateConversion) {
   const Scenario pivot = loadScenario(kEnduro, {"swingarm.suspension={stiffness_Nm_per_rad: 6000, damping_Nms_per_rad: 400}"});
   EXPECT_DOUBLE_EQ(pivot.swingarm.suspension.stiffness, 6000);
   EXPECT_DOUBLE_EQ(pivot.swingarm.suspension.damping, 400);
+}
+
+std::string catchMessage(const std::function<void()>& f) {
+  try {
+    f();
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+// Key by key, --set creates the missing `suspension` map; the result equals the whole-section form
+// (values drawn in the test). A created section still meets the strict reader.
+TEST(Scenario, SetCreatesAMissingSectionKeyByKey) {
+  std::mt19937_64 rng(20261124);
+  const double rate = 1e4 + 3e4 * (rng() >> 11) * 0x1.0p-53, damping = 500 + 2000 * (rng() >> 11) * 0x1.0p-53;
+  const Scenario keys = loadScenario(kEnduro, {formatOverride("swingarm.suspension.wheel_rate_N_per_m", rate),
+                                               formatOverride("swingarm.suspension.damping_Ns_per_m", damping)});
+  const std::string r = formatOverride("r", rate).substr(2), c = formatOverride("c", damping).substr(2);
+  const Scenario whole =
+      loadScenario(kEnduro, {"swingarm.suspension={wheel_rate_N_per_m: " + r + ", damping_Ns_per_m: " + c + "}"});
+  ASSERT_TRUE(keys.swingarm.hasSuspension);
+  EXPECT_EQ(keys.swingarm.suspension.stiffness, whole.swingarm.suspension.stiffness);
+  EXPECT_EQ(keys.swingarm.suspension.damping, whole.swingarm.suspension.damping);
+  EXPECT_NEAR(keys.swingarm.suspension.stiffness, rate * 0.5502 * 0.5502, 1e-9 * rate);
+  // Only one of the two required keys: the reader names the missing one.
+  const std::string missing = catchMessage([] { loadScenario(kEnduro, {"swingarm.suspension.damping_Ns_per_m=1500"}); });
+  EXPECT_NE(missing.find("wheel_rate_N_per_m"), std::string::npos) << missing;
+  // A created section that the scenario does not know is an unknown key, named.
+  const std::string unknown = catchMessage([] { loadScenario(kEnduro, {"no_such_section.x_m=1"}); });
+  EXPECT_NE(unknown.find("no_such_section"), std::string::npos) << unknown;
+  const std::string deep = catchMessage([] {
+    loadScenario(kEnduro, {"swingarm.suspension.wheel_rate_N_per_m=2e4", "swingarm.suspension.damping_Ns_per_m=1e3",
+                           "swingarm.suspension.spring.rate=1"});
+  });
+  EXPECT_NE(deep.find("spring"), std::string::npos) << deep;
 }
 
 // Derived quantities against hand calculation from Meijaard et al. (2007) Table 1.
