@@ -76,13 +76,13 @@ void expectFound(const DiagnosisResult& r, const std::string& name, const std::s
 std::string damper(double c) { return "steer_damper={damping_Nms_per_rad: " + formatNumber(c) + "}"; }
 
 TEST(HiddenEffect, SteerDamperFromEigenvalues) {
-  // Weave and capsize rows (every mode the sweep labels between 3 and 8 m/s but the castor, whose
-  // large real part carries little information). Bicycle-sized dampers; seed 101 draws noise about 1.3
-  // times its nominal level on the weave rows, the case where a noise estimate fitted to the richer
-  // model's residuals named a spurious second cause (wheelbase) and pulled the damping 20-28 % low.
+  // Rows of every mode the sweep labels between 3 and 8 m/s (weave, capsize, castor). Bicycle-sized
+  // dampers; seed 101 draws noise about 1.3 times its nominal level on the weave rows, the case where
+  // a noise estimate fitted to the richer model's residuals named a spurious second cause (wheelbase)
+  // and pulled the damping 20-28 % low.
   testing::Draw draw(707);
   const double c = draw.uniform(0.15, 0.45);
-  auto h = makeEffect(kBenchmark, 101, {damper(c)}, {"weave", "capsize"});
+  auto h = makeEffect(kBenchmark, 101, {damper(c)}, {"weave", "capsize", "castor"});
   h.start = 3;  // where the damped weave is still oscillatory
   const DiagnosisResult r = runHidden(h, "damper", true, {}, "steer_damper,tyre_slip,parameter:geometry.*,parameter:front_frame.inertia_kgm2.zz", 3);
   expectFound(r, "steer_damper", "damping_Nms_per_rad", c);
