@@ -13,6 +13,14 @@ int LinearModel::findState(const std::string& name) const {
   return -1;
 }
 
+Eigen::RowVectorXd LinearModel::getRateRow(const std::string& name) const {
+  const int k = findState(name);
+  if (k >= 0) return A.row(k);
+  for (const auto& r : removedRows)
+    if (r.first == name) return r.second;
+  return {};
+}
+
 std::vector<int> chooseDependentColumns(const Eigen::MatrixXd& G, const std::vector<int>& priority) {
   std::vector<int> dep;
   const int m = static_cast<int>(G.rows());
@@ -412,6 +420,11 @@ void removeStates(const LinearizeContext& c, const std::vector<int>& remove, con
     Eigen::VectorXd kept(keep.size());
     for (size_t a = 0; a < keep.size(); ++a) kept[a] = A(keep[a], j);
     lin.removedColumns.push_back({lin.states[j].name, kept});
+  }
+  for (int j : remove) {
+    Eigen::RowVectorXd row(keep.size());
+    for (size_t a = 0; a < keep.size(); ++a) row[a] = A(j, keep[a]);
+    lin.removedRows.push_back({lin.states[j].name, row});
   }
   lin.A.resize(keep.size(), keep.size());
   lin.B.resize(keep.size(), B.cols());

@@ -57,10 +57,16 @@ struct LinearModel {
   Eigen::MatrixXd A, B;
   /// Columns of the removed cyclic coordinates over the kept rows (zero for a correct model).
   std::vector<std::pair<std::string, Eigen::VectorXd>> removedColumns;
+  /// Rows of the removed coordinates over the kept states: d(coordinate)/dt = row x (e.g. the yaw
+  /// rate of a model on rolling constraints, whose yaw rate is a dependent speed, not a state).
+  std::vector<std::pair<std::string, Eigen::RowVectorXd>> removedRows;
   Eigen::VectorXcd eigenvalues;   ///< 1/s
   Eigen::MatrixXcd eigenvectors;  ///< column k belongs to eigenvalue k, unit 2-norm
 
   int findState(const std::string& name) const;
+  /// The row c with d(name)/dt = c x: a kept state's row of A, or a removed coordinate's row;
+  /// empty if `name` is neither.
+  Eigen::RowVectorXd getRateRow(const std::string& name) const;
 };
 
 /// Greedy choice of dependent columns of G in `priority` order, keeping them linearly independent

@@ -66,6 +66,40 @@ void addTyreSlipCandidate(const YAML::Node& tree, std::vector<Candidate>& out) {
                  {k}});
 }
 
+// Rider lean (issue 10): the rider's upper body, a 75 kg rider's head-arms-trunk (Winter 2009,
+// Table 4.1: 0.678 of the body mass; the rider mass is an estimate), taken out of the rear frame as a
+// proportional slice (CoM at the rear frame's, inertia scaled by the mass share: the rest stays a valid
+// body), hinged 0.25 m below that CoM (docs/rider-lean-parameters.py: 0.24 m for rider Jason). Free:
+// the lean stiffness (log scale, off at infinity: a rigid rider), from 4 times the upper body's gravity
+// stiffness m g d, bounded below by 1.1 m g d (the rider alone upright-stable); damping fixed at 0.3
+// of critical at the start. A rear frame lighter than the rider holds none (a riderless vehicle).
+void addRiderLeanCandidate(const YAML::Node& tree, std::vector<Candidate>& out, std::vector<std::string>& unavailable) {
+  if (tree["rider_lean"]) return;
+  const YAML::Node rf = tree["rear_frame"];
+  const double mB = getScalar(tree, "rear_frame", "mass_kg", 0);
+  if (!(mB > kRiderMass_kg)) {
+    unavailable.push_back("rider_lean: the rear frame (" + formatNumber(mB) + " kg) is lighter than a " +
+                          formatNumber(kRiderMass_kg) + " kg rider: a riderless vehicle has no upper body to lean");
+    return;
+  }
+  const YAML::Node com = rf["com_m"], inertia = rf["inertia_kgm2"];
+  if (!com || !com.IsSequence() || com.size() != 3 || !inertia || !inertia.IsMap()) return;  // the loader reports it
+  const double mU = 0.678 * kRiderMass_kg, share = mU / mB, d = 0.25, g = 9.81;
+  const double zU = com[2].as<double>(), ixx = share * inertia["xx"].as<double>();
+  std::string body = "hinge_height_m: " + formatNumber(zU - d) + ", mass_kg: " + formatNumber(mU) + ", com_m: [" +
+                     formatNumber(com[0].as<double>()) + ", 0, " + formatNumber(zU) + "], inertia_kgm2: {";
+  const char* keys[] = {"xx", "yy", "zz", "xy", "xz", "yz"};
+  for (int i = 0; i < 6; ++i)
+    body += std::string(i ? ", " : "") + keys[i] + ": " + formatNumber(share * inertia[keys[i]].as<double>(0.0));
+  const double gravity = mU * g * d, k = 4 * gravity, damping = 2 * 0.3 * std::sqrt(k * (ixx + mU * d * d));
+  CandidateParameter p = makeStiffness("stiffness_Nm_per_rad", "rider_lean.stiffness_Nm_per_rad", k);
+  p.lower = 1.1 * gravity;
+  out.push_back({"rider_lean",
+                 {"rider_lean={" + body + "}, stiffness_Nm_per_rad: " + formatNumber(k) +
+                  ", damping_Nms_per_rad: " + formatNumber(damping) + "}"},
+                 {p}});
+}
+
 void addSwingarmCandidates(const YAML::Node& tree, std::vector<Candidate>& out) {
   const YAML::Node sw = tree["swingarm"];
   if (!sw || !sw.IsMap()) return;
@@ -106,10 +140,13 @@ Candidate makeParameterCandidate(const ScalarParameter& p, double sigma) {
 }  // namespace
 
 std::vector<Candidate> listCandidates(const YAML::Node& tree,
-                                      const std::vector<std::pair<std::string, double>>& uncertainty) {
+                                      const std::vector<std::pair<std::string, double>>& uncertainty,
+                                      std::vector<std::string>* unavailable) {
   std::vector<Candidate> out;
+  std::vector<std::string> none;
   if (!tree["steer_damper"]) out.push_back(makeSteerDamper(tree));
   if (!tree["fork_compliance"]) out.push_back(makeForkCompliance(tree));
+  addRiderLeanCandidate(tree, out, unavailable ? *unavailable : none);
   addSwingarmCandidates(tree, out);
   addTyreSlipCandidate(tree, out);
   for (const ScalarParameter& p : listScalarParameters(tree)) {

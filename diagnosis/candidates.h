@@ -34,10 +34,15 @@ struct Candidate {
 /// uncertainties given as path -> sigma) admits: model extensions this build knows, swingarm
 /// compliance variants for scenarios with a swingarm, the bicycle tyre preset (tyre_slip) for
 /// scenarios on rolling constraints, and one `parameter:<path>` per scalar of the geometry, bodies and
-/// wheels. `rider_lean` is no default candidate: it needs the rider's upper-body mass properties,
-/// which a scenario does not hold.
+/// wheels. `rider_lean` (the rider's upper body leaning passively, its stiffness free) where the rear
+/// frame holds a rider: heavier than kRiderMass_kg and no `rider_lean` section yet; otherwise a line
+/// in `unavailable` says why (a riderless vehicle such as Kooijman's Silvercity has no rider to lean).
 std::vector<Candidate> listCandidates(const YAML::Node& scenarioTree,
-                                      const std::vector<std::pair<std::string, double>>& uncertainty);
+                                      const std::vector<std::pair<std::string, double>>& uncertainty,
+                                      std::vector<std::string>* unavailable = nullptr);
+
+/// Mass of the rider the `rider_lean` candidate assumes (an estimate), kg.
+constexpr double kRiderMass_kg = 75;
 
 /// Candidates whose name matches one of the comma-separated names or globs (fnmatch); all when
 /// `patterns` is empty. An entry that matches nothing is an error (std::invalid_argument naming it).

@@ -6,14 +6,21 @@
 // pair, its imaginary part; per response signal each sample. sigma is the row's stderr or the
 // signal's noise_std when given, else one per component (mode.real, mode.imag, run.column) estimated
 // at each step from the best candidate's fit (RSS / (n - k)), not the baseline's. chi2 = sum r^2 plus
-// the priors ((change / sigma_p)^2) of fitted scenario parameters; -2 log L = chi2 + const.
-// BIC = chi2 + k ln n (Schwarz 1978), k = fitted parameters including the responses' initial
-// states, offsets and free gains. Likelihood ratio: chi2_base - chi2_cand against chi-square with as
+// the priors ((change / sigma_p)^2) of fitted scenario parameters. Models are compared by their
+// deviance -2 ln L, in which the noise of each unestimated component is profiled out for that model
+// (n_c ln(RSS_c / n_c)): a candidate is never judged with the noise fitted to another model's
+// residuals, which with a few rows per component lets a flexible model trade misfit between
+// components. BIC = deviance + k ln n (Schwarz 1978), k = fitted parameters including the responses' initial
+// states, offsets and free gains. Likelihood ratio: deviance_base - deviance_cand against chi-square with as
 // many degrees of freedom as the candidate adds, halved (the 50:50 mixture of chi2_0 and chi2_1, Self
 // & Liang 1987) when "effect off" sits at a bound. Cross-validation: the measurement units
 // (eigenvalue rows and response runs) sorted by speed and cut into K blocks; each block is predicted
 // from a fit to the others (every parameter refitted; a run's initial state, offsets and gains are
-// fitted on the run itself).
+// fitted on the run itself). At the first step, candidates that already fail a criterion other than
+// cross-validation get a cheaper cross-validation for the report: each fold refitted by one
+// Gauss-Newton step from the full fit with the full fit's Jacobian restricted to the fold's training
+// data (the one-step approximation of case-deletion diagnostics, Pregibon 1981, Ann. Stat. 9:705);
+// candidates that may become a cause are always refitted to convergence in every fold.
 #include <functional>
 #include <string>
 #include <vector>
@@ -58,9 +65,14 @@ struct FitSummary {
   std::vector<ParameterEstimate> allParameters;  ///< causes' and candidate's
   Eigen::MatrixXd correlation;                ///< of all fitted parameters
   double chi2 = 0, rms = 0, cvRms = 0, bic = 0, deltaBic = 0, pValue = 1;
+  double deviance = 0;                        ///< -2 ln L, unknown noise profiled out (FitProblem::calcDeviance)
   std::vector<double> foldRms;                ///< per fold
+  std::vector<bool> foldFailed;               ///< per fold: its fit failed or diverged (cross_validation.h)
+  std::vector<std::string> foldFailures;      ///< "fold k: reason" of each failed fold
   int foldsBetter = 0;
   bool hasCv = false, atBound = false, converged = true;
+  bool cvOneStep = false;                     ///< folds refitted by one Gauss-Newton step (not eligible candidates)
+  Eigen::MatrixXd jacobian;                   ///< of the full fit's residuals (data, then priors) in x
   std::vector<std::string> failed;            ///< criteria not met
   int numParameters = 0;                      ///< k of BIC
   Eigen::VectorXd x;                          ///< internal coordinates

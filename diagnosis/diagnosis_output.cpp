@@ -31,7 +31,9 @@ json makeFit(const FitSummary& f) {
          {"bic", f.bic}, {"delta_bic", f.deltaBic}, {"at_bound", f.atBound}, {"p_value", f.pValue},
          {"num_parameters", f.numParameters}, {"failed_criteria", f.failed}};
   j["cv_rms"] = f.hasCv ? json(f.cvRms) : json(nullptr);
-  if (f.hasCv) j["folds_better"] = f.foldsBetter;
+  if (f.hasCv)
+    j["folds_better"] = f.foldsBetter, j["failed_folds"] = f.foldFailures,
+    j["cv_method"] = f.cvOneStep ? "one Gauss-Newton step per fold" : "refitted per fold";
   json corr = json::array();
   for (int r = 0; r < f.correlation.rows(); ++r) {
     json row = json::array();
@@ -145,10 +147,13 @@ std::string makeCandidateSection(const DiagnosisResult& r) {
   for (const auto& c : r.candidates) {
     std::string failed;
     for (const auto& f : c.failed) failed += (failed.empty() ? "" : "; ") + f;
+    for (const auto& f : c.foldFailures) failed += (failed.empty() ? "" : "; ") + ("CV " + f + ", not counted as better");
     o << "| " << c.name << " | " << makeParameterText(c.parameters) << " | " << fmt(c.rms) << " | "
-      << (c.hasCv ? fmt(c.cvRms) : "-") << " | " << fmt(c.deltaBic) << " | " << fmt(c.pValue, 2) << " | "
+      << (c.hasCv ? fmt(c.cvRms) + (c.cvOneStep ? "*" : "") : "-") << " | " << fmt(c.deltaBic) << " | " << fmt(c.pValue, 2) << " | "
       << (failed.empty() ? "none" : failed) << " |\n";
   }
+  o << "\n\* cross-validated by one Gauss-Newton step per fold (a candidate that already fails another criterion); "
+       "the others are refitted to convergence in every fold.\n";
   if (!r.unavailable.empty()) {
     o << "\nNot available for this scenario or build:\n\n";
     for (const auto& u : r.unavailable) o << "- " << u << "\n";

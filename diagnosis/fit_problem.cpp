@@ -150,6 +150,26 @@ Eigen::VectorXd FitProblem::calcResiduals(const Prediction& p) const {
   return r;
 }
 
+double FitProblem::calcDeviance(const Eigen::VectorXd& r) const {
+  const int n = static_cast<int>(observations.size());
+  std::vector<double> rss(components.size(), 0.0);
+  std::vector<int> count(components.size(), 0);
+  double d = r.tail(r.size() - n).squaredNorm();  // priors
+  for (int i = 0; i < n; ++i) {
+    const Observation& o = observations[i];
+    if (o.knownSigma > 0 || componentKnown[o.component]) {
+      d += r(i) * r(i);
+      continue;
+    }
+    const double raw = r(i) * componentSigma[o.component];
+    rss[o.component] += raw * raw;
+    ++count[o.component];
+  }
+  for (size_t c = 0; c < components.size(); ++c)
+    if (count[c] > 0) d += count[c] * (std::log(std::max(rss[c] / count[c], 1e-300)) + 1.0);
+  return d;
+}
+
 void FitProblem::updateSigma(const Eigen::VectorXd& r, int k) {
   const int n = static_cast<int>(observations.size());
   const double dof = n > k ? static_cast<double>(n) / (n - k) : 1.0;

@@ -50,6 +50,11 @@ class FitProblem {
   /// (measured - predicted) / sigma of every observation.
   Eigen::VectorXd calcResiduals(const Prediction& p) const;
   double getPredicted(const Prediction& p, const Observation& o) const;
+  /// -2 ln L (up to a constant) of normalised residuals `r` (observations first, then priors) with
+  /// each unknown component's noise at its maximum-likelihood value for these residuals (profiled
+  /// out: n_c ln(RSS_c / n_c) + n_c, RSS_c in the column's unit squared); known ones and priors add
+  /// r^2. Every model is scored with its own noise, none with another's (Pawitan 2001, sect. 10.3).
+  double calcDeviance(const Eigen::VectorXd& r) const;
   /// Sets unknown components' sigma from normalised residuals `r` of a fit with k parameters.
   void updateSigma(const Eigen::VectorXd& r, int k);
   const MeasuredData& getData() const { return data_; }

@@ -109,14 +109,20 @@ LeastSquaresResult solveBoundedLeastSquares(const LeastSquaresProblem& p, const 
       res.stop = "step too small";
       break;
     }
+    const bool converged = drop <= options.relativeTolerance * std::max(res.chi2, 1e-300);
+    if (converged && !options.statistics) {
+      res.stop = "converged";
+      break;
+    }
     J = calcJacobian(p, res.x, res.residual, res.evaluations);
-    if (drop <= options.relativeTolerance * std::max(res.chi2, 1e-300)) {
+    if (converged) {
       res.stop = "converged";
       break;
     }
   }
   if (res.stop == "step too small") res.stop = "converged";  // no descent left from the solution
-  calcStatistics(p, J, res);
+  if (options.statistics) calcStatistics(p, J, res), res.jacobian = J;
+  else res.atBound = Eigen::VectorXi::Zero(res.x.size());
   return res;
 }
 

@@ -19,6 +19,9 @@ struct LeastSquaresProblem {
 struct LeastSquaresOptions {
   int maxIterations = 30;
   double relativeTolerance = 1e-8;  ///< stop when chi2 falls by less than this fraction
+  /// Compute the covariance at the solution (one more Jacobian); without it the result's
+  /// covariance, stderr_ and correlation are empty (cross-validation folds need only x).
+  bool statistics = true;
 };
 
 struct LeastSquaresResult {
@@ -28,6 +31,7 @@ struct LeastSquaresResult {
   Eigen::MatrixXd covariance;       ///< s^2 (J'J)^-1 (pseudo-inverse), x units squared
   Eigen::VectorXd stderr_;          ///< sqrt of the covariance diagonal
   Eigen::MatrixXd correlation;
+  Eigen::MatrixXd jacobian;         ///< d residual / d x at the solution (with statistics)
   Eigen::VectorXi atBound;          ///< 1 where x sits at a bound
   int iterations = 0, evaluations = 0;
   std::string stop;                 ///< converged, iteration limit, step too small

@@ -21,15 +21,20 @@ std::string getStateName(Quantity q) {
   return "";
 }
 
-// Rows c_j of the outputs: signal j reads state getStateName(quantity).
+// Rows c_j of the outputs: signal j reads state getStateName(quantity); a yaw rate that is no state
+// (a model on rolling constraints, where it is a dependent speed) is the linearised rate of the yaw
+// coordinate, d(yaw)/dt = c x (LinearModel::getRateRow; for the Whipple bicycle
+// (v delta + c delta') cos(lambda) / w, Meijaard et al. 2007).
 Eigen::MatrixXd calcOutputRows(const LinearModel& lin, const ResponseRun& run) {
   Eigen::MatrixXd C = Eigen::MatrixXd::Zero(static_cast<int>(run.signals.size()), lin.A.rows());
   for (size_t j = 0; j < run.signals.size(); ++j) {
-    const int k = lin.findState(getStateName(run.signals[j].quantity));
-    if (k < 0)
-      throw InputError(run.where, "quantity " + getQuantityName(run.signals[j].quantity) +
-                                      " is not a state of this model's linearisation");
-    C(static_cast<int>(j), k) = 1;
+    const Quantity q = run.signals[j].quantity;
+    const int k = lin.findState(getStateName(q));
+    const Eigen::RowVectorXd yaw = q == Quantity::YawRate && k < 0 ? lin.getRateRow("yaw") : Eigen::RowVectorXd();
+    if (k < 0 && yaw.size() != lin.A.cols())
+      throw InputError(run.where, "quantity " + getQuantityName(q) + " is not a state of this model's linearisation");
+    if (k >= 0) C(static_cast<int>(j), k) = 1;
+    else C.row(static_cast<int>(j)) = yaw;
   }
   return C;
 }
@@ -135,6 +140,9 @@ std::vector<double> makeSortedUnique(std::vector<double> v) {
   return v;
 }
 
+// Accuracy asked of the fast predictions' interpolation (chooseNodes), 1/s per (1 + |lambda| s).
+constexpr double kNodeTolerance = 3e-4;
+
 size_t findSpeed(const std::vector<double>& speeds, double v) {
   return std::lower_bound(speeds.begin(), speeds.end(), v) - speeds.begin();
 }
@@ -212,13 +220,6 @@ Predictor::Predictor(std::string scenarioFile, std::vector<std::string> baseOver
       if (row.mode.empty()) others.push_back(v);
       else lo = std::min(lo, v), hi = std::max(hi, v), ++labelled;
     }
-  const int n = std::clamp(static_cast<int>(std::ceil((hi - lo) / 0.25)) + 1, 6, 16);
-  if (labelled > n && hi > lo)
-    for (int j = n - 1; j >= 0; --j) nodes_.push_back(0.5 * (lo + hi) + 0.5 * (hi - lo) * std::cos(M_PI * j / (n - 1)));
-  for (const auto& run : data.responses) others.push_back(run.speed);
-  fastSpeeds_ = nodes_;
-  fastSpeeds_.insert(fastSpeeds_.end(), others.begin(), others.end());
-  fastSpeeds_ = makeSortedUnique(fastSpeeds_);
   const Scenario scenario = loadScenario(scenarioFile_, baseOverrides_);
   const VehicleModel model(scenario);
   SweepOptions opt;
@@ -227,6 +228,41 @@ Predictor::Predictor(std::string scenarioFile, std::vector<std::string> baseOver
   opt.stop = std::max(scenario.speeds.stop, std::ceil(speeds_.back() / opt.step) * opt.step);
   opt.threads = 2;
   reference_ = std::make_shared<SweepResult>(runSweep(model, opt));
+  if (hi > lo) nodes_ = chooseNodes(lo, hi, labelled);
+  for (const auto& run : data.responses) others.push_back(run.speed);
+  fastSpeeds_ = nodes_;
+  fastSpeeds_.insert(fastSpeeds_.end(), others.begin(), others.end());
+  fastSpeeds_ = makeSortedUnique(fastSpeeds_);
+}
+
+// The fewest Chebyshev points (5 to 16) on [lo, hi] whose interpolant reproduces every labelled mode
+// of the base scenario at the reference sweep's speeds in [lo, hi] to kNodeTolerance (absolute, 1/s,
+// plus that times |lambda|); none when the rows' own speeds are fewer.
+std::vector<double> Predictor::chooseNodes(double lo, double hi, int labelled) const {
+  const SweepResult& ref = *reference_;
+  std::vector<double> nodes;
+  for (int n = 5; n <= 16 && n < labelled; ++n) {
+    nodes.clear();
+    for (int j = n - 1; j >= 0; --j) nodes.push_back(0.5 * (lo + hi) + 0.5 * (hi - lo) * std::cos(M_PI * j / (n - 1)));
+    const std::vector<LinearModel> models = calcLinearModels({}, nodes);
+    double worst = 0;
+    for (const ModeTrack& t : trackModes(models)) {
+      std::vector<std::complex<double>> f;
+      for (size_t k = 0; k < models.size() && t.index[k] >= 0; ++k) {
+        const auto l = models[k].eigenvalues(t.index[k]);
+        f.push_back({l.real(), std::abs(l.imag())});
+      }
+      const auto b = std::find_if(ref.branches.begin(), ref.branches.end(), [&](const ModeBranch& x) { return x.label == t.mode; });
+      if (f.size() != nodes.size() || b == ref.branches.end()) return {};  // the mode is not smooth over the rows
+      for (size_t k = 0; k < ref.speeds.size(); ++k) {
+        if (ref.speeds[k] < lo || ref.speeds[k] > hi || b->index[k] < 0) continue;
+        const std::complex<double> e(b->eigenvalue[k].real(), std::abs(b->eigenvalue[k].imag()));
+        worst = std::max(worst, std::abs(interpolate(nodes, f, ref.speeds[k]) - e) / (1 + std::abs(e)));
+      }
+    }
+    if (worst <= kNodeTolerance) return nodes;
+  }
+  return nodes.size() >= 5 ? nodes : std::vector<double>();
 }
 
 // The sweep's trims and linearisations (warm-started in increasing speed, columns grouped after the
@@ -243,6 +279,7 @@ std::vector<LinearModel> Predictor::calcLinearModels(const std::vector<std::stri
   for (size_t i = 0; i < speeds.size(); ++i) {
     if (i > 0) updTrim(model, speeds[i], sweep.trim, trim);
     out.push_back(linearizeInPlace(model, trim, sweep.linearize));
+
     if (i == 1 && sweep.groupColumns) {
       sweep.linearize.removeYaw = out[0].findState("yaw") < 0 ? 1 : 0;
       sweep.linearize.grouping = calcColumnGrouping({&out[0], &out[1]});
@@ -251,25 +288,57 @@ std::vector<LinearModel> Predictor::calcLinearModels(const std::vector<std::stri
   return out;
 }
 
+// Index of mode `mode` in `lin`: the eigenvalue that best continues the base sweep's branch at the
+// nearest sweep speed plus, when given, the mode's eigenvalue `prevIndex` of `prev` (the same model at
+// the previous speed). -1 where the base sweep has no such branch.
+int Predictor::matchMode(const std::string& mode, const LinearModel& lin, const LinearModel* prev, int prevIndex) const {
+  const SweepResult& ref = *reference_;
+  const size_t k = std::min_element(ref.speeds.begin(), ref.speeds.end(), [&](double a, double b) {
+                     return std::abs(a - lin.speed) < std::abs(b - lin.speed);
+                   }) - ref.speeds.begin();
+  const auto branch = std::find_if(ref.branches.begin(), ref.branches.end(),
+                                   [&](const ModeBranch& b) { return b.label == mode && b.index[k] >= 0; });
+  if (branch == ref.branches.end()) return -1;
+  int best = -1;
+  double bestCost = HUGE_VAL;
+  for (int kb = 0; kb < lin.eigenvalues.size(); ++kb) {
+    double c = calcMatchCost(ref.models[k], branch->index[k], lin, kb);
+    if (prev && prevIndex >= 0) c += calcMatchCost(*prev, prevIndex, lin, kb);
+    if (c < bestCost) bestCost = c, best = kb;
+  }
+  return best;
+}
+
+std::vector<Predictor::ModeTrack> Predictor::trackModes(const std::vector<LinearModel>& models) const {
+  std::vector<ModeTrack> out;
+  for (const auto& row : data_.eigenvalues) {
+    if (row.mode.empty() || std::any_of(out.begin(), out.end(), [&](const ModeTrack& t) { return t.mode == row.mode; }))
+      continue;
+    ModeTrack t{row.mode, std::vector<int>(models.size(), -1)};
+    for (size_t k = 0; k < models.size(); ++k)
+      t.index[k] = matchMode(row.mode, models[k], k ? &models[k - 1] : nullptr, k ? t.index[k - 1] : -1);
+    out.push_back(t);
+  }
+  return out;
+}
+
 std::vector<std::complex<double>> Predictor::predictInterpolated(const std::vector<LinearModel>& models,
                                                                  const std::vector<double>& speeds) const {
   std::vector<std::complex<double>> out;
-  std::vector<std::string> modes;
-  std::vector<std::vector<std::complex<double>>> atNodes;  // per mode, per node
+  const std::vector<ModeTrack> tracks = trackModes(models);
+  std::vector<std::vector<std::complex<double>>> atNodes(tracks.size());  // per mode, per node
   for (const auto& row : data_.eigenvalues) {
     std::complex<double> sum = 0;
     const std::vector<double> vs = getEvaluationSpeeds(row);
     for (double v : vs) {
       if (row.mode.empty()) {
-        sum += pickEigenvalue(models[findSpeed(speeds, v)], row);
+        sum += pickEigenvalue(models, findSpeed(speeds, v), row, tracks);
         continue;
       }
-      size_t m = std::find(modes.begin(), modes.end(), row.mode) - modes.begin();
-      if (m == modes.size()) {
-        modes.push_back(row.mode);
-        atNodes.emplace_back();
-        for (double x : nodes_) atNodes.back().push_back(pickEigenvalue(models[findSpeed(speeds, x)], row));
-      }
+      const size_t m = std::find_if(tracks.begin(), tracks.end(), [&](const ModeTrack& t) { return t.mode == row.mode; }) -
+                       tracks.begin();
+      if (atNodes[m].empty())
+        for (double x : nodes_) atNodes[m].push_back(pickEigenvalue(models, findSpeed(speeds, x), row, tracks));
       sum += interpolate(nodes_, atNodes[m], v);
     }
     out.push_back(sum / static_cast<double>(vs.size()));
@@ -277,25 +346,22 @@ std::vector<std::complex<double>> Predictor::predictInterpolated(const std::vect
   return out;
 }
 
-std::complex<double> Predictor::pickEigenvalue(const LinearModel& lin, const MeasuredEigenvalue& row) const {
+std::complex<double> Predictor::pickEigenvalue(const std::vector<LinearModel>& models, size_t k,
+                                               const MeasuredEigenvalue& row, const std::vector<ModeTrack>& tracks) const {
+  const LinearModel& lin = models[k];
   std::complex<double> best;
   if (row.mode.empty()) {
     double dmin = HUGE_VAL;
-    for (int k = 0; k < lin.eigenvalues.size(); ++k) {
-      const std::complex<double> l = lin.eigenvalues(k);
+    for (int i = 0; i < lin.eigenvalues.size(); ++i) {
+      const std::complex<double> l = lin.eigenvalues(i);
       const double d = std::abs(std::complex<double>(l.real(), std::abs(l.imag())) - std::complex<double>(row.real, row.imag));
       if (d < dmin) dmin = d, best = l;
     }
   } else {
-    const SweepResult& ref = *reference_;
-    const size_t k = std::min_element(ref.speeds.begin(), ref.speeds.end(), [&](double a, double b) {
-                       return std::abs(a - lin.speed) < std::abs(b - lin.speed);
-                     }) - ref.speeds.begin();
-    const auto branch = std::find_if(ref.branches.begin(), ref.branches.end(),
-                                     [&](const ModeBranch& b) { return b.label == row.mode && b.index[k] >= 0; });
-    if (branch == ref.branches.end())
+    const auto t = std::find_if(tracks.begin(), tracks.end(), [&](const ModeTrack& m) { return m.mode == row.mode; });
+    if (t->index[k] < 0)
       throw InputError(row.where, "the scenario has no " + row.mode + " mode near " + std::to_string(lin.speed) + " m/s");
-    best = lin.eigenvalues(findBestMatch(ref.models[k], branch->index[k], lin));
+    best = lin.eigenvalues(t->index[k]);
   }
   return {best.real(), std::abs(best.imag())};
 }
@@ -307,11 +373,12 @@ Prediction Predictor::predict(const std::vector<std::string>& overrides,
   const std::vector<LinearModel> models = calcLinearModels(overrides, speeds);
   Prediction p;
   if (fast) p.eigenvalues = predictInterpolated(models, speeds);
+  const std::vector<ModeTrack> tracks = fast ? std::vector<ModeTrack>() : trackModes(models);
   for (const auto& row : data_.eigenvalues) {
     if (fast) break;
     const std::vector<double> nodes = getEvaluationSpeeds(row);
     std::complex<double> sum = 0;
-    for (double v : nodes) sum += pickEigenvalue(models[findSpeed(speeds, v)], row);
+    for (double v : nodes) sum += pickEigenvalue(models, findSpeed(speeds, v), row, tracks);
     p.eigenvalues.push_back(sum / static_cast<double>(nodes.size()));
   }
   for (size_t r = 0; r < data_.responses.size(); ++r) {

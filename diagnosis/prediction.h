@@ -3,17 +3,20 @@
 // measured speeds and output-error fits of the linear free responses.
 //
 // Eigenvalues: the scenario is trimmed and linearised (the sweep's options: analysis/sweep.h) at each
-// needed speed, in increasing order with warm starts. A row's mode is found by continuity from the
-// base scenario's labelled sweep (findBestMatch against the base model at the nearest sweep speed);
-// a row without a label takes the eigenvalue (imag >= 0) nearest the measured one. A row with a
+// needed speed, in increasing order with warm starts. A row's mode is matched at each speed by the
+// sum of two match costs (analysis/modes.h calcMatchCost): against the base scenario's labelled branch
+// at the nearest sweep speed, and against the mode's eigenvalue at the previous speed of the model
+// being predicted (the candidate), so that the match follows the candidate's own modes by continuity
+// where a large change (a strong steer damper) moves them away from the base's; a row without a label takes the eigenvalue (imag >= 0) nearest the measured one. A row with a
 // speed range [a, b] (the speed fell during the fit window) is predicted by the mean of the model's
 // eigenvalue over the range, by two-point Gauss-Legendre quadrature at m -/+ h/sqrt(3) (m, h: the
 // range's middle and half width; exact for a cubic in speed).
 //
 // Fast predictions (predict with exact = false, used inside fits): labelled rows are interpolated
 // from the model's eigenvalues at Chebyshev points of the second kind spanning the labelled rows'
-// speeds (barycentric formula, Berrut & Trefethen 2004, SIAM Review 46:501; one point per 0.25 m/s,
-// 6 to 16 points), when that needs fewer linearisations than the rows' own speeds. Reported
+// speeds (barycentric formula, Berrut & Trefethen 2004, SIAM Review 46:501), when that needs fewer
+// linearisations than the rows' own speeds: the fewest points (5 to 16) that reproduce the base
+// scenario's labelled modes at its reference sweep's speeds to 3e-4 (1 + |lambda|) 1/s. Reported
 // predictions are exact (exact = true), so a sweep of the extended scenario reproduces them.
 //
 // Responses: x' = A x at the run's speed, y_j(t) = g_j c_j x(t) + o_j, x(t) = exp(A (t - t0)) x0
@@ -74,7 +77,15 @@ class Predictor {
  private:
   std::vector<std::complex<double>> predictInterpolated(const std::vector<LinearModel>& models,
                                                         const std::vector<double>& speeds) const;
-  std::complex<double> pickEigenvalue(const LinearModel& lin, const MeasuredEigenvalue& row) const;
+  struct ModeTrack {
+    std::string mode;
+    std::vector<int> index;  ///< per model (-1: no such mode in the base sweep there)
+  };
+  std::vector<double> chooseNodes(double lo, double hi, int labelled) const;
+  int matchMode(const std::string& mode, const LinearModel& lin, const LinearModel* prev, int prevIndex) const;
+  std::vector<ModeTrack> trackModes(const std::vector<LinearModel>& models) const;
+  std::complex<double> pickEigenvalue(const std::vector<LinearModel>& models, size_t k, const MeasuredEigenvalue& row,
+                                      const std::vector<ModeTrack>& tracks) const;
 
   std::string scenarioFile_;
   std::vector<std::string> baseOverrides_;

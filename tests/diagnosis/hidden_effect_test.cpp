@@ -76,10 +76,13 @@ void expectFound(const DiagnosisResult& r, const std::string& name, const std::s
 std::string damper(double c) { return "steer_damper={damping_Nms_per_rad: " + formatNumber(c) + "}"; }
 
 TEST(HiddenEffect, SteerDamperFromEigenvalues) {
-  // Bicycle-sized dampers: above about 0.6 N m s/rad the damped weave's eigenvector is far from the
-  // undamped base sweep's and mode matching by continuity becomes unreliable (see docs/diagnosis.md).
-  const double c = testing::Draw(707).uniform(0.15, 0.45);
-  auto h = makeEffect(kBenchmark, 101, {damper(c)}, {"weave"});
+  // Rows of every mode the sweep labels between 3 and 8 m/s (weave, capsize, castor). Bicycle-sized
+  // dampers; seed 101 draws noise about 1.3 times its nominal level on the weave rows, the case where
+  // a noise estimate fitted to the richer model's residuals named a spurious second cause (wheelbase)
+  // and pulled the damping 20-28 % low.
+  testing::Draw draw(707);
+  const double c = draw.uniform(0.15, 0.45);
+  auto h = makeEffect(kBenchmark, 101, {damper(c)}, {"weave", "capsize", "castor"});
   h.start = 3;  // where the damped weave is still oscillatory
   const DiagnosisResult r = runHidden(h, "damper", true, {}, "steer_damper,tyre_slip,parameter:geometry.*,parameter:front_frame.inertia_kgm2.zz", 3);
   expectFound(r, "steer_damper", "damping_Nms_per_rad", c);
@@ -130,6 +133,27 @@ TEST(HiddenEffect, ForkComplianceOnTheEnduro) {
   h.start = 10, h.stop = 40, h.step = 3;
   const DiagnosisResult r = runHidden(h, "fork", true, {}, "fork_compliance,steer_damper,swingarm_twist", 1);
   expectFound(r, "fork_compliance", "stiffness_Nm_per_rad", k);
+}
+
+// A leaning rider on the benchmark bicycle (its 85 kg rear frame includes the rider): the upper body
+// built here as docs/diagnosis.md states the candidate's (a 75 kg rider's head-arms-trunk, 0.678 of
+// it (Winter 2009), a proportional slice of the rear frame hinged 0.25 m below its CoM, damping 0.3
+// of critical at 4 m g d), with a lean stiffness drawn between 2 and 6 m g d.
+TEST(HiddenEffect, RiderLeanOnTheBenchmark) {
+  const YAML::Node rf = makeScenarioTree(kBenchmark, {})["rear_frame"];
+  const double mB = rf["mass_kg"].as<double>(), mU = 0.678 * 75, share = mU / mB, d = 0.25;
+  const double zU = rf["com_m"][2].as<double>(), gravity = mU * 9.81 * d;
+  std::string body = "rider_lean={hinge_height_m: " + formatNumber(zU - d) + ", mass_kg: " + formatNumber(mU) +
+                     ", com_m: [" + formatNumber(rf["com_m"][0].as<double>()) + ", 0, " + formatNumber(zU) + "], inertia_kgm2: {";
+  for (const char* k : {"xx", "yy", "zz", "xy", "xz", "yz"})
+    body += std::string(k) + ": " + formatNumber(share * rf["inertia_kgm2"][k].as<double>(0.0)) + (k[1] == 'z' && k[0] == 'y' ? "}" : ", ");
+  const double damping = 0.6 * std::sqrt(4 * gravity * (share * rf["inertia_kgm2"]["xx"].as<double>() + mU * d * d));
+  const double k = testing::Draw(5151).uniform(2, 6) * gravity;
+  auto h = makeEffect(kBenchmark, 707, {body + ", stiffness_Nm_per_rad: " + formatNumber(k) + ", damping_Nms_per_rad: " +
+                                            formatNumber(damping) + "}"}, {"weave", "capsize"});
+  h.start = 3;
+  const DiagnosisResult r = runHidden(h, "rider", true, {}, "rider_lean,steer_damper,parameter:geometry.trail_m", 1);
+  expectFound(r, "rider_lean", "stiffness_Nm_per_rad", k);
 }
 
 // Noise only: no cause in any of 20 seeds.

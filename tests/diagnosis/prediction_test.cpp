@@ -85,6 +85,43 @@ TEST(Prediction, FreeResponseWithFreeGain) {
   fs::remove_all(dir);
 }
 
+// Yaw rate on rolling constraints (not a state: a dependent speed) is read through the linearised yaw
+// rate. Reference: the benchmark's kinematic yaw rate psi' = (v delta + c delta') cos(lambda) / w
+// (Meijaard et al. 2007, sect. 4; w = 1.02 m, c = 0.08 m, lambda = pi/10), applied here to the free
+// response exp(A t) x0 from a drawn state at a drawn speed; the fit reproduces it (VAF 100 %).
+TEST(Prediction, YawRateUnderRollingConstraints) {
+  testing::Draw draw(77);
+  const double v = draw.uniform(2, 8), w = 1.02, c = 0.08, lambda = M_PI / 10;
+  const VehicleModel model(loadScenario(kBenchmark));
+  TrimResult trim = calcTrim(model, v);
+  const LinearModel lin = linearize(model, trim);
+  ASSERT_LT(lin.findState("yaw_rate"), 0);
+  const int steer = lin.findState("steer"), steerRate = lin.findState("steer_rate");
+  const Eigen::RowVectorXd row = lin.getRateRow("yaw");
+  ASSERT_EQ(row.size(), lin.A.cols());
+  for (int k = 0; k < row.size(); ++k)
+    EXPECT_NEAR(row(k), k == steer ? v * std::cos(lambda) / w : k == steerRate ? c * std::cos(lambda) / w : 0.0, 1e-6)
+        << lin.states[k].name;
+  Eigen::VectorXd x0(lin.A.rows());
+  for (int i = 0; i < x0.size(); ++i) x0(i) = draw.uniform(-0.1, 0.1);
+  ResponseRun run;
+  run.speed = v;
+  run.signals.resize(1);
+  run.signals[0].quantity = Quantity::YawRate;
+  run.signals[0].column = "yaw_rate_radps";
+  for (int i = 0; i < 200; ++i) {
+    const double t = 0.01 * i;
+    const Eigen::VectorXd x = (lin.A * t).exp() * x0;
+    run.time.push_back(t);
+    run.signals[0].values.push_back((v * x(steer) + c * x(steerRate)) * std::cos(lambda) / w);
+  }
+  const ResponseFit f = fitFreeResponse(lin, run, {1.0});
+  double worst = 0;
+  for (size_t i = 0; i < run.time.size(); ++i) worst = std::max(worst, std::abs(f.predicted[0][i] - run.signals[0].values[i]));
+  EXPECT_LT(worst, 1e-6);
+  EXPECT_NEAR(f.vaf[0], 100, 1e-6);
+}
+
 // extended.yaml (the base tree with overrides applied) swept at a row's speed gives the exact
 // prediction to 1e-9 (issue 11, item 5).
 TEST(Prediction, SweepOfTheExtendedTreeReproducesPredictions) {

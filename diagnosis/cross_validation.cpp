@@ -1,0 +1,65 @@
+#include "diagnosis/cross_validation.h"
+
+#include <algorithm>
+#include <cmath>
+#include <atomic>
+#include <exception>
+
+#include "analysis/parallel.h"
+
+namespace motostab {
+namespace {
+
+// Sum of squares of r over the observations of fold f, and their count.
+double sumFold(const Eigen::VectorXd& r, const std::vector<int>& foldOf, int f, int& count) {
+  double sum = 0;
+  count = 0;
+  for (size_t i = 0; i < foldOf.size(); ++i)
+    if (foldOf[i] == f) sum += r(static_cast<int>(i)) * r(static_cast<int>(i)), ++count;
+  return sum;
+}
+
+}  // namespace
+
+FoldScores scoreFolds(int numFolds, const std::vector<int>& foldOf, const std::function<Eigen::VectorXd(int)>& fitFold,
+                      const Eigen::VectorXd& fullFit, double divergence, int threads) {
+  std::vector<Eigen::VectorXd> fitted(numFolds);
+  std::vector<std::string> errors(numFolds);
+  std::atomic<int> next{0};
+  runWorkers(static_cast<size_t>(std::clamp(threads, 1, std::max(numFolds, 1))), [&](size_t) {
+    for (int f; (f = next++) < numFolds;) {
+      try {
+        fitted[f] = fitFold(f);
+      } catch (const std::exception& e) {
+        errors[f] = std::string("fit failed: ") + e.what();
+      }
+    }
+  });
+  FoldScores s;
+  s.rms.assign(numFolds, 0.0);
+  s.failed.assign(numFolds, false);
+  s.reasons.assign(numFolds, "");
+  double total = 0;
+  int count = 0;
+  for (int f = 0; f < numFolds; ++f) {
+    int m = 0;
+    const double fallback = sumFold(fullFit, foldOf, f, m);
+    const double fallbackRms = m ? std::sqrt(fallback / m) : 0.0;
+    double sum = fallback;
+    s.reasons[f] = errors[f];
+    if (errors[f].empty()) {
+      sum = sumFold(fitted[f], foldOf, f, m);
+      if (!std::isfinite(sum)) s.reasons[f] = "non-finite prediction";
+      else if (m && std::sqrt(sum / m) > divergence * std::max(1.0, fallbackRms))
+        s.reasons[f] = "diverged (held-out RMS " + std::to_string(std::sqrt(sum / m)) + ")";
+    }
+    if (!s.reasons[f].empty()) s.failed[f] = true, ++s.numFailed, sum = fallback;
+    s.rms[f] = m ? std::sqrt(sum / m) : 0.0;
+    total += sum;
+    count += m;
+  }
+  s.cvRms = std::sqrt(total / std::max(count, 1));
+  return s;
+}
+
+}  // namespace motostab
