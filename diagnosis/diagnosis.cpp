@@ -128,49 +128,10 @@ void score(const FitProblem& problem, const Prediction& p, FitSummary& s, int nu
 
 // K-fold cross-validation of a model around its full fit x (diagnosis/cross_validation.h guards the
 // folds whose fit fails or diverges).
-
-// Residuals of every observation after one Gauss-Newton step from the full fit s on the
-// observations outside `fold` (and the priors), with the full fit's Jacobian, clamped to the bounds;
-// the step is halved (up to 4 times) while it gives no valid vehicle or no lower training chi2, and
-// dropped (the full fit kept) after that.
-Eigen::VectorXd stepFold(const FitProblem& problem, const ModelSpec& model, const FitSummary& s, int fold) {
-  const FitContext c{problem, model, fold};
-  const LeastSquaresProblem p = makeLeastSquares(c);
-  const int n = static_cast<int>(problem.observations.size());
-  const Eigen::VectorXd r0 = problem.calcResiduals(problem.predict(model, s.x));
-  const auto trainingChi2 = [&](const Eigen::VectorXd& r, const Eigen::VectorXd& x) {
-    return selectResiduals(c, r).squaredNorm() + model.calcPriorResiduals(x).squaredNorm();
-  };
-  std::vector<int> rows;
-  for (int i = 0; i < s.jacobian.rows(); ++i)
-    if (i >= n || problem.observations[i].fold != fold) rows.push_back(i);
-  Eigen::MatrixXd J(rows.size(), s.jacobian.cols());
-  Eigen::VectorXd rr(rows.size());
-  const Eigen::VectorXd prior = model.calcPriorResiduals(s.x);
-  for (size_t k = 0; k < rows.size(); ++k) {
-    J.row(static_cast<int>(k)) = s.jacobian.row(rows[k]);
-    rr(static_cast<int>(k)) = rows[k] < n ? r0(rows[k]) : prior(rows[k] - n);
-  }
-  Eigen::VectorXd dx = J.completeOrthogonalDecomposition().solve(-rr);
-  const double chi0 = trainingChi2(r0, s.x);
-  for (int k = 0; k < 5; ++k, dx *= 0.5) {
-    const Eigen::VectorXd x = (s.x + dx).cwiseMax(p.lower).cwiseMin(p.upper);
-    try {
-      const Eigen::VectorXd r = problem.calcResiduals(problem.predict(model, x));
-      if (trainingChi2(r, x) < chi0) return r;
-    } catch (const std::exception&) {  // no valid vehicle: a shorter step
-    }
-  }
-  return r0;
-}
-
-void crossValidate(const FitProblem& problem, const ModelSpec& model, FitSummary& s, int threads = 1,
-                   bool oneStep = false) {
+void crossValidate(const FitProblem& problem, const ModelSpec& model, FitSummary& s, int threads = 1) {
   std::vector<int> foldOf;
   for (const auto& o : problem.observations) foldOf.push_back(o.fold);
-  s.cvOneStep = oneStep && model.size() > 0 && s.jacobian.rows() > 0;
   const auto fitFold = [&](int f) {
-    if (s.cvOneStep) return stepFold(problem, model, s, f);
     const Eigen::VectorXd x = model.size() ? fitModel(problem, model, s.x, f, 6, -1, false).x : s.x;
     return Eigen::VectorXd(problem.calcResiduals(problem.predict(model, x)));
   };
@@ -295,7 +256,7 @@ void judge(const FitProblem& problem, const Step& step, size_t i, FitSummary& fi
       if (std::abs(fit.correlation(off + k, off + l)) > opt.maxCorrelation) fit.failed.push_back("correlation > 0.95");
   }
   if (fit.failed.empty()) crossValidate(problem, model, fit);
-  else if (alwaysCv) crossValidate(problem, model, fit, 1, true);  // for the report only
+  else if (alwaysCv) crossValidate(problem, model, fit);  // for the report
   if (fit.hasCv) {
     fit.foldsBetter = 0;
     for (size_t f = 0; f < fit.foldRms.size(); ++f)  // a failed fold never counts as better

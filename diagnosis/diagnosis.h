@@ -16,11 +16,7 @@
 // & Liang 1987) when "effect off" sits at a bound. Cross-validation: the measurement units
 // (eigenvalue rows and response runs) sorted by speed and cut into K blocks; each block is predicted
 // from a fit to the others (every parameter refitted; a run's initial state, offsets and gains are
-// fitted on the run itself). At the first step, candidates that already fail a criterion other than
-// cross-validation get a cheaper cross-validation for the report: each fold refitted by one
-// Gauss-Newton step from the full fit with the full fit's Jacobian restricted to the fold's training
-// data (the one-step approximation of case-deletion diagnostics, Pregibon 1981, Ann. Stat. 9:705);
-// candidates that may become a cause are always refitted to convergence in every fold.
+// fitted on the run itself), for every candidate of the first step.
 #include <functional>
 #include <string>
 #include <vector>
@@ -71,7 +67,6 @@ struct FitSummary {
   std::vector<std::string> foldFailures;      ///< "fold k: reason" of each failed fold
   int foldsBetter = 0;
   bool hasCv = false, atBound = false, converged = true;
-  bool cvOneStep = false;                     ///< folds refitted by one Gauss-Newton step (not eligible candidates)
   Eigen::MatrixXd jacobian;                   ///< of the full fit's residuals (data, then priors) in x
   std::vector<std::string> failed;            ///< criteria not met
   int numParameters = 0;                      ///< k of BIC

@@ -32,8 +32,7 @@ json makeFit(const FitSummary& f) {
          {"num_parameters", f.numParameters}, {"failed_criteria", f.failed}};
   j["cv_rms"] = f.hasCv ? json(f.cvRms) : json(nullptr);
   if (f.hasCv)
-    j["folds_better"] = f.foldsBetter, j["failed_folds"] = f.foldFailures,
-    j["cv_method"] = f.cvOneStep ? "one Gauss-Newton step per fold" : "refitted per fold";
+    j["folds_better"] = f.foldsBetter, j["failed_folds"] = f.foldFailures;
   json corr = json::array();
   for (int r = 0; r < f.correlation.rows(); ++r) {
     json row = json::array();
@@ -149,11 +148,9 @@ std::string makeCandidateSection(const DiagnosisResult& r) {
     for (const auto& f : c.failed) failed += (failed.empty() ? "" : "; ") + f;
     for (const auto& f : c.foldFailures) failed += (failed.empty() ? "" : "; ") + ("CV " + f + ", not counted as better");
     o << "| " << c.name << " | " << makeParameterText(c.parameters) << " | " << fmt(c.rms) << " | "
-      << (c.hasCv ? fmt(c.cvRms) + (c.cvOneStep ? "*" : "") : "-") << " | " << fmt(c.deltaBic) << " | " << fmt(c.pValue, 2) << " | "
+      << (c.hasCv ? fmt(c.cvRms) : "-") << " | " << fmt(c.deltaBic) << " | " << fmt(c.pValue, 2) << " | "
       << (failed.empty() ? "none" : failed) << " |\n";
   }
-  o << "\n\* cross-validated by one Gauss-Newton step per fold (a candidate that already fails another criterion); "
-       "the others are refitted to convergence in every fold.\n";
   if (!r.unavailable.empty()) {
     o << "\nNot available for this scenario or build:\n\n";
     for (const auto& u : r.unavailable) o << "- " << u << "\n";
