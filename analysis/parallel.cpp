@@ -1,6 +1,7 @@
 #include "analysis/parallel.h"
 
 #include <algorithm>
+#include <atomic>
 #include <exception>
 #include <mutex>
 #include <thread>
@@ -46,8 +47,9 @@ void runParallel(size_t count, int threads, const std::function<void(size_t)>& f
     for (size_t i = 0; i < count; ++i) f(i);
     return;
   }
-  runWorkers(workers, [&](size_t w) {
-    for (size_t i = count * w / workers; i < count * (w + 1) / workers; ++i) f(i);
+  std::atomic<size_t> next{0};  // each worker takes the next index: tasks of unequal cost balance
+  runWorkers(workers, [&](size_t) {
+    for (size_t i; (i = next++) < count;) f(i);
   });
 }
 

@@ -13,8 +13,8 @@ namespace motostab {
 void runWorkers(size_t workers, const std::function<void(size_t)>& task,
                 const std::function<void()>& onFirstFailure = {});
 
-/// f(i) for i in [0, count), in contiguous chunks on up to `threads` workers (the calling thread
-/// alone when one suffices).
+/// f(i) for i in [0, count) on up to `threads` workers, each taking the next index as it finishes one
+/// (tasks of unequal cost balance); the calling thread alone when one suffices.
 void runParallel(size_t count, int threads, const std::function<void(size_t)>& f);
 
 }  // namespace motostab

@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <atomic>
 #include <exception>
 
 #include "analysis/parallel.h"
@@ -25,14 +24,11 @@ FoldScores scoreFolds(int numFolds, const std::vector<int>& foldOf, const std::f
                       const Eigen::VectorXd& fullFit, double divergence, int threads) {
   std::vector<Eigen::VectorXd> fitted(numFolds);
   std::vector<std::string> errors(numFolds);
-  std::atomic<int> next{0};
-  runWorkers(static_cast<size_t>(std::clamp(threads, 1, std::max(numFolds, 1))), [&](size_t) {
-    for (int f; (f = next++) < numFolds;) {
-      try {
-        fitted[f] = fitFold(f);
-      } catch (const std::exception& e) {
-        errors[f] = std::string("fit failed: ") + e.what();
-      }
+  runParallel(static_cast<size_t>(std::max(numFolds, 0)), threads, [&](size_t f) {
+    try {
+      fitted[f] = fitFold(static_cast<int>(f));
+    } catch (const std::exception& e) {
+      errors[f] = std::string("fit failed: ") + e.what();
     }
   });
   FoldScores s;

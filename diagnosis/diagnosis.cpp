@@ -178,21 +178,13 @@ Eigen::VectorXd joinStart(const Eigen::VectorXd& xCauses, const Candidate& c) {
   return x;
 }
 
-// Calls fn(i) for i < n on up to `threads` workers, each taking the next index (dynamic balance).
-void forEachParallel(size_t n, int threads, const std::function<void(size_t)>& fn) {
-  std::atomic<size_t> next{0};
-  runWorkers(std::max<size_t>(1, std::min<size_t>(std::max(threads, 1), n)), [&](size_t) {
-    for (size_t i; (i = next++) < n;) fn(i);
-  });
-}
-
 void fitStep(const FitProblem& problem, Step& step, const DiagnosisOptions& opt, const std::string& stage) {
   const bool warm = !step.fits.empty();
   step.baseline = fitFull(problem, makeModel(step.causes, nullptr), warm ? step.baseline.x : step.xCauses, "baseline");
   step.fits.resize(step.pool.size());
   std::atomic<int> done{0};
   std::mutex progressMutex;
-  forEachParallel(step.pool.size(), opt.threads, [&](size_t i) {
+  runParallel(step.pool.size(), opt.threads, [&](size_t i) {
     const Candidate& c = *step.pool[i];
     const Eigen::VectorXd x0 = warm ? step.fits[i].x : joinStart(step.baseline.x, c);
     try {
@@ -255,8 +247,7 @@ void judge(const FitProblem& problem, const Step& step, size_t i, FitSummary& fi
     for (int l = 0; l < k; ++l)
       if (std::abs(fit.correlation(off + k, off + l)) > opt.maxCorrelation) fit.failed.push_back("correlation > 0.95");
   }
-  if (fit.failed.empty()) crossValidate(problem, model, fit);
-  else if (alwaysCv) crossValidate(problem, model, fit);  // for the report
+  if (fit.failed.empty() || alwaysCv) crossValidate(problem, model, fit);
   if (fit.hasCv) {
     fit.foldsBetter = 0;
     for (size_t f = 0; f < fit.foldRms.size(); ++f)  // a failed fold never counts as better
@@ -403,7 +394,7 @@ void runSearch(FitProblem& problem, Step& step, const DiagnosisOptions& opt, Dia
     fitStep(problem, step, opt, stage);
     estimateNoise(problem, step, opt, stage);
     crossValidate(problem, makeModel(step.causes, nullptr), step.baseline, opt.threads);
-    forEachParallel(step.fits.size(), opt.threads, [&](size_t i) { judge(problem, step, i, step.fits[i], opt, s == 0); });
+    runParallel(step.fits.size(), opt.threads, [&](size_t i) { judge(problem, step, i, step.fits[i], opt, s == 0); });
     if (s == 0) {
       result.candidates = step.fits;
       std::sort(result.candidates.begin(), result.candidates.end(), [](auto& a, auto& b) { return a.bic < b.bic; });

@@ -279,7 +279,6 @@ std::vector<LinearModel> Predictor::calcLinearModels(const std::vector<std::stri
   for (size_t i = 0; i < speeds.size(); ++i) {
     if (i > 0) updTrim(model, speeds[i], sweep.trim, trim);
     out.push_back(linearizeInPlace(model, trim, sweep.linearize));
-
     if (i == 1 && sweep.groupColumns) {
       sweep.linearize.removeYaw = out[0].findState("yaw") < 0 ? 1 : 0;
       sweep.linearize.grouping = calcColumnGrouping({&out[0], &out[1]});

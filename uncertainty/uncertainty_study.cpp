@@ -174,17 +174,12 @@ TaskResult runTask(const UncertaintySetup& s, size_t t) {
 std::vector<TaskResult> runTasks(const UncertaintySetup& s, const std::vector<size_t>& indices, int threads,
                                  const std::function<void(size_t)>& progress) {
   std::vector<TaskResult> out(indices.size());
-  std::atomic<size_t> next{0}, done{0};
-  const size_t workers = std::max<size_t>(1, std::min<size_t>(static_cast<size_t>(std::max(1, threads)), indices.size()));
-  auto work = [&](size_t) {
-    for (size_t i; (i = next++) < indices.size();) {
-      out[i] = runTask(s, indices[i]);
-      const size_t d = ++done;
-      if (progress) progress(d);
-    }
-  };
-  if (workers == 1) work(0);
-  else runWorkers(workers, work);
+  std::atomic<size_t> done{0};
+  runParallel(indices.size(), threads, [&](size_t i) {
+    out[i] = runTask(s, indices[i]);
+    const size_t d = ++done;
+    if (progress) progress(d);
+  });
   return out;
 }
 
