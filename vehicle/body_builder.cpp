@@ -9,9 +9,4 @@ SimTK::Body::Rigid makeBody(const BodySpec& b, const SimTK::Vec3& origin_D) {
   return SimTK::Body::Rigid(SimTK::MassProperties(b.mass, com_B, I_com.shiftFromMassCenter(-com_B, b.mass)));
 }
 
-void addPinSpringDamper(BuildContext& ctx, const SimTK::MobilizedBody& pin, double stiffness, double damping) {
-  SimTK::Force::MobilityLinearSpring(ctx.forces, pin, SimTK::MobilizerQIndex(0), stiffness, 0.0);
-  SimTK::Force::MobilityLinearDamper(ctx.forces, pin, SimTK::MobilizerUIndex(0), damping);
-}
-
 }  // namespace motostab

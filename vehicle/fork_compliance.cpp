@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "plugins/pin_spring_damper.h"
 #include "vehicle/body_builder.h"
 
 namespace motostab {
@@ -24,14 +25,14 @@ ForkAssembly addForkCompliance(BuildContext& ctx, SimTK::MobilizedBody& frontFra
   ForkAssembly out;
   SimTK::MobilizedBody::Pin carrier =
       addPinAtDesignPose(frontFrame, SimTK::Transform(), makeBody(f.carrier, p_DF), p_FP, calcForkBendingAxis(s));
-  addPinSpringDamper(ctx, carrier, f.stiffness, f.damping);
+  addPinSpringDamper(ctx.forces, carrier, f.stiffness, f.damping);
   out.coordinates.push_back({"fork_bending", carrier});
   out.hubCarrier = carrier;
   if (f.hasTorsion) {
     const double lambda = s.geometry.steerAxisTilt;
     SimTK::MobilizedBody::Pin link = addPinAtDesignPose(carrier, SimTK::Transform(), SimTK::Body::Massless(), p_FP,
                                                         SimTK::Vec3(-std::sin(lambda), 0, std::cos(lambda)));
-    addPinSpringDamper(ctx, link, f.torsionStiffness, f.torsionDamping);
+    addPinSpringDamper(ctx.forces, link, f.torsionStiffness, f.torsionDamping);
     out.coordinates.push_back({"fork_torsion", link});
     out.hubCarrier = link;
   }

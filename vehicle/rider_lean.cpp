@@ -1,5 +1,6 @@
 #include "vehicle/rider_lean.h"
 
+#include "plugins/pin_spring_damper.h"
 #include "vehicle/body_builder.h"
 
 namespace motostab {
@@ -9,7 +10,7 @@ SimTK::MobilizedBody::Pin addRiderLean(BuildContext& ctx, SimTK::MobilizedBody& 
   const SimTK::Vec3 p_DH(0, 0, spec.hingeHeight);  // hinge point in D; the upper body's origin
   SimTK::MobilizedBody::Pin upper = addPinAtDesignPose(rearFrame, SimTK::Transform(p_DH - p_DR),
                                                        makeBody(spec.body, p_DH), SimTK::Vec3(0), SimTK::Vec3(1, 0, 0));
-  addPinSpringDamper(ctx, upper, spec.stiffness, spec.damping);
+  addPinSpringDamper(ctx.forces, upper, spec.stiffness, spec.damping);
   return upper;
 }
 

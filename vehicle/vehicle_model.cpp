@@ -1,5 +1,6 @@
 #include "vehicle/vehicle_model.h"
 
+#include "plugins/pin_spring_damper.h"
 #include "swingarm/compliance/swingarm_compliance.h"
 #include "tyres/relaxation_linear.h"
 #include "tyres/rolling_no_slip.h"
@@ -39,8 +40,7 @@ MobilizedBody::Pin addSuspension(BuildContext& ctx, MobilizedBody& rearFrame, co
   MobilizedBody::Pin link = addPinAtDesignPose(rearFrame, Transform(p_RP), SimTK::Body::Massless(), Vec3(0), Vec3(0, 1, 0));
   const SuspensionSpec& su = s.swingarm.suspension;
   const double freeAngle = -calcStaticPivotMoment(s) / su.stiffness;
-  SimTK::Force::MobilityLinearSpring(ctx.forces, link, SimTK::MobilizerQIndex(0), su.stiffness, freeAngle);
-  SimTK::Force::MobilityLinearDamper(ctx.forces, link, SimTK::MobilizerUIndex(0), su.damping);
+  addPinSpringDamper(ctx.forces, link, su.stiffness, su.damping, freeAngle);
   return link;
 }
 

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <filesystem>
 
+#include "plugins/pin_spring_damper.h"
+
 namespace motostab {
 
 using SimTK::MobilizedBody;
@@ -73,8 +75,7 @@ AxisSpec readAxis(YamlMap m, double kScale, double cScale) {
 MobilizedBody::Pin addComplianceJoint(BuildContext& ctx, MobilizedBody& parent, const Transform& X_PS,
                                       const SimTK::Body& body, const ComplianceAxis& axis) {
   MobilizedBody::Pin pin = addPinAtDesignPose(parent, X_PS, body, axis.point_S, axis.direction_S);
-  SimTK::Force::MobilityLinearSpring(ctx.forces, pin, SimTK::MobilizerQIndex(0), axis.stiffness, 0.0);
-  SimTK::Force::MobilityLinearDamper(ctx.forces, pin, SimTK::MobilizerUIndex(0), axis.damping);
+  addPinSpringDamper(ctx.forces, pin, axis.stiffness, axis.damping);
   return pin;
 }
 
