@@ -11,7 +11,7 @@ mode="${1:-}"
 case "$mode" in
   --sanitize)
     shift
-    export MOTOSTAB_BUILD_DIR=build-asan MOTOSTAB_CMAKE_ARGS="-DMOTOSTAB_BUILD_BENCH=OFF"
+    export MOTOSTAB_BUILD_DIR=build-asan MOTOSTAB_CMAKE_ARGS="-DMOTOSTAB_BUILD_BENCH=OFF -DMOTOSTAB_EIGEN_CHECKS=ON"
     export MOTOSTAB_CXX_FLAGS="-fsanitize=address,undefined -fno-sanitize-recover=undefined -fno-omit-frame-pointer"
     export ASAN_OPTIONS="${ASAN_OPTIONS:-detect_leaks=1:abort_on_error=1:strict_string_checks=1}"
     export UBSAN_OPTIONS="${UBSAN_OPTIONS:-print_stacktrace=1:halt_on_error=1}"
@@ -20,7 +20,7 @@ case "$mode" in
     ctest --output-on-failure -j "$jobs" "$@" ;;
   --tsan)
     shift
-    export MOTOSTAB_BUILD_DIR=build-tsan MOTOSTAB_CMAKE_ARGS="-DMOTOSTAB_BUILD_BENCH=OFF"
+    export MOTOSTAB_BUILD_DIR=build-tsan MOTOSTAB_CMAKE_ARGS="-DMOTOSTAB_BUILD_BENCH=OFF -DMOTOSTAB_EIGEN_CHECKS=ON"
     export MOTOSTAB_CXX_FLAGS="-fsanitize=thread -fno-omit-frame-pointer"
     export TSAN_OPTIONS="${TSAN_OPTIONS:-halt_on_error=1:second_deadlock_stack=1}"
     "$root/scripts/build.sh" test_analysis test_apps test_plugins test_uncertainty test_diagnosis motostab
