@@ -28,9 +28,17 @@ double calcSteerDampingScale(const YAML::Node& tree) {
   return std::max(m * 9.81 * std::max(trail, 0.02), 1e-3);
 }
 
+// A parameter free within [lower, upper] from `start`, differenced with `step` (key units).
+CandidateParameter makeFreeParameter(const std::string& name, const std::string& path, double lower, double upper,
+                                     double start, double step) {
+  CandidateParameter c;
+  c.name = name, c.path = path, c.lower = lower, c.upper = upper, c.start = start, c.step = step;
+  return c;
+}
+
 Candidate makeSteerDamper(const YAML::Node& tree) {
   const double s = calcSteerDampingScale(tree);
-  CandidateParameter c{"damping_Nms_per_rad", "steer_damper.damping_Nms_per_rad", 0, 20 * s, 0.05 * s, 1e-3 * s};
+  CandidateParameter c = makeFreeParameter("damping_Nms_per_rad", "steer_damper.damping_Nms_per_rad", 0, 20 * s, 0.05 * s, 1e-3 * s);
   c.off = 0;
   c.offAtBound = true;
   return {"steer_damper", {"steer_damper={damping_Nms_per_rad: 0}"}, {c}};
@@ -38,7 +46,7 @@ Candidate makeSteerDamper(const YAML::Node& tree) {
 
 // A stiffness fitted on a log scale from `start` within [start/1e3, start*1e3]; off at infinity.
 CandidateParameter makeStiffness(const std::string& name, const std::string& path, double start) {
-  CandidateParameter c{name, path, start * 1e-3, start * 1e3, start, 1e-4};
+  CandidateParameter c = makeFreeParameter(name, path, start * 1e-3, start * 1e3, start, 1e-4);
   c.logScale = true;
   c.offAtInfinity = true;
   return c;
@@ -123,7 +131,7 @@ double findSigma(const ScalarParameter& p, const std::vector<std::pair<std::stri
 // Bounds keep the vehicle physical: masses, inertias and positive lengths stay above a tenth of their
 // value; everything within 30 sigma (and within a factor 5 of positive masses and inertias).
 Candidate makeParameterCandidate(const ScalarParameter& p, double sigma) {
-  CandidateParameter c{"value", p.path, p.value - 30 * sigma, p.value + 30 * sigma, p.value, 1e-3 * sigma};
+  CandidateParameter c = makeFreeParameter("value", p.path, p.value - 30 * sigma, p.value + 30 * sigma, p.value, 1e-3 * sigma);
   const bool positive = p.value > 0 && (p.kind == ParameterKind::Mass || p.kind == ParameterKind::Inertia ||
                                         (p.kind == ParameterKind::Length && p.path.find("com_m") == std::string::npos &&
                                          p.path.find("pivot") == std::string::npos));

@@ -52,7 +52,9 @@ TEST(Modes, MatchCostMatrixEqualsPairwiseCosts) {
   for (int i = 0; i < self.rows(); ++i) {
     EXPECT_NEAR(self(i, i), 0.0, 1e-12) << i;
     for (int j = 0; j < self.cols(); ++j)
-      if (std::abs(b.eigenvalues[i] - b.eigenvalues[j]) > 1e-6) EXPECT_GT(self(i, j), 0.0) << i << " " << j;
+      if (std::abs(b.eigenvalues[i] - b.eigenvalues[j]) > 1e-6) {
+        EXPECT_GT(self(i, j), 0.0) << i << " " << j;
+      }
   }
   // Tracking: every eigenvalue of every speed belongs to exactly one branch.
   ASSERT_EQ(r.branches.size(), static_cast<size_t>(a.eigenvalues.size()));

@@ -71,7 +71,9 @@ void expectGroupedSweepMatches(const std::vector<std::string>& sets, double star
   // Both are second-order differences (step 3e-6); grouping adds cross third-derivative terms of the
   // same order (1.3e-9 against the fourth-order linearisation, column by column 1.7e-10).
   EXPECT_LT(worst, 5e-9);
-  if (expectGroups) EXPECT_GE(saved, 4u);
+  if (expectGroups) {
+    EXPECT_GE(saved, 4u);
+  }
   ASSERT_EQ(grouped.criticalSpeeds.size(), single.criticalSpeeds.size());
   for (size_t c = 0; c < grouped.criticalSpeeds.size(); ++c)
     EXPECT_NEAR(grouped.criticalSpeeds[c].speed, single.criticalSpeeds[c].speed, 1e-6);

@@ -39,7 +39,7 @@ inline int checkOutputsParse(const std::filesystem::path& dir) {
     if (!e.is_regular_file()) continue;
     if (e.path().extension() == ".json") {
       std::ifstream in(e.path());
-      (void)nlohmann::json::parse(in);  // throws on bad JSON
+      EXPECT_FALSE(nlohmann::json::parse(in).is_discarded());  // throws on bad JSON
       ++n;
     } else if (e.path().extension() == ".csv") {
       const TextCsv t = readTextCsv(e.path());  // throws on ragged rows
