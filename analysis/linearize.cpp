@@ -126,20 +126,25 @@ ColumnGrouping calcColumnGrouping(const std::vector<const LinearModel*>& samples
   ColumnGrouping g;
   if (samples.empty()) return g;
   const LinearModel& first = *samples.front();
-  const int n = static_cast<int>(first.states.size());
+  const int n = static_cast<int>(first.states.size()), nr = static_cast<int>(first.removedRows.size());
   for (const LinearModel* m : samples) {
-    if (static_cast<int>(m->states.size()) != n || m->A.rows() != n) return {};
+    if (static_cast<int>(m->states.size()) != n || m->A.rows() != n || static_cast<int>(m->removedRows.size()) != nr)
+      return {};
     for (int i = 0; i < n; ++i)
       if (m->states[i].name != first.states[i].name) return {};
+    for (int k = 0; k < nr; ++k)
+      if (m->removedRows[k].first != first.removedRows[k].first || m->removedRows[k].second.size() != n) return {};
   }
   for (const auto& st : first.states) g.states.push_back(st.name);
-  g.pattern.setConstant(n, n, false);
-  g.rowScale.assign(n, 0.0);
+  for (const auto& r : first.removedRows) g.removedStates.push_back(r.first);
+  g.pattern.setConstant(n + nr, n, false);
+  g.rowScale.assign(n + nr, 0.0);
   for (const LinearModel* m : samples)
-    for (int i = 0; i < n; ++i) {
-      const double rowMax = m->A.row(i).cwiseAbs().maxCoeff();
+    for (int i = 0; i < n + nr; ++i) {
+      const Eigen::RowVectorXd row = i < n ? Eigen::RowVectorXd(m->A.row(i)) : m->removedRows[i - n].second;
+      const double rowMax = row.cwiseAbs().maxCoeff();
       g.rowScale[i] = std::max(g.rowScale[i], rowMax);
-      for (int j = 0; j < n; ++j) g.pattern(i, j) = g.pattern(i, j) || std::abs(m->A(i, j)) > tolerance * rowMax;
+      for (int j = 0; j < n; ++j) g.pattern(i, j) = g.pattern(i, j) || std::abs(row[j]) > tolerance * rowMax;
     }
   g.mirror = proposeMirror(g);
   for (const auto& st : first.states) g.slots.push_back(st.entry.slot);
@@ -267,11 +272,22 @@ void addDirection(const LinearizeContext& c, const ConstraintJacobian& cj, const
   }
 }
 
-// Grouping state index -> lin.states index (-1 where lin lacks the state).
+// Grouping pattern row (states, then removed states) -> lin.states index (-1 where lin lacks the
+// state); the first g.states.size() entries are the columns'.
 std::vector<int> mapGroupingStates(const ColumnGrouping& g, const LinearModel& lin) {
   std::vector<int> out;
-  for (const auto& name : g.states) out.push_back(lin.findState(name));
+  for (const auto* names : {&g.states, &g.removedStates})
+    for (const auto& name : *names) out.push_back(lin.findState(name));
   return out;
+}
+
+// Mirror sign of pattern row r: the state's, or for a removed state's row that of the columns it
+// touches (-1 if any is lateral).
+int getRowSign(const ColumnGrouping& g, size_t r) {
+  if (r < g.mirror.size()) return g.mirror[r];
+  for (size_t j = 0; j < g.mirror.size(); ++j)
+    if (g.pattern(static_cast<Eigen::Index>(r), static_cast<Eigen::Index>(j)) && g.mirror[j] == -1) return -1;
+  return 1;
 }
 
 bool isLateralGroup(const ColumnGrouping& g, const std::vector<int>& group) {
@@ -283,7 +299,7 @@ bool isLateralGroup(const ColumnGrouping& g, const std::vector<int>& group) {
 // below that (the mirror identity is then off by at most that fraction of a column).
 bool isTrimSymmetric(const LinearizeContext& c, const ColumnGrouping& g, const LinearModel& lin,
                      const std::vector<int>& linearIndexOf) {
-  for (size_t r = 0; r < linearIndexOf.size(); ++r) {
+  for (size_t r = 0; r < g.states.size(); ++r) {
     const StateEntry& e = lin.states[linearIndexOf[r]].entry;
     if (g.mirror[r] == -1 && std::abs(c.fn.get(c.s, e)) > 1e-9 * c.stepFor(e)) return false;
   }
@@ -292,11 +308,11 @@ bool isTrimSymmetric(const LinearizeContext& c, const ColumnGrouping& g, const L
   return true;
 }
 
-// Mirror signs of the rows of ydot: g.mirror on the linear states' rows, +1 on the others.
+// Mirror signs of the rows of ydot: getRowSign on the pattern's rows, +1 on the others.
 Eigen::VectorXd calcRowMirror(const LinearizeContext& c, const ColumnGrouping& g, const LinearModel& lin,
                               const std::vector<int>& linearIndexOf) {
   Eigen::VectorXd sign = Eigen::VectorXd::Ones(c.nq + c.nu + c.nz);
-  for (size_t r = 0; r < linearIndexOf.size(); ++r) sign[c.rowOf(lin.states[linearIndexOf[r]].entry)] = g.mirror[r];
+  for (size_t r = 0; r < linearIndexOf.size(); ++r) sign[c.rowOf(lin.states[linearIndexOf[r]].entry)] = getRowSign(g, r);
   return sign;
 }
 

@@ -14,12 +14,16 @@ namespace motostab {
 struct ColumnGrouping {
   std::vector<std::string> states;            ///< names of the linear states (rows and columns)
   std::vector<Slot> slots;                    ///< q, u or z of each state
-  Eigen::Matrix<bool, Eigen::Dynamic, Eigen::Dynamic> pattern;  ///< pattern(i, j): A(i, j) may be nonzero
+  /// Removed coordinates whose rows the samples keep (LinearModel::removedRows, e.g. the Whipple
+  /// bicycle's yaw): grouped columns fill these rows too.
+  std::vector<std::string> removedStates;
+  /// pattern(i, j): A(i, j) may be nonzero; rows: `states`, then `removedStates`; columns: `states`.
+  Eigen::Matrix<bool, Eigen::Dynamic, Eigen::Dynamic> pattern;
   std::vector<std::vector<int>> groups;       ///< column indices into `states`; singletons omitted (but see useMirror)
   /// Proposed mirror image (y -> -y) of the states: -1 for the pattern's connected block holding
   /// `roll` (the lateral states), +1 for the others; empty when the pattern does not split.
   std::vector<int> mirror;
-  std::vector<double> rowScale;  ///< largest |A(i, j)| of row i over the samples (1/s, ...)
+  std::vector<double> rowScale;  ///< largest |A(i, j)| of pattern row i over the samples (1/s, ...)
   /// Set by checkMirrorSymmetry: each group of lateral columns then needs one evaluation, f(x0 - h d)
   /// being the mirror image of f(x0 + h d); `groups` then hold every column (singletons too), lateral
   /// groups merged with in-plane ones where that saves evaluation cost.

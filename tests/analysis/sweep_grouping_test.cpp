@@ -90,5 +90,35 @@ TEST(ColumnGrouping, TiltedAxisSweepMatchesColumnByColumn) {
                             1, false);  // asymmetric: no upright equilibrium at standstill
 }
 
+// The rows of removed coordinates (the Whipple bicycle's yaw, a dependent rate under the rolling
+// constraints, from which diagnosis predicts a yaw-rate gyro; the cyclic coordinates' rates) agree
+// with the column-by-column ones, with grouped columns (Whipple) and mirrored ones (enduro).
+void expectRemovedRowsMatch(const std::string& scenario, double start, double stop) {
+  const VehicleModel model(loadScenario(std::string(MOTOSTAB_SOURCE_DIR) + "/scenarios/" + scenario));
+  SweepOptions opt;
+  opt.start = start, opt.stop = stop, opt.step = (stop - start) / 10;
+  const SweepResult grouped = runSweep(model, opt);
+  opt.groupColumns = false;
+  const SweepResult single = runSweep(model, opt);
+  ASSERT_EQ(grouped.models.size(), single.models.size());
+  EXPECT_FALSE(calcColumnGrouping({&single.models[0], &single.models[1]}).groups.empty()) << "no column is grouped";
+  for (size_t k = 0; k < grouped.models.size(); ++k) {
+    const LinearModel &a = grouped.models[k], &b = single.models[k];
+    ASSERT_EQ(a.removedRows.size(), b.removedRows.size());
+    ASSERT_FALSE(b.removedRows.empty());
+    for (size_t r = 0; r < b.removedRows.size(); ++r) {
+      ASSERT_EQ(a.removedRows[r].first, b.removedRows[r].first);
+      const Eigen::RowVectorXd &x = a.removedRows[r].second, &y = b.removedRows[r].second;
+      EXPECT_LT((x - y).norm(), 1e-7 * std::max(1.0, y.norm())) << scenario << " row " << b.removedRows[r].first
+                                                                << " at " << grouped.speeds[k] << " m/s";
+    }
+  }
+}
+
+TEST(ColumnGrouping, RemovedRowsMatchColumnByColumn) {
+  expectRemovedRowsMatch("whipple-benchmark.yaml", 1, 8);
+  expectRemovedRowsMatch("enduro.yaml", 5, 40);
+}
+
 }  // namespace
 }  // namespace motostab
