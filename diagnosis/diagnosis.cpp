@@ -257,10 +257,16 @@ void judge(const FitProblem& problem, const Step& step, size_t i, FitSummary& fi
 }
 
 
-// chi2 with parameter i held at internal value v, the others refitted.
+// chi2 with parameter i held at internal value v, the others refitted; infinite where v makes no
+// valid vehicle (an inertia past the triangle inequality, a trim that fails): the profile then ends
+// at the edge of the valid values.
 double calcProfileChi2(const FitProblem& problem, const ModelSpec& model, Eigen::VectorXd x, int i, double v) {
   x(i) = v;
-  return fitModel(problem, model, x, -1, 15, i).chi2;
+  try {
+    return fitModel(problem, model, x, -1, 15, i).chi2;
+  } catch (const std::exception&) {
+    return HUGE_VAL;
+  }
 }
 
 // One end of the 95 % profile-likelihood interval (chi2 rise of 3.84) in direction dir, internal units.

@@ -156,6 +156,25 @@ TEST(HiddenEffect, RiderLeanOnTheBenchmark) {
   expectFound(r, "rider_lean", "stiffness_Nm_per_rad", k);
 }
 
+// A parameter whose profile-likelihood interval runs into vehicles that cannot exist: the benchmark
+// front frame's I_xz (0.00756 kg m^2 in the scenario's z-up axes) drawn near the end of its valid range
+// (the triangle inequality of the principal moments, computed here from Meijaard et al. 2007 Table 1:
+// I_xx 0.05892, I_yy 0.06, I_zz 0.00708 kg m^2, |I_xz| <= sqrt((I_yy / 2)^2 - ((I_xx - I_zz) / 2)^2)). The interval must stop at that edge (a
+// refit there throws: before, the whole diagnosis stopped with the scenario's input error).
+TEST(HiddenEffect, ProfileStopsAtTheEdgeOfValidVehicles) {
+  const double edge = std::sqrt(0.03 * 0.03 - std::pow((0.05892 - 0.00708) / 2, 2));
+  const double xz = edge * testing::Draw(6363).uniform(0.97, 0.99);
+  auto h = makeEffect(kBenchmark, 808, {"front_frame.inertia_kgm2.xz=" + formatNumber(xz)}, {"weave", "capsize", "castor"});
+  h.start = 3, h.step = 0.25, h.relativeNoise = 0.002, h.absoluteNoise = 0.002;
+  const DiagnosisResult r = runHidden(h, "edge", true, {}, "parameter:front_frame.inertia_kgm2.xz", 1);
+  ASSERT_EQ(r.causes.size(), 1u);
+  const ParameterEstimate& e = r.causes[0].fit.parameters.at(0);
+  ASSERT_TRUE(e.hasProfile);
+  EXPECT_NEAR(e.value, xz, 3 * e.stderr_);
+  EXPECT_LE(e.profileHigh, edge + 1e-6) << "the interval reaches past the valid range";
+  EXPECT_GT(e.profileHigh, edge - 0.5 * (edge - e.value)) << "the interval stops short of the edge";
+}
+
 // Noise only: no cause in any of 20 seeds.
 TEST(HiddenEffect, NullDataNamesNothing) {
   for (uint64_t seed = 1; seed <= 20; ++seed) {
