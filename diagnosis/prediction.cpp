@@ -213,13 +213,9 @@ Predictor::Predictor(std::string scenarioFile, std::vector<std::string> baseOver
   for (const auto& run : data.responses) speeds_.push_back(run.speed);
   speeds_ = makeSortedUnique(speeds_);
   double lo = HUGE_VAL, hi = -HUGE_VAL;
-  std::vector<double> others;
-  int labelled = 0;
   for (const auto& row : data.eigenvalues)
-    for (double v : getEvaluationSpeeds(row)) {
-      if (row.mode.empty()) others.push_back(v);
-      else lo = std::min(lo, v), hi = std::max(hi, v), ++labelled;
-    }
+    for (double v : getEvaluationSpeeds(row))
+      if (!row.mode.empty()) lo = std::min(lo, v), hi = std::max(hi, v);
   const Scenario scenario = loadScenario(scenarioFile_, baseOverrides_);
   const VehicleModel model(scenario);
   SweepOptions opt;
@@ -228,6 +224,15 @@ Predictor::Predictor(std::string scenarioFile, std::vector<std::string> baseOver
   opt.stop = std::max(scenario.speeds.stop, std::ceil(speeds_.back() / opt.step) * opt.step);
   opt.threads = 2;
   reference_ = std::make_shared<SweepResult>(runSweep(model, opt));
+  if (hi > lo) exactModes_ = findBranchPointModes(lo, hi);
+  std::vector<double> others;  // speeds predicted exactly inside the fast predictions
+  int labelled = 0;            // evaluations of interpolated rows
+  lo = HUGE_VAL, hi = -HUGE_VAL;
+  for (const auto& row : data.eigenvalues)
+    for (double v : getEvaluationSpeeds(row)) {
+      if (row.mode.empty() || isExactMode(row.mode)) others.push_back(v);
+      else lo = std::min(lo, v), hi = std::max(hi, v), ++labelled;
+    }
   if (hi > lo) nodes_ = chooseNodes(lo, hi, labelled);
   for (const auto& run : data.responses) others.push_back(run.speed);
   fastSpeeds_ = nodes_;
@@ -235,9 +240,32 @@ Predictor::Predictor(std::string scenarioFile, std::vector<std::string> baseOver
   fastSpeeds_ = makeSortedUnique(fastSpeeds_);
 }
 
-// The fewest Chebyshev points (5 to 16) on [lo, hi] whose interpolant reproduces every labelled mode
-// of the base scenario at the reference sweep's speeds in [lo, hi] to kNodeTolerance (absolute, 1/s,
-// plus that times |lambda|); none when the rows' own speeds are fewer.
+bool Predictor::isExactMode(const std::string& mode) const {
+  return std::find(exactModes_.begin(), exactModes_.end(), mode) != exactModes_.end();
+}
+
+// Labelled modes of the rows whose base branch is real at some reference speed in [lo, hi] and
+// complex at another (e.g. capsize and castor joining into a pair at low speed).
+std::vector<std::string> Predictor::findBranchPointModes(double lo, double hi) const {
+  const SweepResult& ref = *reference_;
+  std::vector<std::string> out;
+  for (const auto& row : data_.eigenvalues) {
+    if (row.mode.empty() || std::find(out.begin(), out.end(), row.mode) != out.end()) continue;
+    const auto b = std::find_if(ref.branches.begin(), ref.branches.end(), [&](const ModeBranch& x) { return x.label == row.mode; });
+    if (b == ref.branches.end()) continue;
+    bool real = false, complex = false;
+    for (size_t k = 0; k < ref.speeds.size(); ++k)
+      if (ref.speeds[k] >= lo && ref.speeds[k] <= hi && b->index[k] >= 0)
+        (std::abs(b->eigenvalue[k].imag()) > 0 ? complex : real) = true;
+    if (real && complex) out.push_back(row.mode);
+  }
+  return out;
+}
+
+// The fewest Chebyshev points (5 to 16) on [lo, hi] whose interpolant reproduces every interpolated
+// labelled mode of the base scenario at the reference sweep's speeds in [lo, hi] to kNodeTolerance
+// (absolute, 1/s, plus that times |lambda|); none when the rows' own speeds are fewer, 16 when no
+// count does (docs/diagnosis.md, Known limits).
 std::vector<double> Predictor::chooseNodes(double lo, double hi, int labelled) const {
   const SweepResult& ref = *reference_;
   std::vector<double> nodes;
@@ -247,6 +275,7 @@ std::vector<double> Predictor::chooseNodes(double lo, double hi, int labelled) c
     const std::vector<LinearModel> models = calcLinearModels({}, nodes);
     double worst = 0;
     for (const ModeTrack& t : trackModes(models)) {
+      if (isExactMode(t.mode)) continue;
       std::vector<std::complex<double>> f;
       for (size_t k = 0; k < models.size() && t.index[k] >= 0; ++k) {
         const auto l = models[k].eigenvalues(t.index[k]);
@@ -330,7 +359,7 @@ std::vector<std::complex<double>> Predictor::predictInterpolated(const std::vect
     std::complex<double> sum = 0;
     const std::vector<double> vs = getEvaluationSpeeds(row);
     for (double v : vs) {
-      if (row.mode.empty()) {
+      if (row.mode.empty() || isExactMode(row.mode)) {
         sum += pickEigenvalue(models, findSpeed(speeds, v), row, tracks);
         continue;
       }

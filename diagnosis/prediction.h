@@ -73,6 +73,8 @@ class Predictor {
   const std::string& getScenarioFile() const { return scenarioFile_; }
   const std::vector<std::string>& getBaseOverrides() const { return baseOverrides_; }
   const SweepResult& getReferenceSweep() const { return *reference_; }
+  /// The Chebyshev points (m/s) of the fast predictions; empty when fits predict exactly.
+  const std::vector<double>& getNodes() const { return nodes_; }
 
  private:
   std::vector<std::complex<double>> predictInterpolated(const std::vector<LinearModel>& models,
@@ -82,6 +84,8 @@ class Predictor {
     std::vector<int> index;  ///< per model (-1: no such mode in the base sweep there)
   };
   std::vector<double> chooseNodes(double lo, double hi, int labelled) const;
+  bool isExactMode(const std::string& mode) const;
+  std::vector<std::string> findBranchPointModes(double lo, double hi) const;
   int matchMode(const std::string& mode, const LinearModel& lin, const LinearModel* prev, int prevIndex) const;
   std::vector<ModeTrack> trackModes(const std::vector<LinearModel>& models) const;
   std::complex<double> pickEigenvalue(const std::vector<LinearModel>& models, size_t k, const MeasuredEigenvalue& row,
@@ -92,7 +96,10 @@ class Predictor {
   const MeasuredData& data_;
   std::vector<double> speeds_;
   std::vector<double> nodes_;       ///< Chebyshev points of the fast predictions (empty: none)
-  std::vector<double> fastSpeeds_;  ///< speeds of the fast predictions (nodes, runs, unlabelled rows)
+  std::vector<double> fastSpeeds_;  ///< speeds of the fast predictions (nodes, runs, rows not interpolated)
+  /// Labelled modes whose base branch turns between real and complex over the rows' speeds (a
+  /// branch point no polynomial follows): the fast predictions take them at the rows' own speeds.
+  std::vector<std::string> exactModes_;
   std::shared_ptr<SweepResult> reference_;
 };
 

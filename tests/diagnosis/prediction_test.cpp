@@ -8,6 +8,8 @@
 #include <fstream>
 
 #include "diagnosis/diagnosis.h"
+#include "io/atomic_file.h"
+#include "scenario/bicycle_parameters.h"
 #include "hidden_effect.h"
 
 namespace motostab {
@@ -39,6 +41,33 @@ TEST(Prediction, LabelledEigenvaluesMatchTheBenchmark) {
   EXPECT_NEAR(r.eigenvalues[2].real(), 0.41325331521125, 1e-7);
   EXPECT_NEAR(r.eigenvalues[2].imag(), 3.07910818603206, 1e-7);
   EXPECT_NEAR(r.eigenvalues[3].real(), -14.07838969279820, 1e-6);  // "nearest" to -14
+}
+
+// The fast predictions inside fits (Chebyshev interpolation over speed) agree with the exact ones.
+// On the Fisher bicycle (BicycleParameters, measured) capsize and castor join into a complex pair near
+// 2.6 m/s, a branch point no polynomial follows: interpolating through it was off by up to 0.17 1/s
+// (1-2 noise sigma of held-out data); those two are now taken at the rows' speeds. Rows of weave,
+// capsize and castor at random (seeded) speeds in 2-8 m/s; the weave, complex throughout, is still
+// interpolated (its error, up to 6e-3 1/s next to its own branch point below 2 m/s, is a known limit).
+TEST(Prediction, FastPredictionsAgreeWithExactOnesAcrossABranchPoint) {
+  const std::string file = (fs::temp_directory_path() / ("motostab-fisher-" + std::to_string(::getpid()) + ".yaml")).string();
+  writeFileAtomically(file, convertBicycleParametersToScenario(std::string(MOTOSTAB_TEST_DATA_DIR) +
+                                                                   "/measured-data/BicycleParameters/data/bicycles/Fisher/Parameters/FisherBenchmark.txt",
+                                                               "fisher"));
+  testing::Draw draw(3131);
+  MeasuredData data;
+  for (int k = 0; k < 16; ++k) {
+    const double v = 2 + 6 * (k + draw.uniform()) / 16;
+    for (const char* mode : {"weave", "capsize", "castor"}) data.eigenvalues.push_back(makeRow(v, mode, 0, 0));
+  }
+  const Predictor p(file, {}, data);
+  const Prediction exact = p.predict({}, {}, true), fast = p.predict({}, {}, false);
+  for (size_t i = 0; i < data.eigenvalues.size(); ++i)
+    if (data.eigenvalues[i].mode != "weave")
+      EXPECT_LT(std::abs(fast.eigenvalues[i] - exact.eigenvalues[i]), 1e-6 * (1 + std::abs(exact.eigenvalues[i])))
+          << data.eigenvalues[i].mode << " at " << data.eigenvalues[i].speed << " m/s";
+  EXPECT_FALSE(p.getNodes().empty()) << "the weave is interpolated";
+  fs::remove(file);
 }
 
 // A ranged row is the mean over its range: compared with a fine trapezoid of the sweep's weave here.
