@@ -50,6 +50,10 @@ json makeByMode(const std::vector<ComponentResidual>& rs) {
     const std::string mode = r.name.substr(0, dot), part = r.name.substr(dot + 1);
     if (mode.rfind("run", 0) == 0) {
       j[r.name] = {{"mean_residual", r.meanReal}, {"rms_normalised", r.rmsReal}, {"vaf_percent", r.vafAfter}};
+    } else if (part == "real+imag") {  // one noise level for both parts (FitProblem::poolSmallComponents)
+      j[mode]["mean_residual"] = r.meanReal;
+      j[mode]["rms_normalised"] = r.rmsReal;
+      j[mode]["rows"] = r.count;
     } else if (part == "real") {
       j[mode]["mean_real_residual"] = r.meanReal;
       j[mode]["slope_real_per_mps"] = r.slopeRealPerMps;

@@ -33,11 +33,16 @@ struct ModelSpec {
   Eigen::VectorXd calcPriorResiduals(const Eigen::VectorXd& x) const;
 };
 
+/// Fewest rows without stderr from which a component's noise is estimated on its own.
+constexpr int kMinEstimatedRows = 5;
+
 class FitProblem {
  public:
   FitProblem(const Predictor& predictor, const MeasuredData& data, int folds);
   std::vector<Observation> observations;
-  std::vector<std::string> components;   ///< weave.real, weave.imag, run1.gyro_V, ...
+  /// weave.real, weave.imag, run1.gyro_V, ...; <mode>.real+imag where one part had fewer than
+  /// kMinEstimatedRows rows without stderr (poolSmallComponents).
+  std::vector<std::string> components;
   std::vector<double> componentSigma;    ///< current sigma of each component (unknown ones estimated)
   std::vector<bool> componentKnown;
   int numFolds = 1;
@@ -63,6 +68,7 @@ class FitProblem {
   void addEigenvalueObservations();
   void addResponseObservations();
   void assignFolds(int folds);
+  void poolSmallComponents();
   int addComponent(const std::string& name, bool known);
   const Predictor& predictor_;
   const MeasuredData& data_;
