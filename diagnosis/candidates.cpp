@@ -82,7 +82,10 @@ void addTyreSlipCandidate(const YAML::Node& tree, std::vector<Candidate>& out) {
 // stiffness m g d, bounded below by 1.1 m g d (the rider alone upright-stable); damping fixed at 0.3
 // of critical at the start. A rear frame lighter than the rider holds none (a riderless vehicle).
 void addRiderLeanCandidate(const YAML::Node& tree, std::vector<Candidate>& out, std::vector<std::string>& unavailable) {
-  if (tree["rider_lean"]) return;
+  if (tree["rider_lean"]) {
+    unavailable.push_back("rider_lean: the scenario has one already (its stiffness and damping are parameter candidates)");
+    return;
+  }
   const YAML::Node rf = tree["rear_frame"];
   const double mB = getScalar(tree, "rear_frame", "mass_kg", 0);
   if (!(mB > kRiderMass_kg)) {

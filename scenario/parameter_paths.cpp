@@ -64,11 +64,11 @@ std::vector<ScalarParameter> listScalarParameters(const YAML::Node& tree) {
     const YAML::Node n = findKeyPath(tree, section);
     if (n && n.IsMap()) collect(n, section, out);
   }
-  // Measured parts of optional sections: the swingarm, the leaning rider's upper body (issue 10)
-  // and the fork's hub carrier when given explicitly.
+  // Measured parts of optional sections: the swingarm, the leaning rider's upper body and its lean
+  // stiffness and damping (issue 10), and the fork's hub carrier when given explicitly.
   const std::pair<const char*, std::vector<const char*>> sections[] = {
       {"swingarm", {"pivot_m", "mass_kg", "com_m", "inertia_kgm2"}},
-      {"rider_lean", {"hinge_height_m", "mass_kg", "com_m", "inertia_kgm2"}},
+      {"rider_lean", {"hinge_height_m", "mass_kg", "com_m", "inertia_kgm2", "stiffness_Nm_per_rad", "damping_Nms_per_rad"}},
       {"fork_compliance.carrier", {"mass_kg", "com_m", "inertia_kgm2"}},
   };
   for (const auto& [name, keys] : sections) {

@@ -24,9 +24,9 @@ struct ScalarParameter {
 
 /// Every scalar of the vehicle's measured description present in a scenario tree: geometry, the
 /// rear and front frames (mass, each CoM coordinate, each inertia entry), both wheels, the
-/// swingarm's pivot and mass properties, and when present the leaning rider's hinge height and upper
-/// body (`rider_lean`) and an explicit fork hub carrier (`fork_compliance.carrier`). Order: as in the
-/// scenario format.
+/// swingarm's pivot and mass properties, and when present the leaning rider's hinge height, upper
+/// body, lean stiffness and damping (`rider_lean`) and an explicit fork hub carrier
+/// (`fork_compliance.carrier`). Order: as in the scenario format.
 std::vector<ScalarParameter> listScalarParameters(const YAML::Node& scenarioTree);
 
 /// The number at any key path of a tree (also plugin sections, e.g.

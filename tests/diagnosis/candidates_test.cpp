@@ -50,5 +50,25 @@ TEST(Candidates, NoRiderLeanOnARiderlessBicycle) {
   EXPECT_NE(find(all, "steer_damper"), nullptr);
 }
 
+// A scenario with a leaning rider (Browser with Jason, BicycleParameters) offers no second one; its lean
+// stiffness and damping are wrong-parameter candidates instead, centred on the scenario's values.
+TEST(Candidates, AnExistingRiderLeanHasItsStiffnessAndDampingAsParameters) {
+  const std::string file = kDir + "/scenarios/browser-jason-rider.yaml";
+  const YAML::Node tree = makeScenarioTree(file, {});
+  std::vector<std::string> unavailable;
+  const auto all = listCandidates(tree, {}, &unavailable);
+  EXPECT_EQ(find(all, "rider_lean"), nullptr);
+  ASSERT_EQ(unavailable.size(), 1u);
+  EXPECT_NE(unavailable[0].find("rider_lean"), std::string::npos) << unavailable[0];
+  for (const char* key : {"stiffness_Nm_per_rad", "damping_Nms_per_rad"}) {
+    const Candidate* c = find(all, std::string("parameter:rider_lean.") + key);
+    ASSERT_NE(c, nullptr) << key;
+    ASSERT_EQ(c->parameters.size(), 1u);
+    EXPECT_DOUBLE_EQ(c->parameters[0].start, tree["rider_lean"][key].as<double>());
+    EXPECT_LT(c->parameters[0].lower, c->parameters[0].start);
+    EXPECT_GT(c->parameters[0].upper, c->parameters[0].start);
+  }
+}
+
 }  // namespace
 }  // namespace motostab
