@@ -59,7 +59,20 @@ FitProblem::FitProblem(const Predictor& predictor, const MeasuredData& data, int
   addEigenvalueObservations();
   addResponseObservations();
   poolSmallComponents();
+  markGivenComponents();
   assignFolds(folds);
+}
+
+// A component whose every row has its stderr is known: its sigma (reported only) is their RMS.
+void FitProblem::markGivenComponents() {
+  std::vector<double> sum(components.size(), 0.0);
+  std::vector<int> given(components.size(), 0), all(components.size(), 0);
+  for (const auto& o : observations) {
+    ++all[o.component];
+    if (o.knownSigma > 0) ++given[o.component], sum[o.component] += o.knownSigma * o.knownSigma;
+  }
+  for (size_t c = 0; c < components.size(); ++c)
+    if (!componentKnown[c] && all[c] > 0 && given[c] == all[c]) componentKnown[c] = true, componentSigma[c] = std::sqrt(sum[c] / all[c]);
 }
 
 // A part of a mode with fewer than kMinEstimatedRows estimated rows (a pair that is complex at one or

@@ -69,6 +69,7 @@ class FitProblem {
   void addResponseObservations();
   void assignFolds(int folds);
   void poolSmallComponents();
+  void markGivenComponents();
   int addComponent(const std::string& name, bool known);
   const Predictor& predictor_;
   const MeasuredData& data_;

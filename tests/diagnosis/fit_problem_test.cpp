@@ -1,6 +1,7 @@
 // FitProblem's noise components (diagnosis/fit_problem.h): a part of a mode with fewer than
 // kMinEstimatedRows rows shares one noise level with the other part, so that a fit matching one or
-// two residuals cannot drive its sigma to zero; larger parts and rows with stderr keep their own.
+// two residuals cannot drive its sigma to zero; larger parts keep their own; a part whose rows all
+// carry their stderr is known (reported as given), not estimated.
 #include "diagnosis/fit_problem.h"
 
 #include <gtest/gtest.h>
@@ -39,6 +40,11 @@ TEST(FitProblem, PartsWithFewRowsShareTheirModesNoise) {
   EXPECT_TRUE(has("castor.real+imag"));
   EXPECT_FALSE(has("castor.real") || has("castor.imag"));
   EXPECT_TRUE(has("capsize.real") && has("capsize.imag")) << "rows with stderr estimate nothing: nothing to pool";
+  for (const char* n : {"capsize.real", "capsize.imag"}) {  // every row has its stderr: given, not estimated
+    const auto k = std::find(p.components.begin(), p.components.end(), n) - p.components.begin();
+    EXPECT_TRUE(p.componentKnown[k]) << n;
+    EXPECT_DOUBLE_EQ(p.componentSigma[k], 0.05) << n;
+  }
   ASSERT_EQ(p.componentSigma.size(), p.components.size());
   ASSERT_EQ(p.componentKnown.size(), p.components.size());
   int castor = 0;
