@@ -316,36 +316,51 @@ std::vector<LinearModel> Predictor::calcLinearModels(const std::vector<std::stri
   return out;
 }
 
-// Index of mode `mode` in `lin`: the eigenvalue that best continues the base sweep's branch at the
-// nearest sweep speed plus, when given, the mode's eigenvalue `prevIndex` of `prev` (the same model at
-// the previous speed). -1 where the base sweep has no such branch.
-int Predictor::matchMode(const std::string& mode, const LinearModel& lin, const LinearModel* prev, int prevIndex) const {
+// Cost of each eigenvalue of `lin` as mode `mode`: how well it continues the base sweep's branch at
+// the nearest sweep speed plus, when given, the mode's eigenvalue `prevIndex` of `prev` (the same
+// model at the previous speed). Empty where the base sweep has no such branch.
+Eigen::VectorXd Predictor::calcModeCosts(const std::string& mode, const LinearModel& lin, const LinearModel* prev,
+                                         int prevIndex) const {
   const SweepResult& ref = *reference_;
   const size_t k = std::min_element(ref.speeds.begin(), ref.speeds.end(), [&](double a, double b) {
                      return std::abs(a - lin.speed) < std::abs(b - lin.speed);
                    }) - ref.speeds.begin();
   const auto branch = std::find_if(ref.branches.begin(), ref.branches.end(),
                                    [&](const ModeBranch& b) { return b.label == mode && b.index[k] >= 0; });
-  if (branch == ref.branches.end()) return -1;
-  int best = -1;
-  double bestCost = HUGE_VAL;
+  if (branch == ref.branches.end()) return {};
+  Eigen::VectorXd c(lin.eigenvalues.size());
   for (int kb = 0; kb < lin.eigenvalues.size(); ++kb) {
-    double c = calcMatchCost(ref.models[k], branch->index[k], lin, kb);
-    if (prev && prevIndex >= 0) c += calcMatchCost(*prev, prevIndex, lin, kb);
-    if (c < bestCost) bestCost = c, best = kb;
+    c[kb] = calcMatchCost(ref.models[k], branch->index[k], lin, kb);
+    if (prev && prevIndex >= 0) c[kb] += calcMatchCost(*prev, prevIndex, lin, kb);
   }
-  return best;
+  return c;
 }
 
+// The labelled modes of the rows, matched speed by speed (calcModeCosts), cheapest match first; a
+// real eigenvalue goes to one label only (two labels on one real root is a mismatch: held-out
+// Crescendo had capsize and castor predicted equal at 2-3.2 m/s), a complex pair may carry two
+// (capsize and castor joined into one pair at low speed).
 std::vector<Predictor::ModeTrack> Predictor::trackModes(const std::vector<LinearModel>& models) const {
   std::vector<ModeTrack> out;
-  for (const auto& row : data_.eigenvalues) {
-    if (row.mode.empty() || std::any_of(out.begin(), out.end(), [&](const ModeTrack& t) { return t.mode == row.mode; }))
-      continue;
-    ModeTrack t{row.mode, std::vector<int>(models.size(), -1)};
-    for (size_t k = 0; k < models.size(); ++k)
-      t.index[k] = matchMode(row.mode, models[k], k ? &models[k - 1] : nullptr, k ? t.index[k - 1] : -1);
-    out.push_back(t);
+  for (const auto& row : data_.eigenvalues)
+    if (!row.mode.empty() && std::none_of(out.begin(), out.end(), [&](const ModeTrack& t) { return t.mode == row.mode; }))
+      out.push_back({row.mode, std::vector<int>(models.size(), -1)});
+  for (size_t k = 0; k < models.size(); ++k) {
+    std::vector<Eigen::VectorXd> costs;
+    std::vector<size_t> order;
+    for (size_t m = 0; m < out.size(); ++m) {
+      costs.push_back(calcModeCosts(out[m].mode, models[k], k ? &models[k - 1] : nullptr, k ? out[m].index[k - 1] : -1));
+      if (costs.back().size() > 0) order.push_back(m);
+    }
+    std::sort(order.begin(), order.end(), [&](size_t a, size_t b) { return costs[a].minCoeff() < costs[b].minCoeff(); });
+    std::vector<bool> taken(static_cast<size_t>(models[k].eigenvalues.size()), false);
+    for (size_t m : order) {
+      int best = -1;
+      for (int kb = 0; kb < costs[m].size(); ++kb)
+        if (!taken[kb] && (best < 0 || costs[m][kb] < costs[m][best])) best = kb;
+      out[m].index[k] = best;
+      if (best >= 0 && models[k].eigenvalues[best].imag() == 0) taken[best] = true;
+    }
   }
   return out;
 }

@@ -86,7 +86,8 @@ class Predictor {
   std::vector<double> chooseNodes(double lo, double hi, int labelled) const;
   bool isExactMode(const std::string& mode) const;
   std::vector<std::string> findBranchPointModes(double lo, double hi) const;
-  int matchMode(const std::string& mode, const LinearModel& lin, const LinearModel* prev, int prevIndex) const;
+  Eigen::VectorXd calcModeCosts(const std::string& mode, const LinearModel& lin, const LinearModel* prev,
+                                int prevIndex) const;
   std::vector<ModeTrack> trackModes(const std::vector<LinearModel>& models) const;
   std::complex<double> pickEigenvalue(const std::vector<LinearModel>& models, size_t k, const MeasuredEigenvalue& row,
                                       const std::vector<ModeTrack>& tracks) const;

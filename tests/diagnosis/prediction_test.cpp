@@ -9,6 +9,7 @@
 
 #include "diagnosis/diagnosis.h"
 #include "io/atomic_file.h"
+#include "io/csv.h"
 #include "scenario/bicycle_parameters.h"
 #include "hidden_effect.h"
 
@@ -62,11 +63,38 @@ TEST(Prediction, FastPredictionsAgreeWithExactOnesAcrossABranchPoint) {
   }
   const Predictor p(file, {}, data);
   const Prediction exact = p.predict({}, {}, true), fast = p.predict({}, {}, false);
-  for (size_t i = 0; i < data.eigenvalues.size(); ++i)
-    if (data.eigenvalues[i].mode != "weave")
-      EXPECT_LT(std::abs(fast.eigenvalues[i] - exact.eigenvalues[i]), 1e-6 * (1 + std::abs(exact.eigenvalues[i])))
-          << data.eigenvalues[i].mode << " at " << data.eigenvalues[i].speed << " m/s";
+  for (size_t i = 0; i < data.eigenvalues.size(); ++i) {
+    if (data.eigenvalues[i].mode == "weave") continue;
+    EXPECT_LT(std::abs(fast.eigenvalues[i] - exact.eigenvalues[i]), 1e-6 * (1 + std::abs(exact.eigenvalues[i])))
+        << data.eigenvalues[i].mode << " at " << data.eigenvalues[i].speed << " m/s";
+  }
   EXPECT_FALSE(p.getNodes().empty()) << "the weave is interpolated";
+  fs::remove(file);
+}
+
+// Two labels never take one real eigenvalue. On the Crescendo (BicycleParameters) with a steer damper
+// of 0.25-0.45 N m s/rad (drawn, seeded), the model's capsize and castor at 2-3.2 m/s were both matched
+// to the root continuing the base's capsize (held-out data: castor's noise estimated 10x too high).
+// Where the two predictions are real they must be distinct roots of the model.
+TEST(Prediction, TwoLabelsNeverShareARealEigenvalue) {
+  const std::string file = (fs::temp_directory_path() / ("motostab-crescendo-" + std::to_string(::getpid()) + ".yaml")).string();
+  writeFileAtomically(file, convertBicycleParametersToScenario(std::string(MOTOSTAB_TEST_DATA_DIR) +
+                                                                   "/measured-data/BicycleParameters/data/bicycles/Crescendo/Parameters/CrescendoBenchmark.txt",
+                                                               "crescendo"));
+  MeasuredData data;
+  for (int k = 0; k < 13; ++k)
+    for (const char* mode : {"capsize", "castor"}) data.eigenvalues.push_back(makeRow(2 + 0.5 * k, mode, 0, 0));
+  const Predictor p(file, {}, data);
+  const double c = testing::Draw(4747).uniform(0.25, 0.45);
+  const Prediction r = p.predict({"steer_damper={damping_Nms_per_rad: " + formatNumber(c) + "}"}, {}, true);
+  int realPairs = 0;
+  for (size_t i = 0; i + 1 < data.eigenvalues.size(); i += 2) {
+    const auto a = r.eigenvalues[i], b = r.eigenvalues[i + 1];
+    if (a.imag() != 0 || b.imag() != 0) continue;
+    ++realPairs;
+    EXPECT_GT(std::abs(a - b), 1e-6 * (1 + std::abs(a))) << "capsize and castor at " << data.eigenvalues[i].speed << " m/s";
+  }
+  EXPECT_GE(realPairs, 5);
   fs::remove(file);
 }
 
