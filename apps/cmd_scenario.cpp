@@ -11,6 +11,22 @@
 namespace motostab::cli {
 namespace {
 
+// The steer controller's law, schedule, delay and limit (vehicle/steer_controller.h).
+void printSteerController(const SteerControllerSpec& c) {
+  using S = SteerControllerSpec::Schedule;
+  std::cout << "  steer controller      T = " << (c.schedule == S::None ? "" : "f(v) ") << c.gainFactor << " ("
+            << c.rollAngleGain << " roll + " << c.rollRateGain << " roll_rate + " << c.steerAngleGain << " steer + "
+            << c.steerRateGain << " steer_rate) N m (ISO signs: T > 0 steers left";
+  if (c.rollAngleGain < 0 || c.rollRateGain < 0) std::cout << "; negative roll gains steer into the fall";
+  std::cout << ")\n";
+  if (c.schedule == S::Below) std::cout << "    schedule            f(v) = " << c.scheduleBelow << " - v below " << c.scheduleBelow << " m/s, 0 above\n";
+  if (c.schedule == S::Table)
+    std::cout << "    schedule            f(v) interpolated in " << c.scheduleTable.size() << " rows, "
+              << c.scheduleTable.front()[0] << " to " << c.scheduleTable.back()[0] << " m/s\n";
+  if (c.delay > 0) std::cout << "    delay               " << c.delay << " s (first-order Pade; state steer_controller_delay)\n";
+  if (c.torqueLimit > 0) std::cout << "    torque limit        " << c.torqueLimit << " N m (time domain; linear models see the unsaturated law)\n";
+}
+
 // The issue-10 model extensions present, one line each (docs/scenario-format.md).
 void printExtensions(const Scenario& s) {
   if (s.hasSteerDamper)
@@ -27,6 +43,7 @@ void printExtensions(const Scenario& s) {
   if (s.hasRiderLean)
     std::cout << "  rider lean            upper body " << s.riderLean.body.mass << " kg, hinge at " << s.riderLean.hingeHeight
               << " m, " << s.riderLean.stiffness << " N m/rad, " << s.riderLean.damping << " N m s/rad\n";
+  if (s.hasSteerController) printSteerController(s.steerController);
 }
 
 void printInertiaRepairs(const std::vector<InertiaRepair>& repairs) {

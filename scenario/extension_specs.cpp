@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include "io/number.h"
+
 namespace motostab {
 namespace {
 
@@ -33,6 +35,51 @@ SteerDamperSpec readSteerDamper(YamlMap m) {
   if (m.has("coulomb_smoothing_rad_per_s")) d.coulombSmoothing = m.getPositive("coulomb_smoothing_rad_per_s");
   m.finish();
   return d;
+}
+
+namespace {
+
+// `schedule: {below_mps: v0}` or `schedule: {table: [[v, f], ...]}` (speeds strictly increasing).
+void readSchedule(YamlMap m, SteerControllerSpec& c) {
+  if (m.has("below_mps") == m.has("table")) m.fail("", "give exactly one of below_mps and table");
+  if (m.has("below_mps")) {
+    c.schedule = SteerControllerSpec::Schedule::Below;
+    c.scheduleBelow = m.getPositive("below_mps");
+  } else {
+    c.schedule = SteerControllerSpec::Schedule::Table;
+    const YAML::Node t = m.getNode()["table"];
+    m.markUsed("table");
+    if (!t.IsSequence() || t.size() < 2) m.fail("table", "expected a list of at least two [speed_mps, factor] rows");
+    for (size_t i = 0; i < t.size(); ++i) {
+      std::array<double, 2> row{0, 0};
+      if (!t[i].IsSequence() || t[i].size() != 2) m.failElement("table", i, "expected [speed_mps, factor]");
+      for (size_t j = 0; j < 2; ++j) {
+        const auto v = t[i][j].IsScalar() ? parseFiniteNumber(t[i][j].Scalar()) : std::nullopt;
+        if (!v) m.failElement("table", i, "expected finite numbers [speed_mps, factor]");
+        row[j] = *v;
+      }
+      if (i > 0 && !(row[0] > c.scheduleTable.back()[0]))
+        m.failElement("table", i, "speeds must increase strictly (not sorted by speed)");
+      c.scheduleTable.push_back(row);
+    }
+  }
+  m.finish();
+}
+
+}  // namespace
+
+SteerControllerSpec readSteerController(YamlMap m) {
+  SteerControllerSpec c;
+  c.rollAngleGain = m.getDouble("roll_angle_Nm_per_rad", 0);
+  c.rollRateGain = m.getDouble("roll_rate_Nms_per_rad", 0);
+  c.steerAngleGain = m.getDouble("steer_angle_Nm_per_rad", 0);
+  c.steerRateGain = m.getDouble("steer_rate_Nms_per_rad", 0);
+  c.gainFactor = m.getPositive("gain_factor", 1);
+  if (m.has("schedule")) readSchedule(m.getMap("schedule"), c);
+  c.delay = m.getNonNegative("delay_s", 0);
+  if (m.has("torque_limit_Nm")) c.torqueLimit = m.getPositive("torque_limit_Nm");
+  m.finish();
+  return c;
 }
 
 ForkComplianceSpec readForkCompliance(YamlMap m, const Scenario& s) {
@@ -87,6 +134,10 @@ void readExtensions(YamlMap& root, Scenario& s) {
   if (root.has("rider_lean")) {
     s.hasRiderLean = true;
     s.riderLean = readRiderLean(root.getMap("rider_lean"), s);
+  }
+  if (root.has("steer_controller")) {
+    s.hasSteerController = true;
+    s.steerController = readSteerController(root.getMap("steer_controller"));
   }
 }
 

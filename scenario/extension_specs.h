@@ -1,6 +1,6 @@
 #pragma once
 // Readers of the optional model-extension sections of a scenario (issue 10): `steer_damper`,
-// `fork_compliance`, `rider_lean`. Each section is strict (unknown keys, wrong types, negative
+// `fork_compliance`, `rider_lean`, `steer_controller`. Each section is strict (unknown keys, wrong types, negative
 // stiffnesses are InputErrors at file:line:col); absent sections leave the model as it was.
 #include "scenario/scenario.h"
 #include "scenario/yaml_map.h"
@@ -16,6 +16,12 @@ BodySpec readBodyKeys(YamlMap& m);
 
 /// `steer_damper: {damping_Nms_per_rad, coulomb_Nm?, coulomb_smoothing_rad_per_s?}`.
 SteerDamperSpec readSteerDamper(YamlMap m);
+
+/// `steer_controller: {roll_angle_Nm_per_rad?, roll_rate_Nms_per_rad?, steer_angle_Nm_per_rad?,
+/// steer_rate_Nms_per_rad?, gain_factor?, schedule: {below_mps: v0} | {table: [[v, f], ...]}?, delay_s?,
+/// torque_limit_Nm?}` (vehicle/steer_controller.h). The table needs at least two rows with strictly
+/// increasing speeds; a negative delay, a non-positive limit or gain factor are errors.
+SteerControllerSpec readSteerController(YamlMap m);
 
 /// `fork_compliance: {stiffness_Nm_per_rad, damping_Nms_per_rad, axis_distance_along_steer_m?,
 /// carrier_mass_fraction? | carrier: {mass_kg, com_m, inertia_kgm2}?, torsion: {stiffness_Nm_per_rad,

@@ -65,11 +65,15 @@ std::vector<ScalarParameter> listScalarParameters(const YAML::Node& tree) {
     if (n && n.IsMap()) collect(n, section, out);
   }
   // Measured parts of optional sections: the swingarm, the leaning rider's upper body and its lean
-  // stiffness and damping (issue 10), and the fork's hub carrier when given explicitly.
+  // stiffness and damping (issue 10), the fork's hub carrier when given explicitly, and a steer
+  // controller's gains, gain factor, delay and schedule speed.
   const std::pair<const char*, std::vector<const char*>> sections[] = {
       {"swingarm", {"pivot_m", "mass_kg", "com_m", "inertia_kgm2"}},
       {"rider_lean", {"hinge_height_m", "mass_kg", "com_m", "inertia_kgm2", "stiffness_Nm_per_rad", "damping_Nms_per_rad"}},
       {"fork_compliance.carrier", {"mass_kg", "com_m", "inertia_kgm2"}},
+      {"steer_controller", {"roll_angle_Nm_per_rad", "roll_rate_Nms_per_rad", "steer_angle_Nm_per_rad",
+                            "steer_rate_Nms_per_rad", "gain_factor", "delay_s"}},
+      {"steer_controller.schedule", {"below_mps"}},
   };
   for (const auto& [name, keys] : sections) {
     const YAML::Node section = findKeyPath(tree, name);

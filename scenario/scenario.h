@@ -106,6 +106,24 @@ struct RiderLeanSpec {
   double damping = 0;            ///< N m s/rad (>= 0)
 };
 
+/// Linear state feedback on the steer torque (vehicle/steer_controller.h), ISO 8855 signs (roll > 0
+/// leans right, steer > 0 steers left, torque > 0 steers left):
+///   u = f(v) g (k_phi phi + k_phid phi' + k_delta delta + k_deltad delta')            (N m)
+/// f(v) the speed schedule (1 without one), g the gain factor; then the optional delay and limit.
+struct SteerControllerSpec {
+  enum class Schedule { None, Below, Table };
+  double rollAngleGain = 0;   ///< k_phi, N m/rad (per m/s with a `below_mps` schedule)
+  double rollRateGain = 0;    ///< k_phid, N m s/rad (likewise)
+  double steerAngleGain = 0;  ///< k_delta, N m/rad
+  double steerRateGain = 0;   ///< k_deltad, N m s/rad
+  double gainFactor = 1;      ///< g, dimensionless (> 0): scales every gain
+  Schedule schedule = Schedule::None;
+  double scheduleBelow = 0;   ///< v0, m/s: f = v0 - v for v < v0, else 0
+  std::vector<std::array<double, 2>> scheduleTable;  ///< (v m/s, f) sorted by v: f interpolated linearly
+  double delay = 0;           ///< tau, s (>= 0; 0: none): first-order Pade delay
+  double torqueLimit = 0;     ///< N m (> 0 when given; 0: none): |T| <= limit
+};
+
 /// A plugin selected by name with its own parameters (validated by the plugin itself).
 struct PluginSpec {
   std::string model;
@@ -150,6 +168,8 @@ struct Scenario {
   ForkComplianceSpec forkCompliance;
   bool hasRiderLean = false;
   RiderLeanSpec riderLean;
+  bool hasSteerController = false;
+  SteerControllerSpec steerController;
   std::vector<std::string> plugins;     ///< shared libraries to load before building
   std::vector<std::string> overrides;   ///< the --set assignments applied, for messages
   std::vector<ParameterUncertainty> uncertainty;  ///< stated parameter uncertainties (may be empty)

@@ -8,6 +8,7 @@
 #include "vehicle/body_builder.h"
 #include "vehicle/fork_compliance.h"
 #include "vehicle/rider_lean.h"
+#include "vehicle/steer_controller.h"
 #include "vehicle/steer_damper.h"
 
 namespace motostab {
@@ -215,6 +216,10 @@ void VehicleModel::build(PluginRegistry& registry, const std::vector<ModelExtens
   const Vec3 pRearHub_D(0, 0, s.rearWheel.radius);
   if (s.hasAerodynamics) addAerodynamicDrag(ctx, rearFrame_, s.aerodynamics, toVec3(s.aerodynamics.centreOfPressure) - pRearHub_D);
   if (s.hasSteerDamper) addSteerDamper(ctx, frontFrame_, s.steerDamper);
+  if (s.hasSteerController) {
+    steerController_ = addSteerController(ctx, rearFrame_, frontFrame_, s.steerController);
+    for (const auto& n : steerController_->getStateNames()) zNames_.push_back(n);
+  }
   for (const auto& extend : extensions)
     for (const auto& n : extend(ctx, *this)) zNames_.push_back(n);
 
@@ -230,6 +235,10 @@ void VehicleModel::build(PluginRegistry& registry, const std::vector<ModelExtens
   uNames_ = std::move(names.u);
   defaultState_.updQ()[idx_.height] = s.rearWheel.radius;
   system_.realize(defaultState_, SimTK::Stage::Instance);
+}
+
+double VehicleModel::calcSteerControllerTorque(const SimTK::State& state) const {
+  return steerController_ ? steerController_->calcTorque(state) : 0.0;
 }
 
 bool VehicleModel::applyLateralRoadStep(SimTK::State& state, const std::string& wheel, double offset) const {

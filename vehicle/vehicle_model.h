@@ -6,7 +6,9 @@
 //       then steer, rear and front wheel spin angles, and, with a swingarm, the optional rear
 //       suspension angle `suspension_pitch` and the compliance coordinates `swingarm_*`; with the
 //       optional extensions `rider_lean` (vehicle/rider_lean.h), `fork_bending` and `fork_torsion`
-//       (vehicle/fork_compliance.h). A steer damper (vehicle/steer_damper.h) adds no coordinate.
+//       (vehicle/fork_compliance.h). A steer damper (vehicle/steer_damper.h) adds no coordinate;
+//       a steer controller (vehicle/steer_controller.h) adds the z state `steer_controller_delay`
+//       when it has a delay.
 //       Every u is the corresponding qdot.
 // Signs: roll > 0 leans right, yaw > 0 turns left, steer > 0 steers left, pitch > 0 nose down.
 #include <functional>
@@ -37,6 +39,7 @@ constexpr int kNumInputs = 3;
 PluginRegistry makeBuiltinRegistry();
 
 class VehicleModel;
+class SteerController;
 
 /// Adds elements (perturbation forces, controllers) to a model while it is assembled, after the
 /// bodies and contacts and before Simbody's topology is realized. Returns the names of any z
@@ -87,6 +90,11 @@ class VehicleModel {
   /// Their values, state realized to Velocity.
   std::vector<double> calcContactOutputs(const SimTK::State& state) const;
 
+  /// The torque (N m) the scenario's steer_controller applies between front and rear frame in
+  /// `state` (realized to Velocity); 0 without one.
+  double calcSteerControllerTorque(const SimTK::State& state) const;
+  bool hasSteerController() const { return steerController_ != nullptr; }
+
   /// Forward speed: velocity of the rear wheel centre along ground x, m/s.
   double getForwardSpeed(const SimTK::State& state) const { return state.getU()[idx_.x]; }
 
@@ -108,6 +116,7 @@ class VehicleModel {
   SimTK::Force::DiscreteForces inputs_;
   std::vector<std::unique_ptr<ContactModel>> contacts_;
   std::unique_ptr<SwingarmModel> swingarm_;
+  std::shared_ptr<const SteerController> steerController_;
   std::vector<WheelSite> wheelSites_;
   SimTK::State defaultState_;
   int nq_ = 0;

@@ -1,0 +1,86 @@
+#pragma once
+// Steer controller (`steer_controller`): linear state feedback on the steer torque, as used for
+// balance-assist and steer-by-wire bicycles, electronic steering dampers and rider models (Schwab,
+// Kooijman, Meijaard 2008, "Some recent developments in bicycle dynamics and control", sec. 4: steer
+// torque as state feedback of roll and steer; Moore 2012, PhD thesis, UC Davis, ch. 7; Dialynas,
+// Christoforidis, Happee, Schwab 2023, "Design and implementation of a steer-by-wire bicycle").
+// Signs are those of ISO 8855 and the model (vehicle/vehicle_model.h): roll phi > 0 leans right,
+// steer delta > 0 steers left, the torque T > 0 turns the front frame to the left (its reaction acts
+// on the rear frame). Steering INTO the fall (to the right when falling to the right) therefore needs
+// NEGATIVE roll and roll-rate gains.
+//
+// Law, with v the forward speed of the rear wheel centre along the rear frame's heading (m/s):
+//   u(t) = f(v) g (k_phi phi + k_phid phi' + k_delta delta + k_deltad delta')        (N m)
+//   f(v) = 1 (no schedule) | max(v0 - v, 0) (`below_mps: v0`) | linear interpolation of the table,
+//          held constant beyond its first and last speeds (`table`)
+// Delay (delay_s = tau > 0): the first-order Pade approximant of exp(-s tau),
+//   Y(s)/U(s) = (1 - s tau/2) / (1 + s tau/2) = -1 + 2 / (1 + s tau/2),
+// realised with one auxiliary state z (N m):  z' = (2/tau) (2 u - z),   y = z - u.
+// Chosen over the lag 1/(1 + s tau) because it is all-pass like the delay it stands for (gain 1 at
+// every frequency; phase -2 atan(omega tau/2), matching -omega tau to third order), so a fitted delay
+// does not masquerade as a change of gain. Its step response starts at -1 (the non-minimum-phase zero):
+// a sudden jump in the fed-back state first kicks the torque the wrong way, as no real delay does.
+// Saturation (torque_limit_Nm = L): T = clamp(y, -L, L) (y = u without delay).
+//
+// Linearisation: the law is linear in the states and their rates, so linearize/sweep see it exactly;
+// with a delay, z is a state of the linear model (trimmed to 2 u = its static value, so y = u at the
+// trim). The schedule's speed dependence enters only multiplied by states that are zero in straight
+// running, so it does not couple to the forward speed at an upright trim. The clamp is inactive at
+// the trim unless |y_trim| >= L: then the finite differences see its flat part (zero gain there).
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "plugins/plugin_api.h"
+#include "scenario/scenario.h"
+
+namespace motostab {
+
+/// The states the controller reads: roll (rad), roll rate (rad/s), steer (rad), steer rate (rad/s),
+/// forward speed v (m/s).
+struct SteerControllerInputs {
+  double roll = 0, rollRate = 0, steer = 0, steerRate = 0, speed = 0;
+};
+
+/// The schedule factor f(v) (dimensionless; m/s for `below_mps`), as above.
+double calcScheduleFactor(const SteerControllerSpec& spec, double speed);
+
+/// The undelayed, unsaturated law u (N m), as above.
+double calcSteerControllerCommand(const SteerControllerSpec& spec, const SteerControllerInputs& x);
+
+/// The applied torque T = clamp(y, -L, L) (N m) for the (delayed) command y.
+double calcSaturatedTorque(const SteerControllerSpec& spec, double command);
+
+/// The controller element of one model: reads the states, writes the delay state's derivative.
+class SteerController {
+ public:
+  SteerController(SimTK::GeneralForceSubsystem& forces, const SimTK::MobilizedBody& rearFrame,
+                  const SimTK::MobilizedBody& frontFrame, const SteerControllerSpec& spec);
+  /// Allocates the delay state (if any); called from the force element's realizeTopology.
+  void allocateState(SimTK::State& state) const;
+  /// Names of the z states allocated: {"steer_controller_delay"} (N m) with a delay, else none.
+  std::vector<std::string> getStateNames() const;
+  /// The fed-back states of `state` (realized to Velocity).
+  SteerControllerInputs getInputs(const SimTK::State& state) const;
+  /// The applied torque T (N m) in `state` (realized to Velocity).
+  double calcTorque(const SimTK::State& state) const;
+  /// Applies T to the steer mobility and writes z' (delay); state realized to Velocity.
+  void apply(const SimTK::State& state, SimTK::Vector& mobilityForces) const;
+  const SteerControllerSpec& getSpec() const { return spec_; }
+
+ private:
+  double calcDelayedCommand(const SimTK::State& state, double command) const;
+
+  SimTK::GeneralForceSubsystem& forces_;
+  SimTK::MobilizedBody rear_, front_;
+  SteerControllerSpec spec_;
+  mutable SimTK::ZIndex zIndex_;
+};
+
+/// Adds the controller between `rearFrame` (the model's 6-DOF Bushing: q = yaw, roll, pitch,
+/// height, x, y; u = their rates) and `frontFrame` (the steer Pin) as a Force::Custom element.
+std::shared_ptr<const SteerController> addSteerController(BuildContext& context, const SimTK::MobilizedBody& rearFrame,
+                                                          const SimTK::MobilizedBody& frontFrame,
+                                                          const SteerControllerSpec& spec);
+
+}  // namespace motostab
