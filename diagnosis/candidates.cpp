@@ -44,6 +44,23 @@ Candidate makeSteerDamper(const YAML::Node& tree) {
   return {"steer_damper", {"steer_damper={damping_Nms_per_rad: 0}"}, {c}};
 }
 
+// A steer controller's effective gain and delay (vehicle/steer_controller.h): `steer_controller_gain`
+// scales every gain (gain_factor, log scale over [0.05, 20], off at 1), `steer_controller_delay` adds
+// a Pade delay (delay_s in [0, 0.3] s, off at the bound 0; absent when the scenario has one).
+void addSteerControllerCandidates(const YAML::Node& tree, std::vector<Candidate>& out) {
+  const YAML::Node c = tree["steer_controller"];
+  if (!c || !c.IsMap()) return;
+  CandidateParameter g = makeFreeParameter("gain_factor", "steer_controller.gain_factor", 0.05, 20, 1, 1e-4);
+  g.logScale = true;
+  g.off = 1;
+  out.push_back({"steer_controller_gain", {}, {g}});
+  if (c["delay_s"]) return;
+  CandidateParameter d = makeFreeParameter("delay_s", "steer_controller.delay_s", 0, 0.3, 0.02, 1e-4);
+  d.off = 0;
+  d.offAtBound = true;
+  out.push_back({"steer_controller_delay", {}, {d}});
+}
+
 // A stiffness fitted on a log scale from `start` within [start/1e3, start*1e3]; off at infinity.
 CandidateParameter makeStiffness(const std::string& name, const std::string& path, double start) {
   CandidateParameter c = makeFreeParameter(name, path, start * 1e-3, start * 1e3, start, 1e-4);
@@ -160,6 +177,7 @@ std::vector<Candidate> listCandidates(const YAML::Node& tree,
   addRiderLeanCandidate(tree, out, unavailable ? *unavailable : none);
   addSwingarmCandidates(tree, out);
   addTyreSlipCandidate(tree, out);
+  addSteerControllerCandidates(tree, out);
   for (const ScalarParameter& p : listScalarParameters(tree)) {
     const double sigma = findSigma(p, uncertainty);
     if (sigma > 0) out.push_back(makeParameterCandidate(p, sigma));

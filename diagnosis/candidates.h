@@ -37,6 +37,8 @@ struct Candidate {
 /// wheels. `rider_lean` (the rider's upper body leaning passively, its stiffness free) where the rear
 /// frame holds a rider: heavier than kRiderMass_kg and no `rider_lean` section yet; otherwise a line
 /// in `unavailable` says why (a riderless vehicle such as Kooijman's Silvercity has no rider to lean).
+/// With a `steer_controller`: `steer_controller_gain` (its gain_factor free) and, without a delay,
+/// `steer_controller_delay` (delay_s free).
 std::vector<Candidate> listCandidates(const YAML::Node& scenarioTree,
                                       const std::vector<std::pair<std::string, double>>& uncertainty,
                                       std::vector<std::string>* unavailable = nullptr);

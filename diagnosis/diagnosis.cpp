@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "analysis/parallel.h"
+#include "diagnosis/controller_groups.h"
 #include "diagnosis/cross_validation.h"
 #include "diagnosis/fit_problem.h"
 #include "diagnosis/least_squares.h"
@@ -468,8 +469,16 @@ DiagnosisResult runDiagnosis(const std::string& scenarioFile, const MeasuredData
   if (opt.progress) opt.progress("reference sweep", 0, 1);
   const Predictor predictor(scenarioFile, opt.overrides, data);
   FitProblem problem(predictor, data, opt.folds);
-  const std::vector<Candidate> listed = listCandidates(makeScenarioTree(scenarioFile, opt.overrides),
-                                                      getUncertainty(scenarioFile, opt), &result.unavailable);
+  std::vector<Candidate> listed = listCandidates(makeScenarioTree(scenarioFile, opt.overrides),
+                                                getUncertainty(scenarioFile, opt), &result.unavailable);
+  for (const std::string& path : getControllerPaths(data))  // set per row/run by the data: not one value
+    for (auto it = listed.begin(); it != listed.end();)
+      if (it->name == "parameter:" + path) {
+        result.unavailable.push_back(it->name + ": the measured data set it per controller setting");
+        it = listed.erase(it);
+      } else {
+        ++it;
+      }
   std::vector<Candidate> all;
   try {
     all = filterCandidates(listed, opt.candidates);

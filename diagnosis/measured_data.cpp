@@ -6,6 +6,8 @@
 #include <map>
 
 #include "io/csv.h"
+#include "scenario/extension_specs.h"
+#include "scenario/parameter_paths.h"
 #include "scenario/yaml_map.h"
 
 namespace motostab {
@@ -54,11 +56,41 @@ int findColumn(const CsvTable& t, const std::string& name) {
   return it == t.header.end() ? -1 : static_cast<int>(it - t.header.begin());
 }
 
+// "steer_controller.<scalar key>": a per-row controller setting; else "".
+std::string getControllerKey(const std::string& column) {
+  const std::string prefix = "steer_controller.";
+  if (column.rfind(prefix, 0) != 0) return "";
+  const auto& keys = getSteerControllerScalarKeys();
+  const std::string key = column.substr(prefix.size());
+  return std::find(keys.begin(), keys.end(), key) == keys.end() ? "" : key;
+}
+
+// `controller: {key: value, ...}` of an eigenvalue file or a response run: steer_controller overrides.
+std::vector<std::string> readController(YamlMap& m) {
+  std::vector<std::string> out;
+  if (!m.has("controller")) return out;
+  YamlMap c = m.getMap("controller");
+  const auto& keys = getSteerControllerScalarKeys();
+  for (const auto& kv : c.getNode()) {
+    const std::string key = kv.first.Scalar();
+    if (key == "schedule") {
+      YAML::Emitter e;
+      e << YAML::Flow << kv.second;
+      out.push_back("steer_controller.schedule=" + std::string(e.c_str()));
+      c.markUsed(key);
+    } else if (std::find(keys.begin(), keys.end(), key) != keys.end()) {
+      out.push_back(formatOverride("steer_controller." + key, c.getDouble(key)));
+    }
+  }
+  c.finish();  // an unknown key fails here, at its line and column
+  return out;
+}
+
 void checkEigenvalueColumns(const CsvTable& t) {
   static const std::vector<std::string> known{"speed_mps", "mode", "real", "imag", "real_stderr",
                                               "imag_stderr", "speed_min_mps", "speed_max_mps"};
   for (const auto& h : t.header)
-    if (std::find(known.begin(), known.end(), h) == known.end())
+    if (std::find(known.begin(), known.end(), h) == known.end() && getControllerKey(h).empty())
       throw InputError({t.source, t.headerLine, 0, h}, "unknown column '" + h + "'");
   if ((findColumn(t, "speed_min_mps") < 0) != (findColumn(t, "speed_max_mps") < 0))
     throw InputError({t.source, t.headerLine, 0, "speed_min_mps"}, "speed_min_mps and speed_max_mps go together");
@@ -75,6 +107,8 @@ MeasuredEigenvalue readEigenvalueRow(const CsvTable& t, size_t i) {
   e.realStderr = opt("real_stderr");
   e.imagStderr = opt("imag_stderr");
   e.where = {t.source, t.lineNumbers[i], 0, ""};
+  for (size_t j = 0; j < t.header.size(); ++j)
+    if (!getControllerKey(t.header[j]).empty()) e.controller.push_back(formatOverride(t.header[j], r[j]));
   e.hasRange = findColumn(t, "speed_min_mps") >= 0;
   e.speedMin = e.hasRange ? opt("speed_min_mps") : e.speed;
   e.speedMax = e.hasRange ? opt("speed_max_mps") : e.speed;
@@ -92,12 +126,17 @@ MeasuredEigenvalue readEigenvalueRow(const CsvTable& t, size_t i) {
 
 void readEigenvalueFile(YamlMap entry, MeasuredData& data) {
   const fs::path p = resolve(entry, "file", entry.getString("file"));
+  const std::vector<std::string> controller = readController(entry);
   entry.finish();
   const CsvTable t = readCsv(p, {"mode"});
   requireColumn(t, "mode");
   checkEigenvalueColumns(t);
   if (t.rows.empty()) throw InputError({t.source, t.headerLine, 0, ""}, "no rows");
-  for (size_t i = 0; i < t.rows.size(); ++i) data.eigenvalues.push_back(readEigenvalueRow(t, i));
+  for (size_t i = 0; i < t.rows.size(); ++i) {
+    MeasuredEigenvalue e = readEigenvalueRow(t, i);
+    e.controller.insert(e.controller.begin(), controller.begin(), controller.end());
+    data.eigenvalues.push_back(e);
+  }
   data.eigenvalueFiles.push_back(p.string());
 }
 
@@ -184,6 +223,7 @@ ResponseRun readRun(YamlMap run) {
   if (signals.empty()) run.fail("signals", "a run needs at least one signal");
   for (auto& s : signals) r.signals.push_back(readSignal(s, t, keep));
   readNoise(run, r);
+  r.controller = readController(run);
   run.finish();
   return r;
 }

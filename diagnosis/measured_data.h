@@ -18,6 +18,9 @@ struct MeasuredEigenvalue {
   double real = 0, imag = 0;   ///< 1/s, rad/s
   double realStderr = 0, imagStderr = 0;  ///< 0: unknown (estimated from the best fit's residuals)
   InputLocation where;         ///< file and line of the row
+  /// `steer_controller.*` overrides in force for this row (its file's `controller:` mapping, then its
+  /// `steer_controller.<key>` columns); empty: the scenario's own controller.
+  std::vector<std::string> controller;
 };
 
 /// A measured quantity of a response signal (rad, rad/s).
@@ -42,6 +45,7 @@ struct ResponseRun {
   std::vector<double> time;  ///< s, samples in the window
   std::vector<ResponseSignal> signals;
   InputLocation where;    ///< the run's entry in the YAML file
+  std::vector<std::string> controller;  ///< `steer_controller.*` overrides of its `controller:` mapping
 };
 
 struct MeasuredData {

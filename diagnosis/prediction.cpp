@@ -208,6 +208,20 @@ std::vector<double> getEvaluationSpeeds(const MeasuredEigenvalue& row) {
 
 Predictor::Predictor(std::string scenarioFile, std::vector<std::string> baseOverrides, const MeasuredData& data)
     : scenarioFile_(std::move(scenarioFile)), baseOverrides_(std::move(baseOverrides)), data_(data) {
+  for (ControllerGroup& g : splitByController(data)) {
+    auto part = std::make_shared<ControllerPart>();
+    part->group = std::move(g);
+    std::vector<std::string> base = baseOverrides_;
+    base.insert(base.end(), part->group.overrides.begin(), part->group.overrides.end());
+    part->predictor = std::make_unique<Predictor>(scenarioFile_, base, part->group.data);
+    for (double v : part->predictor->speeds_) speeds_.push_back(v);
+    parts_.push_back(part);
+  }
+  if (!parts_.empty()) {
+    speeds_ = makeSortedUnique(speeds_);
+    reference_ = parts_.front()->predictor->reference_;
+    return;
+  }
   for (const auto& row : data.eigenvalues)
     for (double v : getEvaluationSpeeds(row)) speeds_.push_back(v);
   for (const auto& run : data.responses) speeds_.push_back(run.speed);
@@ -409,8 +423,26 @@ std::complex<double> Predictor::pickEigenvalue(const std::vector<LinearModel>& m
   return {best.real(), std::abs(best.imag())};
 }
 
+Prediction Predictor::predictParts(const std::vector<std::string>& overrides,
+                                   const std::vector<std::vector<double>>& sigma, bool exact) const {
+  Prediction p;
+  p.eigenvalues.resize(data_.eigenvalues.size());
+  p.responses.resize(data_.responses.size());
+  for (const auto& part : parts_) {
+    const ControllerGroup& g = part->group;
+    std::vector<std::vector<double>> partSigma;
+    for (size_t r : g.runs) partSigma.push_back(sigma[r]);
+    const Prediction q = part->predictor->predict(overrides, partSigma, exact);
+    for (size_t i = 0; i < g.rows.size(); ++i) p.eigenvalues[g.rows[i]] = q.eigenvalues[i];
+    for (size_t i = 0; i < g.runs.size(); ++i) p.responses[g.runs[i]] = q.responses[i];
+    p.numLinear += q.numLinear;
+  }
+  return p;
+}
+
 Prediction Predictor::predict(const std::vector<std::string>& overrides,
                               const std::vector<std::vector<double>>& sigma, bool exact) const {
+  if (!parts_.empty()) return predictParts(overrides, sigma, exact);
   const bool fast = !exact && !nodes_.empty();
   const std::vector<double>& speeds = fast ? fastSpeeds_ : speeds_;
   const std::vector<LinearModel> models = calcLinearModels(overrides, speeds);

@@ -32,6 +32,7 @@
 #include <vector>
 
 #include "analysis/sweep.h"
+#include "diagnosis/controller_groups.h"
 #include "diagnosis/measured_data.h"
 
 namespace motostab {
@@ -61,7 +62,9 @@ ResponseFit fitFreeResponse(const LinearModel& lin, const ResponseRun& run, cons
 /// model on each call.
 class Predictor {
  public:
-  /// Sweeps the base scenario (`overrides` applied) once for the mode labels.
+  /// Sweeps the base scenario (`overrides` applied) once for the mode labels. Data taken with several
+  /// controller settings is predicted group by group (diagnosis/controller_groups.h), each group by a
+  /// predictor of its own whose base overrides end with the group's.
   Predictor(std::string scenarioFile, std::vector<std::string> baseOverrides, const MeasuredData& data);
   /// Predictions with `overrides` added to the base overrides; `sigma` per response run and signal.
   Prediction predict(const std::vector<std::string>& overrides, const std::vector<std::vector<double>>& sigma,
@@ -77,6 +80,12 @@ class Predictor {
   const std::vector<double>& getNodes() const { return nodes_; }
 
  private:
+  struct ControllerPart {
+    ControllerGroup group;
+    std::unique_ptr<Predictor> predictor;
+  };
+  Prediction predictParts(const std::vector<std::string>& overrides, const std::vector<std::vector<double>>& sigma,
+                          bool exact) const;
   std::vector<std::complex<double>> predictInterpolated(const std::vector<LinearModel>& models,
                                                         const std::vector<double>& speeds) const;
   struct ModeTrack {
@@ -102,6 +111,7 @@ class Predictor {
   /// branch point no polynomial follows): the fast predictions take them at the rows' own speeds.
   std::vector<std::string> exactModes_;
   std::shared_ptr<SweepResult> reference_;
+  std::vector<std::shared_ptr<ControllerPart>> parts_;  ///< per controller setting (empty: one setting)
 };
 
 /// The speeds at which a row is evaluated (one, or two Gauss-Legendre nodes of its range), m/s.

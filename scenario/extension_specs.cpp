@@ -68,6 +68,12 @@ void readSchedule(YamlMap m, SteerControllerSpec& c) {
 
 }  // namespace
 
+const std::vector<std::string>& getSteerControllerScalarKeys() {
+  static const std::vector<std::string> keys{"roll_angle_Nm_per_rad", "roll_rate_Nms_per_rad", "steer_angle_Nm_per_rad",
+                                             "steer_rate_Nms_per_rad", "gain_factor", "delay_s", "torque_limit_Nm"};
+  return keys;
+}
+
 SteerControllerSpec readSteerController(YamlMap m) {
   SteerControllerSpec c;
   c.rollAngleGain = m.getDouble("roll_angle_Nm_per_rad", 0);

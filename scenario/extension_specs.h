@@ -23,6 +23,10 @@ SteerDamperSpec readSteerDamper(YamlMap m);
 /// increasing speeds; a negative delay, a non-positive limit or gain factor are errors.
 SteerControllerSpec readSteerController(YamlMap m);
 
+/// The scalar keys of `steer_controller` (gains, gain_factor, delay_s, torque_limit_Nm), for readers
+/// that set them per measurement (diagnosis/measured_data.h).
+const std::vector<std::string>& getSteerControllerScalarKeys();
+
 /// `fork_compliance: {stiffness_Nm_per_rad, damping_Nms_per_rad, axis_distance_along_steer_m?,
 /// carrier_mass_fraction? | carrier: {mass_kg, com_m, inertia_kgm2}?, torsion: {stiffness_Nm_per_rad,
 /// damping_Nms_per_rad}?}`; the front frame without the carrier must remain a valid body.
