@@ -2,6 +2,7 @@
 // validation errors, non-finite or out-of-range numbers, bad --set overrides, bad scenario files.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 
@@ -97,6 +98,31 @@ TEST(CliInput, BadScenarioFiles) {
   const auto syntax = (dir / "syntax.yaml").string();
   std::ofstream(syntax) << "name: [a\n";
   expectInputError({"sweep", syntax}, "syntax.yaml:");
+}
+
+// A bad steer_controller section (an unknown key, NaN, a negative delay, a table not sorted by speed)
+// exits 2 naming file:line:col and the key, for check and for a command that builds models.
+TEST(CliInput, BadSteerControllerNamesFileLineColumn) {
+  const auto dir = std::filesystem::temp_directory_path() / ("motostab_cli_controller_" + std::to_string(getpid()));
+  std::filesystem::create_directories(dir);
+  std::ifstream in(kWhipple);
+  const std::string base((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const int lines = static_cast<int>(std::count(base.begin(), base.end(), '\n'));
+  const std::string line = std::to_string(lines + 2);
+  const std::pair<std::string, std::string> cases[] = {
+      {"steer_controller:\n  roll_rate_gain: -6\n", ":" + line + ":3: steer_controller.roll_rate_gain"},
+      {"steer_controller:\n  roll_rate_Nms_per_rad: .nan\n", ":" + line + ":3: steer_controller.roll_rate_Nms_per_rad"},
+      {"steer_controller:\n  delay_s: -0.02\n", ":" + line + ":3: steer_controller.delay_s"},
+      {"steer_controller:\n  schedule: {table: [[2, 1], [1, 0]]}\n", ":" + line + ":30: steer_controller.schedule.table[1]"}};
+  int i = 0;
+  for (const auto& [text, needle] : cases) {
+    const std::string file = (dir / ("bad" + std::to_string(i++) + ".yaml")).string();
+    std::ofstream(file) << base << (base.back() == '\n' ? "" : "\n") << text;
+    expectInputError({"check", file}, file + needle);
+    expectInputError({"sweep", file, "--out", (dir / "out").string()}, file + needle);
+  }
+  EXPECT_FALSE(std::filesystem::exists(dir / "out"));
+  std::filesystem::remove_all(dir);
 }
 
 }  // namespace

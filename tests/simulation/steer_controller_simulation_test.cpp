@@ -1,0 +1,62 @@
+// Steer controller in the time domain (vehicle/steer_controller.h): a saturating torque limit holds
+// the applied torque at the limit, and the energy budget closes: with rolling constraints, no drag
+// and no speed control, the kinetic plus gravitational energy changes by exactly the controller's
+// work, the integral of T steer_rate (the steer pin's power), with T recomputed in the test from the
+// law and the sampled states.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <iostream>
+
+#include "io/csv.h"
+#include "io/portable_random.h"
+#include "simulation/simulation.h"
+
+namespace motostab::simulation {
+namespace {
+
+const std::string kWhipple = std::string(MOTOSTAB_SOURCE_DIR) + "/scenarios/whipple-benchmark.yaml";
+
+TEST(SteerControllerSimulation, SaturatedTorqueAndEnergyBudget) {
+  PortableRandom rng(31337);
+  const double k = rng.drawUniform(-14, -8);     // N m s/rad, into the fall
+  const double limit = rng.drawUniform(0.3, 0.6);  // N m: the kick's command k * 0.5 is far above it
+  const Scenario s = loadScenario(kWhipple, {"steer_controller={roll_rate_Nms_per_rad: " + formatNumber(k) +
+                                             ", torque_limit_Nm: " + formatNumber(limit) + "}"});
+  SimulationOptions o;
+  o.speed = 3;
+  o.duration = 3;
+  o.outputStep = 0.0005;
+  o.speedControl = SpeedControl::None;
+  o.accuracy = 1e-9;
+  o.perturbations = {parsePerturbation("roll-rate:0.5")};
+  const SimulationResult r = runSimulation(s, o);
+  ASSERT_EQ(r.status, SimulationStatus::Completed) << r.message;
+  const int cT = r.getColumnIndex("steer_controller_torque"), cRoll = r.getColumnIndex("roll_rate"),
+            cSteer = r.getColumnIndex("steer_rate"), cE = r.getColumnIndex("energy");
+  int saturated = 0;
+  double work = 0, maxT = 0;
+  for (size_t i = 0; i < r.rows.size(); ++i) {
+    const double law = std::clamp(k * r.rows[i][cRoll], -limit, limit);  // the law, written here
+    EXPECT_NEAR(r.rows[i][cT], law, 1e-12) << "t = " << r.rows[i][0];
+    saturated += std::abs(law) == limit;
+    maxT = std::max(maxT, std::abs(r.rows[i][cT]));
+    if (i > 0) {  // trapezoidal rule over the samples
+      const double p0 = std::clamp(k * r.rows[i - 1][cRoll], -limit, limit) * r.rows[i - 1][cSteer];
+      const double p1 = law * r.rows[i][cSteer];
+      work += 0.5 * (p0 + p1) * (r.rows[i][0] - r.rows[i - 1][0]);
+    }
+  }
+  const double dE = r.rows.back()[cE] - r.rows.front()[cE];
+  std::cout << "gain " << k << " N m s/rad, limit " << limit << " N m: " << saturated << " of " << r.rows.size()
+            << " samples at the limit; energy change " << dE << " J, controller work " << work << " J, difference "
+            << dE - work << " J\n";
+  EXPECT_EQ(maxT, limit);
+  EXPECT_GT(saturated, 50);                      // the limit is reached and held
+  EXPECT_GT(std::abs(work), 1e-2);               // the controller does work
+  EXPECT_LT(std::abs(dE - work), 1e-3 * std::abs(work));
+}
+
+}  // namespace
+}  // namespace motostab::simulation
