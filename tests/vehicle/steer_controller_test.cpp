@@ -71,7 +71,8 @@ double expectClosedLoopMatches(const Scenario& s, Feedback k, double below, doub
     k.factor = baseFactor * (below > 0 ? std::max(below - v, 0.0) : 1.0);  // the schedule, from its definition
     Eigen::VectorXcd ref = calcClosedLoopEigenvalues(b, s.gravity, v, k);
     const Eigen::VectorXcd got = calcEigenvaluesAt(s, v);
-    ASSERT_EQ(got.size(), ref.size() + 1) << "v = " << v;
+    EXPECT_EQ(got.size(), ref.size() + 1) << "v = " << v;
+    if (got.size() != ref.size() + 1) return HUGE_VAL;
     Eigen::VectorXcd refWithSpeed(ref.size() + 1);
     refWithSpeed << ref, cd(0);
     const double d = std::max(calcSpectrumDistance(ref, got), calcSpectrumDistance(got, refWithSpeed));
@@ -137,7 +138,7 @@ TEST(SteerController, PadeDelayIsAStateOfTheLinearModel) {
 // stable only from 4.29 m/s); steering into the fall stabilises it, steering out of it makes it worse.
 TEST(SteerController, SteeringIntoTheFallStabilisesLowSpeedWeave) {
   PortableRandom rng(5);
-  const double gain = rng.drawUniform(8, 12), v = 2.5;
+  const double gain = rng.drawUniform(20, 40), v = 2.5;  // -20 and below stabilise it (about -15 is the edge)
   auto maxReal = [&](double kPhiDot) {
     Feedback k;
     k.kPhiDot = kPhiDot;
