@@ -20,8 +20,8 @@ const std::string kWhipple = std::string(MOTOSTAB_SOURCE_DIR) + "/scenarios/whip
 
 TEST(SteerControllerSimulation, SaturatedTorqueAndEnergyBudget) {
   PortableRandom rng(31337);
-  const double k = rng.drawUniform(-14, -8);     // N m s/rad, into the fall
-  const double limit = rng.drawUniform(0.3, 0.6);  // N m: the kick's command k * 0.5 is far above it
+  const double k = rng.drawUniform(-40, -30);    // N m s/rad, into the fall: stabilises weave at 3 m/s
+  const double limit = rng.drawUniform(1.5, 2.5);  // N m: the kick's command k * 0.3 is far above it
   const Scenario s = loadScenario(kWhipple, {"steer_controller={roll_rate_Nms_per_rad: " + formatNumber(k) +
                                              ", torque_limit_Nm: " + formatNumber(limit) + "}"});
   SimulationOptions o;
@@ -30,7 +30,7 @@ TEST(SteerControllerSimulation, SaturatedTorqueAndEnergyBudget) {
   o.outputStep = 0.0005;
   o.speedControl = SpeedControl::None;
   o.accuracy = 1e-9;
-  o.perturbations = {parsePerturbation("roll-rate:0.5")};
+  o.perturbations = {parsePerturbation("roll-rate:0.3")};
   const SimulationResult r = runSimulation(s, o);
   ASSERT_EQ(r.status, SimulationStatus::Completed) << r.message;
   const int cT = r.getColumnIndex("steer_controller_torque"), cRoll = r.getColumnIndex("roll_rate"),
@@ -55,7 +55,7 @@ TEST(SteerControllerSimulation, SaturatedTorqueAndEnergyBudget) {
   EXPECT_EQ(maxT, limit);
   EXPECT_GT(saturated, 50);                      // the limit is reached and held
   EXPECT_GT(std::abs(work), 1e-2);               // the controller does work
-  EXPECT_LT(std::abs(dE - work), 1e-3 * std::abs(work));
+  EXPECT_LT(std::abs(dE - work), 1e-5 * std::abs(work));  // measured 3e-7
 }
 
 }  // namespace
