@@ -15,6 +15,8 @@
 #include "diagnosis/prediction.h"
 #include "io/csv.h"
 #include "io/portable_random.h"
+#include "scenario/bicycle_parameters.h"
+#include "scenario/bicycle_parameters_uncertainty.h"
 #include "scenario/parameter_paths.h"
 #include "vehicle/vehicle_model.h"
 
@@ -130,6 +132,42 @@ TEST(ControllerGroups, ControllerCandidates) {
   for (const char* n : {"steer_controller_gain", "steer_controller_delay", "parameter:steer_controller.roll_rate_Nms_per_rad",
                         "parameter:steer_controller.schedule.below_mps"})
     EXPECT_NE(std::find(names.begin(), names.end(), n), names.end()) << n;
+}
+
+// The balance-assist case: scenarios/balance-assist.yaml is the import of BicycleParameters'
+// Balanceassistv1 (every imported value and uncertainty unchanged) plus its controller, and the
+// example's 21 rows split into the three gains; at 5.00 m/s the schedule (5 - v) switches the
+// controller off, so the three gains' 5 m/s rows are one open-loop state: predicted identically,
+// measured differently (Haitjema 2023, Tables 3-5: imag 4.660, 5.325, 4.167 rad/s).
+TEST(ControllerGroups, BalanceAssistExample) {
+  const std::string src = MOTOSTAB_SOURCE_DIR;
+  const YAML::Node bundled = YAML::LoadFile(src + "/scenarios/balance-assist.yaml");
+  const std::string txt = std::string(MOTOSTAB_TEST_DATA_DIR) +
+                          "/measured-data/BicycleParameters/data/bicycles/Balanceassistv1/Parameters/Balanceassistv1Benchmark.txt";
+  const YAML::Node imported = YAML::Load(convertBicycleParametersToScenario(txt, "balance-assist") +
+                                         formatBicycleParametersUncertainty(readBicycleParameterSigmas(txt)));
+  for (const char* key : {"gravity_mps2", "geometry", "rear_frame", "front_frame", "rear_wheel", "front_wheel", "contact", "uncertainty"})
+    EXPECT_EQ(YAML::Dump(bundled[key]), YAML::Dump(imported[key])) << key;
+  const Scenario s = loadScenario(src + "/scenarios/balance-assist.yaml");
+  ASSERT_TRUE(s.hasSteerController);
+  EXPECT_LT(s.steerController.rollRateGain, 0);  // into the fall
+  const MeasuredData data = loadMeasuredData(src + "/examples/balance-assist/weave.yaml");
+  ASSERT_EQ(data.eigenvalues.size(), 21u);
+  const std::vector<ControllerGroup> groups = splitByController(data);
+  ASSERT_EQ(groups.size(), 3u);
+  std::vector<size_t> open;
+  for (const auto& g : groups) {
+    EXPECT_EQ(g.rows.size(), 7u);
+    for (size_t r : g.rows)
+      if (data.eigenvalues[r].speed == 5.0) open.push_back(r);
+  }
+  ASSERT_EQ(open.size(), 3u);
+  MeasuredData openData;
+  for (size_t r : open) openData.eigenvalues.push_back(data.eigenvalues[r]);
+  const Prediction p = Predictor(src + "/scenarios/balance-assist.yaml", {}, openData).predict({}, {});
+  EXPECT_LT(std::abs(p.eigenvalues[0] - p.eigenvalues[1]), 1e-12);
+  EXPECT_LT(std::abs(p.eigenvalues[0] - p.eigenvalues[2]), 1e-12);
+  EXPECT_GT(std::abs(openData.eigenvalues[1].imag - openData.eigenvalues[2].imag), 1.0);
 }
 
 }  // namespace
