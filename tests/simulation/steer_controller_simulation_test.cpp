@@ -9,9 +9,13 @@
 #include <cmath>
 #include <iostream>
 
+#include <unsupported/Eigen/MatrixFunctions>
+
 #include "io/csv.h"
 #include "io/portable_random.h"
+#include "analysis/linearize.h"
 #include "simulation/simulation.h"
+#include "tests/simulation/linear_reference.h"
 
 namespace motostab::simulation {
 namespace {
@@ -56,6 +60,39 @@ TEST(SteerControllerSimulation, SaturatedTorqueAndEnergyBudget) {
   EXPECT_GT(saturated, 50);                      // the limit is reached and held
   EXPECT_GT(std::abs(work), 1e-2);               // the controller does work
   EXPECT_LT(std::abs(dE - work), 1e-5 * std::abs(work));  // measured 3e-7
+}
+
+// With every other extension (enduro: relaxation tyres, swingarm; steer damper, fork bending and
+// torsion, rider lean) and a delayed, scheduled full-state controller, a small perturbation follows
+// exp(A t) x0 of the linearisation, whose states include the delay's z: the force element, the trim
+// of z and the linearisation agree in the time domain.
+TEST(SteerControllerSimulation, WithEveryExtensionSmallPerturbationFollowsTheLinearModel) {
+  PortableRandom rng(8080);
+  const std::string controller =
+      "steer_controller={roll_angle_Nm_per_rad: " + formatNumber(rng.drawUniform(-60, -20)) +
+      ", roll_rate_Nms_per_rad: " + formatNumber(rng.drawUniform(-20, -5)) + ", steer_rate_Nms_per_rad: " +
+      formatNumber(rng.drawUniform(-3, 0)) + ", delay_s: " + formatNumber(rng.drawUniform(0.02, 0.06)) +
+      ", torque_limit_Nm: 50, schedule: {table: [[5, 1.5], [30, 0.5]]}}";
+  const Scenario s = loadScenario(
+      std::string(MOTOSTAB_SOURCE_DIR) + "/scenarios/enduro.yaml",
+      {controller, "steer_damper={damping_Nms_per_rad: 5}",
+       "fork_compliance={stiffness_Nm_per_rad: 40000, damping_Nms_per_rad: 20, "
+       "torsion: {stiffness_Nm_per_rad: 60000, damping_Nms_per_rad: 10}}",
+       "rider_lean={hinge_height_m: 0.75, mass_kg: 40, com_m: [0.45, 0, 1.05], "
+       "inertia_kgm2: {xx: 2.0, yy: 2.1, zz: 0.7, xy: 0, xz: 0, yz: 0}, stiffness_Nm_per_rad: 2000, damping_Nms_per_rad: 60}"});
+  const double v = 15;
+  const LinearModel lin = linearizeScenarioAt(s, v);
+  ASSERT_GE(lin.findState("steer_controller_delay"), 0);
+  const SimulationResult r = runSimulation(s, makeSmallRateKick(v, 1e-10));
+  ASSERT_EQ(r.status, SimulationStatus::Completed) << r.message;
+  const Eigen::VectorXd x0 = readInitialDeviation(r, lin);
+  for (const std::string name : {"roll", "steer", "steer_controller_delay"}) {
+    double maxRef = 0;
+    const double rel = calcRelativeDeviationFromLinear(r, lin, x0, name, maxRef);
+    std::cout << controller << " on the extended enduro at " << v << " m/s, " << name
+              << ": max |nonlinear - linear| / max |linear| = " << rel << "\n";
+    EXPECT_LT(rel, 1e-4) << name;
+  }
 }
 
 }  // namespace
