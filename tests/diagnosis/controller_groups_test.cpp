@@ -52,12 +52,18 @@ class ControllerDataTest : public ::testing::Test {
 TEST_F(ControllerDataTest, SettingPerFileAndPerRow) {
   write("a.csv", "speed_mps,mode,real,imag\n2,weave,-1,5\n3,weave,-1,6\n");
   write("b.csv", "speed_mps,mode,real,imag,steer_controller.roll_rate_Nms_per_rad\n2,weave,-1,7,-10\n3,weave,-1,8,-6\n");
+  std::string run = "t,g\n";
+  for (int i = 0; i < 30; ++i) run += std::to_string(0.01 * i) + "," + std::to_string(0.1 * i) + "\n";
+  write("run.csv", run);
   const MeasuredData d = loadMeasuredData(write("m.yaml",
                                                 "eigenvalues:\n"
                                                 "  - file: a.csv\n"
                                                 "    controller: {roll_rate_Nms_per_rad: -8, schedule: {below_mps: 5}}\n"
                                                 "  - file: b.csv\n"
-                                                "    controller: {delay_s: 0.02}\n"));
+                                                "    controller: {delay_s: 0.02}\n"
+                                                "responses:\n"
+                                                "  - {file: run.csv, speed_mps: 3, time_column: t, signals: [{column: g, quantity: roll_rate}],\n"
+                                                "     controller: {roll_rate_Nms_per_rad: -8, schedule: {below_mps: 5}}}\n"));
   ASSERT_EQ(d.eigenvalues.size(), 4u);
   EXPECT_EQ(d.eigenvalues[0].controller,
             (std::vector<std::string>{"steer_controller.roll_rate_Nms_per_rad=-8", "steer_controller.schedule={below_mps: 5}"}));
@@ -67,6 +73,9 @@ TEST_F(ControllerDataTest, SettingPerFileAndPerRow) {
   const std::vector<ControllerGroup> g = splitByController(d);
   ASSERT_EQ(g.size(), 3u);
   EXPECT_EQ(g[0].rows, (std::vector<size_t>{0, 1}));
+  EXPECT_EQ(g[0].runs, (std::vector<size_t>{0}));  // the run has the first file's setting
+  ASSERT_EQ(g[0].data.responses.size(), 1u);
+  EXPECT_TRUE(g[1].runs.empty());
   EXPECT_EQ(g[1].rows, (std::vector<size_t>{2}));
   EXPECT_EQ(g[2].rows, (std::vector<size_t>{3}));
   EXPECT_TRUE(g[1].data.eigenvalues[0].controller.empty());
