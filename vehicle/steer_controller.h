@@ -1,9 +1,8 @@
 #pragma once
 // Steer controller (`steer_controller`): linear state feedback on the steer torque, as used for
-// balance-assist and steer-by-wire bicycles, electronic steering dampers and rider models (Schwab,
-// Kooijman, Meijaard 2008, "Some recent developments in bicycle dynamics and control", sec. 4: steer
-// torque as state feedback of roll and steer; Moore 2012, PhD thesis, UC Davis, ch. 7; Dialynas,
-// Christoforidis, Happee, Schwab 2023, "Design and implementation of a steer-by-wire bicycle").
+// balance-assist and steer-by-wire bicycles, electronic steering dampers and rider models (steer
+// torque as feedback of roll and steer angles and rates: Moore 2012, "Human control of a bicycle",
+// PhD thesis, UC Davis; the balance-assist law T = k (v0 - v) roll_rate: Haitjema 2023, TU Delft).
 // Signs are those of ISO 8855 and the model (vehicle/vehicle_model.h): roll phi > 0 leans right,
 // steer delta > 0 steers left, the torque T > 0 turns the front frame to the left (its reaction acts
 // on the rear frame). Steering INTO the fall (to the right when falling to the right) therefore needs
