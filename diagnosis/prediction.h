@@ -69,7 +69,8 @@ class Predictor {
   /// Predictions with `overrides` added to the base overrides; `sigma` per response run and signal.
   Prediction predict(const std::vector<std::string>& overrides, const std::vector<std::vector<double>>& sigma,
                      bool exact = true) const;
-  /// Linear models at `speeds` (sorted, unique; m/s) for `overrides`.
+  /// Linear models at `speeds` (sorted, unique; m/s) for `overrides` (after the base overrides only:
+  /// no controller setting of the data is added here).
   std::vector<LinearModel> calcLinearModels(const std::vector<std::string>& overrides, const std::vector<double>& speeds) const;
   /// The sorted, unique speeds predict() linearises at, m/s.
   const std::vector<double>& getSpeeds() const { return speeds_; }
