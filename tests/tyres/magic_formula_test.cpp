@@ -92,21 +92,25 @@ struct BookMf61 {
     const double D = muy(Fz, g) * Fz * (c("RVY1") + c("RVY2") * dfz(Fz) + c("RVY3") * g) * std::cos(std::atan(c("RVY4") * a));
     return D * std::sin(c("RVY5") * std::atan(c("RVY6") * k));
   }
-  // Pure aligning moment Mz0 (4.E31-4.E49), the trail acting on the side force at zero camber.
-  double Mz0(double Fz, double a, double g) const {
+  // Aligning moment (4.E71-4.E78 with the pure-slip parts 4.E31-4.E49): the trail acts on the
+  // combined side force at zero camber, Gyk Fy0(gamma = 0); Fx and Fy are the combined forces.
+  double Mz(double Fz, double k, double a, double g, double Fx, double Fy) const {
     double By, SHy, SVy;
     Fy0(Fz, a, g, &By, &SHy, &SVy);
     const double R0 = c("UNLOADED_RADIUS"), ca = 1 / std::sqrt(1 + a * a), d = dfz(Fz);
     const double at = a + c("QHZ1") + c("QHZ2") * d + (c("QHZ3") + c("QHZ4") * d) * g;
     const double ar = a + SHy + SVy / Kya(Fz, g);
+    const double r = Kxk(Fz) / Kya(Fz, g) * k;
+    const double ateq = std::sqrt(at * at + r * r) * sgn(at), areq = std::sqrt(ar * ar + r * r) * sgn(ar);
     const double Bt = (c("QBZ1") + c("QBZ2") * d + c("QBZ3") * d * d) * (1 + c("QBZ5") * std::abs(g));  // QBZ6 absent: 0
     const double Ct = c("QCZ1");
     const double Dt = Fz * R0 / Fz0() * (c("QDZ1") + c("QDZ2") * d) * (1 - c("PPZ1") * dpi()) * (1 + c("QDZ3") * std::abs(g) + c("QDZ4") * g * g);
     const double Et = std::min(1.0, (c("QEZ1") + c("QEZ2") * d + c("QEZ3") * d * d) * (1 + (c("QEZ4") + c("QEZ5") * g) * 2 / M_PI * std::atan(Bt * Ct * at)));
-    const double t = Dt * mfCos(Bt, Ct, Et, at) * ca;
+    const double t = Dt * mfCos(Bt, Ct, Et, ateq) * ca;
     const double Br = c("QBZ9") + c("QBZ10") * By * c("PCY1");
     const double Dr = Fz * R0 * ((c("QDZ6") + c("QDZ7") * d) + ((c("QDZ8") + c("QDZ9") * d) * (1 + c("PPZ2") * dpi()) + (c("QDZ10") + c("QDZ11") * d) * std::abs(g)) * g) * ca;
-    return -t * Fy0(Fz, a, 0) + Dr * std::cos(std::atan(Br * ar)) * ca;
+    const double s = R0 * (c("SSZ1") + c("SSZ2") * Fy / Fz0() + (c("SSZ3") + c("SSZ4") * d) * g);
+    return -t * Gyk(Fz, k, a, g) * Fy0(Fz, a, 0) + Dr * std::cos(std::atan(Br * areq)) * ca + s * Fx;
   }
   // Overturning moment 4.E69 and rolling resistance 4.E70.
   double Mx(double Fz, double Fy, double g) const {
@@ -141,7 +145,8 @@ TEST(MagicFormula61, MatchesTheBookAtDrawnPoints) {
     const TyreForces pure = law->calcForces({p.Fz, 0, p.alpha, p.gamma, p.Vx});
     const double tol = 1e-9 * p.Fz;
     EXPECT_NEAR(pure.Fy, book.Fy0(p.Fz, a, g), tol) << i;
-    EXPECT_NEAR(pure.Mz, book.Mz0(p.Fz, a, g), tol * 0.1) << i;
+    const double FxPure = book.Gxa(p.Fz, 0, a, g) * book.Fx0(p.Fz, 0, g);  // the shifts leave a small Fx at kappa = 0
+    EXPECT_NEAR(pure.Mz, book.Mz(p.Fz, 0, a, g, FxPure, pure.Fy), tol * 0.1) << i;
     const TyreForces longitudinal = law->calcForces({p.Fz, p.kappa, 0, p.gamma, p.Vx});
     EXPECT_NEAR(longitudinal.Fx, book.Fx0(p.Fz, p.kappa, g) * book.Gxa(p.Fz, p.kappa, 0, g), tol) << i;
     const TyreForces combined = law->calcForces({p.Fz, p.kappa, p.alpha, p.gamma, p.Vx});
@@ -149,6 +154,7 @@ TEST(MagicFormula61, MatchesTheBookAtDrawnPoints) {
     const double Fy = book.Gyk(p.Fz, p.kappa, a, g) * book.Fy0(p.Fz, a, g) + book.SVyk(p.Fz, p.kappa, a, g);
     EXPECT_NEAR(combined.Fx, Fx, tol) << i;
     EXPECT_NEAR(combined.Fy, Fy, tol) << i;
+    EXPECT_NEAR(combined.Mz, book.Mz(p.Fz, p.kappa, a, g, Fx, Fy), tol * 0.1) << i;
     EXPECT_NEAR(combined.Mx, book.Mx(p.Fz, Fy, g), tol * 0.1) << i;
     EXPECT_NEAR(combined.My, book.My(p.Fz, Fx, p.Vx, g), tol * 0.1) << i;
   }
