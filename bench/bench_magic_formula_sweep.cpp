@@ -7,10 +7,7 @@
 #include <benchmark/benchmark.h>
 #include <yaml-cpp/yaml.h>
 
-#include <algorithm>
-#include <chrono>
-
-#include "analysis/sweep.h"
+#include "bench/sweep_timing.h"
 #include "scenario/scenario.h"
 
 namespace {
@@ -42,20 +39,8 @@ std::vector<std::string> makeOverrides(int which) {
   return out;
 }
 
-double median(std::vector<double> v) {
-  std::sort(v.begin(), v.end());
-  return v[v.size() / 2];
-}
-
-double timeSweep(const motostab::VehicleModel& model, size_t& states) {
-  motostab::SweepOptions opt;
-  opt.start = 0, opt.stop = 40, opt.step = 0.1;
-  const auto t0 = std::chrono::steady_clock::now();
-  auto r = motostab::runSweep(model, opt);
-  benchmark::DoNotOptimize(r.criticalSpeeds.data());
-  states = r.models.back().A.rows();
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-}
+using motostab::bench::median;
+using motostab::bench::timeSweep401;
 
 void BM_EnduroMagicFormulaSweep401(benchmark::State& st) {
   const motostab::VehicleModel linear(motostab::loadScenario(kEnduro));
@@ -63,7 +48,7 @@ void BM_EnduroMagicFormulaSweep401(benchmark::State& st) {
   std::vector<double> ratios, linearMs, mfMs;
   size_t nLinear = 0, nMf = 0;
   for (auto _ : st) {
-    const double a = timeSweep(linear, nLinear), b = timeSweep(mf, nMf);
+    const double a = timeSweep401(linear, nLinear), b = timeSweep401(mf, nMf);
     linearMs.push_back(a * 1e3), mfMs.push_back(b * 1e3), ratios.push_back(b / a);
   }
   st.counters["ratio"] = median(ratios);

@@ -7,6 +7,14 @@
 
 namespace motostab {
 
+std::optional<double> CoefficientSource::find(const std::string& name) const {
+  if (scaling_) {
+    const auto it = scaling_->find(name);
+    if (it != scaling_->end()) return it->second;
+  }
+  return findOwn(name);
+}
+
 double CoefficientSource::get(const std::string& name) const {
   const auto v = find(name);
   if (!v) fail(name, "missing coefficient (needed by the chosen Magic Formula equations)");
@@ -24,38 +32,32 @@ namespace {
 
 class TirSource : public CoefficientSource {
  public:
-  TirSource(const TirFile& f, const std::map<std::string, double>* scaling) : f_(f), scaling_(scaling) {}
-  std::optional<double> find(const std::string& name) const override {
-    if (scaling_) {
-      const auto it = scaling_->find(name);
-      if (it != scaling_->end()) return it->second;
-    }
+  TirSource(const TirFile& f, const std::map<std::string, double>* scaling) : CoefficientSource(scaling), f_(f) {}
+  [[noreturn]] void fail(const std::string& name, const std::string& message) const override { f_.fail(name, message); }
+
+ protected:
+  std::optional<double> findOwn(const std::string& name) const override {
     if (!f_.find(name)) return std::nullopt;
     return f_.getNumber(name);
   }
-  [[noreturn]] void fail(const std::string& name, const std::string& message) const override { f_.fail(name, message); }
 
  private:
   const TirFile& f_;
-  const std::map<std::string, double>* scaling_;
 };
 
 class YamlSource : public CoefficientSource {
  public:
-  YamlSource(YamlMap& m, const std::map<std::string, double>* scaling) : m_(m), scaling_(scaling) {}
-  std::optional<double> find(const std::string& name) const override {
-    if (scaling_) {
-      const auto it = scaling_->find(name);
-      if (it != scaling_->end()) return it->second;
-    }
+  YamlSource(YamlMap& m, const std::map<std::string, double>* scaling) : CoefficientSource(scaling), m_(m) {}
+  [[noreturn]] void fail(const std::string& name, const std::string& message) const override { m_.fail(name, message); }
+
+ protected:
+  std::optional<double> findOwn(const std::string& name) const override {
     if (!m_.has(name)) return std::nullopt;
     return m_.getDouble(name);
   }
-  [[noreturn]] void fail(const std::string& name, const std::string& message) const override { m_.fail(name, message); }
 
  private:
   YamlMap& m_;
-  const std::map<std::string, double>* scaling_;
 };
 
 double sgn(double x) { return (x > 0) - (x < 0); }

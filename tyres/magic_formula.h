@@ -54,8 +54,11 @@ class TyreForceLaw {
 /// (L...) overridden by a scenario's `scaling` map. Names are the .tir keys (PKY1, LMUY, ...).
 class CoefficientSource {
  public:
+  /// `scaling` (may be null): scaling factors that take precedence over the source's own values.
+  explicit CoefficientSource(const std::map<std::string, double>* scaling = nullptr) : scaling_(scaling) {}
   virtual ~CoefficientSource() = default;
-  virtual std::optional<double> find(const std::string& name) const = 0;
+  /// The value of `name`: from `scaling` if it is there, else the source's own.
+  std::optional<double> find(const std::string& name) const;
   [[noreturn]] virtual void fail(const std::string& name, const std::string& message) const = 0;
   /// A coefficient the equations need: missing is an InputError naming it.
   double get(const std::string& name) const;
@@ -63,6 +66,13 @@ class CoefficientSource {
   double getScaling(const std::string& name) const;
   /// An optional value.
   double get(const std::string& name, double fallback) const;
+
+ protected:
+  /// The source's own value of `name`, or nothing.
+  virtual std::optional<double> findOwn(const std::string& name) const = 0;
+
+ private:
+  const std::map<std::string, double>* scaling_;
 };
 
 /// Coefficients of a .tir file, with scaling factors from `scaling` (may be null) taking precedence.

@@ -28,12 +28,13 @@ TEST(CliTyre, WritesForcesAndPlots) {
     EXPECT_NEAR(std::stod(t.rows[i][2]), 2 * M_PI / 180, 1e-16);
     EXPECT_EQ(std::stod(t.rows[i][3]), 0.01);
   }
-  // ISO signs: a wheel sliding left (alpha > 0) is pushed right, and the force saturates well below
-  // the friction limit mu Fz (PDY1 = 0.8785 at the nominal load 4000 N: 3514 N).
+  // ISO signs: a wheel sliding left (alpha > 0) is pushed right, and the force saturates near the
+  // friction limit mu Fz (PDY1 = 0.8785 at the nominal load 4000 N: 3514 N; the vertical shifts and
+  // the camber add a few per cent).
   const double fyLeft = std::stod(t.rows.front()[5]), fyRight = std::stod(t.rows.back()[5]);
   EXPECT_GT(fyLeft, 1000);
   EXPECT_LT(fyRight, -1000);
-  EXPECT_LT(std::abs(fyRight), 0.8785 * 4000 * 1.001);
+  EXPECT_LT(std::abs(fyRight), 1.05 * 0.8785 * 4000);  // within a few per cent: shifts and camber add a little
   // 17 significant digits: the slip column round-trips the double the command computed.
   EXPECT_GE(t.rows[1][1].size(), 17u) << t.rows[1][1];
   for (const char* f : {"fy_vs_slip.png", "fy_vs_slip.svg", "fy_vs_slip.gp", "mz_vs_slip.png", "mz_vs_slip.svg"})
@@ -60,11 +61,12 @@ TEST(CliTyre, BadInputExitsWithTwo) {
 }
 
 TEST(CliTyre, MagicFormulaSupersportSimulatesALargeLean) {
-  // A lateral force pulse on the rear frame leans the motorcycle far (tens of degrees) at 30 m/s: the
-  // tyres run at large camber and nonzero slip, and the run must complete with finite tyre forces.
+  // A lateral force pulse on the rear frame (6 kN for 0.4 s) leans the motorcycle about 20 degrees at
+  // 30 m/s: the tyres run at large camber and nonzero slip; the run completes with finite tyre forces
+  // and the motorcycle, stable at this speed, comes back upright.
   const auto dir = makeTempDir("cli_tyre_simulate");
   const CliRun r = runCli({"simulate", "scenarios/supersport-mf.yaml", "--speed", "30", "--perturb",
-                           "lateral-force:rear_frame:1500:0.1:0.4", "--duration", "2", "--out", (dir / "sim").string()});
+                           "lateral-force:rear_frame:6000:0.1:0.4", "--duration", "3", "--out", (dir / "sim").string()});
   ASSERT_EQ(r.exitCode, 0) << r.output;
   const TextCsv t = readTextCsv(dir / "sim" / "timeseries.csv");
   const int roll = t.find("roll"), camber = t.find("front_tyre_camber_rad"), fy = t.find("front_tyre_Fy_N"),
@@ -80,8 +82,9 @@ TEST(CliTyre, MagicFormulaSupersportSimulatesALargeLean) {
     maxCamber = std::max(maxCamber, std::abs(c));
     maxFy = std::max(maxFy, std::abs(f));
   }
-  EXPECT_GT(maxCamber, 0.1) << "the pulse should lean the motorcycle by more than 6 degrees";
-  EXPECT_GT(maxFy, 100);
+  EXPECT_GT(maxCamber, 0.3) << "the pulse should lean the motorcycle by more than 17 degrees";
+  EXPECT_GT(maxFy, 500);
+  EXPECT_LT(std::abs(std::stod(t.rows.back()[camber])), 0.05) << "back upright after 3 s";
 }
 
 }  // namespace

@@ -218,12 +218,14 @@ const std::map<std::string, double> kFront120 = {
 class MapSource : public CoefficientSource {
  public:
   explicit MapSource(const std::map<std::string, double>& m) : m_(m) {}
-  std::optional<double> find(const std::string& name) const override {
-    const auto it = m_.find(name);
-    return it == m_.end() ? std::nullopt : std::optional<double>(it->second);
-  }
   [[noreturn]] void fail(const std::string& name, const std::string& message) const override {
     throw InputError({"map", 0, 0, name}, message);
+  }
+
+ protected:
+  std::optional<double> findOwn(const std::string& name) const override {
+    const auto it = m_.find(name);
+    return it == m_.end() ? std::nullopt : std::optional<double>(it->second);
   }
 
  private:
