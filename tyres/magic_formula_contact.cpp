@@ -96,9 +96,12 @@ class MagicFormulaTyreForce : public TyreForceElement {
     const TyreLaw& law = *t_.law;
     const double gammaIso = -k.camber;
     const TyreForces steady = law.calcForces({k.Fz, k.kappa, std::atan(-k.alpha), gammaIso, k.forwardSpeed});
-    const double C = -law.calcCorneringStiffness(std::max(k.Fz, kLoadFloor * law.getNominalLoad()));
+    // The side force is C(Fz) s, so that an unloaded wheel has none; the steady slip divides by the
+    // stiffness at the floored load.
+    const double C = -law.calcCorneringStiffness(k.Fz);
+    const double CFloored = -law.calcCorneringStiffness(std::max(k.Fz, kLoadFloor * law.getNominalLoad()));
     const bool lagged = t_.isLagged();
-    const LaggedSlip s = calcLaggedSlip(steady.Fy / C, k.alpha, lagged, z, k.V, lagged ? calcRelaxationLength(k) : 0.0);
+    const LaggedSlip s = calcLaggedSlip(steady.Fy / CFloored, k.alpha, lagged, z, k.V, lagged ? calcRelaxationLength(k) : 0.0);
     slipDot = s.slipDot;
     const TyreForces f = lagged ? law.calcForces({k.Fz, k.kappa, std::atan(-s.alphaLagged), gammaIso, k.forwardSpeed}) : steady;
     TyreContactForces out;

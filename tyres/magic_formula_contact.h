@@ -9,8 +9,10 @@
 //   steady equivalent slip  s_ss = Fy_MF(kappa, alpha, phi, Fz)/C(Fz)   (alpha for a linear law plus
 //                           its camber part, as relaxation_linear's alpha + (k_phi/k_alpha) phi)
 //   relaxation              sigma/V s' + s = s_ss, sigma from the scenario or the law (MF 6.1: PTY1,
-//                           PTY2 at the current load and camber, the load floored at 5% of FNOMIN)
+//                           PTY2 at the current load and camber)
 //   side force              Fy = C(Fz) s
+// In s_ss and sigma the load is floored at 5% of FNOMIN (finite rates when a wheel unloads; below
+// that load the steady side force is C(Fz)/C(floor) of the law's, and it vanishes with the load).
 //   Fx, Mz, Mx, My          the law at the lagged slip angle alpha_l = alpha + (s - s_ss)
 // In straight running (zero slips and camber) this linearises to relaxation_linear with
 // k_alpha = C/Fz, k_phi = dFy/dphi /Fz, k_mz = dMz/dalpha /Fz, k_mt = dMz/dphi /Fz and
