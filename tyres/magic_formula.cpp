@@ -74,7 +74,7 @@ double magicCos(double B, double C, double E, double x) {
 
 // MF 6.1 coefficients (Pacejka 2012 sec. 4.3.2), names as in the .tir file.
 struct Mf61 {
-  double FNOMIN, R0, NOMPRES, LONGVL, pressure;
+  double FNOMIN, R0, NOMPRES, LONGVL, VXLOW, pressure;
   double LFZO, LCX, LMUX, LEX, LKX, LHX, LVX, LCY, LMUY, LEY, LKY, LKYC, LKZC, LHY, LVY, LTR, LRES, LXAL, LYKA,
       LVYKA, LS, LMX, LVMX, LMY, LSGAL;
   double PCX1, PDX1, PDX2, PDX3, PEX1, PEX2, PEX3, PEX4, PKX1, PKX2, PKX3, PHX1, PHX2, PVX1, PVX2, PPX1, PPX2, PPX3,
@@ -96,7 +96,7 @@ const std::vector<std::string> kMf61Scaling = {"LFZO", "LCX",  "LMUX", "LEX",  "
 Mf61 readMf61(const CoefficientSource& s, std::optional<double> pressure) {
   Mf61 c{};
   std::vector<std::pair<const char*, double*>> required = {
-      {"FNOMIN", &c.FNOMIN}, {"UNLOADED_RADIUS", &c.R0}, {"NOMPRES", &c.NOMPRES}, {"LONGVL", &c.LONGVL},
+      {"FNOMIN", &c.FNOMIN}, {"UNLOADED_RADIUS", &c.R0}, {"NOMPRES", &c.NOMPRES}, {"LONGVL", &c.LONGVL}, {"VXLOW", &c.VXLOW},
       {"PCX1", &c.PCX1}, {"PDX1", &c.PDX1}, {"PDX2", &c.PDX2}, {"PDX3", &c.PDX3}, {"PEX1", &c.PEX1}, {"PEX2", &c.PEX2},
       {"PEX3", &c.PEX3}, {"PEX4", &c.PEX4}, {"PKX1", &c.PKX1}, {"PKX2", &c.PKX2}, {"PKX3", &c.PKX3}, {"PHX1", &c.PHX1},
       {"PHX2", &c.PHX2}, {"PVX1", &c.PVX1}, {"PVX2", &c.PVX2}, {"PPX1", &c.PPX1}, {"PPX2", &c.PPX2}, {"PPX3", &c.PPX3},
@@ -138,6 +138,7 @@ Mf61 readMf61(const CoefficientSource& s, std::optional<double> pressure) {
   if (!(c.R0 > 0)) s.fail("UNLOADED_RADIUS", "must be positive");
   if (!(c.NOMPRES > 0)) s.fail("NOMPRES", "must be positive");
   if (!(c.LONGVL > 0)) s.fail("LONGVL", "must be positive");
+  if (!(c.VXLOW > 0)) s.fail("VXLOW", "must be positive");
   if (!(c.LFZO > 0)) s.fail("LFZO", "must be positive");
   if (!(c.pressure > 0)) s.fail("INFLPRES", "must be positive");
   return c;
@@ -150,7 +151,8 @@ class MagicFormula61 : public TyreForceLaw {
   explicit MagicFormula61(const Mf61& c) : c_(c) {}
 
   TyreForces calcForces(const TyreSlip& in) const override {
-    const Common k = makeCommon(in.Fz, in.gamma, in.alpha);
+    Common k = makeCommon(in.Fz, in.gamma, in.alpha);
+    k.w = calcLowSpeedFactor(in.Vx);
     const PureLateral py = calcPureLateral(k, in.Fz, k.gammaStar);
     const double Kxk = calcKxk(k, in.Fz);
     // Longitudinal, pure (4.E9-4.E18) and combined (4.E50-4.E57).
@@ -158,11 +160,11 @@ class MagicFormula61 : public TyreForceLaw {
     const double mux = (c_.PDX1 + c_.PDX2 * k.dfz) * (1 + c_.PPX3 * k.dpi + c_.PPX4 * k.dpi * k.dpi) *
                        (1 - c_.PDX3 * k.gammaStar * k.gammaStar) * c_.LMUX;
     const double Dx = mux * in.Fz;
-    const double SHx = (c_.PHX1 + c_.PHX2 * k.dfz) * c_.LHX;
+    const double SHx = (c_.PHX1 + c_.PHX2 * k.dfz) * c_.LHX * k.w;
     const double kappax = in.kappa + SHx;
     const double Ex = std::min(1.0, (c_.PEX1 + c_.PEX2 * k.dfz + c_.PEX3 * k.dfz * k.dfz) * (1 - c_.PEX4 * sgn(kappax)) * c_.LEX);
     const double Bx = Kxk / (Cx * Dx + kEps);
-    const double SVx = in.Fz * (c_.PVX1 + c_.PVX2 * k.dfz) * c_.LVX * k.lmuxPrime;
+    const double SVx = in.Fz * (c_.PVX1 + c_.PVX2 * k.dfz) * c_.LVX * k.lmuxPrime * k.w;
     const double Fx0 = magicSin(Bx, Cx, Dx, Ex, kappax) + SVx;
     const double Bxa = (c_.RBX1 + c_.RBX3 * k.gammaStar * k.gammaStar) * std::cos(std::atan(c_.RBX2 * in.kappa)) * c_.LXAL;
     const double Cxa = c_.RCX1, Exa = std::min(1.0, c_.REX1 + c_.REX2 * k.dfz), SHxa = c_.RHX1;
@@ -179,13 +181,13 @@ class MagicFormula61 : public TyreForceLaw {
     // Overturning moment (4.E69, MF 6.1 terms) and rolling resistance (4.E70).
     const double Fz0p = k.Fz0p, R0 = c_.R0;
     f.Mx = R0 * in.Fz * c_.LMX *
-           (c_.QSX1 * c_.LVMX - c_.QSX2 * k.gammaStar * (1 + c_.PPMX1 * k.dpi) + c_.QSX3 * f.Fy / Fz0p +
+           (c_.QSX1 * c_.LVMX * k.w - c_.QSX2 * k.gammaStar * (1 + c_.PPMX1 * k.dpi) + c_.QSX3 * f.Fy / Fz0p +
             c_.QSX4 * std::cos(c_.QSX5 * std::atan(std::pow(c_.QSX6 * in.Fz / Fz0p, 2))) *
                 std::sin(c_.QSX7 * k.gammaStar + c_.QSX8 * std::atan(c_.QSX9 * f.Fy / Fz0p)) +
             c_.QSX10 * std::atan(c_.QSX11 * in.Fz / Fz0p) * k.gammaStar);
     const double vr = in.Vx / c_.LONGVL;
     f.My = in.Fz <= 0 ? 0.0
-                      : -R0 * Fz0p * c_.LMY *
+                      : -R0 * Fz0p * c_.LMY * k.w *
                             (c_.QSY1 + c_.QSY2 * f.Fx / Fz0p + c_.QSY3 * std::abs(vr) + c_.QSY4 * std::pow(vr, 4) +
                              (c_.QSY5 + c_.QSY6 * in.Fz / Fz0p) * k.gammaStar * k.gammaStar) *
                             std::pow(in.Fz / Fz0p, c_.QSY7) * std::pow(c_.pressure / c_.NOMPRES, c_.QSY8);
@@ -213,6 +215,7 @@ class MagicFormula61 : public TyreForceLaw {
 
   struct Common {
     double Fz0p, dfz, dpi, alphaStar, gammaStar, cosAlpha, lmuxPrime, lmuyPrime;
+    double w = 1;  ///< low-speed factor of the forces at zero slip (calcLowSpeedFactor)
   };
   // 4.E1-4.E8.
   Common makeCommon(double Fz, double gamma, double alpha) const {
@@ -227,6 +230,15 @@ class MagicFormula61 : public TyreForceLaw {
     k.lmuxPrime = A * c_.LMUX / (1 + (A - 1) * c_.LMUX);
     k.lmuyPrime = A * c_.LMUY / (1 + (A - 1) * c_.LMUY);
     return k;
+  }
+  // The forces at zero slip (shifts SHx, SVx, SHy, SVy; residual torque QDZ6-7; overturning offset
+  // QSX1; rolling resistance) fade out below VXLOW as sin^2(pi/2 |Vx|/VXLOW): they have no meaning at
+  // standstill, where no slip can balance them (MF-Tyre's low-speed treatment in spirit, not its form).
+  double calcLowSpeedFactor(double Vx) const {
+    const double v = std::abs(Vx) / c_.VXLOW;
+    if (v >= 1) return 1;
+    const double s = std::sin(M_PI / 2 * v);
+    return s * s;
   }
   // K_ya (4.E25) at camber gamma* = g.
   double calcKya(const Common& k, double Fz, double g) const {
@@ -254,8 +266,8 @@ class MagicFormula61 : public TyreForceLaw {
     p.Kya = calcKya(k, Fz, g);
     const double Kyg0 = Fz * (c_.PKY6 + c_.PKY7 * k.dfz) * (1 + c_.PPY5 * k.dpi) * c_.LKYC;
     const double SVyg = Fz * (c_.PVY3 + c_.PVY4 * k.dfz) * g * c_.LKYC * k.lmuyPrime;
-    p.SVy = Fz * (c_.PVY1 + c_.PVY2 * k.dfz) * c_.LVY * k.lmuyPrime + SVyg;
-    p.SHy = (c_.PHY1 + c_.PHY2 * k.dfz) * c_.LHY + (Kyg0 * g - SVyg) / (p.Kya + kEps * sgnOr1(p.Kya));
+    p.SVy = Fz * (c_.PVY1 + c_.PVY2 * k.dfz) * c_.LVY * k.lmuyPrime * k.w + SVyg;
+    p.SHy = (c_.PHY1 + c_.PHY2 * k.dfz) * c_.LHY * k.w + (Kyg0 * g - SVyg) / (p.Kya + kEps * sgnOr1(p.Kya));
     const double alphay = k.alphaStar + p.SHy;
     p.Cy = c_.PCY1 * c_.LCY;
     p.muy = (c_.PDY1 + c_.PDY2 * k.dfz) * (1 + c_.PPY3 * k.dpi + c_.PPY4 * k.dpi * k.dpi) * (1 - c_.PDY3 * g * g) * c_.LMUY;
@@ -289,7 +301,7 @@ class MagicFormula61 : public TyreForceLaw {
     const double t = Dt * magicCos(Bt, Ct, Et, alphateq) * k.cosAlpha;                                    // 4.E73
     const double Br = c_.QBZ9 * c_.LKY / c_.LMUY + c_.QBZ10 * py.By * py.Cy;                             // 4.E45
     const double Dr = Fz * R0 *
-                      ((c_.QDZ6 + c_.QDZ7 * k.dfz) * c_.LRES +
+                      ((c_.QDZ6 + c_.QDZ7 * k.dfz) * c_.LRES * k.w +
                        ((c_.QDZ8 + c_.QDZ9 * k.dfz) * (1 + c_.PPZ2 * k.dpi) + (c_.QDZ10 + c_.QDZ11 * k.dfz) * std::abs(g)) * g *
                            c_.LKZC) *
                       c_.LMUY * k.cosAlpha;                                                              // 4.E47

@@ -17,6 +17,7 @@
 #include "../support/catch_input_error.h"
 #include "../support/temp_dir.h"
 #include "analysis/linearize.h"
+#include "analysis/sweep.h"
 #include "analysis/trim.h"
 #include "tyres/tir_file.h"
 
@@ -108,6 +109,25 @@ TEST(MagicFormulaContact, StraightRunningLinearisationEqualsRelaxationLinear) {
     std::cout << speed << " m/s: largest eigenvalue difference (relative above 1/s) " << worst << "\n";
     EXPECT_LT(worst, 1e-8);
   }
+}
+
+TEST(MagicFormulaContact, TrimsASampleWithShiftsFromAColdStartAndFromStandstill) {
+  // The full sample: ply steer and conicity (PHY, PVY), residual torque, overturning offset and rolling
+  // resistance act at zero slip, so straight running needs a small yaw, roll and steer. From the
+  // unloaded design pose this failed (the trim's first Newton step diverged, residual 9.6 m/s^2).
+  const std::string tir = kSample;
+  const VehicleModel m(loadScenario(kEnduro, {tyreOverride(tir)}));
+  const TrimResult t = calcTrim(m, 10.0);
+  EXPECT_LT(t.residualNorm, 1e-10);
+  const double FyFront = findOutput(m, t.state, "front_tyre_Fy_N"), FyRear = findOutput(m, t.state, "rear_tyre_Fy_N");
+  EXPECT_GT(std::abs(FyRear), 1.0) << "the rear tyre runs at a slip that balances its shifts";
+  EXPECT_GT(std::abs(FyFront), 1.0);
+  EXPECT_GT(std::abs(t.state.getQ()[m.getIndices().yaw]), 1e-5);
+  // Below VXLOW (1 m/s) the zero-slip forces fade, so that a sweep can start at standstill.
+  SweepOptions opt;
+  opt.start = 0, opt.stop = 2, opt.step = 0.5;
+  const SweepResult sweep = runSweep(m, opt);
+  EXPECT_EQ(sweep.models.size(), 5u);
 }
 
 TEST(MagicFormulaContact, ScenarioErrorsNameTheKey) {

@@ -190,6 +190,19 @@ TEST(MagicFormula61, SlopesAtZeroAreTheClosedFormStiffnesses) {
   EXPECT_NEAR(law->calcRelaxationLength(4000, 0), 1.8 * std::sin(2 * std::atan(1 / 1.8)) * 0.3135, 1e-15);
 }
 
+TEST(MagicFormula61, ZeroSlipForcesFadeBelowVxlow) {
+  const TirFile f = TirFile::load(kSample);
+  const auto law = makeTyreForceLaw(MagicFormulaVariant::MF61, *makeTirSource(f, nullptr));
+  const TyreForces still = law->calcForces({3000, 0, 0, 0, 0});
+  for (double v : {still.Fx, still.Fy, still.Mz, still.Mx, still.My}) EXPECT_EQ(v, 0);
+  // At VXLOW (1 m/s) and above: the book's, which has forces at zero slip (ply steer, conicity).
+  const BookMf61 book{f, 200000};
+  EXPECT_NEAR(law->calcForces({3000, 0, 0, 0, 1.0}).Fy, book.Fy0(3000, 0, 0), 1e-9 * 3000);
+  EXPECT_GT(std::abs(book.Fy0(3000, 0, 0)), 10);
+  // Slip still makes force at standstill.
+  EXPECT_GT(std::abs(law->calcForces({3000, 0, 0.05, 0, 0}).Fy), 100);
+}
+
 TEST(MagicFormula61, ScalingFactorsScaleWhatTheyName) {
   const TirFile f = TirFile::load(kSample);
   const std::map<std::string, double> scaling{{"LKY", 1.3}, {"LKYC", 0.7}, {"LKX", 1.1}};
