@@ -120,8 +120,8 @@ TEST(MagicFormulaContact, TrimsASampleWithShiftsFromAColdStartAndFromStandstill)
   const TrimResult t = calcTrim(m, 10.0);
   EXPECT_LT(t.residualNorm, 1e-10);
   const double FyFront = findOutput(m, t.state, "front_tyre_Fy_N"), FyRear = findOutput(m, t.state, "rear_tyre_Fy_N");
-  EXPECT_GT(std::abs(FyRear), 1.0) << "the rear tyre runs at a slip that balances its shifts";
-  EXPECT_GT(std::abs(FyFront), 1.0);
+  EXPECT_GT(std::abs(FyRear), 0.5) << "the tyres run at slips that balance their shifts";
+  EXPECT_GT(std::abs(FyFront), 0.5);
   EXPECT_GT(std::abs(t.state.getQ()[m.getIndices().yaw]), 1e-5);
   // Below VXLOW (1 m/s) the zero-slip forces fade, so that a sweep can start at standstill.
   SweepOptions opt;
