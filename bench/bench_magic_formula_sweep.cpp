@@ -1,7 +1,8 @@
 // Magic Formula speed goal: the 401-speed enduro sweep (0-40 m/s at 0.1 m/s, serial) with
 // `magic_formula` tyres against the same sweep with the enduro's `relaxation_linear` tyres. Arg 0: the
 // motorcycle Magic Formula tyres of scenarios/supersport-mf.yaml (relaxation lengths and radial laws set
-// to the enduro's); arg 1: the MF 6.1 sample .tir file (tests/data) on both wheels. Sweeps alternate, so
+// to the enduro's); arg 1: the MF 6.1 sample .tir file (tests/data) on both wheels; arg 2: that file
+// without its forces at zero slip (shifts, residual torque, Mx, My scaled to 0). Sweeps alternate, so
 // both see the same machine state: counter ratio = median over pairs of MF / linear wall time (goal
 // <= 1.3).
 #include <benchmark/benchmark.h>
@@ -32,7 +33,10 @@ std::vector<std::string> makeOverrides(int which) {
     e << YAML::LoadFile(kSupersportMf)["contact"];
     contact = e.c_str();
   } else {
-    contact = "{model: magic_formula, front: {tir: " + kSampleTir + "}, rear: {tir: " + kSampleTir + "}}";
+    // Arg 2: the same file with its forces at zero slip scaled away (a symmetric straight run).
+    const std::string scaling =
+        which == 2 ? ", scaling: {LHX: 0, LVX: 0, LHY: 0, LVY: 0, LRES: 0, LMX: 0, LMY: 0}" : "";
+    contact = "{model: magic_formula, front: {tir: " + kSampleTir + scaling + "}, rear: {tir: " + kSampleTir + scaling + "}}";
   }
   std::vector<std::string> out{"contact=" + contact};
   out.insert(out.end(), kEnduroTyreSettings.begin(), kEnduroTyreSettings.end());
@@ -57,7 +61,7 @@ void BM_EnduroMagicFormulaSweep401(benchmark::State& st) {
   st.counters["n_linear"] = static_cast<double>(nLinear);
   st.counters["n_mf"] = static_cast<double>(nMf);
 }
-BENCHMARK(BM_EnduroMagicFormulaSweep401)->DenseRange(0, 1)->Unit(benchmark::kMillisecond)->Iterations(5)->UseRealTime();
+BENCHMARK(BM_EnduroMagicFormulaSweep401)->DenseRange(0, 2)->Unit(benchmark::kMillisecond)->Iterations(5)->UseRealTime();
 
 }  // namespace
 

@@ -148,7 +148,7 @@ Mf61 readMf61(const CoefficientSource& s, std::optional<double> pressure) {
 // lambda*_mu = lambda_mu, lambda'_mu with A_mu = 10); equation numbers of the book in the comments.
 class MagicFormula61 : public TyreForceLaw {
  public:
-  explicit MagicFormula61(const Mf61& c) : c_(c) {}
+  explicit MagicFormula61(const Mf61& c) : c_(c), pressureFactorMy_(std::pow(c.pressure / c.NOMPRES, c.QSY8)) {}
 
   TyreForces calcForces(const TyreSlip& in) const override {
     Common k = makeCommon(in.Fz, in.gamma, in.alpha);
@@ -173,25 +173,29 @@ class MagicFormula61 : public TyreForceLaw {
     f.Fx = Gxa * Fx0;
     // Lateral, combined (4.E58-4.E67).
     const double Gyk = calcGyk(k, in.kappa);
-    const double DVyk = py.muy * in.Fz * (c_.RVY1 + c_.RVY2 * k.dfz + c_.RVY3 * k.gammaStar) * std::cos(std::atan(c_.RVY4 * k.alphaStar));
-    const double SVyk = DVyk * std::sin(c_.RVY5 * std::atan(c_.RVY6 * in.kappa)) * c_.LVYKA;
-    f.Fy = Gyk * py.Fy0 + SVyk;
+    f.Fy = calcCombinedSideForce(k, in, py, Gyk);
     // Aligning moment, combined (4.E71-4.E78, with the pure-slip parts 4.E31-4.E49).
     f.Mz = calcAligning(k, in, py, Kxk, Gyk, f.Fx, f.Fy);
     // Overturning moment (4.E69, MF 6.1 terms) and rolling resistance (4.E70).
     const double Fz0p = k.Fz0p, R0 = c_.R0;
     f.Mx = R0 * in.Fz * c_.LMX *
            (c_.QSX1 * c_.LVMX * k.w - c_.QSX2 * k.gammaStar * (1 + c_.PPMX1 * k.dpi) + c_.QSX3 * f.Fy / Fz0p +
-            c_.QSX4 * std::cos(c_.QSX5 * std::atan(std::pow(c_.QSX6 * in.Fz / Fz0p, 2))) *
+            c_.QSX4 * std::cos(c_.QSX5 * std::atan(square(c_.QSX6 * in.Fz / Fz0p))) *
                 std::sin(c_.QSX7 * k.gammaStar + c_.QSX8 * std::atan(c_.QSX9 * f.Fy / Fz0p)) +
             c_.QSX10 * std::atan(c_.QSX11 * in.Fz / Fz0p) * k.gammaStar);
     const double vr = in.Vx / c_.LONGVL;
     f.My = in.Fz <= 0 ? 0.0
                       : -R0 * Fz0p * c_.LMY * k.w *
-                            (c_.QSY1 + c_.QSY2 * f.Fx / Fz0p + c_.QSY3 * std::abs(vr) + c_.QSY4 * std::pow(vr, 4) +
+                            (c_.QSY1 + c_.QSY2 * f.Fx / Fz0p + c_.QSY3 * std::abs(vr) + c_.QSY4 * square(square(vr)) +
                              (c_.QSY5 + c_.QSY6 * in.Fz / Fz0p) * k.gammaStar * k.gammaStar) *
-                            std::pow(in.Fz / Fz0p, c_.QSY7) * std::pow(c_.pressure / c_.NOMPRES, c_.QSY8);
+                            std::pow(in.Fz / Fz0p, c_.QSY7) * pressureFactorMy_;
     return f;
+  }
+
+  double calcSideForce(const TyreSlip& in) const override {
+    Common k = makeCommon(in.Fz, in.gamma, in.alpha);
+    k.w = calcLowSpeedFactor(in.Vx);
+    return calcCombinedSideForce(k, in, calcPureLateral(k, in.Fz, k.gammaStar), calcGyk(k, in.kappa));
   }
 
   double calcCorneringStiffness(double Fz) const override { return calcKya(makeCommon(Fz, 0, 0), Fz, 0); }
@@ -257,6 +261,14 @@ class MagicFormula61 : public TyreForceLaw {
     return magicCos(Byk, Cyk, Eyk, kappa + SHyk) / magicCos(Byk, Cyk, Eyk, SHyk);
   }
 
+  struct PureLateral;
+  // Fy = Gyk Fy0 + SVyk (4.E58, 4.E67-4.E68).
+  double calcCombinedSideForce(const Common& k, const TyreSlip& in, const PureLateral& py, double Gyk) const {
+    const double DVyk = py.muy * in.Fz * (c_.RVY1 + c_.RVY2 * k.dfz + c_.RVY3 * k.gammaStar) * std::cos(std::atan(c_.RVY4 * k.alphaStar));
+    const double SVyk = DVyk * std::sin(c_.RVY5 * std::atan(c_.RVY6 * in.kappa)) * c_.LVYKA;
+    return Gyk * py.Fy0 + SVyk;
+  }
+
   struct PureLateral {
     double Fy0, Kya, By, Cy, muy, SHy, SVy;
   };
@@ -311,7 +323,10 @@ class MagicFormula61 : public TyreForceLaw {
     return -t * FyPrime + Mzr + s * Fx;
   }
 
+  static double square(double x) { return x * x; }
+
   Mf61 c_;
+  double pressureFactorMy_;  ///< (p/NOMPRES)^QSY8 of My (4.E70)
 };
 
 }  // namespace

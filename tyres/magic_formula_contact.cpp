@@ -95,18 +95,28 @@ class MagicFormulaTyreForce : public TyreForceElement {
   TyreContactForces calcTyreForces(const TyreKinematics& k, double z, double& slipDot) const override {
     const TyreLaw& law = *t_.law;
     const double gammaIso = -k.camber;
-    const TyreForces steady = law.calcForces({k.Fz, k.kappa, std::atan(-k.alpha), gammaIso, k.forwardSpeed});
+    const bool lagged = t_.isLagged();
+    const TyreSlip steadySlip{k.Fz, k.kappa, std::atan(-k.alpha), gammaIso, k.forwardSpeed};
+    if (!lagged) {
+      slipDot = 0;
+      return toContactForces(law.calcForces(steadySlip));
+    }
     // The side force is C(Fz) s, so that an unloaded wheel has none; the steady slip divides by the
     // stiffness at the floored load.
+    const double floor = kLoadFloor * law.getNominalLoad();
     const double C = -law.calcCorneringStiffness(k.Fz);
-    const double CFloored = -law.calcCorneringStiffness(std::max(k.Fz, kLoadFloor * law.getNominalLoad()));
-    const bool lagged = t_.isLagged();
-    const LaggedSlip s = calcLaggedSlip(steady.Fy / CFloored, k.alpha, lagged, z, k.V, lagged ? calcRelaxationLength(k) : 0.0);
+    const double CFloored = k.Fz >= floor ? C : -law.calcCorneringStiffness(floor);
+    const LaggedSlip s = calcLaggedSlip(law.calcSideForce(steadySlip) / CFloored, k.alpha, true, z, k.V, calcRelaxationLength(k));
     slipDot = s.slipDot;
-    const TyreForces f = lagged ? law.calcForces({k.Fz, k.kappa, std::atan(-s.alphaLagged), gammaIso, k.forwardSpeed}) : steady;
+    TyreContactForces out = toContactForces(law.calcForces({k.Fz, k.kappa, std::atan(-s.alphaLagged), gammaIso, k.forwardSpeed}));
+    out.Fy = C * s.slip;
+    return out;
+  }
+
+  static TyreContactForces toContactForces(const TyreForces& f) {
     TyreContactForces out;
     out.Fx = f.Fx;
-    out.Fy = lagged ? C * s.slip : steady.Fy;
+    out.Fy = f.Fy;
     out.Mx = f.Mx;
     out.My = f.My;
     out.Mz = f.Mz;

@@ -36,7 +36,7 @@ class MotorcycleMagicFormula : public TyreForceLaw {
     const double Ex = (c_.PEX1 + c_.PEX2 * dfz + c_.PEX3 * dfz * dfz) * (1 - c_.PEX4 * sgn(k));
     const double Fx0 = Dx * std::sin(Cx * std::atan(curved(Kx / (Cx * Dx + kEps) * k, Ex)));
     const double Fx = Fx0 * std::cos(c_.RCX1 * std::atan(c_.RBX1 * std::cos(std::atan(c_.RBX2 * k)) * a));
-    const double Gyk = std::cos(c_.RCY1 * std::atan(c_.RBY1 * std::cos(std::atan(c_.RBY2 * (a - c_.RBY3))) * k));
+    const double Gyk = calcGyk(a, k);
     // Aligning moment with the equivalent slip of the combined law.
     const double ratio = Kx * k / (lat.Kya + kEps);
     const double at = a + (c_.QHZ3 + c_.QHZ4 * dfz) * g;
@@ -59,6 +59,11 @@ class MotorcycleMagicFormula : public TyreForceLaw {
     return f;
   }
 
+  double calcSideForce(const TyreSlip& in) const override {
+    const double a = -std::tan(in.alpha), k = in.kappa;
+    return calcGyk(a, k) * calcLateral(in.Fz, a, -in.gamma).Fy0;
+  }
+
   // ISO signs: dFy/dalpha_ISO = -dFy/da, dFy/dgamma_ISO = -dFy/dg.
   double calcCorneringStiffness(double Fz) const override { return -calcLateral(Fz, 0, 0).Kya; }
   double calcCamberStiffness(double Fz) const override { return -calcLateral(Fz, 0, 0).Kyg; }
@@ -70,6 +75,10 @@ class MotorcycleMagicFormula : public TyreForceLaw {
  private:
   static constexpr double kEps = 1e-12;
   double calcFz0() const { return c_.FNOMIN * c_.LFZO; }
+  // The side force's combined-slip weight in the paper's slip a and slip ratio k.
+  double calcGyk(double a, double k) const {
+    return std::cos(c_.RCY1 * std::atan(c_.RBY1 * std::cos(std::atan(c_.RBY2 * (a - c_.RBY3))) * k));
+  }
   double calcDfz(double Fz) const { return (Fz - calcFz0()) / calcFz0(); }
   double calcKx(double Fz) const {
     const double dfz = calcDfz(Fz);
