@@ -166,9 +166,9 @@ class MagicFormula61 : public TyreForceLaw {
     const double Bx = Kxk / (Cx * Dx + kEps);
     const double SVx = in.Fz * (c_.PVX1 + c_.PVX2 * k.dfz) * c_.LVX * k.lmuxPrime * k.w;
     const double Fx0 = magicSin(Bx, Cx, Dx, Ex, kappax) + SVx;
-    const double Bxa = (c_.RBX1 + c_.RBX3 * k.gammaStar * k.gammaStar) * std::cos(std::atan(c_.RBX2 * in.kappa)) * c_.LXAL;
+    const double Bxa = (c_.RBX1 + c_.RBX3 * k.gammaStar * k.gammaStar) * cosAtan(c_.RBX2 * in.kappa) * c_.LXAL;
     const double Cxa = c_.RCX1, Exa = std::min(1.0, c_.REX1 + c_.REX2 * k.dfz), SHxa = c_.RHX1;
-    const double Gxa = magicCos(Bxa, Cxa, Exa, k.alphaStar + SHxa) / magicCos(Bxa, Cxa, Exa, SHxa);
+    const double Gxa = magicCos(Bxa, Cxa, Exa, k.alphaStar + SHxa) / (SHxa == 0 ? 1.0 : magicCos(Bxa, Cxa, Exa, SHxa));
     TyreForces f;
     f.Fx = Gxa * Fx0;
     // Lateral, combined (4.E58-4.E67).
@@ -190,12 +190,6 @@ class MagicFormula61 : public TyreForceLaw {
                              (c_.QSY5 + c_.QSY6 * in.Fz / Fz0p) * k.gammaStar * k.gammaStar) *
                             std::pow(in.Fz / Fz0p, c_.QSY7) * pressureFactorMy_;
     return f;
-  }
-
-  double calcSideForce(const TyreSlip& in) const override {
-    Common k = makeCommon(in.Fz, in.gamma, in.alpha);
-    k.w = calcLowSpeedFactor(in.Vx);
-    return calcCombinedSideForce(k, in, calcPureLateral(k, in.Fz, k.gammaStar), calcGyk(k, in.kappa));
   }
 
   double calcCorneringStiffness(double Fz) const override { return calcKya(makeCommon(Fz, 0, 0), Fz, 0); }
@@ -229,7 +223,7 @@ class MagicFormula61 : public TyreForceLaw {
     k.dpi = (c_.pressure - c_.NOMPRES) / c_.NOMPRES;
     k.alphaStar = std::tan(alpha);
     k.gammaStar = std::sin(gamma);
-    k.cosAlpha = std::cos(alpha);
+    k.cosAlpha = cosAtan(k.alphaStar);  // cos(alpha), |alpha| < pi/2
     const double A = 10;
     k.lmuxPrime = A * c_.LMUX / (1 + (A - 1) * c_.LMUX);
     k.lmuyPrime = A * c_.LMUY / (1 + (A - 1) * c_.LMUY);
@@ -256,15 +250,15 @@ class MagicFormula61 : public TyreForceLaw {
   }
   // G_yk (4.E58-4.E66 without the shift's vertical part).
   double calcGyk(const Common& k, double kappa) const {
-    const double Byk = (c_.RBY1 + c_.RBY4 * k.gammaStar * k.gammaStar) * std::cos(std::atan(c_.RBY2 * (k.alphaStar - c_.RBY3))) * c_.LYKA;
+    const double Byk = (c_.RBY1 + c_.RBY4 * k.gammaStar * k.gammaStar) * cosAtan(c_.RBY2 * (k.alphaStar - c_.RBY3)) * c_.LYKA;
     const double Cyk = c_.RCY1, Eyk = std::min(1.0, c_.REY1 + c_.REY2 * k.dfz), SHyk = c_.RHY1 + c_.RHY2 * k.dfz;
-    return magicCos(Byk, Cyk, Eyk, kappa + SHyk) / magicCos(Byk, Cyk, Eyk, SHyk);
+    return magicCos(Byk, Cyk, Eyk, kappa + SHyk) / (SHyk == 0 ? 1.0 : magicCos(Byk, Cyk, Eyk, SHyk));
   }
 
   struct PureLateral;
   // Fy = Gyk Fy0 + SVyk (4.E58, 4.E67-4.E68).
   double calcCombinedSideForce(const Common& k, const TyreSlip& in, const PureLateral& py, double Gyk) const {
-    const double DVyk = py.muy * in.Fz * (c_.RVY1 + c_.RVY2 * k.dfz + c_.RVY3 * k.gammaStar) * std::cos(std::atan(c_.RVY4 * k.alphaStar));
+    const double DVyk = py.muy * in.Fz * (c_.RVY1 + c_.RVY2 * k.dfz + c_.RVY3 * k.gammaStar) * cosAtan(c_.RVY4 * k.alphaStar);
     const double SVyk = DVyk * std::sin(c_.RVY5 * std::atan(c_.RVY6 * in.kappa)) * c_.LVYKA;
     return Gyk * py.Fy0 + SVyk;
   }
@@ -317,13 +311,14 @@ class MagicFormula61 : public TyreForceLaw {
                        ((c_.QDZ8 + c_.QDZ9 * k.dfz) * (1 + c_.PPZ2 * k.dpi) + (c_.QDZ10 + c_.QDZ11 * k.dfz) * std::abs(g)) * g *
                            c_.LKZC) *
                       c_.LMUY * k.cosAlpha;                                                              // 4.E47
-    const double Mzr = Dr * std::cos(std::atan(Br * alphareq)) * k.cosAlpha;                            // 4.E75
-    const double FyPrime = Gyk * calcPureLateral(k, Fz, 0.0).Fy0;                                      // F'y at gamma = 0
+    const double Mzr = Dr * cosAtan(Br * alphareq) * k.cosAlpha;                            // 4.E75
+    const double FyPrime = Gyk * (g == 0 ? py.Fy0 : calcPureLateral(k, Fz, 0.0).Fy0);                 // F'y at gamma = 0
     const double s = R0 * (c_.SSZ1 + c_.SSZ2 * Fy / k.Fz0p + (c_.SSZ3 + c_.SSZ4 * k.dfz) * g) * c_.LS;  // 4.E76
     return -t * FyPrime + Mzr + s * Fx;
   }
 
   static double square(double x) { return x * x; }
+  static double cosAtan(double x) { return 1 / std::sqrt(1 + x * x); }  // cos(atan(x))
 
   Mf61 c_;
   double pressureFactorMy_;  ///< (p/NOMPRES)^QSY8 of My (4.E70)

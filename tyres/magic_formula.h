@@ -37,8 +37,6 @@ class TyreForceLaw {
  public:
   virtual ~TyreForceLaw() = default;
   virtual TyreForces calcForces(const TyreSlip& slip) const = 0;
-  /// Fy of calcForces alone (laws override it when that is cheaper).
-  virtual double calcSideForce(const TyreSlip& slip) const { return calcForces(slip).Fy; }
   /// dFy/dalpha at kappa = alpha = gamma = 0 (N/rad, ISO sign: negative for a usual tyre).
   virtual double calcCorneringStiffness(double Fz) const = 0;
   /// dFy/dgamma at kappa = alpha = gamma = 0 (N/rad, ISO sign).

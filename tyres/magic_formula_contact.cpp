@@ -93,24 +93,17 @@ class MagicFormulaTyreForce : public TyreForceElement {
 
  protected:
   TyreContactForces calcTyreForces(const TyreKinematics& k, double z, double& slipDot) const override {
-    const TyreLaw& law = *t_.law;
+    const TyreForceLaw& law = *t_.law;
     const double gammaIso = -k.camber;
-    const bool lagged = t_.isLagged();
-    const TyreSlip steadySlip{k.Fz, k.kappa, std::atan(-k.alpha), gammaIso, k.forwardSpeed};
-    if (!lagged) {
-      slipDot = 0;
-      return toContactForces(law.calcForces(steadySlip));
-    }
-    // The side force is C(Fz) s, so that an unloaded wheel has none; the steady slip divides by the
-    // stiffness at the floored load.
-    const double floor = kLoadFloor * law.getNominalLoad();
-    const double C = -law.calcCorneringStiffness(k.Fz);
-    const double CFloored = k.Fz >= floor ? C : -law.calcCorneringStiffness(floor);
-    const LaggedSlip s = calcLaggedSlip(law.calcSideForce(steadySlip) / CFloored, k.alpha, true, z, k.V, calcRelaxationLength(k));
+    slipDot = 0;
+    if (!t_.isLagged()) return toContactForces(law.calcForces({k.Fz, k.kappa, std::atan(-k.alpha), gammaIso, k.forwardSpeed}));
+    // The linear equivalent slip alpha + (K_yg/K_ya) phi relaxes (the ratio of the ISO stiffnesses is
+    // the project's k_phi/k_alpha); every force comes from the law at the lagged slip angle.
+    const double Fz = std::max(k.Fz, kLoadFloor * law.getNominalLoad());
+    const double ratio = law.calcCamberStiffness(Fz) / law.calcCorneringStiffness(Fz);
+    const LaggedSlip s = calcLaggedSlip(k.alpha + ratio * k.camber, k.alpha, true, z, k.V, calcRelaxationLength(k));
     slipDot = s.slipDot;
-    TyreContactForces out = toContactForces(law.calcForces({k.Fz, k.kappa, std::atan(-s.alphaLagged), gammaIso, k.forwardSpeed}));
-    out.Fy = C * s.slip;
-    return out;
+    return toContactForces(law.calcForces({k.Fz, k.kappa, std::atan(-s.alphaLagged), gammaIso, k.forwardSpeed}));
   }
 
   static TyreContactForces toContactForces(const TyreForces& f) {
@@ -125,12 +118,11 @@ class MagicFormulaTyreForce : public TyreForceElement {
 
   double calcRelaxationLength(const TyreKinematics& k) const override {
     if (!std::isnan(t_.relaxationLength)) return t_.relaxationLength;
-    const TyreLaw& law = *t_.law;
+    const TyreForceLaw& law = *t_.law;
     return law.calcRelaxationLength(std::max(k.Fz, kLoadFloor * law.getNominalLoad()), -k.camber);
   }
 
  private:
-  using TyreLaw = TyreForceLaw;
   MagicFormulaTyre t_;
 };
 

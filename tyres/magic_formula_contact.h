@@ -4,18 +4,17 @@
 // tyres/tyre_contact.h: contact point on the toroidal carcass, radial load law, slips, and the
 // first-order relaxation of the side force.
 //
-// With s the lagged equivalent slip (the z state, rad) and C(Fz) = -K_ya(Fz) > 0 the law's
-// cornering stiffness at zero camber (N/rad):
-//   steady equivalent slip  s_ss = Fy_MF(kappa, alpha, phi, Fz)/C(Fz)   (alpha for a linear law plus
-//                           its camber part, as relaxation_linear's alpha + (k_phi/k_alpha) phi)
-//   relaxation              sigma/V s' + s = s_ss, sigma from the scenario or the law (MF 6.1: PTY1,
-//                           PTY2 at the current load and camber)
-//   side force              Fy = C(Fz) s
-// In s_ss and sigma the load is floored at 5% of FNOMIN (finite rates when a wheel unloads; below
-// that load the steady side force is C(Fz)/C(floor) of the law's, and it vanishes with the load).
-//   Fx, Mz, Mx, My          the law at the lagged slip angle alpha_l = alpha + (s - s_ss)
+// With s the lagged equivalent slip (the z state, rad), K_ya and K_yg the law's cornering and camber
+// stiffnesses at zero slip (tyres/magic_formula.h) and phi the camber:
+//   relaxation          sigma/V s' + s = alpha + (K_yg/K_ya) phi   (relaxation_linear's equivalent slip,
+//                       k_phi/k_alpha = K_yg/K_ya), sigma from the scenario or the law (MF 6.1: PTY1, PTY2
+//                       at the current load and camber)
+//   lagged slip angle   alpha_l = s - (K_yg/K_ya) phi
+//   forces              Fx, Fy, Mz, Mx, My of the law at (kappa, alpha_l, phi, Fz): one evaluation; in
+//                       steady state s = alpha + (K_yg/K_ya) phi, alpha_l = alpha, the law's own forces
+// K_ya, K_yg and sigma take the load floored at 5% of FNOMIN (finite when a wheel unloads).
 // In straight running (zero slips and camber) this linearises to relaxation_linear with
-// k_alpha = C/Fz, k_phi = dFy/dphi /Fz, k_mz = dMz/dalpha /Fz, k_mt = dMz/dphi /Fz and
+// k_alpha = -K_ya/Fz, k_phi = -K_yg/Fz, k_mz = dMz/dalpha /Fz, k_mt = dMz/dphi /Fz and
 // k_kappa = K_xk/Fz at the trim load, provided the law has no force or moment at zero slip
 // (no shifts, no rolling resistance, no Mz from Fx): tests/tyres/magic_formula_contact_test.cpp.
 //

@@ -59,11 +59,6 @@ class MotorcycleMagicFormula : public TyreForceLaw {
     return f;
   }
 
-  double calcSideForce(const TyreSlip& in) const override {
-    const double a = -std::tan(in.alpha), k = in.kappa;
-    return calcGyk(a, k) * calcLateral(in.Fz, a, -in.gamma).Fy0;
-  }
-
   // ISO signs: dFy/dalpha_ISO = -dFy/da, dFy/dgamma_ISO = -dFy/dg.
   double calcCorneringStiffness(double Fz) const override { return -calcLateral(Fz, 0, 0).Kya; }
   double calcCamberStiffness(double Fz) const override { return -calcLateral(Fz, 0, 0).Kyg; }
