@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <limits>
 
 #include "tyres/magic_formula.h"
@@ -65,7 +66,9 @@ MagicFormulaTyre readTyre(YamlMap m) {
     t.radial.damping = readRadial(m, "radial_damping_Ns_per_m", source, "VERTICAL_DAMPING", false);
   };
   if (m.has("tir")) {
-    const TirFile file = TirFile::load(m.getFilePath("tir"));
+    const std::string path = m.getFilePath("tir");
+    if (!std::filesystem::is_regular_file(path)) m.fail("tir", "cannot open the tyre property file " + path);
+    const TirFile file = TirFile::load(path);
     if (!variant) variant = file.getFitType() == 62 ? MagicFormulaVariant::MF62 : MagicFormulaVariant::MF61;
     const auto scaling = readScaling(m, *variant);
     build(*makeTirSource(file, &scaling));

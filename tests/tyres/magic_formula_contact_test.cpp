@@ -148,6 +148,7 @@ TEST(MagicFormulaContact, ScenarioErrorsNameTheKey) {
       {"{model: magic_formula, front: {tir: " + tir + "}, rear: {variant: motorcycle, coefficients: {FNOMIN: 1000}}}",
        "contact.rear.coefficients.UNLOADED_RADIUS", "missing coefficient"},
       {"{model: magic_formula, front: {tir: " + tir + "}, rear: {tir: " + tir + ", colour: red}}", "contact.rear.colour", ""},
+      {"{model: magic_formula, front: {tir: " + tir + "}, rear: {tir: " + tir + ".missing}}", "contact.rear.tir", "cannot open"},
   };
   for (const auto& c : cases) {
     const InputError e = test::catchInputError([&] { VehicleModel m(loadScenario(kEnduro, {"contact=" + c.contact})); });
