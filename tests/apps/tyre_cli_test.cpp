@@ -87,4 +87,24 @@ TEST(CliTyre, MagicFormulaSupersportSimulatesALargeLean) {
   EXPECT_LT(std::abs(std::stod(t.rows.back()[camber])), 0.05) << "back upright after 3 s";
 }
 
+TEST(CliTyre, UncertaintySamplesAScalingFactor) {
+  // A scaling factor given in the scenario is a number like any other: uncertainty samples it and
+  // reports the wobble speed's sensitivity to it (the front cornering stiffness moves wobble).
+  const auto dir = makeTempDir("cli_tyre_uncertainty");
+  const CliRun r = runCli({"uncertainty", "scenarios/supersport-mf.yaml", "--set", "contact.front.scaling={LKY: 1}", "--set",
+                           "uncertainty={contact.front.scaling.LKY: 0.1}", "--samples", "8", "--speeds", "30:50:5", "--threads",
+                           "1", "--out", (dir / "unc").string()});
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  const TextCsv t = readTextCsv(dir / "unc" / "sensitivity.csv");
+  const int mode = t.find("mode"), parameter = t.find("parameter"), derivative = t.find("derivative");
+  bool found = false;
+  for (const auto& row : t.rows) {
+    if (row[mode] != "wobble") continue;
+    found = true;
+    EXPECT_EQ(row[parameter], "contact.front.scaling.LKY");
+    EXPECT_GT(std::abs(std::stod(row[derivative])), 1.0) << "m/s per unit of LKY";
+  }
+  EXPECT_TRUE(found);
+}
+
 }  // namespace
