@@ -77,6 +77,7 @@ void TyreForceElement::calcForce(const State& s, SimTK::Vector_<SpatialVec>& bod
 
 bool TyreForceElement::applyRoadStep(State& s, double offset) const {
   if (!zIndex_.isValid()) return false;
+  wheel_.getMatterSubsystem().getSystem().realize(s, SimTK::Stage::Velocity);  // the load sets sigma
   const double sigma = calcRelaxationLength(calcTyreKinematics(s, wheel_, R_, rho_, radial_));
   forces_.updZ(s)[zIndex_] += offset / sigma;
   return true;
