@@ -31,6 +31,42 @@ std::vector<StateEntry> getTrimUnknowns(const VehicleModel& model) {
 
 namespace {
 void solveTrim(const VehicleModel& model, double speed, const TrimOptions& opt, TrimResult& res, bool warm);
+
+// A cold start begins at the design pose, where force-based tyres carry no load: every tyre force
+// and its derivative vanish, and a tyre with forces at zero slip (Magic Formula shifts) couples the
+// height to lateral rows whose own columns are zero, so the first full Newton step is unbounded.
+// Gauss-Newton on height and pitch alone first loads the tyres (a few steps; nothing happens for
+// rolling constraints, whose pose already holds). Only the cold start uses it.
+void settleHeightAndPitch(const StateFunction& fn, const VehicleModel& model, SimTK::State& s, double step) {
+  const std::vector<StateEntry> sub{{Slot::Q, model.getIndices().height}, {Slot::Q, model.getIndices().pitch}};
+  Eigen::VectorXd r, rTrial, col;
+  fn.calcTrimResidual(s, r);
+  for (int it = 0; it < 20; ++it) {
+    Eigen::MatrixXd J(r.size(), 2);
+    for (int j = 0; j < 2; ++j) {
+      fn.calcDirectionalDerivative(s, {{sub[j], 1.0}}, step, 2,
+                                   [&](const SimTK::State& st, Eigen::VectorXd& out) { fn.calcTrimResidual(st, out); },
+                                   col);
+      J.col(j) = col;
+    }
+    const Eigen::VectorXd dx = J.completeOrthogonalDecomposition().solve(-r);
+    const double x0[2] = {fn.get(s, sub[0]), fn.get(s, sub[1])};
+    double lambda = 1;
+    bool better = false;
+    for (int ls = 0; ls < 20 && !better; ++ls, lambda *= 0.5) {
+      for (int j = 0; j < 2; ++j) fn.set(s, sub[j], x0[j] + lambda * dx[j]);
+      fn.calcTrimResidual(s, rTrial);
+      better = std::isfinite(rTrial.norm()) && rTrial.norm() < (1 - 1e-4 * lambda) * r.norm();
+    }
+    if (!better) {
+      for (int j = 0; j < 2; ++j) fn.set(s, sub[j], x0[j]);
+      return;
+    }
+    const bool slow = rTrial.norm() > 0.999 * r.norm();
+    r = rTrial;
+    if (slow) return;
+  }
+}
 }  // namespace
 
 TrimResult calcTrim(const VehicleModel& model, double speed, const TrimOptions& opt, const TrimResult* warm) {
@@ -86,6 +122,7 @@ void solveTrim(const VehicleModel& model, double speed, const TrimOptions& opt, 
     }
   }
 
+  if (!warm) settleHeightAndPitch(fn, model, s, opt.jacobianStep);
   Eigen::VectorXd r, rTrial, col;
   fn.calcTrimResidual(s, r);
   Eigen::MatrixXd J;

@@ -9,6 +9,7 @@ void registerStabilityCommands(CLI::App& app);  ///< sweep, linearize (apps/cmd_
 void registerSimulateCommands(CLI::App& app);   ///< simulate (apps/cmd_simulate.cpp)
 void registerUncertaintyCommands(CLI::App& app);  ///< uncertainty (apps/cmd_uncertainty.cpp)
 void registerDiagnoseCommands(CLI::App& app);   ///< diagnose (apps/cmd_diagnose.cpp)
+void registerTyreCommands(CLI::App& app);       ///< tyre (apps/cmd_tyre.cpp)
 /// identify static|frf|swingarm|cog|inertia (apps/cmd_identify_swingarm.cpp); `identify` is the parent.
 void registerSwingarmIdentifyCommands(CLI::App& identify);
 /// identify response (apps/cmd_identify_response.cpp); `identify` is the parent.

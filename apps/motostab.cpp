@@ -13,6 +13,7 @@ int main(int argc, char** argv) {
   motostab::cli::registerSimulateCommands(app);
   motostab::cli::registerUncertaintyCommands(app);
   motostab::cli::registerDiagnoseCommands(app);
+  motostab::cli::registerTyreCommands(app);
   CLI::App* identify = app.add_subcommand("identify", "Identify model parameters from lab tests or responses");
   identify->require_subcommand(1);
   motostab::cli::registerSwingarmIdentifyCommands(*identify);

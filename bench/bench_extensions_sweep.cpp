@@ -5,10 +5,7 @@
 // the same machine state: counter ratio = median over pairs of extended / plain wall time (goal <= 1.3).
 #include <benchmark/benchmark.h>
 
-#include <algorithm>
-#include <chrono>
-
-#include "analysis/sweep.h"
+#include "bench/sweep_timing.h"
 #include "scenario/scenario.h"
 
 namespace {
@@ -24,20 +21,8 @@ const std::vector<std::string> kExtensions = {
     "contact.preset=bicycle",
 };
 
-double median(std::vector<double> v) {
-  std::sort(v.begin(), v.end());
-  return v[v.size() / 2];
-}
-
-double timeSweep(const motostab::VehicleModel& model, size_t& states) {
-  motostab::SweepOptions opt;
-  opt.start = 0, opt.stop = 40, opt.step = 0.1;
-  const auto t0 = std::chrono::steady_clock::now();
-  auto r = motostab::runSweep(model, opt);
-  benchmark::DoNotOptimize(r.criticalSpeeds.data());
-  states = r.models.back().A.rows();
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-}
+using motostab::bench::median;
+using motostab::bench::timeSweep401;
 
 // Arg 0: all four extensions; arg k = 1..4: extension k alone (kExtensions[k - 1]).
 void BM_EnduroExtensionsSweep401(benchmark::State& st) {
@@ -49,7 +34,7 @@ void BM_EnduroExtensionsSweep401(benchmark::State& st) {
   std::vector<double> ratios, plainMs, extendedMs;
   size_t nPlain = 0, nExtended = 0;
   for (auto _ : st) {
-    const double a = timeSweep(plain, nPlain), b = timeSweep(extended, nExtended);
+    const double a = timeSweep401(plain, nPlain), b = timeSweep401(extended, nExtended);
     plainMs.push_back(a * 1e3), extendedMs.push_back(b * 1e3), ratios.push_back(b / a);
   }
   st.counters["ratio"] = median(ratios);

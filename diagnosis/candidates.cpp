@@ -165,6 +165,27 @@ Candidate makeParameterCandidate(const ScalarParameter& p, double sigma) {
   return {"parameter:" + p.path, {}, {c}};
 }
 
+// Magic Formula tyres: each tyre's scaling factors of cornering stiffness (LKY), camber stiffness
+// (LKYC) and pneumatic trail (LTR), the factors that shape straight-running modes, as parameters
+// (value as given in `scaling`, else 1; prior sigma 0.1; kept within [0.2, 5] of it).
+void addTyreScalingCandidates(const YAML::Node& tree, std::vector<Candidate>& out) {
+  const YAML::Node c = tree["contact"];
+  if (!c || !c.IsMap() || !c["model"] || c["model"].Scalar() != "magic_formula") return;
+  for (const char* tyre : {"front", "rear"}) {
+    if (!c[tyre] || !c[tyre].IsMap()) continue;  // the loader reports it
+    for (const char* factor : {"LKY", "LKYC", "LTR"}) {
+      ScalarParameter p;
+      p.path = std::string("contact.") + tyre + ".scaling." + factor;
+      p.value = getScalar(c[tyre], "scaling", factor, 1.0);
+      p.scale = std::abs(p.value);
+      Candidate candidate = makeParameterCandidate(p, 0.1 * p.scale);
+      candidate.parameters[0].lower = 0.2 * p.value;
+      candidate.parameters[0].upper = 5 * p.value;
+      out.push_back(candidate);
+    }
+  }
+}
+
 }  // namespace
 
 std::vector<Candidate> listCandidates(const YAML::Node& tree,
@@ -178,6 +199,7 @@ std::vector<Candidate> listCandidates(const YAML::Node& tree,
   addSwingarmCandidates(tree, out);
   addTyreSlipCandidate(tree, out);
   addSteerControllerCandidates(tree, out);
+  addTyreScalingCandidates(tree, out);
   for (const ScalarParameter& p : listScalarParameters(tree)) {
     const double sigma = findSigma(p, uncertainty);
     if (sigma > 0) out.push_back(makeParameterCandidate(p, sigma));

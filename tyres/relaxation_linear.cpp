@@ -4,13 +4,9 @@
 #include <map>
 #include <stdexcept>
 
-#include "tyres/rolling_no_slip.h"
+#include "tyres/tyre_contact.h"
 
 namespace motostab {
-
-using SimTK::SpatialVec;
-using SimTK::State;
-using SimTK::Vec3;
 
 namespace {
 
@@ -32,115 +28,45 @@ LinearTyreParameters readTyre(YamlMap m, const LinearTyreParameters* preset) {
   return p;
 }
 
-class LinearTyreForce : public SimTK::Force::Custom::Implementation {
+// The linear force law of the header on the shared tyre contact (tyres/tyre_contact.h).
+class LinearTyreForce : public TyreForceElement {
  public:
   LinearTyreForce(SimTK::GeneralForceSubsystem& forces, const WheelSite& w, const LinearTyreParameters& p)
-      : forces_(forces), wheel_(w.wheel), R_(w.radius), rho_(w.crownRadius), p_(p) {}
+      : TyreForceElement(forces, w, {p.radialStiffness, p.radialDamping}, p.relaxationLength > 0), p_(p) {}
 
-  void realizeTopology(State& s) const override {
-    if (p_.relaxationLength > 0) zIndex_ = forces_.allocateZ(s, SimTK::Vector(1, 0.0));
-  }
-
-  // Contact quantities of a state realized to Velocity; the lagged slip's derivative beside them.
-  struct Quantities {
-    Vec3 r_CP, F_G;
-    double Fx = 0, Fy = 0, Fz = 0, Mz = 0, alpha = 0, kappa = 0, camber = 0, slipDot = 0;
-  };
-  Quantities calcQuantities(const State& s) const {
-    Quantities out;
-    const SimTK::Transform& X_GW = wheel_.getBodyTransform(s);
-    const Vec3& w = wheel_.getBodyAngularVelocity(s);
-    const Vec3& vC = wheel_.getBodyOriginVelocity(s);
-    const TorusContact c = calcTorusContact(X_GW.R(), w, R_, rho_);
-    const Vec3 n(0, 0, 1);
-    const double deflection = -(X_GW.p()[2] + c.r_CP_G[2]);
-    const double deflectionRate = -(vC[2] + c.rDot_CP_G[2]);
-    out.Fz = deflection > 0 ? std::max(0.0, p_.radialStiffness * deflection + p_.radialDamping * deflectionRate) : 0.0;
-
-    const Vec3 a = X_GW.R().y().asVec3();
-    Vec3 eL = a % n;
-    eL /= eL.norm();
-    const Vec3 eT = n % eL;
-    const Vec3 vP = vC + w % c.r_CP_G;
-    const double vx = ~vC * eL;
-    const double V = std::sqrt(vx * vx + kSlipSpeedFloor * kSlipSpeedFloor);
-    out.kappa = -(~vP * eL) / V;
-    out.alpha = -(~vP * eT) / V;
-    out.camber = -std::asin(std::max(-1.0, std::min(1.0, ~a * n)));
-    const double slipSteady = out.alpha + p_.camberStiffness / p_.corneringStiffness * out.camber;
-    double slip = slipSteady;
-    if (zIndex_.isValid()) {
-      slip = forces_.getZ(s)[zIndex_];
-      out.slipDot = V / p_.relaxationLength * (slipSteady - slip);
-    }
+ protected:
+  TyreContactForces calcTyreForces(const TyreKinematics& k, double z, double& slipDot) const override {
+    const double ratio = p_.camberStiffness / p_.corneringStiffness;
+    const LaggedSlip s = calcLaggedSlip(k.alpha + ratio * k.camber, k.alpha, p_.relaxationLength > 0, z, k.V,
+                                        p_.relaxationLength);
+    slipDot = s.slipDot;
+    TyreContactForces f;
+    f.Fx = k.Fz * p_.longitudinalStiffness * k.kappa;
+    f.Fy = k.Fz * p_.corneringStiffness * s.slip;
     // The slip part of the lagged state drives the self-aligning moment too (alpha lagged as Fy).
-    const double alphaLagged = slip - p_.camberStiffness / p_.corneringStiffness * out.camber;
-    out.Fx = out.Fz * p_.longitudinalStiffness * out.kappa;
-    out.Fy = out.Fz * p_.corneringStiffness * slip;
-    out.Mz = out.Fz * (p_.selfAligningStiffness * alphaLagged + p_.twistingStiffness * out.camber);
-    out.r_CP = c.r_CP_G;
-    out.F_G = out.Fx * eL + out.Fy * eT + out.Fz * n;
-    return out;
+    f.Mz = k.Fz * (p_.selfAligningStiffness * s.alphaLagged + p_.twistingStiffness * k.camber);
+    return f;
   }
-
-  void calcForce(const State& s, SimTK::Vector_<SpatialVec>& bodyForces, SimTK::Vector_<Vec3>&,
-                 SimTK::Vector&) const override {
-    const Quantities q = calcQuantities(s);
-    if (zIndex_.isValid()) forces_.updZDot(s)[zIndex_] = q.slipDot;
-    bodyForces[wheel_.getMobilizedBodyIndex()] += SpatialVec(q.r_CP % q.F_G + q.Mz * Vec3(0, 0, 1), q.F_G);
-  }
-
-  // The lagged slip is the carcass's lateral deflection over the relaxation length (stretched
-  // string): a road that moves by `offset` under the contact moves the patch with it.
-  bool applyRoadStep(State& s, double offset) const {
-    if (!zIndex_.isValid()) return false;
-    forces_.updZ(s)[zIndex_] += offset / p_.relaxationLength;
-    return true;
-  }
-
-  SimTK::Real calcPotentialEnergy(const State& s) const override {
-    const SimTK::Transform& X_GW = wheel_.getBodyTransform(s);
-    const double d = -(X_GW.p()[2] + calcTorusContact(X_GW.R(), Vec3(0), R_, rho_).r_CP_G[2]);
-    return d > 0 ? 0.5 * p_.radialStiffness * d * d : 0.0;
-  }
+  double calcRelaxationLength(const TyreKinematics&) const override { return p_.relaxationLength; }
 
  private:
-  SimTK::GeneralForceSubsystem& forces_;
-  SimTK::MobilizedBody wheel_;
-  double R_, rho_;
   LinearTyreParameters p_;
-  mutable SimTK::ZIndex zIndex_;
 };
 
-class RelaxationLinear : public ContactModel {
+class RelaxationLinear : public TyreContactModel {
  public:
-  RelaxationLinear(const LinearTyreParameters& front, const LinearTyreParameters& rear) : front_(front), rear_(rear) {}
-  void addWheel(BuildContext& ctx, const WheelSite& w) override {
-    auto* force = new LinearTyreForce(ctx.forces, w, paramsFor(w));
-    SimTK::Force::Custom(ctx.forces, force);  // the subsystem owns the force
-    forces_[w.name] = force;
+  RelaxationLinear(const LinearTyreParameters& front, const LinearTyreParameters& rear)
+      : TyreContactModel(false), front_(front), rear_(rear) {}
+
+ protected:
+  TyreForceElement* makeForceElement(BuildContext& ctx, const WheelSite& w) const override {
+    return new LinearTyreForce(ctx.forces, w, paramsFor(w));
   }
-  std::vector<std::string> getOutputNames(const WheelSite& w) const override {
-    const std::string t = w.name == "front_wheel" ? "front_tyre_" : "rear_tyre_";
-    return {t + "Fx_N", t + "Fy_N", t + "Fz_N", t + "Mz_Nm", t + "slip_angle_rad", t + "slip_ratio", t + "camber_rad"};
-  }
-  std::vector<double> calcOutputs(const SimTK::State& s, const WheelSite& w) const override {
-    const auto q = forces_.at(w.name)->calcQuantities(s);
-    return {q.Fx, q.Fy, q.Fz, q.Mz, q.alpha, q.kappa, q.camber};
-  }
-  bool applyLateralRoadStep(SimTK::State& s, const WheelSite& w, double offset) const override {
-    const auto it = forces_.find(w.name);
-    return it != forces_.end() && it->second->applyRoadStep(s, offset);
-  }
-  std::vector<std::string> getStateNames(const WheelSite& w) const override {
-    if (paramsFor(w).relaxationLength <= 0) return {};
-    return {(w.name == "front_wheel" ? std::string("front") : std::string("rear")) + "_tyre_lagged_slip"};
-  }
+  bool isLagged(const WheelSite& w) const override { return paramsFor(w).relaxationLength > 0; }
 
  private:
   const LinearTyreParameters& paramsFor(const WheelSite& w) const { return w.name == "front_wheel" ? front_ : rear_; }
   LinearTyreParameters front_, rear_;
-  std::map<std::string, const LinearTyreForce*> forces_;
 };
 
 }  // namespace

@@ -2,19 +2,17 @@
 // Tyre plugin `relaxation_linear`: a toroidal tyre on flat ground with linear force laws per unit
 // load and a first-order relaxation of the lateral force (seed sec. 4, Table 6).
 //
-// Conventions (ground z up; wheel spin axis a = wheel body y; e_l = a x n forward, e_t = n x e_l):
-//   contact point   P = C + r_CP (calcTorusContact: the point moves round the carcass with camber)
-//   normal load     Fz = max(0, k_r d + c_r d'),  d = -P_z the carcass deflection
-//   slip            kappa = -(v_P . e_l)/V,  alpha = -(v_P . e_t)/V,  V = sqrt((v_C . e_l)^2 + v_eps^2)
-//   camber          phi = -asin(a . n)         (a wheel leaning right has phi < 0)
+// Contact point, normal load, slips, camber and relaxation are the shared ones of tyres/tyre_contact.h.
 //   lateral force   Fy = Fz k_alpha s,  sigma/V s' + s = alpha + (k_phi/k_alpha) phi, so Fy lags
 //                   Fz (k_alpha alpha + k_phi phi); the z state s is the lagged equivalent slip angle (rad)
 //   longitudinal    Fx = Fz k_kappa kappa
-//   moments         Mz = Fz (k_mz alpha + k_mt phi) about n at P (self-aligning and twisting)
+//   moments         Mz = Fz (k_mz alpha_l + k_mt phi) about n at P (self-aligning and twisting; alpha_l
+//                   the lagged slip angle)
 // With Table 6's signs (k_mz < 0, k_mt > 0) the self-aligning moment turns the wheel towards its
 // velocity and the twisting moment towards the lean, as in Cossalter (2006) ch. 2. A relaxation
 // length of 0 means no lag and no state.
 #include "plugins/plugin_api.h"
+#include "tyres/tyre_contact.h"
 
 namespace motostab {
 
@@ -29,9 +27,6 @@ struct LinearTyreParameters {
   double radialDamping = 0;         ///< c_r, N s/m
   double longitudinalStiffness = 0; ///< k_kappa, per unit load
 };
-
-/// Slip regularisation speed v_eps (m/s): keeps slips finite at standstill.
-constexpr double kSlipSpeedFloor = 0.1;
 
 /// A named parameter set for both tyres (per unit load where stated). `bicycle`: measured bicycle
 /// tyres (Dressel & Rahman 2012, Dressel 2013, VTI 2020; docs/scenario-format.md). Unknown names throw

@@ -2,6 +2,7 @@
 
 #include "plugins/pin_spring_damper.h"
 #include "swingarm/compliance/swingarm_compliance.h"
+#include "tyres/magic_formula_contact.h"
 #include "tyres/relaxation_linear.h"
 #include "tyres/rolling_no_slip.h"
 #include "vehicle/aerodynamics.h"
@@ -23,6 +24,7 @@ PluginRegistry makeBuiltinRegistry() {
   PluginRegistry registry;
   registerRollingNoSlip(registry);
   registerRelaxationLinear(registry);
+  registerMagicFormula(registry);
   registerSwingarmModels(registry);
   return registry;
 }

@@ -1,0 +1,127 @@
+// The strict .tir reader: the MF 6.1 sample file of the ExternData library (tests/data/reference/
+// MF61-sample-tir) and files broken on purpose, each an InputError naming file:line and the key.
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <regex>
+
+#include "../support/catch_input_error.h"
+#include "../support/temp_dir.h"
+#include "tyres/magic_formula.h"
+#include "tyres/tir_file.h"
+
+namespace motostab {
+namespace {
+
+const std::string kSample = std::string(MOTOSTAB_TEST_DATA_DIR) + "/reference/MF61-sample-tir/sample_MF61_ExternData.tir";
+
+std::string readText(const std::string& path) {
+  std::ifstream in(path);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+// The sample with the first line matching `pattern` replaced by `replacement` (the whole line).
+std::string editLine(const std::string& pattern, const std::string& replacement) {
+  std::string text = readText(kSample);
+  std::smatch m;
+  const std::regex re("(^|\n)(" + pattern + "[^\n]*)");
+  EXPECT_TRUE(std::regex_search(text, m, re)) << pattern;
+  return text.replace(m.position(2), m.length(2), replacement);
+}
+
+// The 1-based line of the first line starting with `prefix` in the sample.
+int lineOf(const std::string& prefix) {
+  std::istringstream in(readText(kSample));
+  std::string line;
+  for (int n = 1; std::getline(in, line); ++n)
+    if (line.rfind(prefix, 0) == 0) return n;
+  return -1;
+}
+
+TEST(TirFile, ReadsTheSampleFile) {
+  const TirFile f = TirFile::load(kSample);
+  EXPECT_EQ(f.getFitType(), 61);
+  // Values as printed in the file.
+  EXPECT_EQ(f.getNumber("FNOMIN"), 4000);
+  EXPECT_EQ(f.getNumber("UNLOADED_RADIUS"), 0.3135);
+  EXPECT_EQ(f.getNumber("PKY1"), -15.324);
+  EXPECT_EQ(f.getNumber("PHX1"), 2.1615e-04);
+  EXPECT_EQ(f.getNumber("pky1"), -15.324) << "keys are case-insensitive";
+  EXPECT_EQ(f.find("TYRESIDE")->text, "Left");
+  EXPECT_FALSE(f.find("TYRESIDE")->isNumber);
+  EXPECT_EQ(f.find("PKY1")->line, lineOf("PKY1"));
+  EXPECT_EQ(f.find("PKY1")->section, "LATERAL_COEFFICIENTS");
+  // [INERTIA] MASS is a number; [UNITS] MASS = 'kg' is kept apart.
+  EXPECT_EQ(f.getNumber("MASS"), 9.3);
+  // Every coefficient of MF 6.1 is there: the law builds.
+  const auto law = makeTyreForceLaw(MagicFormulaVariant::MF61, *makeTirSource(f, nullptr));
+  EXPECT_EQ(law->getNominalLoad(), 4000);
+}
+
+TirFile parseBroken(const std::string& text) { return TirFile::parse(text, "broken.tir"); }
+
+TEST(TirFile, BrokenFilesNameTheLineAndKey) {
+  struct Case {
+    std::string pattern, replacement, key, reason;
+    int line;
+  };
+  const std::vector<Case> cases = {
+      {"FITTYP", "FITTYP = 52", "FITTYP", "unsupported FITTYP 52", lineOf("FITTYP")},
+      {"FITTYP", "FITTYP = 'MF61'", "FITTYP", "unsupported FITTYP", lineOf("FITTYP")},
+      {"PKY4", "PKY4  2.0005", "", "malformed line", lineOf("PKY4")},
+      {"PKY4", "PKY4 = nan", "PKY4", "malformed value 'nan'", lineOf("PKY4")},
+      {"PKY4", "PKY4 = 2.0005 2", "PKY4", "malformed value", lineOf("PKY4")},
+      {"PKY4", "PKY4 = 'two", "PKY4", "malformed value", lineOf("PKY4")},
+      {"PKY4", "PKY4 = 2\nPKY4 = 3", "PKY4", "given twice", lineOf("PKY4") + 1},
+      {"PKY4", "PKY4 = 2\n[VERTICAL]\nPKY4 = 3", "PKY4", "also given in [LATERAL_COEFFICIENTS]", lineOf("PKY4") + 2},
+      {"\\[LATERAL_COEFFICIENTS\\]", "[LATERAL_COEFFICIENTS", "", "malformed section header", lineOf("[LATERAL_COEFFICIENTS]")},
+      {" LENGTH", " LENGTH = 'mm'", "LENGTH", "unit 'mm' is not supported", lineOf(" LENGTH")},
+  };
+  for (const auto& c : cases) {
+    const InputError e = test::catchInputError([&] { parseBroken(editLine(c.pattern, c.replacement)); });
+    EXPECT_EQ(e.getLocation().file, "broken.tir") << c.replacement;
+    EXPECT_EQ(e.getLocation().line, c.line) << c.replacement;
+    EXPECT_EQ(e.getLocation().key, c.key) << c.replacement;
+    EXPECT_NE(e.getReason().find(c.reason), std::string::npos) << e.what();
+  }
+  const InputError none = test::catchInputError([&] { parseBroken(editLine("FITTYP", "$ no FITTYP")); });
+  EXPECT_NE(none.getReason().find("missing [MODEL] FITTYP"), std::string::npos) << none.what();
+}
+
+TEST(TirFile, MissingOrUnsupportedCoefficientsAreErrorsOfTheFile) {
+  const auto dir = makeTempDir("TirFile_Missing");
+  // A coefficient the equations need, missing: named, at the file.
+  for (const std::string key : {"PKY4", "QSY8", "RVY6", "FNOMIN"}) {
+    const TirFile f = parseBroken(editLine(key + " ", "$ removed"));
+    const InputError e = test::catchInputError([&] { makeTyreForceLaw(MagicFormulaVariant::MF61, *makeTirSource(f, nullptr)); });
+    EXPECT_EQ(e.getLocation().key, key);
+    EXPECT_EQ(e.getLocation().file, "broken.tir");
+    EXPECT_NE(e.getReason().find("missing coefficient"), std::string::npos) << e.what();
+  }
+  // A scaling factor may be missing (1); an MF 6.2 overturning term that is not implemented may not be nonzero.
+  EXPECT_NO_THROW(makeTyreForceLaw(MagicFormulaVariant::MF61, *makeTirSource(parseBroken(editLine("LKY ", "$ removed")), nullptr)));
+  const TirFile f = parseBroken(editLine("QSX13", "QSX13 = 0.5"));
+  const InputError e = test::catchInputError([&] { makeTyreForceLaw(MagicFormulaVariant::MF61, *makeTirSource(f, nullptr)); });
+  EXPECT_EQ(e.getLocation().line, lineOf("QSX13"));
+  EXPECT_EQ(e.getLocation().key, "QSX13");
+  // A file that does not exist.
+  const InputError absent = test::catchInputError([&] { TirFile::load((dir / "none.tir").string()); });
+  EXPECT_NE(absent.getReason().find("cannot open"), std::string::npos);
+}
+
+TEST(TirFile, TablesAndCommentsAreNotKeys) {
+  const std::string text = readText(kSample) +
+                           "$ a table section as MF-Tyre files have\n[SHAPE]\n{radial width}\n 1.0 0.0\n 1.0 0.4 $ row\n"
+                           "! header comment\n";
+  const TirFile f = parseBroken(text);
+  EXPECT_EQ(f.getFitType(), 61);
+  EXPECT_EQ(f.find("RADIAL"), nullptr);
+  // A non-numeric row after a table header is malformed.
+  const InputError e = test::catchInputError([&] { parseBroken(text + "[SHAPE2]\n{radial width}\n 1.0 zero\n"); });
+  EXPECT_NE(e.getReason().find("malformed line"), std::string::npos) << e.what();
+}
+
+}  // namespace
+}  // namespace motostab

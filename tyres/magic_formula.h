@@ -1,0 +1,98 @@
+#pragma once
+// Magic Formula steady-state tyre force laws: the common interface (TyreForceLaw), where their
+// coefficients come from (a .tir file or inline scenario values), and MF 6.1/6.2 (Pacejka 2012,
+// "Tire and Vehicle Dynamics", 3rd ed., sec. 4.3.2, eqs. 4.E1-4.E78, without turn slip). The
+// motorcycle variant is in tyres/motorcycle_magic_formula.h. docs/tyres.md lists every equation.
+//
+// Axes and signs are Pacejka's ISO-W ones: x forward in the ground plane, y left, z up; slip ratio
+// kappa = -V_sx/|V_cx|; slip angle alpha with tan(alpha) = V_cy/|V_cx| (a wheel sliding left has
+// alpha > 0, and Fy = K_ya alpha with K_ya < 0); camber (inclination) gamma > 0 when the wheel's
+// top leans right (towards -y). Forces in N, moments in N m about x, y, z at the contact point.
+#include <map>
+#include <memory>
+#include <optional>
+#include <string>
+
+#include "scenario/yaml_map.h"
+#include "tyres/tir_file.h"
+
+namespace motostab {
+
+/// Operating point of a tyre (ISO-W signs, above).
+struct TyreSlip {
+  double Fz = 0;     ///< normal load, N (>= 0)
+  double kappa = 0;  ///< longitudinal slip ratio
+  double alpha = 0;  ///< slip angle, rad
+  double gamma = 0;  ///< camber (inclination) angle, rad
+  double Vx = 0;     ///< forward speed of the wheel centre, m/s (rolling resistance)
+};
+
+/// Steady-state forces and moments at the contact point (ISO-W axes).
+struct TyreForces {
+  double Fx = 0, Fy = 0, Mx = 0, My = 0, Mz = 0;
+};
+
+/// A steady-state tyre force law with its small-slip stiffnesses in closed form.
+class TyreForceLaw {
+ public:
+  virtual ~TyreForceLaw() = default;
+  virtual TyreForces calcForces(const TyreSlip& slip) const = 0;
+  /// dFy/dalpha at kappa = alpha = gamma = 0 (N/rad, ISO sign: negative for a usual tyre).
+  virtual double calcCorneringStiffness(double Fz) const = 0;
+  /// dFy/dgamma at kappa = alpha = gamma = 0 (N/rad, ISO sign).
+  virtual double calcCamberStiffness(double Fz) const = 0;
+  /// dFx/dkappa at kappa = alpha = gamma = 0 (N).
+  virtual double calcLongitudinalStiffness(double Fz) const = 0;
+  /// Lateral relaxation length (m) at load Fz and camber gamma; NaN if the law has none.
+  virtual double calcRelaxationLength(double Fz, double gamma) const = 0;
+  /// Nominal load F_z0' (N) and unloaded radius R0 (m).
+  virtual double getNominalLoad() const = 0;
+  virtual double getUnloadedRadius() const = 0;
+};
+
+/// Where coefficients come from: a .tir file or an inline `coefficients` map, with scaling factors
+/// (L...) overridden by a scenario's `scaling` map. Names are the .tir keys (PKY1, LMUY, ...).
+class CoefficientSource {
+ public:
+  /// `scaling` (may be null): scaling factors that take precedence over the source's own values.
+  explicit CoefficientSource(const std::map<std::string, double>* scaling = nullptr) : scaling_(scaling) {}
+  virtual ~CoefficientSource() = default;
+  /// The value of `name`: from `scaling` if it is there, else the source's own.
+  std::optional<double> find(const std::string& name) const;
+  [[noreturn]] virtual void fail(const std::string& name, const std::string& message) const = 0;
+  /// A coefficient the equations need: missing is an InputError naming it.
+  double get(const std::string& name) const;
+  /// A scaling factor: 1 unless given.
+  double getScaling(const std::string& name) const;
+  /// An optional value.
+  double get(const std::string& name, double fallback) const;
+
+ protected:
+  /// The source's own value of `name`, or nothing.
+  virtual std::optional<double> findOwn(const std::string& name) const = 0;
+
+ private:
+  const std::map<std::string, double>* scaling_;
+};
+
+/// Coefficients of a .tir file, with scaling factors from `scaling` (may be null) taking precedence.
+std::unique_ptr<CoefficientSource> makeTirSource(const TirFile& file, const std::map<std::string, double>* scaling);
+/// Coefficients of an inline YAML map (each key must be read, unknown keys are errors at finish()).
+std::unique_ptr<CoefficientSource> makeYamlSource(YamlMap& coefficients, const std::map<std::string, double>* scaling);
+
+/// The Magic Formula variants.
+enum class MagicFormulaVariant { MF61, MF62, Motorcycle };
+/// "mf61", "mf62", "motorcycle"; nothing for other names.
+std::optional<MagicFormulaVariant> parseMagicFormulaVariant(const std::string& name);
+/// The scaling factors (L...) a variant's equations use.
+const std::vector<std::string>& getScalingNames(MagicFormulaVariant v);
+
+/// Reads the coefficients a variant needs from `source` (InputError for a missing one) and builds the
+/// force law. Inflation pressure (Pa): `pressure` if given, else INFLPRES, else NOMPRES.
+std::unique_ptr<TyreForceLaw> makeTyreForceLaw(MagicFormulaVariant v, const CoefficientSource& source,
+                                               std::optional<double> pressure = std::nullopt);
+
+/// The force law of a .tir file (variant from its FITTYP), with optional scaling overrides.
+std::unique_ptr<TyreForceLaw> loadTirForceLaw(const std::string& path, const std::map<std::string, double>* scaling = nullptr);
+
+}  // namespace motostab

@@ -1,0 +1,35 @@
+#pragma once
+// Contact plugin `magic_formula`: Magic Formula tyres (MF 6.1/6.2 from a .tir file, or the
+// motorcycle variant, tyres/motorcycle_magic_formula.h) on the shared tyre contact of
+// tyres/tyre_contact.h: contact point on the toroidal carcass, radial load law, slips, and the
+// first-order relaxation of the side force.
+//
+// With s the lagged equivalent slip (the z state, rad), K_ya and K_yg the law's cornering and camber
+// stiffnesses at zero slip (tyres/magic_formula.h) and phi the camber:
+//   relaxation          sigma/V s' + s = alpha + (K_yg/K_ya) phi   (relaxation_linear's equivalent slip,
+//                       k_phi/k_alpha = K_yg/K_ya), sigma from the scenario or the law (MF 6.1: PTY1, PTY2
+//                       at the current load and camber)
+//   lagged slip angle   alpha_l = s - (K_yg/K_ya) phi
+//   forces              Fx, Fy, Mz, Mx, My of the law at (kappa, alpha_l, phi, Fz): one evaluation; in
+//                       steady state s = alpha + (K_yg/K_ya) phi, alpha_l = alpha, the law's own forces
+// K_ya, K_yg and sigma take the load floored at 5% of FNOMIN (finite when a wheel unloads).
+// In straight running (zero slips and camber) this linearises to relaxation_linear with
+// k_alpha = -K_ya/Fz, k_phi = -K_yg/Fz, k_mz = dMz/dalpha /Fz, k_mt = dMz/dphi /Fz and
+// k_kappa = K_xk/Fz at the trim load, provided the law has no force or moment at zero slip
+// (no shifts, no rolling resistance, no Mz from Fx): tests/tyres/magic_formula_contact_test.cpp.
+//
+// Scenario (per tyre, `front` and `rear`):
+//   tir: FILE | coefficients: {NAME: value, ...}   the coefficients (names of the .tir keys)
+//   variant: mf61 | mf62 | motorcycle              default: the file's FITTYP (required inline)
+//   scaling: {LKY: 1.1, ...}                       scaling factors overriding the file's (default 1)
+//   relaxation_length_m                            optional for MF 6.x (0: no lag), required for motorcycle
+//   radial_stiffness_N_per_m, radial_damping_Ns_per_m   default VERTICAL_STIFFNESS, VERTICAL_DAMPING
+//   pressure_Pa                                    default INFLPRES, else NOMPRES (MF 6.x)
+#include "plugins/plugin_api.h"
+
+namespace motostab {
+
+/// Registers `magic_formula`.
+void registerMagicFormula(PluginRegistrar& registry);
+
+}  // namespace motostab

@@ -1,0 +1,132 @@
+#include "tyres/motorcycle_magic_formula.h"
+
+#include <cmath>
+#include <limits>
+
+namespace motostab {
+
+namespace {
+
+double sgn(double x) { return (x > 0) - (x < 0); }
+
+// x - E (x - atan x): the Magic Formula's curvature-corrected argument.
+double curved(double x, double E) { return x - E * (x - std::atan(x)); }
+
+struct Coefficients {
+  double FNOMIN, R0, LFZO, LMUX, LKX, LMUY, LKY, LKYC, LTR, LRES;
+  double PCX1, PDX1, PDX2, PEX1, PEX2, PEX3, PEX4, PKX1, PKX2, PKX3;
+  double PCY1, PCY2, PDY1, PEY1, PEY2, PEY4, PEY5, PKY1, PKY2, PKY3, PKY4, PKY5, PKY6, PKY7;
+  double QHZ3, QHZ4, QBZ1, QBZ2, QBZ5, QBZ6, QBZ9, QBZ10, QCZ1, QDZ1, QDZ2, QDZ3, QDZ4, QDZ8, QDZ9, QDZ10, QDZ11, QEZ1,
+      QEZ2, QEZ3, QEZ5;
+  double RBX1, RBX2, RCX1, RBY1, RBY2, RBY3, RCY1;
+};
+
+const std::vector<std::string> kScaling = {"LFZO", "LMUX", "LKX", "LMUY", "LKY", "LKYC", "LTR", "LRES"};
+
+class MotorcycleMagicFormula : public TyreForceLaw {
+ public:
+  explicit MotorcycleMagicFormula(const Coefficients& c) : c_(c) {}
+
+  TyreForces calcForces(const TyreSlip& in) const override {
+    const double Fz = in.Fz, a = -std::tan(in.alpha), g = -in.gamma, k = in.kappa;
+    const Lateral lat = calcLateral(Fz, a, g);
+    // Longitudinal, pure and combined.
+    const double dfz = calcDfz(Fz), Kx = calcKx(Fz);
+    const double Cx = c_.PCX1, Dx = (c_.PDX1 + c_.PDX2 * dfz) * c_.LMUX * Fz;
+    const double Ex = (c_.PEX1 + c_.PEX2 * dfz + c_.PEX3 * dfz * dfz) * (1 - c_.PEX4 * sgn(k));
+    const double Fx0 = Dx * std::sin(Cx * std::atan(curved(Kx / (Cx * Dx + kEps) * k, Ex)));
+    const double Fx = Fx0 * std::cos(c_.RCX1 * std::atan(c_.RBX1 * std::cos(std::atan(c_.RBX2 * k)) * a));
+    const double Gyk = calcGyk(a, k);
+    // Aligning moment with the equivalent slip of the combined law.
+    const double ratio = Kx * k / (lat.Kya + kEps);
+    const double at = a + (c_.QHZ3 + c_.QHZ4 * dfz) * g;
+    const double ateq = std::sqrt(at * at + ratio * ratio) * sgn(at);
+    const double areq = std::sqrt(a * a + ratio * ratio) * sgn(a);
+    const double cosA = 1 / std::sqrt(1 + a * a);
+    const double Bt = (c_.QBZ1 + c_.QBZ2 * dfz) * (1 + c_.QBZ5 * std::abs(g) + c_.QBZ6 * g * g);
+    const double Ct = c_.QCZ1;
+    const double Dt = Fz * (c_.R0 / calcFz0()) * (c_.QDZ1 + c_.QDZ2 * dfz) * (1 + c_.QDZ3 * std::abs(g) + c_.QDZ4 * g * g) * c_.LTR;
+    const double Et = (c_.QEZ1 + c_.QEZ2 * dfz + c_.QEZ3 * dfz * dfz) * (1 + c_.QEZ5 * g * (2 / M_PI) * std::atan(Bt * Ct * at));
+    const double t = Dt * std::cos(Ct * std::atan(curved(Bt * ateq, Et))) * cosA;
+    const double Br = c_.QBZ9 + c_.QBZ10 * lat.By * c_.PCY1;
+    const double Dr = Fz * c_.R0 * ((c_.QDZ8 + c_.QDZ9 * dfz) * g + (c_.QDZ10 + c_.QDZ11 * dfz) * g * std::abs(g)) * c_.LRES;
+    const double Mzr = Dr * std::cos(std::atan(Br * areq)) * cosA;
+    const double FyNoCamber = Gyk * calcLateral(Fz, a, 0.0).Fy0;
+    TyreForces f;
+    f.Fx = Fx;
+    f.Fy = Gyk * lat.Fy0;   // +y is the same axis in both conventions
+    f.Mz = -t * FyNoCamber + Mzr;
+    return f;
+  }
+
+  // ISO signs: dFy/dalpha_ISO = -dFy/da, dFy/dgamma_ISO = -dFy/dg.
+  double calcCorneringStiffness(double Fz) const override { return -calcLateral(Fz, 0, 0).Kya; }
+  double calcCamberStiffness(double Fz) const override { return -calcLateral(Fz, 0, 0).Kyg; }
+  double calcLongitudinalStiffness(double Fz) const override { return calcKx(Fz); }
+  double calcRelaxationLength(double, double) const override { return std::numeric_limits<double>::quiet_NaN(); }
+  double getNominalLoad() const override { return calcFz0(); }
+  double getUnloadedRadius() const override { return c_.R0; }
+
+ private:
+  static constexpr double kEps = 1e-12;
+  double calcFz0() const { return c_.FNOMIN * c_.LFZO; }
+  // The side force's combined-slip weight in the paper's slip a and slip ratio k.
+  double calcGyk(double a, double k) const {
+    return std::cos(c_.RCY1 * std::atan(c_.RBY1 * std::cos(std::atan(c_.RBY2 * (a - c_.RBY3))) * k));
+  }
+  double calcDfz(double Fz) const { return (Fz - calcFz0()) / calcFz0(); }
+  double calcKx(double Fz) const {
+    const double dfz = calcDfz(Fz);
+    return Fz * (c_.PKX1 + c_.PKX2 * dfz) * std::exp(c_.PKX3 * dfz) * c_.LKX;
+  }
+
+  struct Lateral {
+    double Fy0, Kya, Kyg, By;
+  };
+  // Pure side slip and camber in the paper's signs: slip a (tan of the angle) and camber g (rad).
+  Lateral calcLateral(double Fz, double a, double g) const {
+    Lateral l;
+    const double Fz0 = calcFz0(), dfz = calcDfz(Fz), g2 = g * g;
+    const double Dy = c_.PDY1 * c_.LMUY * Fz, Cy = c_.PCY1, Cg = c_.PCY2;
+    l.Kya = c_.PKY1 * Fz0 * std::sin(2 * std::atan(Fz / ((c_.PKY2 + c_.PKY4 * g2) * Fz0))) / (1 + c_.PKY3 * g2) * c_.LKY;
+    l.Kyg = (c_.PKY6 + c_.PKY7 * dfz) * Fz / (1 + c_.PKY5 * g2) * c_.LKYC;
+    l.By = l.Kya / (Cy * Dy + kEps);
+    const double Bg = l.Kyg / (Cg * Dy + kEps);
+    const double Ey = c_.PEY1 + c_.PEY2 * g2 + c_.PEY4 * g * sgn(a);
+    l.Fy0 = Dy * std::sin(Cy * std::atan(curved(l.By * a, Ey)) + Cg * std::atan(curved(Bg * g, c_.PEY5)));
+    return l;
+  }
+
+  Coefficients c_;
+};
+
+}  // namespace
+
+const std::vector<std::string>& getMotorcycleScalingNames() { return kScaling; }
+
+std::unique_ptr<TyreForceLaw> makeMotorcycleMagicFormula(const CoefficientSource& s) {
+  Coefficients c{};
+  const std::pair<const char*, double*> required[] = {
+      {"FNOMIN", &c.FNOMIN}, {"UNLOADED_RADIUS", &c.R0}, {"PCX1", &c.PCX1}, {"PDX1", &c.PDX1}, {"PDX2", &c.PDX2},
+      {"PEX1", &c.PEX1}, {"PEX2", &c.PEX2}, {"PEX3", &c.PEX3}, {"PEX4", &c.PEX4}, {"PKX1", &c.PKX1}, {"PKX2", &c.PKX2},
+      {"PKX3", &c.PKX3}, {"PCY1", &c.PCY1}, {"PCY2", &c.PCY2}, {"PDY1", &c.PDY1}, {"PEY1", &c.PEY1}, {"PEY2", &c.PEY2},
+      {"PEY4", &c.PEY4}, {"PEY5", &c.PEY5}, {"PKY1", &c.PKY1}, {"PKY2", &c.PKY2}, {"PKY3", &c.PKY3}, {"PKY4", &c.PKY4},
+      {"PKY5", &c.PKY5}, {"PKY6", &c.PKY6}, {"PKY7", &c.PKY7}, {"QHZ3", &c.QHZ3}, {"QHZ4", &c.QHZ4}, {"QBZ1", &c.QBZ1},
+      {"QBZ2", &c.QBZ2}, {"QBZ5", &c.QBZ5}, {"QBZ6", &c.QBZ6}, {"QBZ9", &c.QBZ9}, {"QBZ10", &c.QBZ10}, {"QCZ1", &c.QCZ1},
+      {"QDZ1", &c.QDZ1}, {"QDZ2", &c.QDZ2}, {"QDZ3", &c.QDZ3}, {"QDZ4", &c.QDZ4}, {"QDZ8", &c.QDZ8}, {"QDZ9", &c.QDZ9},
+      {"QDZ10", &c.QDZ10}, {"QDZ11", &c.QDZ11}, {"QEZ1", &c.QEZ1}, {"QEZ2", &c.QEZ2}, {"QEZ3", &c.QEZ3},
+      {"QEZ5", &c.QEZ5}, {"RBX1", &c.RBX1}, {"RBX2", &c.RBX2}, {"RCX1", &c.RCX1}, {"RBY1", &c.RBY1}, {"RBY2", &c.RBY2},
+      {"RBY3", &c.RBY3}, {"RCY1", &c.RCY1}};
+  for (const auto& [name, field] : required) *field = s.get(name);
+  const std::pair<const char*, double*> scaling[] = {{"LFZO", &c.LFZO}, {"LMUX", &c.LMUX}, {"LKX", &c.LKX},
+                                                     {"LMUY", &c.LMUY}, {"LKY", &c.LKY},   {"LKYC", &c.LKYC},
+                                                     {"LTR", &c.LTR},   {"LRES", &c.LRES}};
+  for (const auto& [name, field] : scaling) *field = s.getScaling(name);
+  if (!(c.FNOMIN > 0)) s.fail("FNOMIN", "must be positive");
+  if (!(c.R0 > 0)) s.fail("UNLOADED_RADIUS", "must be positive");
+  if (!(c.LFZO > 0)) s.fail("LFZO", "must be positive");
+  if (!(c.PDY1 > 0)) s.fail("PDY1", "must be positive");
+  return std::make_unique<MotorcycleMagicFormula>(c);
+}
+
+}  // namespace motostab

@@ -1,0 +1,162 @@
+#include "tyres/tir_file.h"
+
+#include <algorithm>
+#include <cctype>
+#include <fstream>
+#include <sstream>
+#include <vector>
+
+#include "io/number.h"
+
+namespace motostab {
+
+namespace {
+
+std::string trim(const std::string& s) {
+  size_t a = 0, b = s.size();
+  while (a < b && std::isspace(static_cast<unsigned char>(s[a]))) ++a;
+  while (b > a && std::isspace(static_cast<unsigned char>(s[b - 1]))) --b;
+  return s.substr(a, b - a);
+}
+
+std::string upper(std::string s) {
+  std::transform(s.begin(), s.end(), s.begin(), [](unsigned char c) { return static_cast<char>(std::toupper(c)); });
+  return s;
+}
+
+// The line without its `$` comment (a `$` inside a quoted string is kept).
+std::string stripComment(const std::string& line) {
+  bool quoted = false;
+  for (size_t i = 0; i < line.size(); ++i) {
+    if (line[i] == '\'') quoted = !quoted;
+    if (line[i] == '$' && !quoted) return line.substr(0, i);
+  }
+  return line;
+}
+
+bool isNumberRow(const std::string& text) {
+  std::istringstream in(text);
+  std::string field;
+  bool any = false;
+  while (in >> field) {
+    if (!parseFiniteNumber(field)) return false;
+    any = true;
+  }
+  return any;
+}
+
+struct Parser {
+  std::string source;
+  InputLocation at(int line, const std::string& key = "") const { return {source, line, 0, key}; }
+};
+
+}  // namespace
+
+TirFile TirFile::load(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) throw InputError({path, 0, 0, ""}, "cannot open the tyre property file");
+  std::stringstream text;
+  text << in.rdbuf();
+  return parse(text.str(), path);
+}
+
+TirFile TirFile::parse(const std::string& text, const std::string& source) {
+  TirFile f;
+  f.source_ = source;
+  const Parser p{source};
+  std::istringstream in(text);
+  std::string raw, section;
+  bool inTable = false;
+  std::map<std::string, int> seenInSection;
+  for (int line = 1; std::getline(in, raw); ++line) {
+    if (!raw.empty() && raw.back() == '\r') raw.pop_back();
+    const std::string t = trim(stripComment(raw));
+    if (t.empty() || t[0] == '!') continue;
+    if (t[0] == '[') {
+      if (t.back() != ']' || t.size() < 3) throw InputError(p.at(line), "malformed section header '" + t + "'");
+      section = upper(trim(t.substr(1, t.size() - 2)));
+      inTable = false;
+      seenInSection.clear();
+      continue;
+    }
+    if (t[0] == '{') {
+      if (t.back() != '}') throw InputError(p.at(line), "malformed table header '" + t + "'");
+      inTable = true;
+      continue;
+    }
+    if (inTable && isNumberRow(t)) continue;
+    const size_t eq = t.find('=');
+    if (eq == std::string::npos) throw InputError(p.at(line), "malformed line (expected KEY = VALUE): '" + t + "'");
+    if (section.empty()) throw InputError(p.at(line), "a value before the first [SECTION]");
+    const std::string key = upper(trim(t.substr(0, eq)));
+    const std::string value = trim(t.substr(eq + 1));
+    if (key.empty() || key.find_first_of(" \t'") != std::string::npos)
+      throw InputError(p.at(line), "malformed key '" + trim(t.substr(0, eq)) + "'");
+    inTable = false;
+    TirEntry e;
+    e.section = section;
+    e.line = line;
+    if (value.size() >= 2 && value.front() == '\'' && value.back() == '\'' &&
+        value.find('\'', 1) == value.size() - 1) {
+      e.text = value.substr(1, value.size() - 2);
+    } else if (const auto number = parseFiniteNumber(value)) {
+      e.text = value;
+      e.isNumber = true;
+      e.number = *number;
+    } else {
+      throw InputError(p.at(line, key), "malformed value '" + value + "' (expected a finite number or a 'quoted' string)");
+    }
+    if (!seenInSection.emplace(key, line).second)
+      throw InputError(p.at(line, key), "given twice in [" + section + "] (first at line " +
+                                            std::to_string(seenInSection[key]) + ")");
+    if (section == "UNITS") {
+      f.units_[key] = e;
+      continue;
+    }
+    if (section == "MDI_HEADER") continue;
+    const auto [it, fresh] = f.entries_.emplace(key, e);
+    if (!fresh)
+      throw InputError(p.at(line, key), "also given in [" + it->second.section + "] at line " +
+                                            std::to_string(it->second.line) + ": ambiguous");
+  }
+  // Units: the equations take SI values; nothing is converted.
+  const std::pair<const char*, std::vector<std::string>> units[] = {{"LENGTH", {"METER", "METRE", "M"}},
+                                                                    {"FORCE", {"NEWTON", "N"}},
+                                                                    {"ANGLE", {"RADIANS", "RADIAN", "RAD"}},
+                                                                    {"MASS", {"KG", "KILOGRAM"}},
+                                                                    {"TIME", {"SECOND", "SEC", "S"}}};
+  for (const auto& [name, allowed] : units) {
+    const auto it = f.units_.find(name);
+    if (it == f.units_.end()) continue;  // absent: SI assumed
+    const std::string u = upper(it->second.text);
+    if (std::find(allowed.begin(), allowed.end(), u) == allowed.end())
+      throw InputError(p.at(it->second.line, name), "unit '" + it->second.text + "' is not supported (SI only: " +
+                                                         allowed.front() + ")");
+  }
+  const TirEntry* fit = f.find("FITTYP");
+  if (!fit) throw InputError(p.at(0, "FITTYP"), "missing [MODEL] FITTYP (61 or 62 expected)");
+  if (!fit->isNumber || (fit->number != 61 && fit->number != 62))
+    throw InputError(p.at(fit->line, "FITTYP"), "unsupported FITTYP " + fit->text +
+                                                    " (this reader implements MF 6.1 and 6.2: 61 or 62)");
+  f.fitType_ = static_cast<int>(fit->number);
+  return f;
+}
+
+const TirEntry* TirFile::find(const std::string& key) const {
+  const auto it = entries_.find(upper(key));
+  return it == entries_.end() ? nullptr : &it->second;
+}
+
+double TirFile::getNumber(const std::string& key) const {
+  const TirEntry* e = find(key);
+  if (!e) fail(key, "missing coefficient (needed by the chosen Magic Formula equations)");
+  if (!e->isNumber) fail(key, "must be a number, not '" + e->text + "'");
+  return e->number;
+}
+
+void TirFile::fail(const std::string& key, const std::string& message) const {
+  const TirEntry* e = find(key);
+  throw InputError({source_, e ? e->line : 0, 0, upper(key)}, message);
+}
+
+}  // namespace motostab

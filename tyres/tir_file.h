@@ -1,0 +1,51 @@
+#pragma once
+// Strict reader of MF-Tyre property files (.tir, MF 6.1 and 6.2, FITTYP 61 or 62). The format: an
+// ASCII file of `[SECTION]` headers and `KEY = VALUE` lines, where a value is a number or a quoted
+// string ('Left'); `$` starts a comment anywhere on a line, lines starting with `!` are header
+// comments, and a line `{...}` starts a table (rows of numbers, e.g. [SHAPE]) whose rows are kept
+// out of the keys. Anything else is malformed: an InputError naming file:line. A key given twice in
+// one section is an error at its second line. The [UNITS] section must say meter, newton, radians,
+// kg and second (no unit conversion is done). Keys are case-insensitive (stored upper-case).
+#include <map>
+#include <optional>
+#include <string>
+
+#include "io/input_error.h"
+
+namespace motostab {
+
+/// One `KEY = VALUE` of a .tir file.
+struct TirEntry {
+  std::string section;    ///< upper-case section name without brackets
+  std::string text;       ///< the value as written (quotes removed)
+  bool isNumber = false;
+  double number = 0;      ///< the value when isNumber
+  int line = 0;           ///< 1-based line
+};
+
+class TirFile {
+ public:
+  /// Reads and checks a .tir file (syntax, units, FITTYP 61 or 62). InputError at file:line.
+  static TirFile load(const std::string& path);
+  /// The same from text; `source` names it in errors.
+  static TirFile parse(const std::string& text, const std::string& source);
+
+  /// The entry of `key` outside [UNITS] (and [MDI_HEADER]), or nothing. A key present in two such
+  /// sections is an InputError at its second line.
+  const TirEntry* find(const std::string& key) const;
+  /// The number at `key`; InputError at its line if it is a string, at the file if it is missing.
+  double getNumber(const std::string& key) const;
+  /// 61 or 62 (from [MODEL] FITTYP).
+  int getFitType() const { return fitType_; }
+  const std::string& getSource() const { return source_; }
+  /// An InputError at the line of `key` (or the file when absent) with `message`.
+  [[noreturn]] void fail(const std::string& key, const std::string& message) const;
+
+ private:
+  std::string source_;
+  int fitType_ = 0;
+  std::map<std::string, TirEntry> entries_;  ///< by upper-case key (sections other than UNITS, MDI_HEADER)
+  std::map<std::string, TirEntry> units_;    ///< [UNITS] entries
+};
+
+}  // namespace motostab
