@@ -195,7 +195,7 @@ class SweepRun {
   // unknown), and extrapolated along speed.
   void updateTrimJacobian(const VehicleModel& m, size_t k, size_t previous, size_t i, TrimResult& work,
                           Eigen::MatrixXd& lastJ) {
-    Eigen::MatrixXd J = calcTrimJacobian(m, out_.models[k], work.jacobian);
+    Eigen::MatrixXd J = calcTrimJacobian(m, out_.models[k], work.jacobian, opt_.trim);
     if (J.size() == 0) return;
     if (i > 0 && lastJ.rows() == J.rows() && lastJ.cols() == J.cols())
       work.jacobianPerSpeed = (J - lastJ) / (out_.speeds[k] - out_.speeds[previous]);

@@ -1,20 +1,43 @@
 #include "analysis/trim.h"
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
+
+#include "tyres/rolling_no_slip.h"
 
 namespace motostab {
 
 namespace {
-std::string trimMessage(double speed, double residual, int iterations) {
+std::string trimMessage(double speed, double residual, int iterations, double roll) {
   std::ostringstream os;
-  os << "trim failed at speed " << speed << " m/s: residual norm " << residual << " after " << iterations
-     << " iterations";
+  os << "trim failed at speed " << speed << " m/s";
+  if (std::isfinite(roll)) os << ", roll " << roll * 180 / M_PI << " deg";
+  os << ": residual norm " << residual << " after " << iterations << " iterations";
   return os.str();
 }
 }  // namespace
 
-TrimError::TrimError(double v, double r, int it) : std::runtime_error(trimMessage(v, r, it)), speed(v), residual(r) {}
+TrimError::TrimError(double v, double r, int it, double phi)
+    : std::runtime_error(trimMessage(v, r, it, phi)), speed(v), residual(r), roll(phi) {}
+
+TurnFigures calcTurnFigures(const VehicleModel& model, const SimTK::State& s) {
+  model.getSystem().realize(s, SimTK::Stage::Velocity);
+  const Scenario& sc = model.getScenario();
+  const SimTK::MobilizedBody& wheel = model.getRearWheel();
+  const SimTK::MobilizedBody& frame = model.getRearFrame();
+  const TorusContact contact = calcTorusContact(wheel.getBodyRotation(s), wheel.getBodyAngularVelocity(s),
+                                                sc.rearWheel.radius, sc.rearWheel.crownRadius);
+  const SimTK::Vec3 p_GP = wheel.getBodyOriginLocation(s) + contact.r_CP_G;
+  const SimTK::Vec3 p_GO = frame.getBodyOriginLocation(s);
+  const SimTK::Vec3 v_GP = frame.getBodyOriginVelocity(s) + frame.getBodyAngularVelocity(s) % (p_GP - p_GO);
+  TurnFigures f;
+  f.speed = std::hypot(v_GP[0], v_GP[1]);
+  f.yawRate = s.getU()[model.getIndices().yaw];
+  f.pathRadius = f.yawRate == 0 ? INFINITY : f.speed / std::abs(f.yawRate);
+  f.lateralAcceleration = f.speed * f.yawRate;
+  return f;
+}
 
 std::vector<StateEntry> getTrimUnknowns(const VehicleModel& model) {
   std::vector<StateEntry> out;
@@ -29,8 +52,121 @@ std::vector<StateEntry> getTrimUnknowns(const VehicleModel& model) {
   return out;
 }
 
+std::vector<StateEntry> getTrimUnknowns(const VehicleModel& model, const TrimOptions& opt) {
+  if (!opt.isTurn()) return getTrimUnknowns(model);
+  const CoordinateIndices& ix = model.getIndices();
+  std::vector<int> fixedQ = model.getCyclicQ();
+  fixedQ.insert(fixedQ.end(), {ix.yaw, ix.roll});
+  if (opt.condition == TurnCondition::Steer) fixedQ.push_back(ix.steer);
+  std::vector<StateEntry> out;
+  for (int i = 0; i < model.getNumQ(); ++i)
+    if (std::find(fixedQ.begin(), fixedQ.end(), i) == fixedQ.end()) out.push_back({Slot::Q, i});
+  for (int i : {ix.yaw, ix.x, ix.y, ix.rearSpin, ix.frontSpin}) out.push_back({Slot::U, i});
+  for (int i = 0; i < model.getNumZ(); ++i) out.push_back({Slot::Z, i});
+  if (opt.condition != TurnCondition::SteerTorque) out.push_back({Slot::Input, static_cast<int>(Input::SteerTorque)});
+  out.push_back({Slot::Input, static_cast<int>(Input::DriveTorque)});
+  return out;
+}
+
 namespace {
+
+// The residual of the trim `opt` asks for at `speed` (trim.h): [udot; zdot; qerr; uerr], in a turn with
+// the centripetal terms of the rear wheel centre's acceleration and, fixing the speed, V_P - V.
+void calcResidual(const StateFunction& fn, const TrimOptions& opt, double speed, const SimTK::State& s,
+                  Eigen::VectorXd& r) {
+  fn.calcTrimResidual(s, r);
+  if (!opt.isTurn()) return;
+  const CoordinateIndices& ix = fn.getModel().getIndices();
+  const SimTK::Vector& u = s.getU();
+  r[ix.x] += u[ix.yaw] * u[ix.y];
+  r[ix.y] -= u[ix.yaw] * u[ix.x];
+  if (opt.condition == TurnCondition::Speed) {
+    r.conservativeResize(r.size() + 1);
+    r[r.size() - 1] = calcTurnFigures(fn.getModel(), s).speed - speed;
+  }
+}
+
+// The fixed part of the state. Straight running: every rate zero but the forward speed and the
+// wheel spins. A turn: yaw 0, the roll (and steer) fixed, every rate zero but the yaw rate, xdot,
+// ydot and the spins, which a warm start from `oldSpeed` (> 0) scales to `speed`.
+void setFixedPart(const VehicleModel& model, const TrimOptions& opt, double speed, double oldSpeed, SimTK::State& s) {
+  const CoordinateIndices& ix = model.getIndices();
+  const SimTK::Vector oldU = s.getU();
+  const bool scaled = std::abs(oldSpeed) > 1e-9 && (!opt.isTurn() || opt.condition == TurnCondition::Speed);
+  const double scale = scaled ? speed / oldSpeed : 1.0;
+  s.updU() = 0;
+  for (int i : model.getCyclicQ()) s.updQ()[i] = 0;
+  model.setInput(s, Input::RollTorque, 0);
+  if (!opt.isTurn()) {
+    s.updU()[ix.x] = speed;
+    for (int w : {ix.rearSpin, ix.frontSpin}) {
+      const double R = (w == ix.rearSpin ? model.getScenario().rearWheel : model.getScenario().frontWheel).radius;
+      s.updU()[w] = scaled ? oldU[w] * scale : speed / R;
+    }
+    return;
+  }
+  for (int i : {ix.x, ix.y, ix.rearSpin, ix.frontSpin}) s.updU()[i] = oldU[i] * scale;
+  s.updU()[ix.yaw] = oldU[ix.yaw] / scale;
+  s.updQ()[ix.yaw] = 0;
+  s.updQ()[ix.roll] = opt.roll;
+  if (opt.condition == TurnCondition::Steer) s.updQ()[ix.steer] = opt.steer;
+  if (opt.condition == TurnCondition::SteerTorque) model.setInput(s, Input::SteerTorque, opt.steerTorque);
+}
+
 void solveTrim(const VehicleModel& model, double speed, const TrimOptions& opt, TrimResult& res, bool warm);
+
+// A turn from `res` (a trim at another roll, or straight running: roll 0) to opt.roll, in roll steps of
+// at most opt.rollStep at `speed`, each started from the last two by linear extrapolation; then the
+// turn with opt's condition.
+void continueTurn(const VehicleModel& model, double speed, const TrimOptions& opt, TrimResult& res) {
+  const StateFunction fn(model);
+  const CoordinateIndices& ix = model.getIndices();
+  const double from = res.turn ? res.roll : 0.0;
+  if (!res.turn) {  // straight running as a turn of radius infinity, heading along x
+    SimTK::State& s = res.state;
+    const double v = s.getU()[ix.x];
+    s.updQ()[ix.yaw] = 0;
+    s.updU()[ix.y] = 0;
+    s.updU()[ix.yaw] = 0;
+    res.speed = v;
+  }
+  TrimOptions step = opt;
+  step.condition = TurnCondition::Speed;
+  const int n = std::max(1, static_cast<int>(std::ceil(std::abs(opt.roll - from) / opt.rollStep - 1e-9)));
+  const auto unknowns = getTrimUnknowns(model, step);
+  Eigen::VectorXd last, beforeLast;
+  for (int k = 1; k <= n; ++k) {
+    step.roll = from + (opt.roll - from) * k / n;
+    SimTK::State& s = res.state;
+    if (k >= 3) {
+      for (size_t j = 0; j < unknowns.size(); ++j) fn.set(s, unknowns[j], 2 * last[j] - beforeLast[j]);
+    } else if (k == 1 && !res.turn) {  // the point-mass turn: tan(roll) = -r V / g, steer ~ w r / V
+      const double r = -model.getScenario().gravity * std::tan(step.roll) / std::max(speed, 0.5);
+      s.updU()[ix.yaw] = r;
+      s.updQ()[ix.steer] += model.getScenario().geometry.wheelbase * r / std::max(speed, 0.5);
+    }
+    res.unknownsPerSpeed.resize(0), res.unknownsCurvature.resize(0);
+    solveTrim(model, speed, step, res, true);
+    beforeLast.swap(last);
+    last.resize(unknowns.size());
+    for (size_t j = 0; j < unknowns.size(); ++j) last[j] = fn.get(s, unknowns[j]);
+  }
+  if (opt.condition != TurnCondition::Speed) solveTrim(model, speed, opt, res, true);
+}
+
+// A trim at `speed` from `res`: straight running, a turn at the warm start's roll, or a continuation
+// in roll (continueTurn) otherwise.
+void solveAny(const VehicleModel& model, double speed, const TrimOptions& opt, TrimResult& res, bool warm) {
+  if (!opt.isTurn()) return solveTrim(model, speed, opt, res, warm);
+  if (warm && res.turn && std::abs(res.roll - opt.roll) < 1e-12) return solveTrim(model, speed, opt, res, true);
+  if (!warm) {
+    TrimOptions straight = opt;
+    straight.roll = NAN;
+    solveTrim(model, speed, straight, res, false);
+  }
+  continueTurn(model, speed, opt, res);
+}
+
 }  // namespace
 
 TrimResult calcTrim(const VehicleModel& model, double speed, const TrimOptions& opt, const TrimResult* warm) {
@@ -40,12 +176,12 @@ TrimResult calcTrim(const VehicleModel& model, double speed, const TrimOptions& 
   } else {
     res.state = model.getDefaultState();
   }
-  solveTrim(model, speed, opt, res, warm != nullptr);
+  solveAny(model, speed, opt, res, warm != nullptr);
   return res;
 }
 
 void updTrim(const VehicleModel& model, double speed, const TrimOptions& opt, TrimResult& trim) {
-  solveTrim(model, speed, opt, trim, true);
+  solveAny(model, speed, opt, trim, true);
 }
 
 namespace {
@@ -53,8 +189,7 @@ namespace {
 // Newton's method from `res` (a warm start when `warm`, else the default state) to the trim at `speed`.
 void solveTrim(const VehicleModel& model, double speed, const TrimOptions& opt, TrimResult& res, bool warm) {
   const StateFunction fn(model);
-  const CoordinateIndices& ix = model.getIndices();
-  const auto unknowns = getTrimUnknowns(model);
+  const auto unknowns = getTrimUnknowns(model, opt);
   const int n = static_cast<int>(unknowns.size());
   SimTK::State& s = res.state;
   const double oldSpeed = res.speed;
@@ -63,18 +198,11 @@ void solveTrim(const VehicleModel& model, double speed, const TrimOptions& opt, 
   const Eigen::VectorXd oldSlope = res.unknownsPerSpeed, oldCurvature = res.unknownsCurvature;
   const double oldSecantStart = res.secantStartSpeed;
   res.speed = speed;
+  res.turn = opt.isTurn();
+  res.roll = opt.roll;
   res.iterations = res.jacobianEvaluations = 0;
   res.unknownsPerSpeed.resize(0), res.unknownsCurvature.resize(0);
-  // Fixed part of straight running: every rate zero but the forward speed and the wheel spins.
-  const SimTK::Vector oldU = s.getU();
-  s.updU() = 0;
-  s.updU()[ix.x] = speed;
-  for (int w : {ix.rearSpin, ix.frontSpin}) {
-    const double R = (w == ix.rearSpin ? model.getScenario().rearWheel : model.getScenario().frontWheel).radius;
-    s.updU()[w] = (warm && std::abs(oldSpeed) > 1e-9) ? oldU[w] * speed / oldSpeed : speed / R;
-  }
-  for (int i : model.getCyclicQ()) s.updQ()[i] = 0;
-  model.setInput(s, Input::RollTorque, 0);
+  setFixedPart(model, opt, speed, warm ? oldSpeed : 0.0, s);
   // Predictor: Newton interpolation through the last trims (residual O(dv^3) with three, O(dv^2)
   // with two), instead of the warm start itself (O(dv)).
   if (warm && oldSlope.size() == n) {
@@ -85,15 +213,16 @@ void solveTrim(const VehicleModel& model, double speed, const TrimOptions& opt, 
       fn.set(s, unknowns[j], x);
     }
   }
+  auto residual = [&](const SimTK::State& st, Eigen::VectorXd& out) { calcResidual(fn, opt, speed, st, out); };
 
   Eigen::VectorXd r, rTrial, col;
-  fn.calcTrimResidual(s, r);
+  residual(s, r);
   Eigen::MatrixXd J;
   bool jacobianIsCurrent = false;  // computed at the current iterate
   Eigen::CompleteOrthogonalDecomposition<Eigen::MatrixXd> decomposition;
   bool factored = false;           // decomposition holds J
   bool refresh = false;            // slow convergence: differentiate again before the next step
-  if (res.jacobian.cols() == n) {
+  if (res.jacobian.cols() == n && res.jacobian.rows() == r.size()) {
     J.swap(res.jacobian);
     if (res.jacobianPerSpeed.rows() == J.rows() && res.jacobianPerSpeed.cols() == n)
       J += res.jacobianPerSpeed * (speed - oldSpeed);
@@ -104,8 +233,7 @@ void solveTrim(const VehicleModel& model, double speed, const TrimOptions& opt, 
     for (int j = 0; j < n; ++j) {
       const double h = opt.jacobianStep * std::max(1.0, std::abs(fn.get(s, unknowns[j])));
       fn.calcDirectionalDerivative(s, {{unknowns[j], 1.0}}, h, 2,
-                                   [&](const SimTK::State& st, Eigen::VectorXd& out) { fn.calcTrimResidual(st, out); },
-                                   col);
+                                   residual, col);
       J.col(j) = col;
     }
     jacobianIsCurrent = true;
@@ -126,13 +254,13 @@ void solveTrim(const VehicleModel& model, double speed, const TrimOptions& opt, 
     double step = 1.0, trialNorm = INFINITY;
     for (int ls = 0; ls < 30; ++ls, step *= 0.5) {
       for (int j = 0; j < n; ++j) fn.set(s, unknowns[j], x0[j] + step * dx[j]);
-      fn.calcTrimResidual(s, rTrial);
+      residual(s, rTrial);
       trialNorm = rTrial.lpNorm<Eigen::Infinity>();
       if (std::isfinite(trialNorm) && trialNorm < (1 - 1e-4 * step) * norm) break;
     }
     if (!(trialNorm < norm)) {
       for (int j = 0; j < n; ++j) fn.set(s, unknowns[j], x0[j]);
-      fn.calcTrimResidual(s, r);
+      residual(s, r);
       if (jacobianIsCurrent) break;  // no descent even with a fresh Jacobian
       computeJacobian();
       continue;
@@ -147,7 +275,8 @@ void solveTrim(const VehicleModel& model, double speed, const TrimOptions& opt, 
   res.residualNorm = norm;
   if (J.size() == 0 && norm <= opt.tolerance) computeJacobian();
   res.jacobian.swap(J);
-  if (!(norm <= opt.tolerance)) throw TrimError(speed, norm, it);
+  if (!(norm <= opt.tolerance)) throw TrimError(speed, norm, it, opt.roll);
+  if (res.turn && opt.condition != TurnCondition::Speed) res.speed = calcTurnFigures(model, s).speed;
   if (warm && std::abs(speed - oldSpeed) > 1e-12) {
     res.unknownsPerSpeed.resize(n);
     for (int j = 0; j < n; ++j) res.unknownsPerSpeed[j] = (fn.get(s, unknowns[j]) - oldUnknowns[j]) / (speed - oldSpeed);
@@ -158,6 +287,58 @@ void solveTrim(const VehicleModel& model, double speed, const TrimOptions& opt, 
 }
 
 }  // namespace
+
+NoTurnError::NoTurnError(double phi, double lo, double hi, double tLo, double tHi)
+    : std::runtime_error([&] {
+        std::ostringstream os;
+        os << "no hands-free turn at roll " << phi * 180 / M_PI << " deg between " << lo << " and " << hi
+           << " m/s: the steer torque of steady turns is " << tLo << " N m at " << lo << " m/s and " << tHi
+           << " N m at " << hi << " m/s, without a sign change";
+        return os.str();
+      }()),
+      roll(phi), low(lo), high(hi) {}
+
+TrimResult calcHandsFreeTrim(const VehicleModel& model, const std::vector<double>& speeds, const TrimOptions& opt,
+                             double preferredSpeed) {
+  TrimOptions fixedSpeed = opt;
+  fixedSpeed.condition = TurnCondition::Speed;
+  std::vector<TrimPoint> scan;  // descending speeds
+  TrimResult work;
+  for (auto v = speeds.rbegin(); v != speeds.rend(); ++v) {
+    try {
+      if (scan.empty()) work = calcTrim(model, *v, fixedSpeed);
+      else updTrim(model, *v, fixedSpeed, work);
+    } catch (const TrimError&) {
+      if (scan.empty()) throw;
+      break;  // too slow for this roll: the scan ends here
+    }
+    scan.push_back(makeTrimPoint(model, work));
+  }
+  const int torque = static_cast<int>(Input::SteerTorque);
+  int best = -1;
+  double bestSpeed = NAN;
+  for (size_t k = 0; k + 1 < scan.size(); ++k) {
+    const double t0 = scan[k].inputs[torque] - opt.steerTorque, t1 = scan[k + 1].inputs[torque] - opt.steerTorque;
+    if (t0 * t1 > 0 || t0 == t1) continue;
+    const double v = scan[k].speed + (scan[k + 1].speed - scan[k].speed) * t0 / (t0 - t1);
+    const bool better = best < 0 || (std::isnan(preferredSpeed) ? v < bestSpeed
+                                                                 : std::abs(v - preferredSpeed) < std::abs(bestSpeed - preferredSpeed));
+    if (better) best = static_cast<int>(k), bestSpeed = v;
+  }
+  if (best < 0)
+    throw NoTurnError(opt.roll, scan.back().speed, scan.front().speed, scan.back().inputs[torque], scan.front().inputs[torque]);
+  TrimPoint start = scan[best];  // the bracket's turns interpolated to the estimated speed
+  const double w = (bestSpeed - scan[best].speed) / (scan[best + 1].speed - scan[best].speed);
+  start.y += w * (scan[best + 1].y - scan[best].y);
+  start.inputs += w * (scan[best + 1].inputs - scan[best].inputs);
+  start.speed = bestSpeed;
+  TrimResult trim = restoreTrim(model, start);
+  trim.unknownsPerSpeed.resize(0), trim.unknownsCurvature.resize(0), trim.jacobian.resize(0, 0);
+  TrimOptions handsFree = opt;
+  handsFree.condition = TurnCondition::SteerTorque;
+  updTrim(model, bestSpeed, handsFree, trim);
+  return trim;
+}
 
 TrimPoint makeTrimPoint(const VehicleModel& model, const TrimResult& trim) {
   TrimPoint p;

@@ -1,0 +1,79 @@
+#include "analysis/turn_map.h"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+namespace motostab {
+
+TurnMapResult runTurnMap(const VehicleModel& model, const TurnMapOptions& opt) {
+  if (opt.rolls.empty()) throw std::invalid_argument("runTurnMap: no roll angle");
+  TurnMapResult map;
+  map.rolls = opt.rolls;
+  for (double roll : opt.rolls) {
+    SweepOptions so = opt.sweep;
+    so.trim.roll = roll;
+    so.trim.condition = TurnCondition::Speed;
+    map.sweeps.push_back(runSweep(model, so));
+  }
+  trackModesAcrossRoll(map);
+  return map;
+}
+
+namespace {
+
+// Cost of continuing branch a of sweep `from` by branch b of sweep `to`: calcMatchCost summed over the
+// speeds both have.
+double calcBranchCost(const SweepResult& from, const ModeBranch& a, const SweepResult& to, const ModeBranch& b) {
+  double cost = 0;
+  const size_t n = std::min(from.models.size(), to.models.size());
+  for (size_t k = 0; k < n; ++k) cost += calcMatchCost(from.models[k], a.index[k], to.models[k], b.index[k]);
+  return cost;
+}
+
+// Labels of `to`'s branches from `from`'s, matched cheapest pair first (each branch used once).
+void copyLabels(const SweepResult& from, SweepResult& to) {
+  struct Pair {
+    double cost;
+    size_t a, b;
+  };
+  std::vector<Pair> pairs;
+  for (size_t a = 0; a < from.branches.size(); ++a)
+    for (size_t b = 0; b < to.branches.size(); ++b)
+      pairs.push_back({calcBranchCost(from, from.branches[a], to, to.branches[b]), a, b});
+  std::stable_sort(pairs.begin(), pairs.end(), [](const Pair& x, const Pair& y) { return x.cost < y.cost; });
+  std::vector<bool> usedA(from.branches.size(), false), usedB(to.branches.size(), false);
+  std::vector<std::string> newLabels(to.branches.size());
+  for (const Pair& p : pairs) {
+    if (usedA[p.a] || usedB[p.b]) continue;
+    usedA[p.a] = usedB[p.b] = true;
+    newLabels[p.b] = from.branches[p.a].label;
+  }
+  // A critical speed takes the new label of the branch whose real part changes sign around it.
+  for (CriticalSpeed& c : to.criticalSpeeds) {
+    const auto k = std::upper_bound(to.speeds.begin(), to.speeds.end(), c.speed) - to.speeds.begin();
+    for (size_t b = 0; b < to.branches.size() && k > 0 && static_cast<size_t>(k) < to.speeds.size(); ++b) {
+      const ModeBranch& br = to.branches[b];
+      if (br.label == c.mode && br.eigenvalue[k - 1].real() * br.eigenvalue[k].real() <= 0 && !newLabels[b].empty()) {
+        c.mode = newLabels[b];
+        break;
+      }
+    }
+  }
+  for (size_t b = 0; b < to.branches.size(); ++b)
+    if (!newLabels[b].empty()) to.branches[b].label = newLabels[b];
+}
+
+}  // namespace
+
+void trackModesAcrossRoll(TurnMapResult& map) {
+  const size_t n = map.sweeps.size();
+  if (n < 2) return;
+  size_t ref = 0;
+  for (size_t j = 1; j < n; ++j)
+    if (std::abs(map.rolls[j]) < std::abs(map.rolls[ref])) ref = j;
+  for (size_t j = ref + 1; j < n; ++j) copyLabels(map.sweeps[j - 1], map.sweeps[j]);
+  for (size_t j = ref; j-- > 0;) copyLabels(map.sweeps[j + 1], map.sweeps[j]);
+}
+
+}  // namespace motostab
