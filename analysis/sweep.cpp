@@ -310,8 +310,16 @@ SweepResult runSweep(const VehicleModel& model, const SweepOptions& opt) {
   run.runChains();
   const SweepOptions fixed = run.getFixedOptions();
   SweepResult out = run.takeTrackedResult();
-  findCriticalSpeeds(model, opt, fixed, out, run.updReplicas());
+  if (opt.findCriticalSpeeds) findCriticalSpeeds(model, opt, fixed, out, run.updReplicas());
   return out;
+}
+
+void updateCriticalSpeeds(const VehicleModel& model, const SweepOptions& opt, SweepResult& sweep) {
+  SweepOptions fixed = opt;
+  if (!sweep.models.empty()) fixed.linearize.removeYaw = sweep.models.front().findState("yaw") < 0 ? 1 : 0;
+  sweep.criticalSpeeds.clear();
+  std::vector<std::unique_ptr<VehicleModel>> replicas;
+  findCriticalSpeeds(model, opt, fixed, sweep, replicas);
 }
 
 }  // namespace motostab

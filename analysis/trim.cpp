@@ -9,17 +9,18 @@
 namespace motostab {
 
 namespace {
-std::string trimMessage(double speed, double residual, int iterations, double roll) {
+std::string trimMessage(double speed, double residual, int iterations, double roll, const std::string& detail) {
   std::ostringstream os;
   os << "trim failed at speed " << speed << " m/s";
   if (std::isfinite(roll)) os << ", roll " << roll * 180 / M_PI << " deg";
   os << ": residual norm " << residual << " after " << iterations << " iterations";
+  if (!detail.empty()) os << " (" << detail << ")";
   return os.str();
 }
 }  // namespace
 
-TrimError::TrimError(double v, double r, int it, double phi)
-    : std::runtime_error(trimMessage(v, r, it, phi)), speed(v), residual(r), roll(phi) {}
+TrimError::TrimError(double v, double r, int it, double phi, const std::string& detail)
+    : std::runtime_error(trimMessage(v, r, it, phi, detail)), speed(v), residual(r), roll(phi) {}
 
 TurnFigures calcTurnFigures(const VehicleModel& model, const SimTK::State& s) {
   model.getSystem().realize(s, SimTK::Stage::Velocity);
@@ -146,7 +147,14 @@ void continueTurn(const VehicleModel& model, double speed, const TrimOptions& op
       s.updQ()[ix.steer] += model.getScenario().geometry.wheelbase * r / std::max(speed, 0.5);
     }
     res.unknownsPerSpeed.resize(0), res.unknownsCurvature.resize(0);
-    solveTrim(model, speed, step, res, true);
+    try {
+      solveTrim(model, speed, step, res, true);
+    } catch (const TrimError& e) {
+      if (k == n) throw;
+      std::ostringstream os;
+      os << "stepping the roll up from " << from * 180 / M_PI << " deg: failed at " << step.roll * 180 / M_PI << " deg";
+      throw TrimError(speed, e.residual, res.iterations, opt.roll, os.str());
+    }
     beforeLast.swap(last);
     last.resize(unknowns.size());
     for (size_t j = 0; j < unknowns.size(); ++j) last[j] = fn.get(s, unknowns[j]);

@@ -13,6 +13,7 @@
 #include <Eigen/Dense>
 #include <cmath>
 #include <stdexcept>
+#include <string>
 
 #include "analysis/state_function.h"
 
@@ -81,7 +82,8 @@ struct TrimPoint : TrimSummary {
 /// A trim that did not converge: names the speed, the roll (turns) and the residual.
 class TrimError : public std::runtime_error {
  public:
-  TrimError(double speed, double residual, int iterations, double roll = NAN);
+  /// `detail`, if any, is appended in parentheses (e.g. the continuation step that failed).
+  TrimError(double speed, double residual, int iterations, double roll = NAN, const std::string& detail = "");
   double speed, residual, roll;
 };
 

@@ -10,13 +10,16 @@ TurnMapResult runTurnMap(const VehicleModel& model, const TurnMapOptions& opt) {
   if (opt.rolls.empty()) throw std::invalid_argument("runTurnMap: no roll angle");
   TurnMapResult map;
   map.rolls = opt.rolls;
+  std::vector<SweepOptions> options;
   for (double roll : opt.rolls) {
-    SweepOptions so = opt.sweep;
-    so.trim.roll = roll;
-    so.trim.condition = TurnCondition::Speed;
-    map.sweeps.push_back(runSweep(model, so));
+    options.push_back(opt.sweep);
+    options.back().trim.roll = roll;
+    options.back().trim.condition = TurnCondition::Speed;
+    options.back().findCriticalSpeeds = false;
+    map.sweeps.push_back(runSweep(model, options.back()));
   }
   trackModesAcrossRoll(map);
+  for (size_t j = 0; j < map.rolls.size(); ++j) updateCriticalSpeeds(model, options[j], map.sweeps[j]);
   return map;
 }
 
@@ -48,17 +51,6 @@ void copyLabels(const SweepResult& from, SweepResult& to) {
     if (usedA[p.a] || usedB[p.b]) continue;
     usedA[p.a] = usedB[p.b] = true;
     newLabels[p.b] = from.branches[p.a].label;
-  }
-  // A critical speed takes the new label of the branch whose real part changes sign around it.
-  for (CriticalSpeed& c : to.criticalSpeeds) {
-    const auto k = std::upper_bound(to.speeds.begin(), to.speeds.end(), c.speed) - to.speeds.begin();
-    for (size_t b = 0; b < to.branches.size() && k > 0 && static_cast<size_t>(k) < to.speeds.size(); ++b) {
-      const ModeBranch& br = to.branches[b];
-      if (br.label == c.mode && br.eigenvalue[k - 1].real() * br.eigenvalue[k].real() <= 0 && !newLabels[b].empty()) {
-        c.mode = newLabels[b];
-        break;
-      }
-    }
   }
   for (size_t b = 0; b < to.branches.size(); ++b)
     if (!newLabels[b].empty()) to.branches[b].label = newLabels[b];

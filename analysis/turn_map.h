@@ -20,7 +20,7 @@ struct TurnMapResult {
 };
 
 /// Runs the sweep of every roll angle (each starting from straight running, stepped up in roll at its
-/// first speed) and tracks the modes across roll.
+/// first speed), tracks the modes across roll, then brackets each sweep's critical speeds.
 TurnMapResult runTurnMap(const VehicleModel& model, const TurnMapOptions& options);
 
 /// Mode identity across roll: starting from the roll angle nearest upright, whose labels come from the

@@ -121,6 +121,7 @@ void registerStabilityCommands(CLI::App& app) {
     double stiffnessScale = 0.5, dampingScale = 1.0 / std::sqrt(2.0);
     std::vector<double> shapeSpeeds{10.0, 18.5, 30.0};
     int threads = 2;
+    double rollDeg = 0;
   };
   auto st = std::make_shared<StudyArgs>();
   CLI::App* study = app.add_subcommand("study", "Swingarm study of seed sec. 4: rigid/bending/torsion/twist sweeps, Figs. 9-12, report");
@@ -138,6 +139,8 @@ void registerStabilityCommands(CLI::App& app) {
       ->delimiter(',')
       ->check(makeNumberCheck(0, 1e3));
   study->add_option("--threads", st->threads, "Variants swept in parallel")->check(makeThreadsCheck());
+  study->add_option("--roll-deg", st->rollDeg, "Compare the variants about steady turns at this roll angle (deg)")
+      ->check(makeRollCheck());
   study->callback([st]() {
     const Scenario scenario = loadScenario(st->scenario, st->overrides);
     StudyOptions opt;
@@ -151,6 +154,10 @@ void registerStabilityCommands(CLI::App& app) {
     opt.shapeSpeeds = st->shapeSpeeds;
     opt.overrides = st->overrides;
     opt.threads = st->threads;
+    if (st->rollDeg != 0) {
+      checkTurnSpeeds(opt.sweep.start, st->speeds.empty() ? "speeds_mps (the scenario's; override with --speeds)" : "--speeds");
+      opt.sweep.trim.roll = st->rollDeg * M_PI / 180;
+    }
     const std::string out = st->out.empty() ? scenario.name + "-study" : st->out;
     OutputFolder folder(out);
     const StudyResult result = runStudy(st->scenario, opt);

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <iomanip>
 #include <sstream>
+#include <vector>
 
 #include "io/atomic_file.h"
 #include "io/csv.h"
@@ -34,9 +35,19 @@ std::complex<double> findModeEigenvalue(const SweepResult& sweep, const std::str
   return best;
 }
 
-// DIR/map_<mode>.dat: one block per roll (gnuplot `index`), rows speed roll_deg real imag freq damping.
+void writeModeBlocks(const TurnMapResult& map, const std::string& mode, const std::string& separator, std::ostream& os);
+
+// DIR/map_<mode>.dat: one block per roll (gnuplot `index`), rows speed roll_deg real imag freq damping;
+// DIR/grid_<mode>.dat the same as one data set of scans (single blank lines), for pm3d.
 void writeModeData(const std::filesystem::path& dir, const TurnMapResult& map, const std::string& mode) {
-  std::ostringstream os;
+  for (const char* kind : {"map_", "grid_"}) {
+    std::ostringstream os;
+    writeModeBlocks(map, mode, kind[0] == 'm' ? "\n\n" : "\n", os);
+    writeFileAtomically(dir / (kind + mode + ".dat"), os.str());
+  }
+}
+
+void writeModeBlocks(const TurnMapResult& map, const std::string& mode, const std::string& separator, std::ostream& os) {
   os << std::setprecision(17) << "# speed_mps roll_deg real imag frequency_hz damping_ratio\n";
   for (size_t j = 0; j < map.rolls.size(); ++j) {
     const SweepResult& s = map.sweeps[j];
@@ -45,9 +56,8 @@ void writeModeData(const std::filesystem::path& dir, const TurnMapResult& map, c
       os << s.speeds[k] << " " << toDegrees(map.rolls[j]) << " " << l.real() << " " << l.imag() << " "
          << calcFrequencyHz(l) << " " << calcDampingRatio(l) << "\n";
     }
-    os << "\n\n";
+    os << separator;
   }
-  writeFileAtomically(dir / ("map_" + mode + ".dat"), os.str());
 }
 
 // A gnuplot `plot for` over the rolls of one mode's data file.
@@ -74,6 +84,18 @@ void writeMapCsv(const std::filesystem::path& dir, const TurnMapResult& map) {
 
 }  // namespace
 
+// The plotted modes (weave, wobble) that some roll's sweep has.
+std::vector<std::string> listPresentModes(const TurnMapResult& map) {
+  std::vector<std::string> out;
+  for (const char* m : kMapModes) {
+    bool present = false;
+    for (const auto& s : map.sweeps)
+      for (const auto& b : s.branches) present = present || b.label == m;
+    if (present) out.push_back(m);
+  }
+  return out;
+}
+
 void writeTurnMapOutputs(const std::filesystem::path& dir, const std::string& name, const TurnMapResult& map) {
   writeMapCsv(dir, map);
   nlohmann::json summary;
@@ -88,25 +110,31 @@ void writeTurnMapOutputs(const std::filesystem::path& dir, const std::string& na
                       map.sweeps[j]);
   }
   writeFileAtomically(dir / "map_summary.json", summary.dump(2) + "\n");
-  for (const char* m : kMapModes) writeModeData(dir, map, m);
+  const std::vector<std::string> modes = listPresentModes(map);
+  for (const auto& m : modes) writeModeData(dir, map, m);
+  if (modes.empty()) return;  // nothing to plot
   const std::string title = gnuplotQuote(name);
   std::ostringstream damping;
-  damping << "  set multiplot layout 1,2 title 'Damping ratio over speed and roll: ' . '" << title << "'\n"
+  damping << "  set multiplot layout 1," << modes.size() << " title 'Damping ratio over speed and roll: ' . " << title << "\n"
           << "  set view map\n  set pm3d at b corners2color c1\n  set palette defined (-0.1 'red', 0 'white', 0.3 'blue')\n"
           << "  set cbrange [-0.1:0.3]\n  set xlabel 'speed (m/s)'\n  set ylabel 'roll (deg)'\n  unset key\n";
-  for (const char* m : kMapModes)
-    damping << "  set title '" << m << "'\n  splot 'map_" << m << ".dat' using 1:2:6 with pm3d\n";
+  for (const auto& m : modes)
+    damping << "  set title '" << m << "'\n  splot 'grid_" << m << ".dat' using 1:2:6 with pm3d\n";
   damping << "  unset multiplot\n";
   renderGnuplot(dir, "damping_map", damping.str());
   const std::string common = "  set grid\n  set key outside right\n";
+  std::string loci, reals, which;
+  for (size_t i = 0; i < modes.size(); ++i) {
+    loci += plotPerRoll(map, modes[i], "3:5", i == 0);
+    reals += plotPerRoll(map, modes[i], "1:3", i == 0);
+    which += (i ? " and " : "") + modes[i] + (i ? " (dashed)" : " (solid)");
+  }
   renderGnuplot(dir, "root_loci",
-                common + "  set title 'Root loci of weave (solid) and wobble (dashed) at each roll: ' . '" + title +
-                    "'\n  set xlabel 'real part (1/s)'\n  set ylabel 'frequency (Hz)'\n" +
-                    plotPerRoll(map, "weave", "3:5", true) + plotPerRoll(map, "wobble", "3:5", false) + "\n");
+                common + "  set title 'Root loci of " + which + " at each roll: ' . " + title +
+                    "\n  set xlabel 'real part (1/s)'\n  set ylabel 'frequency (Hz)'\n" + loci + "\n");
   renderGnuplot(dir, "real_part_vs_speed",
-                common + "  set title 'Real part against speed per roll, weave (solid) and wobble (dashed): ' . '" +
-                    title + "'\n  set xlabel 'speed (m/s)'\n  set ylabel 'real part (1/s)'\n  set xzeroaxis lt -1\n" +
-                    plotPerRoll(map, "weave", "1:3", true) + plotPerRoll(map, "wobble", "1:3", false) + "\n");
+                common + "  set title 'Real part against speed per roll, " + which + ": ' . " + title +
+                    "\n  set xlabel 'speed (m/s)'\n  set ylabel 'real part (1/s)'\n  set xzeroaxis lt -1\n" + reals + "\n");
 }
 
 std::string formatTurnMapTable(const TurnMapResult& map) {

@@ -8,6 +8,7 @@
 #include <map>
 #include <sstream>
 
+#include "analysis/linearize.h"
 #include "analysis/trim.h"
 #include "io/portable_random.h"
 #include "scenario/scenario.h"
@@ -164,6 +165,62 @@ TEST(TurnTrim, EnduroTyreForcesBalanceTheCentripetalForce) {
     const double total = b.inertialForce.norm();
     EXPECT_GT(total, 100.0);
     EXPECT_LT((tyres - b.inertialForce).norm(), 1e-8 * total) << "roll " << opt.roll << ", v " << v;
+  }
+}
+
+// Hands-free turns of the Whipple bicycle tend, as the roll goes to zero, to straight running at the
+// capsize speed (Meijaard et al. 2007, Table 2: 6.02426201538837 m/s), where the upright linear model
+// has a zero eigenvalue; their steer/roll ratio tends to that of its null vector (lean and steer only,
+// rates zero). Both limits are approached as roll^2 (the turn is even in roll).
+TEST(TurnTrim, HandsFreeTurnsTendToTheCapsizeSpeed) {
+  const VehicleModel model(loadScenario(kWhipple));
+  const double capsizeSpeed = 6.02426201538837;
+  const LinearModel upright = linearize(model, calcTrim(model, capsizeSpeed));
+  // With the rates zero, A x = 0 reduces to the roll and steer accelerations' dependence on roll and
+  // steer: its 2 x 2 block is singular at the capsize speed (forward speed is a separate neutral state).
+  const int roll = upright.findState("roll"), steer = upright.findState("steer");
+  const int rollRate = upright.findState("roll_rate"), steerRate = upright.findState("steer_rate");
+  Eigen::Matrix2d K;
+  K << upright.A(rollRate, roll), upright.A(rollRate, steer), upright.A(steerRate, roll), upright.A(steerRate, steer);
+  const Eigen::JacobiSVD<Eigen::Matrix2d> svd(K, Eigen::ComputeFullV);
+  EXPECT_LT(svd.singularValues()[1], 1e-6 * svd.singularValues()[0]);
+  const double nullRatio = svd.matrixV()(1, 1) / svd.matrixV()(0, 1);
+  std::vector<double> speeds;
+  for (double v = 4; v <= 8.0001; v += 0.5) speeds.push_back(v);
+  double lastSpeedError = NAN, lastRatioError = NAN;
+  for (double phi : {0.04, 0.02, 0.01}) {
+    TrimOptions opt;
+    opt.roll = phi;
+    const TrimResult t = calcHandsFreeTrim(model, speeds, opt, 6.0);
+    EXPECT_EQ(model.getInput(t.state, Input::SteerTorque), 0.0);
+    const double ratio = t.state.getQ()[model.getIndices().steer] / phi;
+    const double speedError = t.speed - capsizeSpeed, ratioError = ratio - nullRatio;
+    std::printf("hands-free at roll %.3f rad: speed %.9f m/s (capsize %.9f), steer/roll %.9f (null vector %.9f)\n",
+                phi, t.speed, capsizeSpeed, ratio, nullRatio);
+    if (!std::isnan(lastSpeedError)) {  // halving the roll quarters the errors
+      EXPECT_NEAR(speedError / lastSpeedError, 0.25, 0.02);
+      EXPECT_NEAR(ratioError / lastRatioError, 0.25, 0.02);
+    }
+    lastSpeedError = speedError, lastRatioError = ratioError;
+  }
+  EXPECT_LT(std::abs(lastSpeedError), 1e-3);
+  EXPECT_LT(std::abs(lastRatioError), 1e-3 * std::abs(nullRatio));
+}
+
+// A failed turn names the speed and the requested roll.
+TEST(TurnTrim, FailureNamesSpeedAndRoll) {
+  const VehicleModel model(loadScenario(kWhipple));
+  TrimOptions opt;
+  opt.roll = 80 * M_PI / 180;
+  try {
+    calcTrim(model, 0.5, opt);
+    FAIL() << "a 0.5 m/s turn at 80 deg has no trim";
+  } catch (const TrimError& e) {
+    const std::string m = e.what();
+    EXPECT_NE(m.find("0.5 m/s"), std::string::npos) << m;
+    EXPECT_NE(m.find("roll 80 deg"), std::string::npos) << m;
+    EXPECT_NE(m.find("residual norm"), std::string::npos) << m;
+    EXPECT_DOUBLE_EQ(e.roll, opt.roll);
   }
 }
 
