@@ -116,6 +116,41 @@ void setFixedPart(const VehicleModel& model, const TrimOptions& opt, double spee
 
 void solveTrim(const VehicleModel& model, double speed, const TrimOptions& opt, TrimResult& res, bool warm);
 
+// Heights (m) of the lowest points of both tyres' toroids (calcTorusContact), state realized to Position.
+Eigen::Vector2d calcContactHeights(const VehicleModel& model, const SimTK::State& s) {
+  model.getSystem().realize(s, SimTK::Stage::Position);
+  Eigen::Vector2d z;
+  int k = 0;
+  for (const auto* w : {&model.getRearWheel(), &model.getFrontWheel()}) {
+    const WheelSpec& spec = k == 0 ? model.getScenario().rearWheel : model.getScenario().frontWheel;
+    const SimTK::Transform& X_GW = w->getBodyTransform(s);
+    z[k++] = X_GW.p()[2] + calcTorusContact(X_GW.R(), SimTK::Vec3(0), spec.radius, spec.crownRadius).r_CP_G[2];
+  }
+  return z;
+}
+
+// Moves height and pitch so that both tyres' lowest points are back at `target` (m): a roll step
+// otherwise lifts stiff tyres off the ground, where the residual has no gradient. Geometry only,
+// whatever the contact model; a few Newton steps with differenced 2 x 2 Jacobians.
+void restoreContactHeights(const VehicleModel& model, const Eigen::Vector2d& target, SimTK::State& s) {
+  const CoordinateIndices& ix = model.getIndices();
+  const int unknowns[2] = {ix.height, ix.pitch};
+  for (int it = 0; it < 4; ++it) {
+    const Eigen::Vector2d e = calcContactHeights(model, s) - target;
+    if (e.lpNorm<Eigen::Infinity>() < 1e-13) return;
+    Eigen::Matrix2d J;
+    for (int j = 0; j < 2; ++j) {
+      const double h = 1e-7, q0 = s.getQ()[unknowns[j]];
+      s.updQ()[unknowns[j]] = q0 + h;
+      J.col(j) = (calcContactHeights(model, s) - target - e) / h;
+      s.updQ()[unknowns[j]] = q0;
+    }
+    const Eigen::Vector2d dq = J.fullPivLu().solve(-e);
+    if (!dq.allFinite()) return;
+    for (int j = 0; j < 2; ++j) s.updQ()[unknowns[j]] += dq[j];
+  }
+}
+
 // A turn from `res` (a trim at another roll, or straight running: roll 0) to opt.roll, in roll steps of
 // at most opt.rollStep at `speed`, each started from the last two by linear extrapolation; then the
 // turn with opt's condition.
@@ -139,6 +174,8 @@ void continueTurn(const VehicleModel& model, double speed, const TrimOptions& op
   for (int k = 1; k <= n; ++k) {
     step.roll = from + (opt.roll - from) * k / n;
     SimTK::State& s = res.state;
+    const Eigen::Vector2d contactHeights = calcContactHeights(model, s);
+    s.updQ()[ix.roll] = step.roll;
     if (k >= 3) {
       for (size_t j = 0; j < unknowns.size(); ++j) fn.set(s, unknowns[j], 2 * last[j] - beforeLast[j]);
     } else if (k == 1 && !res.turn) {  // the point-mass turn: tan(roll) = -r V / g, steer ~ w r / V
@@ -146,6 +183,7 @@ void continueTurn(const VehicleModel& model, double speed, const TrimOptions& op
       s.updU()[ix.yaw] = r;
       s.updQ()[ix.steer] += model.getScenario().geometry.wheelbase * r / std::max(speed, 0.5);
     }
+    restoreContactHeights(model, contactHeights, s);
     res.unknownsPerSpeed.resize(0), res.unknownsCurvature.resize(0);
     try {
       solveTrim(model, speed, step, res, true);
