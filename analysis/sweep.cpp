@@ -178,7 +178,13 @@ class SweepRun {
 
   // A chain's first speed: a cold trim; the lead's is the reference.
   void linearizeFirst(const VehicleModel& m, size_t k, bool lead, TrimResult& work, LinearizeOptions& lo) {
-    work = calcTrim(m, out_.speeds[k], opt_.trim);
+    if (lead && opt_.warmStart) {
+      work = restoreTrim(m, *opt_.warmStart);
+      work.unknownsPerSpeed.resize(0), work.unknownsCurvature.resize(0), work.jacobianPerSpeed.resize(0, 0);
+      updTrim(m, out_.speeds[k], opt_.trim, work);
+    } else {
+      work = calcTrim(m, out_.speeds[k], opt_.trim);
+    }
     const bool isReference = lead && refReady_.valid();  // removeYaw automatic
     if (refReady_.valid() && !isReference) refReady_.get();
     out_.models[k] = linearizeInPlace(m, work, isReference ? opt_.linearize : fixed_.linearize);

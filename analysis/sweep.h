@@ -39,6 +39,9 @@ struct SweepOptions {
   int threads = 1;
   /// Bracket the critical speeds (maps over roll do it after labelling across roll: updateCriticalSpeeds).
   bool findCriticalSpeeds = true;
+  /// A trim (of any roll: the step to trim.roll is a continuation) that starts the lead chain's first
+  /// speed instead of a cold trim, e.g. the neighbouring roll's trim at that speed in a map.
+  const TrimPoint* warmStart = nullptr;
 };
 
 /// A speed where a mode's real part changes sign.

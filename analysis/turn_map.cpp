@@ -10,14 +10,22 @@ TurnMapResult runTurnMap(const VehicleModel& model, const TurnMapOptions& opt) {
   if (opt.rolls.empty()) throw std::invalid_argument("runTurnMap: no roll angle");
   TurnMapResult map;
   map.rolls = opt.rolls;
+  const std::vector<double> speeds = makeSpeedGrid(opt.sweep.start, opt.sweep.stop, opt.sweep.step);
+  // The sweeps' lead chains start at the first speed of at least 1 m/s (at the first speed when none is).
+  const size_t atLeast1 = std::find_if(speeds.begin(), speeds.end(), [](double v) { return v >= 1.0; }) - speeds.begin();
+  const size_t first = atLeast1 < speeds.size() ? atLeast1 : 0;
   std::vector<SweepOptions> options;
   for (double roll : opt.rolls) {
     options.push_back(opt.sweep);
     options.back().trim.roll = roll;
     options.back().trim.condition = TurnCondition::Speed;
     options.back().findCriticalSpeeds = false;
+    // Each roll starts from its neighbour's trim at the first speed: one roll step, not a climb from upright.
+    if (!map.sweeps.empty() && map.sweeps.back().trims.size() == speeds.size())
+      options.back().warmStart = &map.sweeps.back().trims[first];
     map.sweeps.push_back(runSweep(model, options.back()));
   }
+  for (auto& o : options) o.warmStart = nullptr;
   trackModesAcrossRoll(map);
   for (size_t j = 0; j < map.rolls.size(); ++j) updateCriticalSpeeds(model, options[j], map.sweeps[j]);
   return map;
