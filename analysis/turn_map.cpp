@@ -20,6 +20,7 @@ TurnMapResult runTurnMap(const VehicleModel& model, const TurnMapOptions& opt) {
     options.back().trim.roll = roll;
     options.back().trim.condition = TurnCondition::Speed;
     options.back().findCriticalSpeeds = false;
+    options.back().criticalSpeedTolerance = opt.criticalSpeedTolerance;
     // Each roll starts from its neighbour's trim at the first speed: one roll step, not a climb from upright.
     if (!map.sweeps.empty() && map.sweeps.back().trims.size() == speeds.size())
       options.back().warmStart = &map.sweeps.back().trims[first];

@@ -10,6 +10,9 @@ namespace motostab {
 struct TurnMapOptions {
   SweepOptions sweep;          ///< speeds (all > 0), trim, linearisation, threads; trim.roll is set per roll
   std::vector<double> rolls;   ///< rad, ascending, each strictly inside (-89, 89) deg
+  /// m/s, of every roll's critical speeds (replaces sweep.criticalSpeedTolerance: a map brackets many
+  /// crossings, and Brent's method needs about three times the evaluations for 1e-9 as for 1e-6).
+  double criticalSpeedTolerance = 1e-6;
 };
 
 /// sweeps[j]: the sweep at rolls[j], every sweep over the same speeds, its branches labelled
