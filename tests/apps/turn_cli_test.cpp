@@ -6,6 +6,8 @@
 #include <filesystem>
 #include <fstream>
 #include <set>
+#include <sstream>
+#include <vector>
 
 #include "nlohmann/json.hpp"
 #include "tests/apps/run_motostab.h"
@@ -118,6 +120,59 @@ TEST(TurnCli, MapWritesEveryRollAndThePlots) {
   while (std::getline(in, line))
     if (line.find(",weave,") != std::string::npos) weaveRolls.insert(line.substr(0, line.find(',')));
   EXPECT_EQ(weaveRolls.size(), 3u) << "weave tracked at every roll";
+}
+
+// Values of one column of a CSV file (header row first), by name.
+std::vector<double> readColumn(const std::filesystem::path& file, const std::string& name) {
+  std::ifstream in(file);
+  std::string line, cell;
+  std::getline(in, line);
+  int index = -1, k = 0;
+  for (std::stringstream header(line); std::getline(header, cell, ','); ++k)
+    if (cell == name) index = k;
+  std::vector<double> out;
+  while (index >= 0 && std::getline(in, line)) {
+    std::stringstream row(line);
+    for (int j = 0; j <= index; ++j) std::getline(row, cell, ',');
+    out.push_back(std::stod(cell));
+  }
+  return out;
+}
+
+// Without a perturbation a simulation from a steady turn stays in it: the nonlinear model, integrated in
+// ground coordinates with the PI speed control holding the trim's speed, keeps roll, steer and yaw rate.
+TEST(TurnCli, SimulationFromASteadyTurnStaysInIt) {
+  const auto dir = makeTempDir("turn_cli_simulate");
+  std::string output;
+  ASSERT_EQ(test::runMotostab({"simulate", kScenarios + "enduro.yaml", "--speed", "25", "--roll-deg", "30", "--duration", "2",
+                               "--out", "s"},
+                              dir.string(), output),
+            0)
+      << output;
+  const auto roll = readColumn(dir / "s" / "timeseries.csv", "roll");
+  const auto yawRate = readColumn(dir / "s" / "timeseries.csv", "yaw_rate");
+  ASSERT_GT(roll.size(), 100u);
+  EXPECT_NEAR(roll.front(), 30 * M_PI / 180, 1e-12);
+  EXPECT_LT(yawRate.front(), 0);
+  for (size_t k = 0; k < roll.size(); ++k) {
+    EXPECT_NEAR(roll[k], roll.front(), 1e-5) << "sample " << k;
+    EXPECT_NEAR(yawRate[k], yawRate.front(), 1e-5) << "sample " << k;
+  }
+}
+
+TEST(TurnCli, StudyComparesSwingarmsAtARollAngle) {
+  const auto dir = makeTempDir("turn_cli_study");
+  std::string output;
+  ASSERT_EQ(test::runMotostab({"study", kScenarios + "supersport.yaml", "--roll-deg", "20", "--speeds", "5:40:1", "--out", "st"},
+                              dir.string(), output),
+            0)
+      << output;
+  std::ifstream in(dir / "st" / "report.md");
+  std::stringstream report;
+  report << in.rdbuf();
+  EXPECT_NE(report.str().find("steady turns at roll 20.0 deg"), std::string::npos) << report.str().substr(0, 600);
+  const Outcome zero = run("study_zero", {"study", kScenarios + "supersport.yaml", "--roll-deg", "20", "--speeds", "0:40:1"});
+  EXPECT_EQ(zero.code, 2) << zero.output;
 }
 
 }  // namespace
