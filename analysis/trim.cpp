@@ -152,8 +152,9 @@ void restoreContactHeights(const VehicleModel& model, const Eigen::Vector2d& tar
 }
 
 // A turn from `res` (a trim at another roll, or straight running: roll 0) to opt.roll, in roll steps of
-// at most opt.rollStep at `speed`, each started from the last two by linear extrapolation; then the
-// turn with opt's condition.
+// at most opt.rollStep at `speed`, each started from the last two by linear extrapolation (a failed step
+// is retried from the last roll reached with half the step, at most four times); then the turn with
+// opt's condition.
 void continueTurn(const VehicleModel& model, double speed, const TrimOptions& opt, TrimResult& res) {
   const StateFunction fn(model);
   const CoordinateIndices& ix = model.getIndices();
@@ -168,17 +169,25 @@ void continueTurn(const VehicleModel& model, double speed, const TrimOptions& op
   }
   TrimOptions step = opt;
   step.condition = TurnCondition::Speed;
-  const int n = std::max(1, static_cast<int>(std::ceil(std::abs(opt.roll - from) / opt.rollStep - 1e-9)));
+  const double full = opt.roll - from;
+  const int n = std::max(1, static_cast<int>(std::ceil(std::abs(full) / opt.rollStep - 1e-9)));
   const auto unknowns = getTrimUnknowns(model, step);
-  Eigen::VectorXd last, beforeLast;
-  for (int k = 1; k <= n; ++k) {
-    step.roll = from + (opt.roll - from) * k / n;
+  const bool fromStraight = !res.turn;
+  double h = full / n, done = 0, lastStep = 0;  // rad: the step, the roll stepped so far, the last step
+  int halvings = 0, steps = 0;
+  Eigen::VectorXd last, beforeLast;  // unknowns at the last two rolls reached
+  SimTK::State saved;
+  while (steps == 0 || std::abs(full - done) > 1e-15) {  // at least one trim as a turn (roll 0 too)
+    const double next = std::abs(full - done) <= std::abs(h) * (1 + 1e-9) ? full : done + h;
+    step.roll = from + next;
     SimTK::State& s = res.state;
+    saved = s;
     const Eigen::Vector2d contactHeights = calcContactHeights(model, s);
     s.updQ()[ix.roll] = step.roll;
-    if (k >= 3) {
-      for (size_t j = 0; j < unknowns.size(); ++j) fn.set(s, unknowns[j], 2 * last[j] - beforeLast[j]);
-    } else if (k == 1 && !res.turn) {  // the point-mass turn: tan(roll) = -r V / g, steer ~ w r / V
+    if (beforeLast.size() > 0) {  // linear extrapolation from the last two rolls
+      for (size_t j = 0; j < unknowns.size(); ++j)
+        fn.set(s, unknowns[j], last[j] + (last[j] - beforeLast[j]) * (next - done) / lastStep);
+    } else if (steps == 0 && fromStraight) {  // the point-mass turn: tan(roll) = -r V / g, steer ~ w r / V
       const double r = -model.getScenario().gravity * std::tan(step.roll) / std::max(speed, 0.5);
       s.updU()[ix.yaw] = r;
       s.updQ()[ix.steer] += model.getScenario().geometry.wheelbase * r / std::max(speed, 0.5);
@@ -188,14 +197,21 @@ void continueTurn(const VehicleModel& model, double speed, const TrimOptions& op
     try {
       solveTrim(model, speed, step, res, true);
     } catch (const TrimError& e) {
-      if (k == n) throw;
-      std::ostringstream os;
-      os << "stepping the roll up from " << from * 180 / M_PI << " deg: failed at " << step.roll * 180 / M_PI << " deg";
-      throw TrimError(speed, e.residual, res.iterations, opt.roll, os.str());
+      s = saved;  // back to the last roll reached, with half the step
+      if (++halvings > 4) {
+        std::ostringstream os;
+        os << "stepping the roll from " << from * 180 / M_PI << " deg: failed at " << step.roll * 180 / M_PI
+           << " deg with the step halved 4 times";
+        throw TrimError(speed, e.residual, res.iterations, opt.roll, os.str());
+      }
+      h /= 2;
+      res.jacobian.resize(0, 0);
+      continue;
     }
     beforeLast.swap(last);
     last.resize(unknowns.size());
     for (size_t j = 0; j < unknowns.size(); ++j) last[j] = fn.get(s, unknowns[j]);
+    lastStep = next - done, done = next, ++steps;
   }
   if (opt.condition != TurnCondition::Speed) solveTrim(model, speed, opt, res, true);
 }
