@@ -2,6 +2,7 @@
 // map outputs, and the exit codes of bad turn input (2) and of a trim that fails (1).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -173,6 +174,22 @@ TEST(TurnCli, StudyComparesSwingarmsAtARollAngle) {
   EXPECT_NE(report.str().find("steady turns at roll 20.0 deg"), std::string::npos) << report.str().substr(0, 600);
   const Outcome zero = run("study_zero", {"study", kScenarios + "supersport.yaml", "--roll-deg", "20", "--speeds", "0:40:1"});
   EXPECT_EQ(zero.code, 2) << zero.output;
+}
+
+TEST(TurnCli, LinearizeAboutATurnWritesTheHeadingFrameModel) {
+  const auto dir = makeTempDir("turn_cli_linearize");
+  std::string output;
+  ASSERT_EQ(test::runMotostab({"linearize", kScenarios + "enduro.yaml", "--speed", "30", "--roll-deg", "20", "--out", "l"},
+                              dir.string(), output),
+            0)
+      << output;
+  std::ifstream in(dir / "l" / "linear_model.json");
+  const nlohmann::json j = nlohmann::json::parse(in);
+  EXPECT_TRUE(j["heading_frame"].get<bool>());
+  EXPECT_NEAR(j["roll_rad"].get<double>(), 20 * M_PI / 180, 1e-15);
+  const auto states = j["states"].get<std::vector<std::string>>();
+  EXPECT_EQ(std::count(states.begin(), states.end(), "yaw"), 0) << "yaw is cyclic in the heading frame";
+  EXPECT_EQ(std::count(states.begin(), states.end(), "roll"), 1);
 }
 
 }  // namespace
