@@ -5,6 +5,7 @@
 #include <cmath>
 #include <sstream>
 
+#include "analysis/linearize.h"
 #include "analysis/trim.h"
 #include "scenario/scenario.h"
 
@@ -73,6 +74,38 @@ TEST(MotorcycleTurn, EnduroAndSupersportTrimAcrossRollAndSpeed) {
       }
     }
   }
+}
+
+// Every model extension at once (steer damper, fork bending and torsion, leaning rider, swingarm twist
+// compliance, rear suspension): the turn trims with no extension-specific code, and the zero-roll turn
+// keeps the eigenvalues of straight running to 1e-9.
+TEST(MotorcycleTurn, TurnsWorkWithEveryModelExtension) {
+  const VehicleModel model(loadScenario(
+      kScenarios + "enduro.yaml",
+      {"steer_damper={damping_Nms_per_rad: 5}",
+       "fork_compliance={stiffness_Nm_per_rad: 40000, damping_Nms_per_rad: 20, "
+       "torsion: {stiffness_Nm_per_rad: 60000, damping_Nms_per_rad: 10}}",
+       "rider_lean={hinge_height_m: 0.75, mass_kg: 40, com_m: [0.45, 0, 1.05], "
+       "inertia_kgm2: {xx: 2.0, yy: 2.1, zz: 0.7, xy: 0, xz: 0, yz: 0}, stiffness_Nm_per_rad: 2000, damping_Nms_per_rad: 60}",
+       "swingarm.compliance=twist", "swingarm.suspension={wheel_rate_N_per_m: 30000, damping_Ns_per_m: 1500}"}));
+  TrimOptions opt;
+  opt.roll = 35 * M_PI / 180;
+  const TrimResult t = calcTrim(model, 30, opt);
+  EXPECT_LT(t.residualNorm, 1e-10);
+  EXPECT_LT(calcTurnFigures(model, t.state).yawRate, 0);
+  opt.roll = 0;
+  const LinearModel inTurn = linearize(model, calcTrim(model, 30, opt));
+  const LinearModel upright = linearize(model, calcTrim(model, 30));
+  int compared = 0;
+  for (int i = 0; i < inTurn.eigenvalues.size(); ++i) {
+    if (std::abs(inTurn.eigenvalues[i]) < 1e-3) continue;
+    double best = INFINITY;
+    for (int j = 0; j < upright.eigenvalues.size(); ++j)
+      best = std::min(best, std::abs(inTurn.eigenvalues[i] - upright.eigenvalues[j]) / (1 + std::abs(inTurn.eigenvalues[i])));
+    EXPECT_LT(best, 1e-9) << inTurn.eigenvalues[i];
+    ++compared;
+  }
+  EXPECT_GT(compared, 20);
 }
 
 }  // namespace
