@@ -94,7 +94,8 @@ std::vector<int> proposeMirror(const ColumnGrouping& g) {
 
 }  // namespace
 
-Eigen::MatrixXd calcTrimJacobian(const VehicleModel& model, const LinearModel& lin, const Eigen::MatrixXd& previous) {
+Eigen::MatrixXd calcTrimJacobian(const VehicleModel& model, const LinearModel& lin, const Eigen::MatrixXd& previous,
+                                 const TrimOptions& trimOptions) {
   const SimTK::State& s = model.getDefaultState();
   const bool hasB = lin.B.cols() == kNumInputs;
   if (s.getNQErr() + s.getNUErr() > 0) return {};
@@ -104,10 +105,15 @@ Eigen::MatrixXd calcTrimJacobian(const VehicleModel& model, const LinearModel& l
       rows.push_back(lin.findState(name));
       if (rows.back() < 0) return {};
     }
-  const auto unknowns = getTrimUnknowns(model);
+  if (trimOptions.isTurn() != lin.headingFrame) return {};
+  const auto unknowns = getTrimUnknowns(model, trimOptions);
+  // A turn at a fixed speed has the speed equation as its last row, copied from `previous`.
+  const bool speedRow = trimOptions.isTurn() && trimOptions.condition == TurnCondition::Speed;
   const Eigen::Index nr = static_cast<Eigen::Index>(rows.size()), nx = static_cast<Eigen::Index>(unknowns.size());
-  if (!hasB && (previous.rows() != nr || previous.cols() != nx)) return {};
-  Eigen::MatrixXd J = Eigen::MatrixXd::Zero(nr, nx);
+  const bool previousFits = previous.rows() == nr + (speedRow ? 1 : 0) && previous.cols() == nx;
+  if ((!hasB || speedRow) && !previousFits) return {};
+  Eigen::MatrixXd J = Eigen::MatrixXd::Zero(nr + (speedRow ? 1 : 0), nx);
+  if (speedRow) J.row(nr) = previous.row(nr);
   for (size_t j = 0; j < unknowns.size(); ++j) {
     const StateEntry& e = unknowns[j];
     if (e.slot == Slot::Input) {
@@ -157,6 +163,8 @@ ColumnGrouping calcColumnGrouping(const std::vector<const LinearModel*>& samples
 LinearModel linearize(const VehicleModel& model, const TrimResult& trim, const LinearizeOptions& opt) {
   TrimResult work;
   work.speed = trim.speed;
+  work.turn = trim.turn;
+  work.roll = trim.roll;
   work.state = trim.state;
   return linearizeInPlace(model, work, opt);
 }
@@ -173,9 +181,24 @@ struct LinearizeContext {
   SimTK::State& s;
   const LinearizeOptions& opt;
   const int nq, nu, nz;
+  const bool turn;  ///< a steady turn: heading-frame velocities, yaw cyclic (addHeadingFrameTerms)
   const std::vector<int> cyclic;
-  LinearizeContext(const VehicleModel& m, SimTK::State& state, const LinearizeOptions& o)
-      : model(m), fn(m), s(state), opt(o), nq(m.getNumQ()), nu(m.getNumU()), nz(m.getNumZ()), cyclic(m.getCyclicQ()) {}
+  double yawRate = 0, vx = 0, vy = 0, ax = 0, ay = 0;  ///< the trim's r, xdot, ydot, xddot, yddot
+  LinearizeContext(const VehicleModel& m, SimTK::State& state, const LinearizeOptions& o, bool isTurn = false)
+      : model(m), fn(m), s(state), opt(o), nq(m.getNumQ()), nu(m.getNumU()), nz(m.getNumZ()), turn(isTurn),
+        cyclic(makeCyclic(m, isTurn)) {
+    if (!turn) return;
+    const CoordinateIndices& ix = m.getIndices();
+    Eigen::VectorXd ydot;
+    fn.calcYDot(s, ydot);
+    yawRate = s.getU()[ix.yaw], vx = s.getU()[ix.x], vy = s.getU()[ix.y];
+    ax = ydot[nq + ix.x], ay = ydot[nq + ix.y];
+  }
+  static std::vector<int> makeCyclic(const VehicleModel& m, bool isTurn) {
+    std::vector<int> out = m.getCyclicQ();
+    if (isTurn) out.push_back(m.getIndices().yaw);
+    return out;
+  }
   double stepFor(const StateEntry& e) const { return opt.step * std::max(1.0, std::abs(fn.get(s, e))); }
   bool isCyclicQ(const StateEntry& e) const {
     return e.slot == Slot::Q && std::find(cyclic.begin(), cyclic.end(), e.index) != cyclic.end();
@@ -261,15 +284,51 @@ std::vector<LinearState> listIndependentStates(const LinearizeContext& c, const 
 
 // The perturbation along independent state `e` scaled by `scale`, with the dependent coordinates
 // moved to stay on the constraints.
+// In a turn, yaw in the heading frame turns the ground-frame velocity with it: d(xdot, ydot) =
+// (-ydot, xdot) dpsi (docs/cornering.md).
 void addDirection(const LinearizeContext& c, const ConstraintJacobian& cj, const TangentSpace& t, const StateEntry& e,
                   double scale, Direction& dir) {
+  const size_t first = dir.size();
   dir.push_back({e, scale});
+  const CoordinateIndices& ix = c.model.getIndices();
+  if (c.turn && e.slot == Slot::Q && e.index == ix.yaw)
+    dir.push_back({{Slot::U, ix.x}, -c.vy * scale}), dir.push_back({{Slot::U, ix.y}, c.vx * scale});
   if (e.slot == Slot::Z || cj.m == 0) return;
-  const Eigen::VectorXd dDep = t.GdepLU.solve(-cj.G.col(c.rowOf(e)));
+  Eigen::VectorXd g = Eigen::VectorXd::Zero(cj.m);
+  for (size_t k = first; k < dir.size(); ++k) g += dir[k].second * cj.G.col(c.rowOf(dir[k].first));
+  const Eigen::VectorXd dDep = t.GdepLU.solve(-g);
   for (size_t k = 0; k < t.depCols.size(); ++k) {
     const int col = t.depCols[k];
-    dir.push_back({{col < c.nq ? Slot::Q : Slot::U, col < c.nq ? col : col - c.nq}, scale * dDep[k]});
+    dir.push_back({{col < c.nq ? Slot::Q : Slot::U, col < c.nq ? col : col - c.nq}, dDep[k]});
   }
+}
+
+// The heading-frame velocity v_h = R(-psi) (xdot, ydot) obeys v_h' = R(-psi) a_G - r J v_h (J: +90 deg
+// about z); at psi = 0 its derivative along `dir` is the ground-frame one plus (docs/cornering.md)
+//   d(v_h')/d psi = -J a_G,  d(v_h')/d r = -J v_h,  d(v_h')/d v_h = -r J.
+void addHeadingFrameTerms(const LinearizeContext& c, const Direction& dir, Eigen::VectorXd& col) {
+  if (!c.turn) return;
+  const CoordinateIndices& ix = c.model.getIndices();
+  const int rowX = c.nq + ix.x, rowY = c.nq + ix.y;
+  double dPsi = 0, dR = 0, dVx = 0, dVy = 0;  // dVx, dVy: of the ground-frame velocity
+  for (const auto& [e, k] : dir) {
+    if (e.slot == Slot::Q && e.index == ix.yaw) dPsi += k;
+    if (e.slot != Slot::U) continue;
+    if (e.index == ix.yaw) dR += k;
+    if (e.index == ix.x) dVx += k;
+    if (e.index == ix.y) dVy += k;
+  }
+  // The heading-frame velocity's own change: the ground-frame one less the turn by dPsi.
+  const double dHx = dVx + c.vy * dPsi, dHy = dVy - c.vx * dPsi;
+  col[rowX] += c.ay * dPsi + c.vy * dR + c.yawRate * dHy;
+  col[rowY] += -c.ax * dPsi - c.vx * dR - c.yawRate * dHx;
+}
+
+// The derivative of ydot along `dir` (step h), in the heading frame in a turn.
+void differentiate(const LinearizeContext& c, SimTK::State& s, const Direction& dir, double h, Eigen::VectorXd& col) {
+  auto yDot = [&](const SimTK::State& st, Eigen::VectorXd& out) { c.fn.calcYDot(st, out); };
+  c.fn.calcDirectionalDerivative(s, dir, h, c.opt.order, yDot, col);
+  addHeadingFrameTerms(c, dir, col);
 }
 
 // Grouping pattern row (states, then removed states) -> lin.states index (-1 where lin lacks the
@@ -337,7 +396,7 @@ void differenceGroupedColumns(const LinearizeContext& c, const ConstraintJacobia
   const bool grouped = !grouping.groups.empty() &&
                        std::find(linearIndexOf.begin(), linearIndexOf.end(), -1) == linearIndexOf.end();
   if (!grouped) return;
-  const bool mirrored = grouping.useMirror && cj.m == 0 && isTrimSymmetric(c, grouping, lin, linearIndexOf);
+  const bool mirrored = grouping.useMirror && cj.m == 0 && !c.turn && isTrimSymmetric(c, grouping, lin, linearIndexOf);
   const Eigen::VectorXd rowMirror = mirrored ? calcRowMirror(c, grouping, lin, linearIndexOf) : Eigen::VectorXd();
   Eigen::VectorXd col;
   for (const auto& group : grouping.groups) {
@@ -346,7 +405,7 @@ void differenceGroupedColumns(const LinearizeContext& c, const ConstraintJacobia
       c.fn.calcDisplaced(c.s, dir, 1.0, yDot, col);
       col = (col - rowMirror.cwiseProduct(col)) / 2;
     } else {
-      c.fn.calcDirectionalDerivative(c.s, dir, 1.0, c.opt.order, yDot, col);  // sum of h_j times column j
+      differentiate(c, c.s, dir, 1.0, col);  // sum of h_j times column j
     }
     for (int g : group) {
       const int j = linearIndexOf[g];
@@ -364,7 +423,6 @@ Eigen::MatrixXd differenceColumns(const LinearizeContext& c, const ConstraintJac
                                   const LinearModel& lin) {
   const int n = static_cast<int>(lin.states.size());
   const int yaw = c.model.getIndices().yaw;
-  auto yDot = [&](const SimTK::State& st, Eigen::VectorXd& out) { c.fn.calcYDot(st, out); };
   Eigen::MatrixXd A(n, n);
   std::vector<bool> done(n, false);
   differenceGroupedColumns(c, cj, t, lin, A, done);
@@ -379,7 +437,7 @@ Eigen::MatrixXd differenceColumns(const LinearizeContext& c, const ConstraintJac
     }
     Direction dir;
     addDirection(c, cj, t, e, 1.0, dir);
-    c.fn.calcDirectionalDerivative(c.s, dir, c.stepFor(e), c.opt.order, yDot, col);
+    differentiate(c, c.s, dir, c.stepFor(e), col);
     for (int i = 0; i < n; ++i) A(i, j) = col[c.rowOf(lin.states[i].entry)];
   }
   return A;
@@ -411,7 +469,7 @@ std::vector<int> chooseRemovedStates(const LinearizeContext& c, const LinearMode
     const StateEntry& e = lin.states[j].entry;
     if (e.slot != Slot::Q) continue;
     if (c.isCyclicQ(e)) remove.push_back(j);
-    if (e.index == c.model.getIndices().yaw) yawCol = j;
+    else if (e.index == c.model.getIndices().yaw) yawCol = j;
   }
   if (yawCol >= 0) {
     double yawInfluence = 0;
@@ -585,11 +643,13 @@ bool checkMirrorSymmetry(const VehicleModel& model, TrimResult& trim, const Line
 }
 
 LinearModel linearizeInPlace(const VehicleModel& model, TrimResult& trim, const LinearizeOptions& opt) {
-  const LinearizeContext c(model, trim.state, opt);
+  const LinearizeContext c(model, trim.state, opt, trim.turn);
   const ConstraintJacobian cj = calcConstraintJacobian(c);
   const TangentSpace tangent = chooseTangentSpace(c, cj);
   LinearModel lin;
   lin.speed = trim.speed;
+  lin.roll = trim.turn ? trim.roll : 0.0;
+  lin.headingFrame = trim.turn;
   lin.states = listIndependentStates(c, tangent);
   const Eigen::MatrixXd A = differenceColumns(c, cj, tangent, lin);
   lin.inputNames = VehicleModel::getInputNames();

@@ -54,8 +54,14 @@ struct LinearState {
 
 /// x' = A x + B u about a trim, restricted to the constraint tangent space (simbody-notes:
 /// T = [I; -G_dep^-1 G_ind]) with the cyclic coordinates removed.
+///
+/// About a steady turn (TrimSummary::turn) the model is in the heading frame (docs/cornering.md): the
+/// states named after the rates of x and y are the rear wheel centre's velocity along and across the
+/// heading, and yaw is cyclic (removed like x and y).
 struct LinearModel {
   double speed = 0;  ///< m/s
+  double roll = 0;   ///< rad, the trim's roll (0 for straight running)
+  bool headingFrame = false;  ///< linearised about a steady turn
   std::vector<LinearState> states;
   std::vector<std::string> inputNames;  ///< steer_torque, drive_torque, roll_torque (N m)
   Eigen::MatrixXd A, B;
@@ -82,7 +88,10 @@ std::vector<int> chooseDependentColumns(const Eigen::MatrixXd& G, const std::vec
 /// coordinates are zero. Without B the input columns (M^-1 times a unit mobility force: configuration
 /// only, so nearly speed-independent) are copied from `previous`, a trim Jacobian of the same model.
 /// Empty when neither holds (then the trim differentiates).
-Eigen::MatrixXd calcTrimJacobian(const VehicleModel& model, const LinearModel& lin, const Eigen::MatrixXd& previous = {});
+/// About a turn (`trimOptions`, lin in the heading frame) the rows of the heading-frame velocities are
+/// the turn residual's, and the speed equation's row (TurnCondition::Speed) is copied from `previous`.
+Eigen::MatrixXd calcTrimJacobian(const VehicleModel& model, const LinearModel& lin, const Eigen::MatrixXd& previous = {},
+                                 const TrimOptions& trimOptions = {});
 
 /// The union sparsity pattern of `samples` (linear models with the same states; an entry counts if
 /// above `tolerance` times its row's largest: symmetry zeros come out below 1e-13, and a dropped

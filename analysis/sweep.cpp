@@ -178,7 +178,13 @@ class SweepRun {
 
   // A chain's first speed: a cold trim; the lead's is the reference.
   void linearizeFirst(const VehicleModel& m, size_t k, bool lead, TrimResult& work, LinearizeOptions& lo) {
-    work = calcTrim(m, out_.speeds[k], opt_.trim);
+    if (lead && opt_.warmStart) {
+      work = restoreTrim(m, *opt_.warmStart);
+      work.unknownsPerSpeed.resize(0), work.unknownsCurvature.resize(0), work.jacobianPerSpeed.resize(0, 0);
+      updTrim(m, out_.speeds[k], opt_.trim, work);
+    } else {
+      work = calcTrim(m, out_.speeds[k], opt_.trim);
+    }
     const bool isReference = lead && refReady_.valid();  // removeYaw automatic
     if (refReady_.valid() && !isReference) refReady_.get();
     out_.models[k] = linearizeInPlace(m, work, isReference ? opt_.linearize : fixed_.linearize);
@@ -195,7 +201,7 @@ class SweepRun {
   // unknown), and extrapolated along speed.
   void updateTrimJacobian(const VehicleModel& m, size_t k, size_t previous, size_t i, TrimResult& work,
                           Eigen::MatrixXd& lastJ) {
-    Eigen::MatrixXd J = calcTrimJacobian(m, out_.models[k], work.jacobian);
+    Eigen::MatrixXd J = calcTrimJacobian(m, out_.models[k], work.jacobian, opt_.trim);
     if (J.size() == 0) return;
     if (i > 0 && lastJ.rows() == J.rows() && lastJ.cols() == J.cols())
       work.jacobianPerSpeed = (J - lastJ) / (out_.speeds[k] - out_.speeds[previous]);
@@ -310,8 +316,16 @@ SweepResult runSweep(const VehicleModel& model, const SweepOptions& opt) {
   run.runChains();
   const SweepOptions fixed = run.getFixedOptions();
   SweepResult out = run.takeTrackedResult();
-  findCriticalSpeeds(model, opt, fixed, out, run.updReplicas());
+  if (opt.findCriticalSpeeds) findCriticalSpeeds(model, opt, fixed, out, run.updReplicas());
   return out;
+}
+
+void updateCriticalSpeeds(const VehicleModel& model, const SweepOptions& opt, SweepResult& sweep) {
+  SweepOptions fixed = opt;
+  if (!sweep.models.empty()) fixed.linearize.removeYaw = sweep.models.front().findState("yaw") < 0 ? 1 : 0;
+  sweep.criticalSpeeds.clear();
+  std::vector<std::unique_ptr<VehicleModel>> replicas;
+  findCriticalSpeeds(model, opt, fixed, sweep, replicas);
 }
 
 }  // namespace motostab

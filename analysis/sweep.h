@@ -37,6 +37,11 @@ struct SweepOptions {
   /// sweep's (and each other's) to the trim tolerance (eigenvalues within about 1e-8 relative),
   /// not bit for bit; threads = 1 is reproducible to the bit.
   int threads = 1;
+  /// Bracket the critical speeds (maps over roll do it after labelling across roll: updateCriticalSpeeds).
+  bool findCriticalSpeeds = true;
+  /// A trim (of any roll: the step to trim.roll is a continuation) that starts the lead chain's first
+  /// speed instead of a cold trim, e.g. the neighbouring roll's trim at that speed in a map.
+  const TrimPoint* warmStart = nullptr;
 };
 
 /// A speed where a mode's real part changes sign.
@@ -60,6 +65,10 @@ std::vector<double> makeSpeedGrid(double start, double stop, double step);
 /// Trims and linearises at every speed (each trim warm-started from the previous one), tracks and
 /// labels modes, and brackets every sign change of a labelled mode's real part to the tolerance.
 SweepResult runSweep(const VehicleModel& model, const SweepOptions& options);
+
+/// Recomputes sweep.criticalSpeeds from the branches' current labels (e.g. after trackModesAcrossRoll);
+/// `options` as the sweep was run with.
+void updateCriticalSpeeds(const VehicleModel& model, const SweepOptions& options, SweepResult& sweep);
 
 /// Real part of the eigenvalue continuing `branch` from sweep speed index k, at speed v (1/s).
 double calcBranchRealPart(const VehicleModel& model, const SweepResult& sweep, const ModeBranch& branch, size_t k,

@@ -1,22 +1,53 @@
 #pragma once
-// Steady straight running at a forward speed: Newton's method (Gauss-Newton for the
-// over-determined constrained case) with a backtracking line search.
+// Steady straight running at a forward speed, and steady turns at a roll angle: Newton's method
+// (Gauss-Newton for the over-determined constrained case) with a backtracking line search.
+//
+// Steady turn (docs/cornering.md): the heading is yaw psi = 0 at the instant; every body-fixed rate
+// is constant, so the roll, pitch, height, steer and compliance rates are zero, the yaw rate r is
+// constant and the ground-frame velocity (xdot, ydot) of the rear wheel centre turns at r:
+//   residual = [udot - (0, ..., xddot = -r ydot, yddot = r xdot, ...); zdot; qerr; uerr; V_P - V]
+// over the unknowns: the non-cyclic q but yaw and roll (fixed), the yaw rate, xdot, ydot, the wheel
+// spins, every z, and the steer and drive torques. V_P is the speed of the rear contact point
+// (calcTurnFigures) and V the requested speed; TurnCondition::Steer and ::SteerTorque replace the
+// speed equation by a fixed steer angle or steer torque, and the speed becomes an unknown.
 #include <Eigen/Dense>
+#include <cmath>
 #include <stdexcept>
+#include <string>
 
 #include "analysis/state_function.h"
 
 namespace motostab {
 
+/// What fixes a steady turn besides its roll angle.
+enum class TurnCondition {
+  Speed,        ///< the rear contact point's speed (the `speed` argument)
+  Steer,        ///< the steer angle TrimOptions::steer; speed and steer torque are solved
+  SteerTorque,  ///< the steer torque TrimOptions::steerTorque (0: hands-free); speed and steer solved
+};
+
 struct TrimOptions {
   double tolerance = 1e-11;   ///< on the residual's infinity norm (rad/s^2, m/s^2, m, m/s)
   int maxIterations = 40;
   double jacobianStep = 1e-6;
+  /// Steady turn at this roll angle (rad, > 0 leans right, |roll| < 89 deg); NaN: straight running.
+  double roll = NAN;
+  TurnCondition condition = TurnCondition::Speed;  ///< of a turn
+  double steer = 0;        ///< rad (> 0 left), fixed by TurnCondition::Steer
+  double steerTorque = 0;  ///< N m (> 0 turns the front frame left), fixed by TurnCondition::SteerTorque
+  /// Largest roll step (rad) of the continuation from upright that starts a turn trim without a warm
+  /// start at the same roll.
+  double rollStep = 0.0873;
+  bool isTurn() const { return std::isfinite(roll); }
 };
 
 /// A trim's figures and its warm-start data for the next speed, without the Simbody State.
 struct TrimSummary {
-  double speed = 0;           ///< m/s
+  /// m/s: straight running, the rear wheel centre's forward speed; a turn, the rear contact
+  /// point's speed along its path (calcTurnFigures).
+  double speed = 0;
+  double roll = NAN;          ///< rad, the roll of a turn; NaN for straight running
+  bool turn = false;          ///< a steady turn: linearize() works in the heading frame
   double residualNorm = 0;    ///< infinity norm of [udot; zdot; qerr; uerr]
   int iterations = 0;
   int jacobianEvaluations = 0;  ///< finite-difference Jacobians computed (2 realizations per unknown each)
@@ -48,18 +79,34 @@ struct TrimPoint : TrimSummary {
   Eigen::VectorXd inputs;
 };
 
-/// A trim that did not converge: names the speed and the residual.
+/// A trim that did not converge: names the speed, the roll (turns) and the residual.
 class TrimError : public std::runtime_error {
  public:
-  TrimError(double speed, double residual, int iterations);
-  double speed, residual;
+  /// `detail`, if any, is appended in parentheses (e.g. the continuation step that failed).
+  TrimError(double speed, double residual, int iterations, double roll = NAN, const std::string& detail = "");
+  double speed, residual, roll;
 };
 
-/// The trim unknowns: the non-cyclic q (yaw, roll, pitch, height, steer, compliance...), the wheel
-/// spin rates, every z, and the steer and drive torques.
+/// The trim unknowns of straight running: the non-cyclic q (yaw, roll, pitch, height, steer,
+/// compliance...), the wheel spin rates, every z, and the steer and drive torques.
 std::vector<StateEntry> getTrimUnknowns(const VehicleModel& model);
+/// The unknowns of the trim `options` ask for (straight running, or a turn: see the header comment).
+std::vector<StateEntry> getTrimUnknowns(const VehicleModel& model, const TrimOptions& options);
 
-/// Trims `model` at `speed` (m/s). `warmStart` (a trim at a nearby speed) speeds it up: its unknowns,
+/// Steady-turn figures of a state (realizes to Velocity). The rear contact point P is the lowest
+/// point of the rear tyre's toroid (calcTorusContact); its velocity is that of the rear-frame point
+/// at P, v_P = v_O + w x (P - O), so in a steady turn (w = r z) |v_P| = R r with R its path radius.
+struct TurnFigures {
+  double speed = 0;                  ///< |v_P| horizontal, m/s
+  double yawRate = 0;                ///< r, rad/s (> 0 turns left)
+  double pathRadius = INFINITY;      ///< |v_P| / |r|, m (infinite when r = 0)
+  double lateralAcceleration = 0;    ///< |v_P| r, m/s^2 (> 0 towards the left)
+};
+TurnFigures calcTurnFigures(const VehicleModel& model, const SimTK::State& state);
+
+/// Trims `model` at `speed` (m/s; with TurnCondition::Steer or ::SteerTorque the starting guess of
+/// the speed). A turn without a warm start at the same roll starts from straight running at `speed`
+/// and steps the roll up (options.rollStep) at that speed. `warmStart` (a trim at a nearby speed) speeds it up: its unknowns,
 /// extrapolated along its secant slope (and curvature), start the iteration, and its Jacobian is
 /// reused, extrapolated with jacobianPerSpeed when that is set. Throws TrimError on failure.
 TrimResult calcTrim(const VehicleModel& model, double speed, const TrimOptions& options = {},
@@ -69,6 +116,21 @@ TrimResult calcTrim(const VehicleModel& model, double speed, const TrimOptions& 
 /// and becomes the trim at `speed` (m/s). Throws TrimError on failure; `trim` then holds the last
 /// iterate and the Jacobian it used, without the predictor data (slopes, curvature).
 void updTrim(const VehicleModel& model, double speed, const TrimOptions& options, TrimResult& trim);
+
+/// No hands-free turn was found: the steer torque of the fixed-speed turns kept its sign over the speeds.
+class NoTurnError : public std::runtime_error {
+ public:
+  NoTurnError(double roll, double low, double high, double torqueLow, double torqueHigh);
+  double roll, low, high;  ///< rad; m/s, the speeds where turns were trimmed
+};
+
+/// The hands-free steady turn (steer torque options.steerTorque, normally 0) at roll options.roll:
+/// fixed-speed turns on `speeds` (m/s, ascending; trimmed from the top down, stopping below the first
+/// that fails) bracket a sign change of the steer torque, and TurnCondition::SteerTorque solves the
+/// turn from the bracket's linear interpolation. With several, the one nearest `preferredSpeed` (m/s;
+/// NaN: the lowest). Throws NoTurnError when none is bracketed, TrimError when the final trim fails.
+TrimResult calcHandsFreeTrim(const VehicleModel& model, const std::vector<double>& speeds, const TrimOptions& options,
+                             double preferredSpeed = NAN);
 
 /// The trim's summary, y and inputs.
 TrimPoint makeTrimPoint(const VehicleModel& model, const TrimResult& trim);

@@ -9,6 +9,7 @@
 
 #include "apps/commands.h"
 #include "apps/common_options.h"
+#include "io/input_error.h"
 #include "io/output_folder.h"
 #include "response/modes_json.h"
 #include "simulation/simulation_output.h"
@@ -19,7 +20,7 @@ namespace {
 struct SimulateArgs {
   std::string scenario, out, speedControl = "pi", integrator = "auto";
   std::vector<std::string> perturb, overrides;
-  double fallLimitDeg = 60;
+  double fallLimitDeg = 60, rollDeg = 0;
   bool identify = false;
   simulation::SimulationOptions options;
 };
@@ -53,7 +54,7 @@ nlohmann::json describeSettings(const SimulateArgs& a) {
           {"duration_s", o.duration},     {"output_step_s", o.outputStep},
           {"perturbations", a.perturb},   {"speed_control", a.speedControl},
           {"integrator", simulation::getIntegratorName(o.integrator)}, {"accuracy", o.accuracy},
-          {"fall_limit_deg", a.fallLimitDeg}};
+          {"fall_limit_deg", a.fallLimitDeg}, {"roll_deg", a.rollDeg}};
 }
 
 void runSimulate(SimulateArgs a) {
@@ -62,6 +63,10 @@ void runSimulate(SimulateArgs a) {
   o.speedControl = simulation::parseSpeedControl(a.speedControl);
   o.integrator = simulation::parseIntegratorKind(a.integrator);
   o.fallRollLimit = a.fallLimitDeg * M_PI / 180;
+  if (a.rollDeg != 0) {
+    if (!(o.speed > 0)) throw InputError({"command line", 0, 0, "--speed"}, "a steady turn (--roll-deg) needs a speed above 0 m/s");
+    o.trim.roll = a.rollDeg * M_PI / 180;
+  }
   const Scenario scenario = loadScenario(a.scenario, a.overrides);
   const std::filesystem::path target = a.out.empty() ? std::filesystem::path(scenario.name + "-simulation")
                                                        : std::filesystem::path(a.out);
@@ -120,6 +125,10 @@ void registerSimulateCommands(CLI::App& app) {
   cmd->add_option("--fall-limit", a->fallLimitDeg, "Roll angle that ends the run as a fall, deg")
       ->capture_default_str()
       ->check(makeNumberCheck(0, 180, true));
+  cmd->add_option("--roll-deg", a->rollDeg,
+                  "Start from the steady turn at this roll angle (deg, > 0 right; --speed is then the rear contact "
+                  "point's speed along its path)")
+      ->check(makeRollCheck());
   cmd->add_flag("--identify", a->identify, "Identify modes from roll and steer rate after the last pulse: modes.json");
   cmd->add_option("--set", a->overrides, "Override a scenario value, e.g. --set geometry.trail_m=0.1");
   cmd->callback([a]() { runSimulate(*a); });

@@ -4,15 +4,29 @@
 
 #include "apps/commands.h"
 #include "apps/common_options.h"
+#include "analysis/turn_map.h"
+#include "io/input_error.h"
 #include "io/output_folder.h"
+#include "output/map_output.h"
 #include "output/study_report.h"
 #include "output/sweep_output.h"
 
 namespace motostab::cli {
 
+namespace {
+
+// Turns need a positive speed: the slowest speed of a turn sweep or linearisation.
+void checkTurnSpeeds(double slowest, const std::string& key) {
+  if (slowest > 0) return;
+  throw InputError({"command line", 0, 0, key},
+                   "steady turns (--roll-deg) need speeds above 0 m/s: start the speed grid above 0, e.g. --speeds 1:40:1");
+}
+
+}  // namespace
+
 void registerStabilityCommands(CLI::App& app) {
   struct SweepArgs {
-    std::string scenario, speeds, out;
+    std::string scenario, speeds, out, roll;
     std::vector<std::string> overrides;
     int threads = 1;
   };
@@ -23,6 +37,9 @@ void registerStabilityCommands(CLI::App& app) {
       ->check(makeSpeedRangeCheck());
   sweep->add_option("--out", sweepArgs->out, "Output folder (default: named after the scenario)");
   sweep->add_option("--set", sweepArgs->overrides, "Override a scenario value, e.g. --set geometry.trail_m=0.1");
+  sweep->add_option("--roll-deg", sweepArgs->roll,
+                    "Steady turns at this roll angle (deg, > 0 right), or a speed x roll map over A:B:STEP")
+      ->check(makeRollAnglesCheck());
   sweep->add_option("--threads", sweepArgs->threads,
                     "Worker threads (2: about 1.8x faster; results then agree with one thread to the trim "
                     "tolerance, not to the bit)")
@@ -38,6 +55,24 @@ void registerStabilityCommands(CLI::App& app) {
     opt.step = scenario.speeds.step;
     if (!sweepArgs->speeds.empty()) parseSpeedRange(sweepArgs->speeds, opt.start, opt.stop, opt.step);
     opt.threads = sweepArgs->threads;
+    if (!sweepArgs->roll.empty()) {
+      checkTurnSpeeds(opt.start, sweepArgs->speeds.empty() ? "speeds_mps (the scenario's; override with --speeds)" : "--speeds");
+      const std::vector<double> rolls = parseRollAngles(sweepArgs->roll);
+      if (rolls.size() > 1) {
+        TurnMapOptions mo;
+        mo.sweep = opt;
+        mo.rolls = rolls;
+        const TurnMapResult map = runTurnMap(model, mo);
+        writeTurnMapOutputs(folder.getPath(), scenario.name, map);
+        folder.commit();
+        std::cout << "Scenario " << scenario.name << ": " << rolls.size() << " roll angles x "
+                  << map.sweeps.front().speeds.size() << " speeds\n"
+                  << formatTurnMapTable(map) << "Wrote " << out
+                  << "/{map.csv, map_summary.json, damping_map, root_loci, real_part_vs_speed (.gp/.png/.svg), roll_*/}\n";
+        return;
+      }
+      opt.trim.roll = rolls.front();
+    }
     const SweepResult result = runSweep(model, opt);
     writeSweepOutputs(folder.getPath(), scenario.name, result);
     folder.commit();
@@ -48,7 +83,7 @@ void registerStabilityCommands(CLI::App& app) {
 
   struct LinArgs {
     std::string scenario, out;
-    double speed = 0;
+    double speed = 0, rollDeg = NAN;
     std::vector<std::string> overrides;
   };
   auto linArgs = std::make_shared<LinArgs>();
@@ -57,11 +92,20 @@ void registerStabilityCommands(CLI::App& app) {
   lin->add_option("--speed", linArgs->speed, "Forward speed, m/s")->required()->check(makeNumberCheck(0, 1e3));
   lin->add_option("--out", linArgs->out, "Output folder")->required();
   lin->add_option("--set", linArgs->overrides, "Override a scenario value");
+  lin->add_option("--roll-deg", linArgs->rollDeg,
+                  "Linearise about the steady turn at this roll angle (deg, > 0 right); --speed is then the rear "
+                  "contact point's speed along its path")
+      ->check(makeRollCheck());
   lin->callback([linArgs]() {
     const Scenario scenario = loadScenario(linArgs->scenario, linArgs->overrides);
     OutputFolder folder(linArgs->out);
     const VehicleModel model(scenario);
-    const TrimResult trim = calcTrim(model, linArgs->speed);
+    TrimOptions trimOptions;
+    if (!std::isnan(linArgs->rollDeg)) {
+      checkTurnSpeeds(linArgs->speed, "--speed");
+      trimOptions.roll = linArgs->rollDeg * M_PI / 180;
+    }
+    const TrimResult trim = calcTrim(model, linArgs->speed, trimOptions);
     const LinearModel lm = linearize(model, trim);
     writeLinearModel(folder.getPath(), lm);
     folder.commit();
@@ -77,6 +121,7 @@ void registerStabilityCommands(CLI::App& app) {
     double stiffnessScale = 0.5, dampingScale = 1.0 / std::sqrt(2.0);
     std::vector<double> shapeSpeeds{10.0, 18.5, 30.0};
     int threads = 2;
+    double rollDeg = 0;
   };
   auto st = std::make_shared<StudyArgs>();
   CLI::App* study = app.add_subcommand("study", "Swingarm study of seed sec. 4: rigid/bending/torsion/twist sweeps, Figs. 9-12, report");
@@ -94,6 +139,8 @@ void registerStabilityCommands(CLI::App& app) {
       ->delimiter(',')
       ->check(makeNumberCheck(0, 1e3));
   study->add_option("--threads", st->threads, "Variants swept in parallel")->check(makeThreadsCheck());
+  study->add_option("--roll-deg", st->rollDeg, "Compare the variants about steady turns at this roll angle (deg)")
+      ->check(makeRollCheck());
   study->callback([st]() {
     const Scenario scenario = loadScenario(st->scenario, st->overrides);
     StudyOptions opt;
@@ -107,6 +154,10 @@ void registerStabilityCommands(CLI::App& app) {
     opt.shapeSpeeds = st->shapeSpeeds;
     opt.overrides = st->overrides;
     opt.threads = st->threads;
+    if (st->rollDeg != 0) {
+      checkTurnSpeeds(opt.sweep.start, st->speeds.empty() ? "speeds_mps (the scenario's; override with --speeds)" : "--speeds");
+      opt.sweep.trim.roll = st->rollDeg * M_PI / 180;
+    }
     const std::string out = st->out.empty() ? scenario.name + "-study" : st->out;
     OutputFolder folder(out);
     const StudyResult result = runStudy(st->scenario, opt);

@@ -6,6 +6,7 @@ namespace motostab::cli {
 
 void registerScenarioCommands(CLI::App& app);   ///< check, import (apps/cmd_scenario.cpp)
 void registerStabilityCommands(CLI::App& app);  ///< sweep, linearize (apps/cmd_stability.cpp)
+void registerTurnCommands(CLI::App& app);       ///< trim (apps/cmd_turn.cpp)
 void registerSimulateCommands(CLI::App& app);   ///< simulate (apps/cmd_simulate.cpp)
 void registerUncertaintyCommands(CLI::App& app);  ///< uncertainty (apps/cmd_uncertainty.cpp)
 void registerDiagnoseCommands(CLI::App& app);   ///< diagnose (apps/cmd_diagnose.cpp)

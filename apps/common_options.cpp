@@ -1,5 +1,6 @@
 #include "apps/common_options.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <sstream>
@@ -48,6 +49,55 @@ CLI::Validator makeSpeedRangeCheck() {
         return "";
       },
       "START:STOP:STEP");
+}
+
+namespace {
+constexpr double kMaxRollDeg = 89;
+bool isRollInRange(double deg) { return std::abs(deg) < kMaxRollDeg; }
+}  // namespace
+
+CLI::Validator makeRollCheck() {
+  return CLI::Validator(
+      [](std::string& text) -> std::string {
+        const auto v = parseFiniteNumber(text);
+        if (!v || !isRollInRange(*v))
+          return "'" + text + "' is not a roll angle strictly between -89 and 89 deg: give a smaller --roll-deg";
+        return "";
+      },
+      "deg in (-89, 89)");
+}
+
+std::vector<double> parseRollAngles(const std::string& text) {
+  std::vector<std::optional<double>> v;
+  std::stringstream ss(text);
+  std::string part;
+  while (std::getline(ss, part, ':')) v.push_back(parseFiniteNumber(part));
+  const bool allFinite = !v.empty() && std::all_of(v.begin(), v.end(), [](const auto& x) { return x.has_value(); });
+  std::vector<double> out;
+  if (allFinite && v.size() == 1 && isRollInRange(*v[0])) out.push_back(*v[0] * M_PI / 180);
+  if (allFinite && v.size() == 3 && isRollInRange(*v[0]) && isRollInRange(*v[1]) && *v[1] >= *v[0] && *v[2] > 0 &&
+      (*v[1] - *v[0]) / *v[2] <= 1000) {
+    const long n = static_cast<long>(std::floor((*v[1] - *v[0]) / *v[2] + 1e-9));
+    for (long i = 0; i <= n; ++i) out.push_back((*v[0] + i * *v[2]) * M_PI / 180);
+  }
+  if (out.empty())
+    throw InputError({"--roll-deg", 0, 0, text},
+                     "expected PHI or A:B:STEP in degrees, each strictly between -89 and 89, with B >= A, STEP > 0 "
+                     "and at most 1000 angles");
+  return out;
+}
+
+CLI::Validator makeRollAnglesCheck() {
+  return CLI::Validator(
+      [](std::string& text) -> std::string {
+        try {
+          parseRollAngles(text);
+        } catch (const InputError& e) {
+          return e.getReason() + " (got '" + text + "')";
+        }
+        return "";
+      },
+      "PHI or A:B:STEP (deg)");
 }
 
 CLI::Validator makeThreadsCheck() { return CLI::Range(1, 256); }

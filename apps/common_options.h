@@ -5,6 +5,7 @@
 #include <CLI/CLI.hpp>
 
 #include <string>
+#include <vector>
 
 namespace motostab::cli {
 
@@ -16,6 +17,14 @@ void parseSpeedRange(const std::string& text, double& start, double& stop, doubl
 CLI::Validator makeNumberCheck(double low, double high, bool excludeLow = false);
 /// A CLI11 check of "START:STOP:STEP" by parseSpeedRange.
 CLI::Validator makeSpeedRangeCheck();
+/// A CLI11 check of a roll angle in degrees: finite and strictly between -89 and 89.
+CLI::Validator makeRollCheck();
+/// Parses a roll angle "PHI" or a range "A:B:STEP" (deg; each strictly between -89 and 89, STEP > 0,
+/// B >= A, at most 1000 angles) into radians; throws InputError naming --roll-deg on bad input.
+std::vector<double> parseRollAngles(const std::string& text);
+/// A CLI11 check of parseRollAngles.
+CLI::Validator makeRollAnglesCheck();
+
 /// The worker-thread option range, 1..256.
 CLI::Validator makeThreadsCheck();
 

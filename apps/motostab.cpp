@@ -10,6 +10,7 @@ int main(int argc, char** argv) {
   app.require_subcommand(1);
   motostab::cli::registerScenarioCommands(app);
   motostab::cli::registerStabilityCommands(app);
+  motostab::cli::registerTurnCommands(app);
   motostab::cli::registerSimulateCommands(app);
   motostab::cli::registerUncertaintyCommands(app);
   motostab::cli::registerDiagnoseCommands(app);

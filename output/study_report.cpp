@@ -55,6 +55,9 @@ std::string makeStudyReport(const StudyResult& st, const StudyOptions& opt) {
        "against this model. Models: rigid swingarm and one compliance DOF about the bending, torsion or twist axis "
        "(seed Tables 2-5); 'halved' is the seed's Fig. 11 case (stiffness x"
     << fmt(opt.stiffnessScale, 2) << ", damping x" << fmt(opt.dampingScale, 4) << ").\n\n";
+  if (opt.sweep.trim.isTurn())
+    r << "Every sweep is about steady turns at roll " << fmt(opt.sweep.trim.roll * 180 / M_PI, 1)
+      << " deg (docs/cornering.md); the paper's figures are for straight running.\n\n";
   const StudyVariant* rigid = findVariant(st.nominal, "rigid");
   // Wobble: frequency range, stability, and the swingarm's effect on it.
   double fMin = INFINITY, fMax = 0, reMax = -INFINITY, wobbleShift = 0;

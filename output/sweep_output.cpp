@@ -165,6 +165,8 @@ void writeLinearModel(const std::filesystem::path& dir, const LinearModel& lin) 
   writeFileAtomically(dir / "eigenvectors.csv", vec.getText());
   nlohmann::json j;
   j["speed_mps"] = lin.speed;
+  j["roll_rad"] = lin.roll;
+  j["heading_frame"] = lin.headingFrame;  // about a steady turn: vx, vy along and across the heading
   j["states"] = names;
   j["inputs"] = lin.inputNames;
   auto rows = [](const Eigen::MatrixXd& M) {

@@ -26,7 +26,8 @@ nlohmann::json makeSweepSummary(const std::string& scenarioName, const SweepResu
 std::string formatSweepTable(const SweepResult& sweep, int rows = 11);
 
 /// DIR/A.csv, DIR/B.csv (named rows and columns), DIR/eigenvalues.csv, DIR/eigenvectors.csv and
-/// DIR/linear_model.json.
+/// DIR/linear_model.json (speed_mps, roll_rad, heading_frame: true about a steady turn, states, inputs,
+/// A, B, eigenvalues).
 void writeLinearModel(const std::filesystem::path& dir, const LinearModel& lin);
 
 }  // namespace motostab

@@ -386,7 +386,8 @@ SimulationResult runSimulation(const Scenario& scenario, PluginRegistry& registr
   const PerturbationForce* force = nullptr;
   ModelExtension extension = [&](BuildContext& ctx, const VehicleModel& m) {
     auto* impl = new PerturbationForce(ctx.forces, m, pulses, segmentStarts, control, opt.speedGainP * massRadius,
-                                       opt.speedGainI * massRadius, opt.speed);
+                                       opt.speedGainI * massRadius,
+                                       trim.turn ? calcHeadingSpeed(trimModel, trim.state) : opt.speed);
     SimTK::Force::Custom(ctx.forces, impl);  // the subsystem owns impl
     force = impl;
     return control ? std::vector<std::string>{"speed_control_integral"} : std::vector<std::string>{};

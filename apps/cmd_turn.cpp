@@ -1,0 +1,69 @@
+// motostab trim: scenario -> model -> steady turn (or straight running) -> trim.json and a table.
+#include <cmath>
+#include <iostream>
+
+#include "apps/commands.h"
+#include "analysis/sweep.h"
+#include "apps/common_options.h"
+#include "io/input_error.h"
+#include "io/output_folder.h"
+#include "output/turn_output.h"
+
+namespace motostab::cli {
+
+void registerTurnCommands(CLI::App& app) {
+  struct TrimArgs {
+    std::string scenario, out, speeds;
+    double speed = NAN, rollDeg = 0;
+    bool handsFree = false;
+    std::vector<std::string> overrides;
+  };
+  auto a = std::make_shared<TrimArgs>();
+  CLI::App* trim = app.add_subcommand("trim", "Steady turn at a speed and roll angle: steer, pitch, steer torque, tyre forces");
+  trim->add_option("scenario", a->scenario, "Scenario YAML file")->required()->check(CLI::ExistingFile);
+  trim->add_option("--speed", a->speed,
+                   "Speed of the rear contact point along its path, m/s (with --hands-free: the preferred speed)")
+      ->check(makeNumberCheck(0, 1e3, true));
+  trim->add_option("--roll-deg", a->rollDeg, "Roll angle, deg (> 0 leans right), strictly between -89 and 89")
+      ->check(makeRollCheck());
+  trim->add_flag("--hands-free", a->handsFree,
+                 "Zero steer torque: the speed is solved, searched over --speeds (default: the scenario's speeds_mps)");
+  trim->add_option("--speeds", a->speeds, "START:STOP:STEP in m/s, the hands-free search range")->check(makeSpeedRangeCheck());
+  trim->add_option("--out", a->out, "Output folder (default: SCENARIO-trim)");
+  trim->add_option("--set", a->overrides, "Override a scenario value, e.g. --set geometry.trail_m=0.1");
+  trim->callback([a]() {
+    if (!a->handsFree && std::isnan(a->speed))
+      throw InputError({"command line", 0, 0, "--speed"}, "required unless --hands-free: give the turn's speed in m/s");
+    const Scenario scenario = loadScenario(a->scenario, a->overrides);
+    const std::string out = a->out.empty() ? scenario.name + "-trim" : a->out;
+    OutputFolder folder(out);
+    const VehicleModel model(scenario);
+    TrimOptions opt;
+    opt.roll = a->rollDeg * M_PI / 180;
+    TrimResult trim;
+    if (a->handsFree) {
+      double start = scenario.speeds.start, stop = scenario.speeds.stop, step = scenario.speeds.step;
+      if (!a->speeds.empty()) parseSpeedRange(a->speeds, start, stop, step);
+      std::vector<double> speeds;
+      for (double v : makeSpeedGrid(start, stop, step))
+        if (v > 0) speeds.push_back(v);
+      if (speeds.size() < 2 || a->rollDeg == 0)
+        throw InputError({"command line", 0, 0, a->rollDeg == 0 ? "--roll-deg" : "--speeds"},
+                         "a hands-free turn needs a nonzero roll and at least two positive speeds to search");
+      try {
+        trim = calcHandsFreeTrim(model, speeds, opt, a->speed);
+      } catch (const NoTurnError& e) {
+        throw InputError({"command line", 0, 0, "--speeds"}, std::string(e.what()) + "; widen --speeds or change --roll-deg");
+      }
+    } else {
+      trim = calcTrim(model, a->speed, opt);
+    }
+    writeTrimJson(folder.getPath(), model, trim);
+    folder.commit();
+    std::cout << "Scenario " << scenario.name << ": steady turn at roll " << a->rollDeg << " deg"
+              << (a->handsFree ? ", hands-free" : "") << "\n"
+              << formatTrimTable(model, trim) << "Wrote " << out << "/trim.json\n";
+  });
+}
+
+}  // namespace motostab::cli

@@ -1,0 +1,159 @@
+#include "output/map_output.h"
+
+#include <cmath>
+#include <iomanip>
+#include <sstream>
+#include <vector>
+
+#include "io/atomic_file.h"
+#include "io/csv.h"
+#include "io/plot.h"
+#include "output/sweep_output.h"
+
+namespace motostab {
+
+namespace {
+
+const char* kMapModes[] = {"weave", "wobble"};
+
+double toDegrees(double rad) { return rad * 180 / M_PI; }
+
+// "roll_+05.0deg": a folder name per roll that sorts by angle.
+std::string makeRollFolder(double roll) {
+  std::ostringstream os;
+  os << "roll_" << std::showpos << std::fixed << std::setprecision(1) << std::internal << std::setfill('0') << std::setw(6)
+     << toDegrees(roll) << "deg";
+  return os.str();
+}
+
+// The eigenvalue of `label` at speed k: the branch member with the larger imaginary part (one of a
+// complex pair), or NaN when the sweep has no such branch.
+std::complex<double> findModeEigenvalue(const SweepResult& sweep, const std::string& label, size_t k) {
+  std::complex<double> best(NAN, NAN);
+  for (const auto& b : sweep.branches)
+    if (b.label == label && (std::isnan(best.real()) || b.eigenvalue[k].imag() > best.imag())) best = b.eigenvalue[k];
+  return best;
+}
+
+void writeModeBlocks(const TurnMapResult& map, const std::string& mode, const std::string& separator, std::ostream& os);
+
+// DIR/map_<mode>.dat: one block per roll (gnuplot `index`), rows speed roll_deg real imag freq damping;
+// DIR/grid_<mode>.dat the same as one data set of scans (single blank lines), for pm3d.
+void writeModeData(const std::filesystem::path& dir, const TurnMapResult& map, const std::string& mode) {
+  for (const char* kind : {"map_", "grid_"}) {
+    std::ostringstream os;
+    writeModeBlocks(map, mode, kind[0] == 'm' ? "\n\n" : "\n", os);
+    writeFileAtomically(dir / (kind + mode + ".dat"), os.str());
+  }
+}
+
+void writeModeBlocks(const TurnMapResult& map, const std::string& mode, const std::string& separator, std::ostream& os) {
+  os << std::setprecision(17) << "# speed_mps roll_deg real imag frequency_hz damping_ratio\n";
+  for (size_t j = 0; j < map.rolls.size(); ++j) {
+    const SweepResult& s = map.sweeps[j];
+    for (size_t k = 0; k < s.speeds.size(); ++k) {
+      const auto l = findModeEigenvalue(s, mode, k);
+      os << s.speeds[k] << " " << toDegrees(map.rolls[j]) << " " << l.real() << " " << l.imag() << " "
+         << calcFrequencyHz(l) << " " << calcDampingRatio(l) << "\n";
+    }
+    os << separator;
+  }
+}
+
+// A gnuplot `plot for` over the rolls of one mode's data file.
+std::string plotPerRoll(const TurnMapResult& map, const std::string& mode, const std::string& columns, bool first) {
+  std::ostringstream os;
+  os << (first ? "  plot " : ", \\\n       ") << "for [i=0:" << map.rolls.size() - 1 << "] 'map_" << mode
+     << ".dat' index i using " << columns << " with linespoints pt 7 ps 0.4 lc i+1 dt " << (first ? 1 : 2)
+     << " title sprintf('" << mode << " %+.1f deg', " << toDegrees(map.rolls.front()) << " + i * "
+     << (map.rolls.size() > 1 ? toDegrees(map.rolls[1] - map.rolls[0]) : 0.0) << ")";
+  return os.str();
+}
+
+void writeMapCsv(const std::filesystem::path& dir, const TurnMapResult& map) {
+  CsvWriter csv({"roll_deg", "speed_mps", "mode", "real", "imag", "frequency_hz", "damping_ratio"});
+  for (size_t j = 0; j < map.rolls.size(); ++j)
+    for (const auto& b : map.sweeps[j].branches)
+      for (size_t k = 0; k < map.sweeps[j].speeds.size(); ++k) {
+        const auto l = b.eigenvalue[k];
+        csv.beginRow().add(toDegrees(map.rolls[j])).add(map.sweeps[j].speeds[k]).add(b.label).add(l.real()).add(l.imag())
+            .add(calcFrequencyHz(l)).add(calcDampingRatio(l));
+      }
+  writeFileAtomically(dir / "map.csv", csv.getText());
+}
+
+}  // namespace
+
+// The plotted modes (weave, wobble) that some roll's sweep has.
+std::vector<std::string> listPresentModes(const TurnMapResult& map) {
+  std::vector<std::string> out;
+  for (const char* m : kMapModes) {
+    bool present = false;
+    for (const auto& s : map.sweeps)
+      for (const auto& b : s.branches) present = present || b.label == m;
+    if (present) out.push_back(m);
+  }
+  return out;
+}
+
+void writeTurnMapOutputs(const std::filesystem::path& dir, const std::string& name, const TurnMapResult& map) {
+  writeMapCsv(dir, map);
+  nlohmann::json summary;
+  summary["scenario"] = name;
+  summary["rolls"] = nlohmann::json::array();
+  for (size_t j = 0; j < map.rolls.size(); ++j) {
+    nlohmann::json r = makeSweepSummary(name, map.sweeps[j]);
+    r["roll_deg"] = toDegrees(map.rolls[j]);
+    r["folder"] = makeRollFolder(map.rolls[j]);
+    summary["rolls"].push_back(r);
+    writeSweepOutputs(dir / makeRollFolder(map.rolls[j]), name + ", roll " + makeRollFolder(map.rolls[j]).substr(5),
+                      map.sweeps[j]);
+  }
+  writeFileAtomically(dir / "map_summary.json", summary.dump(2) + "\n");
+  const std::vector<std::string> modes = listPresentModes(map);
+  for (const auto& m : modes) writeModeData(dir, map, m);
+  if (modes.empty()) return;  // nothing to plot
+  const std::string title = gnuplotQuote(name);
+  std::ostringstream damping;
+  damping << "  set multiplot layout 1," << modes.size() << " title 'Damping ratio over speed and roll: ' . " << title << "\n"
+          << "  set view map\n  set pm3d at b corners2color c1\n  set palette defined (-0.1 'red', 0 'white', 0.3 'blue')\n"
+          << "  set cbrange [-0.1:0.3]\n  set xlabel 'speed (m/s)'\n  set ylabel 'roll (deg)'\n  unset key\n";
+  for (const auto& m : modes)
+    damping << "  set title '" << m << "'\n  splot 'grid_" << m << ".dat' using 1:2:6 with pm3d\n";
+  damping << "  unset multiplot\n";
+  renderGnuplot(dir, "damping_map", damping.str());
+  const std::string common = "  set grid\n  set key outside right\n";
+  std::string loci, reals, which;
+  for (size_t i = 0; i < modes.size(); ++i) {
+    loci += plotPerRoll(map, modes[i], "3:5", i == 0);
+    reals += plotPerRoll(map, modes[i], "1:3", i == 0);
+    which += (i ? " and " : "") + modes[i] + (i ? " (dashed)" : " (solid)");
+  }
+  renderGnuplot(dir, "root_loci",
+                common + "  set title 'Root loci of " + which + " at each roll: ' . " + title +
+                    "\n  set xlabel 'real part (1/s)'\n  set ylabel 'frequency (Hz)'\n" + loci + "\n");
+  renderGnuplot(dir, "real_part_vs_speed",
+                common + "  set title 'Real part against speed per roll, " + which + ": ' . " + title +
+                    "\n  set xlabel 'speed (m/s)'\n  set ylabel 'real part (1/s)'\n  set xzeroaxis lt -1\n" + reals + "\n");
+}
+
+std::string formatTurnMapTable(const TurnMapResult& map) {
+  std::ostringstream os;
+  os << std::setw(10) << "roll (deg)" << std::setw(10) << "v (m/s)" << std::setw(16) << "weave zeta" << std::setw(16)
+     << "wobble zeta" << "\n";
+  for (size_t j = 0; j < map.rolls.size(); ++j) {
+    const SweepResult& s = map.sweeps[j];
+    const size_t stride = std::max<size_t>(1, (s.speeds.size() - 1) / 4);
+    for (size_t k = 0; k < s.speeds.size(); k += stride)
+      os << std::fixed << std::setprecision(1) << std::setw(10) << toDegrees(map.rolls[j]) << std::setprecision(2)
+         << std::setw(10) << s.speeds[k] << std::setprecision(4) << std::setw(16)
+         << calcDampingRatio(findModeEigenvalue(s, "weave", k)) << std::setw(16)
+         << calcDampingRatio(findModeEigenvalue(s, "wobble", k)) << "\n";
+    for (const auto& c : s.criticalSpeeds)
+      os << "    critical: " << c.mode << " " << std::setprecision(4) << c.speed << " m/s ("
+         << (c.stabilising ? "stabilising" : "destabilising") << ")\n";
+  }
+  return os.str();
+}
+
+}  // namespace motostab

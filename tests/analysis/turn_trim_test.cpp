@@ -1,0 +1,228 @@
+// Steady-turn trim (analysis/trim.h): the published Whipple steady turn (Peterson 2011), the force
+// and moment balance of a turn, and the zero-roll turn against straight running.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <fstream>
+#include <algorithm>
+#include <map>
+#include <sstream>
+
+#include "analysis/linearize.h"
+#include "analysis/trim.h"
+#include "io/portable_random.h"
+#include "scenario/scenario.h"
+#include "tyres/rolling_no_slip.h"
+
+namespace motostab {
+namespace {
+
+const std::string kWhipple = std::string(MOTOSTAB_SOURCE_DIR) + "/scenarios/whipple-benchmark.yaml";
+
+// quantity -> value of tests/data/reference-data/WhippleSteadyTurn/peterson2011_steady_turn.csv.
+std::map<std::string, double> readPeterson() {
+  std::ifstream in(std::string(MOTOSTAB_TEST_DATA_DIR) + "/reference-data/WhippleSteadyTurn/peterson2011_steady_turn.csv");
+  std::map<std::string, double> out;
+  std::string line;
+  while (std::getline(in, line)) {
+    if (line.empty() || line[0] == '#' || line.rfind("quantity", 0) == 0) continue;
+    const size_t comma = line.find(',');
+    const std::string value = line.substr(comma + 1);
+    if (value.find('j') == std::string::npos) out[line.substr(0, comma)] = std::stod(value);
+  }
+  return out;
+}
+
+// Peterson (2011), "Precise steady turning conditions" (UC Davis Sports Biomechanics Lab): the
+// benchmark bicycle (Meijaard et al. 2007) at lean 5 deg and steer 0.02499 rad, both to the right.
+// Conventions there: lean and steer positive right, steer torque positive right, pitch about the
+// rear frame's right-pointing axis (nose up) plus lambda = pi/10, speed = -front wheel rate x r_F.
+// Here: roll > 0 right, steer and steer torque > 0 left, pitch > 0 nose down.
+TEST(TurnTrim, ReproducesPetersonsWhippleSteadyTurn) {
+  const auto ref = readPeterson();
+  ASSERT_EQ(ref.size(), 6u);
+  const VehicleModel model(loadScenario(kWhipple));
+  TrimOptions opt;
+  opt.roll = ref.at("lean");
+  opt.condition = TurnCondition::Steer;
+  opt.steer = -ref.at("steer");
+  const TrimResult t = calcTrim(model, 5.0, opt);  // 5 m/s: the starting guess only
+  const CoordinateIndices& ix = model.getIndices();
+  const double pitch = -(ref.at("pitch_reported") - M_PI / 10);
+  const double frontSpeed = std::abs(t.state.getU()[ix.frontSpin]) * 0.35;
+  EXPECT_NEAR(t.state.getQ()[ix.pitch], pitch, 1e-9);
+  EXPECT_NEAR(model.getInput(t.state, Input::SteerTorque), -ref.at("steer_torque_Nm"), 1e-9);
+  EXPECT_NEAR(frontSpeed, ref.at("velocity_m_s"), 1e-9);
+  // motostab's wheel spin axis points left: forward rolling is a positive rate.
+  EXPECT_NEAR(t.state.getU()[ix.frontSpin], -ref.at("front_wheel_rate_rad_s"), 1e-9);
+  std::printf("Peterson 2011: pitch error %.3g rad, steer torque error %.3g N m, speed error %.3g m/s\n",
+              t.state.getQ()[ix.pitch] - pitch, model.getInput(t.state, Input::SteerTorque) + ref.at("steer_torque_Nm"),
+              frontSpeed - ref.at("velocity_m_s"));
+  // A right turn: negative yaw rate, the rear contact's speed = path radius x yaw rate.
+  const TurnFigures f = calcTurnFigures(model, t.state);
+  EXPECT_LT(f.yawRate, 0);
+  EXPECT_NEAR(f.speed, f.pathRadius * std::abs(f.yawRate), 1e-12);
+  EXPECT_DOUBLE_EQ(t.speed, f.speed);
+}
+
+
+// d'Alembert balance of a steady turn computed here from the trimmed pose alone: every body's centre
+// of mass on its circle about the turn centre c (a_i = -r^2 (p_i - c) horizontally), every angular
+// momentum turning with the heading (dH_i/dt = r z x H_i; the wheels are axisymmetric).
+struct TurnBalance {
+  SimTK::Vec3 inertialForce{0};  ///< sum m_i a_i, N: what the ground must supply horizontally
+  double momentAboutContactLine = 0;  ///< of gravity and the inertial forces and moments, N m
+  double scale = 0;           ///< sum |m_i g| |p_i - P_rear|, N m: the size of the terms
+};
+
+SimTK::Vec3 findContactPoint(const VehicleModel& model, const SimTK::State& s, const SimTK::MobilizedBody& wheel,
+                             const WheelSpec& spec) {
+  const SimTK::Transform& X_GW = wheel.getBodyTransform(s);
+  return X_GW.p() + calcTorusContact(X_GW.R(), SimTK::Vec3(0), spec.radius, spec.crownRadius).r_CP_G;
+}
+
+TurnBalance calcTurnBalance(const VehicleModel& model, const SimTK::State& s) {
+  model.getSystem().realize(s, SimTK::Stage::Velocity);
+  const CoordinateIndices& ix = model.getIndices();
+  const double r = s.getU()[ix.yaw], g = model.getScenario().gravity;
+  const SimTK::Vec3 z(0, 0, 1);
+  const SimTK::MobilizedBody& frame = model.getRearFrame();
+  const SimTK::Vec3 vO = frame.getBodyOriginVelocity(s), pO = frame.getBodyOriginLocation(s);
+  const SimTK::Vec3 centre = pO + (z % vO) / r;  // v_O = r z x (p_O - c)
+  const SimTK::Vec3 pR = findContactPoint(model, s, model.getRearWheel(), model.getScenario().rearWheel);
+  const SimTK::Vec3 pF = findContactPoint(model, s, model.getFrontWheel(), model.getScenario().frontWheel);
+  const SimTK::Vec3 line = (pF - pR) / (pF - pR).norm();
+  TurnBalance b;
+  const SimTK::SimbodyMatterSubsystem& matter = model.getMatter();
+  for (SimTK::MobilizedBodyIndex i(1); i < matter.getNumBodies(); ++i) {
+    const SimTK::MobilizedBody& body = matter.getMobilizedBody(i);
+    const SimTK::MassProperties& mp = body.getBodyMassProperties(s);
+    const double m = mp.getMass();
+    if (m == 0) continue;  // massless links (rear suspension) carry no load
+    const SimTK::Vec3 p = body.findStationLocationInGround(s, mp.getMassCenter());
+    SimTK::Vec3 rel = p - centre;
+    rel[2] = 0;
+    const SimTK::Vec3 a = -r * r * rel;
+    const SimTK::Rotation& R_GB = body.getBodyRotation(s);
+    const SimTK::Vec3 w = body.getBodyAngularVelocity(s);
+    const SimTK::Vec3 H = R_GB * (mp.calcCentralInertia() * (~R_GB * w));
+    const SimTK::Vec3 gravity(0, 0, -m * g);
+    b.inertialForce += m * a;
+    b.momentAboutContactLine += ~((p - pR) % (gravity - m * a) - r * (z % H)) * line;
+    b.scale += m * g * (p - pR).norm();
+  }
+  return b;
+}
+
+// The Whipple bicycle in random turns: the moment about the contact line of gravity and the inertial
+// loads vanishes (contact forces act on the line; steer and drive torques are internal), and with
+// rolling without slip nothing dissipates, so the drive torque is zero (energy balance).
+TEST(TurnTrim, WhippleTurnBalancesMomentsAboutTheContactLine) {
+  const VehicleModel model(loadScenario(kWhipple));
+  PortableRandom rng(20110428);
+  for (int k = 0; k < 4; ++k) {
+    TrimOptions opt;
+    opt.roll = rng.drawUniform(-0.7, 0.7);
+    const double v = rng.drawUniform(2.0, 9.0);
+    const TrimResult t = calcTrim(model, v, opt);
+    EXPECT_NEAR(calcTurnFigures(model, t.state).speed, v, 1e-10);
+    const TurnBalance b = calcTurnBalance(model, t.state);
+    EXPECT_LT(std::abs(b.momentAboutContactLine), 1e-9 * b.scale) << "roll " << opt.roll << ", v " << v;
+    EXPECT_NEAR(model.getInput(t.state, Input::DriveTorque), 0, 1e-9);
+    // Roll right turns right: negative yaw rate and lateral acceleration.
+    EXPECT_LT(calcTurnFigures(model, t.state).yawRate * opt.roll, 0);
+  }
+}
+
+// The enduro on relaxation tyres: the tyres' horizontal forces (their Fx, Fy along the wheel's
+// heading and the ground's lateral direction) equal the inertial force sum m_i a_i, i.e. m V^2 / R
+// body by body.
+TEST(TurnTrim, EnduroTyreForcesBalanceTheCentripetalForce) {
+  // Without aerodynamic drag, the only other horizontal force.
+  const VehicleModel model(loadScenario(std::string(MOTOSTAB_SOURCE_DIR) + "/scenarios/enduro.yaml",
+                                        {"aerodynamics.drag_area_m2=0"}));
+  PortableRandom rng(2001);
+  for (int k = 0; k < 2; ++k) {
+    TrimOptions opt;
+    opt.roll = rng.drawUniform(0.1, 0.7);
+    const double v = rng.drawUniform(10.0, 40.0);
+    const TrimResult t = calcTrim(model, v, opt);
+    const TurnBalance b = calcTurnBalance(model, t.state);
+    const auto names = model.getContactOutputNames();
+    const auto values = model.calcContactOutputs(t.state);
+    auto output = [&](const std::string& name) {
+      const auto it = std::find(names.begin(), names.end(), name);
+      EXPECT_NE(it, names.end()) << name;
+      return values[it - names.begin()];
+    };
+    SimTK::Vec3 tyres(0);
+    for (const auto& [wheel, prefix] : {std::pair{&model.getRearWheel(), "rear_tyre_"}, {&model.getFrontWheel(), "front_tyre_"}}) {
+      const SimTK::Vec3 n(0, 0, 1), a = wheel->getBodyRotation(t.state).y().asVec3();
+      SimTK::Vec3 eL = a % n;
+      eL /= eL.norm();
+      tyres += output(std::string(prefix) + "Fx_N") * eL + output(std::string(prefix) + "Fy_N") * (n % eL);
+    }
+    const double total = b.inertialForce.norm();
+    EXPECT_GT(total, 100.0);
+    EXPECT_LT((tyres - b.inertialForce).norm(), 1e-8 * total) << "roll " << opt.roll << ", v " << v;
+  }
+}
+
+// Hands-free turns of the Whipple bicycle tend, as the roll goes to zero, to straight running at the
+// capsize speed (Meijaard et al. 2007, Table 2: 6.02426201538837 m/s), where the upright linear model
+// has a zero eigenvalue; their steer/roll ratio tends to that of its null vector (lean and steer only,
+// rates zero). Both limits are approached as roll^2 (the turn is even in roll).
+TEST(TurnTrim, HandsFreeTurnsTendToTheCapsizeSpeed) {
+  const VehicleModel model(loadScenario(kWhipple));
+  const double capsizeSpeed = 6.02426201538837;
+  const LinearModel upright = linearize(model, calcTrim(model, capsizeSpeed));
+  // With the rates zero, A x = 0 reduces to the roll and steer accelerations' dependence on roll and
+  // steer: its 2 x 2 block is singular at the capsize speed (forward speed is a separate neutral state).
+  const int roll = upright.findState("roll"), steer = upright.findState("steer");
+  const int rollRate = upright.findState("roll_rate"), steerRate = upright.findState("steer_rate");
+  Eigen::Matrix2d K;
+  K << upright.A(rollRate, roll), upright.A(rollRate, steer), upright.A(steerRate, roll), upright.A(steerRate, steer);
+  const Eigen::JacobiSVD<Eigen::Matrix2d> svd(K, Eigen::ComputeFullV);
+  EXPECT_LT(svd.singularValues()[1], 1e-6 * svd.singularValues()[0]);
+  const double nullRatio = svd.matrixV()(1, 1) / svd.matrixV()(0, 1);
+  std::vector<double> speeds;
+  for (double v = 4; v <= 8.0001; v += 0.5) speeds.push_back(v);
+  double lastSpeedError = NAN, lastRatioError = NAN;
+  for (double phi : {0.04, 0.02, 0.01}) {
+    TrimOptions opt;
+    opt.roll = phi;
+    const TrimResult t = calcHandsFreeTrim(model, speeds, opt, 6.0);
+    EXPECT_EQ(model.getInput(t.state, Input::SteerTorque), 0.0);
+    const double ratio = t.state.getQ()[model.getIndices().steer] / phi;
+    const double speedError = t.speed - capsizeSpeed, ratioError = ratio - nullRatio;
+    std::printf("hands-free at roll %.3f rad: speed %.9f m/s (capsize %.9f), steer/roll %.9f (null vector %.9f)\n",
+                phi, t.speed, capsizeSpeed, ratio, nullRatio);
+    if (!std::isnan(lastSpeedError)) {  // halving the roll quarters the errors
+      EXPECT_NEAR(speedError / lastSpeedError, 0.25, 0.02);
+      EXPECT_NEAR(ratioError / lastRatioError, 0.25, 0.02);
+    }
+    lastSpeedError = speedError, lastRatioError = ratioError;
+  }
+  EXPECT_LT(std::abs(lastSpeedError), 1e-3);
+  EXPECT_LT(std::abs(lastRatioError), 1e-3 * std::abs(nullRatio));
+}
+
+// A failed turn names the speed and the requested roll.
+TEST(TurnTrim, FailureNamesSpeedAndRoll) {
+  const VehicleModel model(loadScenario(kWhipple));
+  TrimOptions opt;
+  opt.roll = 80 * M_PI / 180;
+  try {
+    calcTrim(model, 0.5, opt);
+    FAIL() << "a 0.5 m/s turn at 80 deg has no trim";
+  } catch (const TrimError& e) {
+    const std::string m = e.what();
+    EXPECT_NE(m.find("0.5 m/s"), std::string::npos) << m;
+    EXPECT_NE(m.find("roll 80 deg"), std::string::npos) << m;
+    EXPECT_NE(m.find("residual norm"), std::string::npos) << m;
+    EXPECT_DOUBLE_EQ(e.roll, opt.roll);
+  }
+}
+
+}  // namespace
+}  // namespace motostab
