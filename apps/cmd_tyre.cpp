@@ -65,6 +65,8 @@ void runTyre(const TyreArgs& a) {
             << "  camber stiffness    dFy/dgamma = " << formatNumber(law->calcCamberStiffness(a.fz), 6) << " N/rad\n"
             << "  slip stiffness      dFx/dkappa = " << formatNumber(law->calcLongitudinalStiffness(a.fz), 6) << " N\n"
             << "  relaxation length   sigma      = " << formatNumber(law->calcRelaxationLength(a.fz, camber, speed), 6) << " m\n"
+            << "  longitudinal relaxation length = " << formatNumber(law->calcLongitudinalRelaxationLength(a.fz), 6)
+            << " m (reported only)\n"
             << "Wrote " << (target / "forces.csv").string() << " (" << points.size() << " rows) and "
             << (target / "{fy,mz}_vs_slip.{png,svg,gp}").string() << "\n";
 }

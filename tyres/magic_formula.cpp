@@ -100,7 +100,7 @@ double magicCos(double B, double C, double E, double x) {
 struct Mf61 {
   double FNOMIN, R0, NOMPRES, LONGVL, VXLOW, pressure;
   double LFZO, LCX, LMUX, LEX, LKX, LHX, LVX, LCY, LMUY, LEY, LKY, LKYC, LKZC, LHY, LVY, LTR, LRES, LXAL, LYKA,
-      LVYKA, LS, LMX, LVMX, LMY, LSGAL;
+      LVYKA, LS, LMX, LVMX, LMY, LSGAL, LSGKP;
   double PCX1, PDX1, PDX2, PDX3, PEX1, PEX2, PEX3, PEX4, PKX1, PKX2, PKX3, PHX1, PHX2, PVX1, PVX2, PPX1, PPX2, PPX3,
       PPX4, RBX1, RBX2, RBX3, RCX1, REX1, REX2, RHX1;
   double PCY1, PDY1, PDY2, PDY3, PEY1, PEY2, PEY3, PEY4, PEY5, PKY1, PKY2, PKY3, PKY4, PKY5, PKY6, PKY7, PHY1, PHY2,
@@ -108,6 +108,7 @@ struct Mf61 {
       RVY1, RVY2, RVY3, RVY4, RVY5, RVY6;
   double PTY1 = 0, PTY2 = 0;                          ///< MF 5.2 relaxation (fallback, below)
   double CY0 = 0, PCFY1 = 0, PCFY2 = 0, PCFY3 = 0;    ///< lateral carcass stiffness, N/m (0: not given)
+  double CX0 = 0, PCFX1 = 0, PCFX2 = 0, PCFX3 = 0;    ///< longitudinal carcass stiffness, N/m (0: not given)
   double QBZ1, QBZ2, QBZ3, QBZ4, QBZ5, QBZ6, QBZ9, QBZ10, QCZ1, QDZ1, QDZ2, QDZ3, QDZ4, QDZ6, QDZ7, QDZ8, QDZ9, QDZ10,
       QDZ11, QEZ1, QEZ2, QEZ3, QEZ4, QEZ5, QHZ1, QHZ2, QHZ3, QHZ4, SSZ1, SSZ2, SSZ3, SSZ4, PPZ1, PPZ2;
   double QSX1, QSX2, QSX3, QSX4, QSX5, QSX6, QSX7, QSX8, QSX9, QSX10, QSX11, QSX12, QSX13, QSX14, PPMX1;
@@ -117,7 +118,7 @@ struct Mf61 {
 const std::vector<std::string> kMf61Scaling = {"LFZO", "LCX",  "LMUX", "LEX",  "LKX",  "LHX",   "LVX", "LCY",
                                                "LMUY", "LEY",  "LKY",  "LKYC", "LKZC", "LHY",   "LVY", "LTR",
                                                "LRES", "LXAL", "LYKA", "LVYKA", "LS",  "LMX",   "LVMX", "LMY",
-                                               "LSGAL"};
+                                               "LSGAL", "LSGKP"};
 
 Mf61 readMf61(const CoefficientSource& s, std::optional<double> pressure) {
   Mf61 c{};
@@ -165,6 +166,13 @@ Mf61 readMf61(const CoefficientSource& s, std::optional<double> pressure) {
     c.PTY2 = s.get("PTY2");
     if (!(c.PTY2 != 0)) s.fail("PTY2", "must be nonzero");
   }
+  if (s.find("LONGITUDINAL_STIFFNESS")) {
+    c.CX0 = s.get("LONGITUDINAL_STIFFNESS");
+    if (!(c.CX0 > 0)) s.fail("LONGITUDINAL_STIFFNESS", "must be positive");
+    c.PCFX1 = s.get("PCFX1", 0.0);
+    c.PCFX2 = s.get("PCFX2", 0.0);
+    c.PCFX3 = s.get("PCFX3", 0.0);
+  }
   // A mirrored (right-hand) fit would need the lateral signs flipped: not done, so refused.
   if (const auto side = s.findText("TYRESIDE")) {
     std::string v = *side;
@@ -177,7 +185,7 @@ Mf61 readMf61(const CoefficientSource& s, std::optional<double> pressure) {
       {"LVX", &c.LVX}, {"LCY", &c.LCY}, {"LMUY", &c.LMUY}, {"LEY", &c.LEY}, {"LKY", &c.LKY}, {"LKYC", &c.LKYC},
       {"LKZC", &c.LKZC}, {"LHY", &c.LHY}, {"LVY", &c.LVY}, {"LTR", &c.LTR}, {"LRES", &c.LRES}, {"LXAL", &c.LXAL},
       {"LYKA", &c.LYKA}, {"LVYKA", &c.LVYKA}, {"LS", &c.LS}, {"LMX", &c.LMX}, {"LVMX", &c.LVMX}, {"LMY", &c.LMY},
-      {"LSGAL", &c.LSGAL}};
+      {"LSGAL", &c.LSGAL}, {"LSGKP", &c.LSGKP}};
   for (auto& [name, field] : scaling) *field = s.getScaling(name);
   c.pressure = pressure ? *pressure : s.get("INFLPRES", c.NOMPRES);
   if (!(c.FNOMIN > 0)) s.fail("FNOMIN", "must be positive");
@@ -278,6 +286,14 @@ class MagicFormula61 : public TyreForceLaw {
       return c_.PTY1 * std::sin(2 * std::atan(Fz / (c_.PTY2 * Fz0p_))) * (1 - c_.PKY3 * std::abs(g)) * c_.R0 * c_.LFZO *
              c_.LSGAL;
     return std::numeric_limits<double>::quiet_NaN();
+  }
+  // sigma_x = |K_xk / C_x|, C_x = LONGITUDINAL_STIFFNESS (1 + PCFX1 dfz + PCFX2 dfz^2)(1 + PCFX3 dpi)
+  // (Besselink et al. 2010, eqs. 17, 19), LSGKP applied; NaN without LONGITUDINAL_STIFFNESS.
+  double calcLongitudinalRelaxationLength(double Fz) const override {
+    if (!(c_.CX0 > 0)) return std::numeric_limits<double>::quiet_NaN();
+    const double dfz = (Fz - Fz0p_) / Fz0p_;
+    const double Cx = c_.CX0 * (1 + c_.PCFX1 * dfz + c_.PCFX2 * dfz * dfz) * (1 + c_.PCFX3 * dpi_);
+    return std::abs(calcKxk(Fz, dfz) / Cx) * c_.LSGKP;
   }
   double getNominalLoad() const override { return Fz0p_; }
   double getUnloadedRadius() const override { return c_.R0; }

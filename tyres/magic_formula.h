@@ -49,6 +49,9 @@ class TyreForceLaw {
   /// Lateral relaxation length (m) at load Fz (N), camber gamma (rad) and forward speed Vx (m/s); NaN
   /// if the law has none.
   virtual double calcRelaxationLength(double Fz, double gamma, double Vx) const = 0;
+  /// Longitudinal relaxation length (m) at load Fz (N); NaN if the law has none. Reported only (the
+  /// contact does not lag the slip ratio).
+  virtual double calcLongitudinalRelaxationLength(double) const { return std::numeric_limits<double>::quiet_NaN(); }
   /// Nominal load F_z0' (N) and unloaded radius R0 (m).
   virtual double getNominalLoad() const = 0;
   virtual double getUnloadedRadius() const = 0;

@@ -227,7 +227,9 @@ TEST(MagicFormula61, SlopesAtZeroAreTheClosedFormStiffnesses) {
 TEST(MagicFormula61, RelaxationLengthFromTheCarcassStiffness) {
   // MF 6.1/6.2: sigma_y = |K_ya/C_y|, C_y = LATERAL_STIFFNESS (1 + PCFY1 dfz + PCFY2 dfz^2)(1 + PCFY3 dpi)
   // (Besselink, Schmeitz & Pacejka 2010, eqs. 18-19). The sample has no carcass stiffness: add one.
-  const std::string text = readSample() + "\n[STRUCTURAL]\nLATERAL_STIFFNESS = 190000\nPCFY1 = 0.2\nPCFY2 = 0.05\nPCFY3 = 0.3\n";
+  const std::string text = readSample() +
+                           "\n[STRUCTURAL]\nLATERAL_STIFFNESS = 190000\nPCFY1 = 0.2\nPCFY2 = 0.05\nPCFY3 = 0.3\n"
+                           "LONGITUDINAL_STIFFNESS = 350000\nPCFX1 = 0.1\nPCFX2 = -0.02\nPCFX3 = 0.4\n";
   const TirFile f = TirFile::parse(text, "sample-structural.tir");
   PortableRandom rng(99);
   for (int i = 0; i < 20; ++i) {
@@ -237,10 +239,13 @@ TEST(MagicFormula61, RelaxationLengthFromTheCarcassStiffness) {
     const double dfz = book.dfz(Fz), dpi = book.dpi();
     const double Cy = 190000 * (1 + 0.2 * dfz + 0.05 * dfz * dfz) * (1 + 0.3 * dpi);
     EXPECT_NEAR(law->calcRelaxationLength(Fz, gamma, 20), std::abs(book.Kya(Fz, std::sin(gamma)) / Cy), 1e-12) << i;
+    const double Cx = 350000 * (1 + 0.1 * dfz - 0.02 * dfz * dfz) * (1 + 0.4 * dpi);
+    EXPECT_NEAR(law->calcLongitudinalRelaxationLength(Fz), book.Kxk(Fz) / Cx, 1e-12) << i;
   }
   // Without the carcass stiffness, MF 5.2's PTY1 sin(2 atan(Fz/(PTY2 Fz0))) R0 (sample: PTY1 = PTY2 = 1.8).
   const auto sample = makeTyreForceLaw(MagicFormulaVariant::MF61, *makeTirSource(TirFile::load(kSample), nullptr));
   EXPECT_NEAR(sample->calcRelaxationLength(4000, 0, 20), 1.8 * std::sin(2 * std::atan(1 / 1.8)) * 0.3135, 1e-15);
+  EXPECT_TRUE(std::isnan(sample->calcLongitudinalRelaxationLength(4000)));
   // Neither: no relaxation length of its own.
   const TirFile bare = sampleWithoutKeys({"PTY1", "PTY2"});
   EXPECT_TRUE(std::isnan(makeTyreForceLaw(MagicFormulaVariant::MF61, *makeTirSource(bare, nullptr))->calcRelaxationLength(4000, 0, 20)));
