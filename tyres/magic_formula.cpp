@@ -1,5 +1,6 @@
 #include "tyres/magic_formula.h"
 
+#include <array>
 #include <cctype>
 #include <cmath>
 #include <iostream>
@@ -120,6 +121,17 @@ const std::vector<std::string> kMf61Scaling = {"LFZO", "LCX",  "LMUX", "LEX",  "
                                                "LRES", "LXAL", "LYKA", "LVYKA", "LS",  "LMX",   "LVMX", "LMY",
                                                "LSGAL", "LSGKP"};
 
+// A carcass stiffness (N/m, positive) and its three load and pressure coefficients (0 when absent), if
+// the source has the stiffness (Besselink, Schmeitz & Pacejka 2010, eqs. 17-18).
+bool readCarcass(const CoefficientSource& s, const char* name, const std::array<const char*, 3>& names, double& stiffness,
+                 const std::array<double*, 3>& fields) {
+  if (!s.find(name)) return false;
+  stiffness = s.get(name);
+  if (!(stiffness > 0)) s.fail(name, "must be positive");
+  for (int i = 0; i < 3; ++i) *fields[i] = s.get(names[i], 0.0);
+  return true;
+}
+
 Mf61 readMf61(const CoefficientSource& s, std::optional<double> pressure) {
   Mf61 c{};
   std::vector<std::pair<const char*, double*>> required = {
@@ -155,24 +167,13 @@ Mf61 readMf61(const CoefficientSource& s, std::optional<double> pressure) {
     *field = s.get(name, 0.0);
   // Relaxation length: from the lateral carcass stiffness (MF 6.1/6.2) when the file gives it, else
   // from PTY1, PTY2 (the MF 5.2 form), else none (the scenario must give one).
-  if (s.find("LATERAL_STIFFNESS")) {
-    c.CY0 = s.get("LATERAL_STIFFNESS");
-    if (!(c.CY0 > 0)) s.fail("LATERAL_STIFFNESS", "must be positive");
-    c.PCFY1 = s.get("PCFY1", 0.0);
-    c.PCFY2 = s.get("PCFY2", 0.0);
-    c.PCFY3 = s.get("PCFY3", 0.0);
-  } else if (s.find("PTY1") || s.find("PTY2")) {
+  const bool hasCy = readCarcass(s, "LATERAL_STIFFNESS", {"PCFY1", "PCFY2", "PCFY3"}, c.CY0, {&c.PCFY1, &c.PCFY2, &c.PCFY3});
+  if (!hasCy && (s.find("PTY1") || s.find("PTY2"))) {
     c.PTY1 = s.get("PTY1");
     c.PTY2 = s.get("PTY2");
     if (!(c.PTY2 != 0)) s.fail("PTY2", "must be nonzero");
   }
-  if (s.find("LONGITUDINAL_STIFFNESS")) {
-    c.CX0 = s.get("LONGITUDINAL_STIFFNESS");
-    if (!(c.CX0 > 0)) s.fail("LONGITUDINAL_STIFFNESS", "must be positive");
-    c.PCFX1 = s.get("PCFX1", 0.0);
-    c.PCFX2 = s.get("PCFX2", 0.0);
-    c.PCFX3 = s.get("PCFX3", 0.0);
-  }
+  readCarcass(s, "LONGITUDINAL_STIFFNESS", {"PCFX1", "PCFX2", "PCFX3"}, c.CX0, {&c.PCFX1, &c.PCFX2, &c.PCFX3});
   // A mirrored (right-hand) fit would need the lateral signs flipped: not done, so refused.
   if (const auto side = s.findText("TYRESIDE")) {
     std::string v = *side;
