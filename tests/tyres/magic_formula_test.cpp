@@ -1,8 +1,9 @@
 // MF 6.1 and the motorcycle Magic Formula against their equations written out here from the
-// sources, at drawn operating points: Pacejka (2012), Tire and Vehicle Dynamics, 3rd ed., sec. 4.3.2
-// (eqs. 4.E1-4.E78), and Sharp, Evangelou & Limebeer (2004), Multibody Syst. Dyn. 12:251-283, sec. 4
-// (the forms in tyres/motorcycle_magic_formula.h). The slopes at zero slip must equal the closed-form
-// cornering, camber and slip stiffnesses.
+// published sources, at drawn operating points and drawn scaling factors: Pacejka (2012), Tire and
+// Vehicle Dynamics, 3rd ed., sec. 4.3.2 (eqs. 4.E1-4.E78) with MF-Tyre 6.1's QBZ4, QSX12-14 and carcass
+// stiffnesses (Besselink, Schmeitz & Pacejka 2010), and Sharp, Evangelou & Limebeer (2004), Multibody
+// Syst. Dyn. 12:251-283, sec. 4 with Evangelou (2004, PhD thesis) ch. 9 (coefficients Tables 9.1-9.3,
+// relaxation Table 9.5). The slopes at zero slip must equal the closed-form stiffnesses.
 #include <gtest/gtest.h>
 
 #include <cmath>
