@@ -40,8 +40,9 @@ std::vector<double> parseSlipRange(const std::string& text) {
 void runTyre(const TyreArgs& a) {
   const std::vector<double> slips = parseSlipRange(a.slipRange);
   const TirFile file = TirFile::load(a.file);
-  const auto law = makeTyreForceLaw(file.getFitType() == 62 ? MagicFormulaVariant::MF62 : MagicFormulaVariant::MF61,
-                                    *makeTirSource(file, nullptr));
+  const auto source = makeTirSource(file, nullptr);
+  const auto law = makeTyreForceLaw(file.getFitType() == 62 ? MagicFormulaVariant::MF62 : MagicFormulaVariant::MF61, *source);
+  warnUnused(*source, a.file, std::cerr);
   const double speed = std::isnan(a.speed) ? file.getNumber("LONGVL") : a.speed;
   const double camber = a.camberDeg * M_PI / 180;
   std::vector<TyreCurvePoint> points;
@@ -63,7 +64,9 @@ void runTyre(const TyreArgs& a) {
             << "  cornering stiffness dFy/dalpha = " << formatNumber(law->calcCorneringStiffness(a.fz), 6) << " N/rad\n"
             << "  camber stiffness    dFy/dgamma = " << formatNumber(law->calcCamberStiffness(a.fz), 6) << " N/rad\n"
             << "  slip stiffness      dFx/dkappa = " << formatNumber(law->calcLongitudinalStiffness(a.fz), 6) << " N\n"
-            << "  relaxation length   sigma      = " << formatNumber(law->calcRelaxationLength(a.fz, camber), 6) << " m\n"
+            << "  relaxation length   sigma      = " << formatNumber(law->calcRelaxationLength(a.fz, camber, speed), 6) << " m\n"
+            << "  longitudinal relaxation length = " << formatNumber(law->calcLongitudinalRelaxationLength(a.fz), 6)
+            << " m (reported only)\n"
             << "Wrote " << (target / "forces.csv").string() << " (" << points.size() << " rows) and "
             << (target / "{fy,mz}_vs_slip.{png,svg,gp}").string() << "\n";
 }

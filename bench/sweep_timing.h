@@ -16,10 +16,12 @@ inline double median(std::vector<double> v) {
   return v[v.size() / 2];
 }
 
-/// Wall time (s) of the 401-speed sweep of `model`; `states` gets the size of its A.
-inline double timeSweep401(const VehicleModel& model, size_t& states) {
+/// Wall time (s) of the 401-speed sweep of `model`; `states` gets the size of its A. `mirror`: the
+/// sweep's one-evaluation mirrored lateral columns (SweepOptions::mirrorLateralColumns) allowed.
+inline double timeSweep401(const VehicleModel& model, size_t& states, bool mirror = true) {
   SweepOptions opt;
   opt.start = 0, opt.stop = 40, opt.step = 0.1;
+  opt.mirrorLateralColumns = mirror;
   const auto t0 = std::chrono::steady_clock::now();
   auto r = runSweep(model, opt);
   benchmark::DoNotOptimize(r.criticalSpeeds.data());

@@ -1,6 +1,10 @@
 #include "tyres/magic_formula.h"
 
+#include <array>
+#include <cctype>
 #include <cmath>
+#include <iostream>
+#include <set>
 #include <vector>
 
 #include "tyres/motorcycle_magic_formula.h"
@@ -34,15 +38,36 @@ class TirSource : public CoefficientSource {
  public:
   TirSource(const TirFile& f, const std::map<std::string, double>* scaling) : CoefficientSource(scaling), f_(f) {}
   [[noreturn]] void fail(const std::string& name, const std::string& message) const override { f_.fail(name, message); }
+  std::optional<std::string> findText(const std::string& name) const override {
+    used_.insert(name);
+    const TirEntry* e = f_.find(name);
+    return e ? std::optional<std::string>(e->text) : std::nullopt;
+  }
+  // Sections of coefficients: not [MODEL], [DIMENSION], [OPERATING_CONDITIONS], [INERTIA] or the
+  // ..._RANGE sections (descriptions and validity ranges, not model coefficients).
+  std::vector<std::string> listUnused() const override {
+    std::vector<std::string> out;
+    for (const auto& [key, e] : f_.getEntries()) {
+      const std::string& sec = e.section;
+      const bool descriptive = sec == "MODEL" || sec == "DIMENSION" || sec == "OPERATING_CONDITIONS" || sec == "INERTIA" ||
+                               (sec.size() > 6 && sec.compare(sec.size() - 6, 6, "_RANGE") == 0);
+      if (descriptive || !e.isNumber || used_.count(key)) continue;
+      const bool scaling = sec == "SCALING_COEFFICIENTS";
+      if (scaling ? e.number != 1 : e.number != 0) out.push_back(key + " (line " + std::to_string(e.line) + ")");
+    }
+    return out;
+  }
 
  protected:
   std::optional<double> findOwn(const std::string& name) const override {
+    used_.insert(name);
     if (!f_.find(name)) return std::nullopt;
     return f_.getNumber(name);
   }
 
  private:
   const TirFile& f_;
+  mutable std::set<std::string> used_;  ///< keys asked for (upper-case)
 };
 
 class YamlSource : public CoefficientSource {
@@ -76,22 +101,36 @@ double magicCos(double B, double C, double E, double x) {
 struct Mf61 {
   double FNOMIN, R0, NOMPRES, LONGVL, VXLOW, pressure;
   double LFZO, LCX, LMUX, LEX, LKX, LHX, LVX, LCY, LMUY, LEY, LKY, LKYC, LKZC, LHY, LVY, LTR, LRES, LXAL, LYKA,
-      LVYKA, LS, LMX, LVMX, LMY, LSGAL;
+      LVYKA, LS, LMX, LVMX, LMY, LSGAL, LSGKP;
   double PCX1, PDX1, PDX2, PDX3, PEX1, PEX2, PEX3, PEX4, PKX1, PKX2, PKX3, PHX1, PHX2, PVX1, PVX2, PPX1, PPX2, PPX3,
       PPX4, RBX1, RBX2, RBX3, RCX1, REX1, REX2, RHX1;
   double PCY1, PDY1, PDY2, PDY3, PEY1, PEY2, PEY3, PEY4, PEY5, PKY1, PKY2, PKY3, PKY4, PKY5, PKY6, PKY7, PHY1, PHY2,
       PVY1, PVY2, PVY3, PVY4, PPY1, PPY2, PPY3, PPY4, PPY5, RBY1, RBY2, RBY3, RBY4, RCY1, REY1, REY2, RHY1, RHY2,
-      RVY1, RVY2, RVY3, RVY4, RVY5, RVY6, PTY1, PTY2;
-  double QBZ1, QBZ2, QBZ3, QBZ5, QBZ6, QBZ9, QBZ10, QCZ1, QDZ1, QDZ2, QDZ3, QDZ4, QDZ6, QDZ7, QDZ8, QDZ9, QDZ10,
+      RVY1, RVY2, RVY3, RVY4, RVY5, RVY6;
+  double PTY1 = 0, PTY2 = 0;                          ///< MF 5.2 relaxation (fallback, below)
+  double CY0 = 0, PCFY1 = 0, PCFY2 = 0, PCFY3 = 0;    ///< lateral carcass stiffness, N/m (0: not given)
+  double CX0 = 0, PCFX1 = 0, PCFX2 = 0, PCFX3 = 0;    ///< longitudinal carcass stiffness, N/m (0: not given)
+  double QBZ1, QBZ2, QBZ3, QBZ4, QBZ5, QBZ6, QBZ9, QBZ10, QCZ1, QDZ1, QDZ2, QDZ3, QDZ4, QDZ6, QDZ7, QDZ8, QDZ9, QDZ10,
       QDZ11, QEZ1, QEZ2, QEZ3, QEZ4, QEZ5, QHZ1, QHZ2, QHZ3, QHZ4, SSZ1, SSZ2, SSZ3, SSZ4, PPZ1, PPZ2;
-  double QSX1, QSX2, QSX3, QSX4, QSX5, QSX6, QSX7, QSX8, QSX9, QSX10, QSX11, PPMX1;
+  double QSX1, QSX2, QSX3, QSX4, QSX5, QSX6, QSX7, QSX8, QSX9, QSX10, QSX11, QSX12, QSX13, QSX14, PPMX1;
   double QSY1, QSY2, QSY3, QSY4, QSY5, QSY6, QSY7, QSY8;
 };
 
 const std::vector<std::string> kMf61Scaling = {"LFZO", "LCX",  "LMUX", "LEX",  "LKX",  "LHX",   "LVX", "LCY",
                                                "LMUY", "LEY",  "LKY",  "LKYC", "LKZC", "LHY",   "LVY", "LTR",
                                                "LRES", "LXAL", "LYKA", "LVYKA", "LS",  "LMX",   "LVMX", "LMY",
-                                               "LSGAL"};
+                                               "LSGAL", "LSGKP"};
+
+// A carcass stiffness (N/m, positive) and its three load and pressure coefficients (0 when absent), if
+// the source has the stiffness (Besselink, Schmeitz & Pacejka 2010, eqs. 17-18).
+bool readCarcass(const CoefficientSource& s, const char* name, const std::array<const char*, 3>& names, double& stiffness,
+                 const std::array<double*, 3>& fields) {
+  if (!s.find(name)) return false;
+  stiffness = s.get(name);
+  if (!(stiffness > 0)) s.fail(name, "must be positive");
+  for (int i = 0; i < 3; ++i) *fields[i] = s.get(names[i], 0.0);
+  return true;
+}
 
 Mf61 readMf61(const CoefficientSource& s, std::optional<double> pressure) {
   Mf61 c{};
@@ -109,8 +148,7 @@ Mf61 readMf61(const CoefficientSource& s, std::optional<double> pressure) {
       {"PPY3", &c.PPY3}, {"PPY4", &c.PPY4}, {"PPY5", &c.PPY5}, {"RBY1", &c.RBY1}, {"RBY2", &c.RBY2}, {"RBY3", &c.RBY3},
       {"RBY4", &c.RBY4}, {"RCY1", &c.RCY1}, {"REY1", &c.REY1}, {"REY2", &c.REY2}, {"RHY1", &c.RHY1}, {"RHY2", &c.RHY2},
       {"RVY1", &c.RVY1}, {"RVY2", &c.RVY2}, {"RVY3", &c.RVY3}, {"RVY4", &c.RVY4}, {"RVY5", &c.RVY5}, {"RVY6", &c.RVY6},
-      {"PTY1", &c.PTY1}, {"PTY2", &c.PTY2},
-      {"QBZ1", &c.QBZ1}, {"QBZ2", &c.QBZ2}, {"QBZ3", &c.QBZ3}, {"QBZ5", &c.QBZ5}, {"QBZ9", &c.QBZ9},
+      {"QBZ1", &c.QBZ1}, {"QBZ2", &c.QBZ2}, {"QBZ3", &c.QBZ3}, {"QBZ4", &c.QBZ4}, {"QBZ5", &c.QBZ5}, {"QBZ9", &c.QBZ9},
       {"QBZ10", &c.QBZ10}, {"QCZ1", &c.QCZ1}, {"QDZ1", &c.QDZ1}, {"QDZ2", &c.QDZ2}, {"QDZ3", &c.QDZ3}, {"QDZ4", &c.QDZ4},
       {"QDZ6", &c.QDZ6}, {"QDZ7", &c.QDZ7}, {"QDZ8", &c.QDZ8}, {"QDZ9", &c.QDZ9}, {"QDZ10", &c.QDZ10},
       {"QDZ11", &c.QDZ11}, {"QEZ1", &c.QEZ1}, {"QEZ2", &c.QEZ2}, {"QEZ3", &c.QEZ3}, {"QEZ4", &c.QEZ4},
@@ -121,17 +159,34 @@ Mf61 readMf61(const CoefficientSource& s, std::optional<double> pressure) {
       {"PPMX1", &c.PPMX1}, {"QSY1", &c.QSY1}, {"QSY2", &c.QSY2}, {"QSY3", &c.QSY3}, {"QSY4", &c.QSY4},
       {"QSY5", &c.QSY5}, {"QSY6", &c.QSY6}, {"QSY7", &c.QSY7}, {"QSY8", &c.QSY8}};
   for (auto& [name, field] : required) *field = s.get(name);
-  // QBZ6 (camber squared in the trail slope) is new in MF 6.1; files converted from MF 5.2 lack it.
-  c.QBZ6 = s.get("QBZ6", 0.0);
-  // MF 6.2's further overturning-moment terms are not implemented: they must be absent or zero.
-  for (const char* name : {"QSX12", "QSX13", "QSX14"})
-    if (s.get(name, 0.0) != 0.0) s.fail(name, "nonzero, but this reader does not implement this MF 6.2 term");
+  // Optional, 0 when absent: QBZ6 (camber squared in the trail slope, Pacejka 2012 eq. 4.E40; not a
+  // key of MF-Tyre files) and QSX12-14 (overturning moment, MF-Tyre 6.1; files converted from MF 5.2
+  // lack them).
+  for (auto [name, field] : {std::pair<const char*, double*>{"QBZ6", &c.QBZ6}, {"QSX12", &c.QSX12}, {"QSX13", &c.QSX13},
+                             {"QSX14", &c.QSX14}})
+    *field = s.get(name, 0.0);
+  // Relaxation length: from the lateral carcass stiffness (MF 6.1/6.2) when the file gives it, else
+  // from PTY1, PTY2 (the MF 5.2 form), else none (the scenario must give one).
+  const bool hasCy = readCarcass(s, "LATERAL_STIFFNESS", {"PCFY1", "PCFY2", "PCFY3"}, c.CY0, {&c.PCFY1, &c.PCFY2, &c.PCFY3});
+  if (!hasCy && (s.find("PTY1") || s.find("PTY2"))) {
+    c.PTY1 = s.get("PTY1");
+    c.PTY2 = s.get("PTY2");
+    if (!(c.PTY2 != 0)) s.fail("PTY2", "must be nonzero");
+  }
+  readCarcass(s, "LONGITUDINAL_STIFFNESS", {"PCFX1", "PCFX2", "PCFX3"}, c.CX0, {&c.PCFX1, &c.PCFX2, &c.PCFX3});
+  // A mirrored (right-hand) fit would need the lateral signs flipped: not done, so refused.
+  if (const auto side = s.findText("TYRESIDE")) {
+    std::string v = *side;
+    for (char& ch : v) ch = static_cast<char>(std::toupper(static_cast<unsigned char>(ch)));
+    if (v != "LEFT" && v != "SYMMETRIC")
+      s.fail("TYRESIDE", "'" + *side + "': only 'Left' or 'Symmetric' fits are supported (no mirroring is done)");
+  }
   std::vector<std::pair<const char*, double*>> scaling = {
       {"LFZO", &c.LFZO}, {"LCX", &c.LCX}, {"LMUX", &c.LMUX}, {"LEX", &c.LEX}, {"LKX", &c.LKX}, {"LHX", &c.LHX},
       {"LVX", &c.LVX}, {"LCY", &c.LCY}, {"LMUY", &c.LMUY}, {"LEY", &c.LEY}, {"LKY", &c.LKY}, {"LKYC", &c.LKYC},
       {"LKZC", &c.LKZC}, {"LHY", &c.LHY}, {"LVY", &c.LVY}, {"LTR", &c.LTR}, {"LRES", &c.LRES}, {"LXAL", &c.LXAL},
       {"LYKA", &c.LYKA}, {"LVYKA", &c.LVYKA}, {"LS", &c.LS}, {"LMX", &c.LMX}, {"LVMX", &c.LVMX}, {"LMY", &c.LMY},
-      {"LSGAL", &c.LSGAL}};
+      {"LSGAL", &c.LSGAL}, {"LSGKP", &c.LSGKP}};
   for (auto& [name, field] : scaling) *field = s.getScaling(name);
   c.pressure = pressure ? *pressure : s.get("INFLPRES", c.NOMPRES);
   if (!(c.FNOMIN > 0)) s.fail("FNOMIN", "must be positive");
@@ -146,92 +201,124 @@ Mf61 readMf61(const CoefficientSource& s, std::optional<double> pressure) {
 
 // MF 6.1/6.2 (Pacejka 2012 sec. 4.3.2), turn slip and speed-dependent friction left out (zeta = 1,
 // lambda*_mu = lambda_mu, lambda'_mu with A_mu = 10); equation numbers of the book in the comments.
+// Everything that depends on the coefficients and the pressure only is computed once, here.
 class MagicFormula61 : public TyreForceLaw {
  public:
-  explicit MagicFormula61(const Mf61& c) : c_(c), pressureFactorMy_(std::pow(c.pressure / c.NOMPRES, c.QSY8)) {}
+  explicit MagicFormula61(const Mf61& c) : c_(c) {
+    Fz0p_ = c.FNOMIN * c.LFZO;
+    const double dpi = (c.pressure - c.NOMPRES) / c.NOMPRES;
+    dpi_ = dpi;
+    const double A = 10;  // A_mu of 4.E8
+    lmuxPrime_ = A * c.LMUX / (1 + (A - 1) * c.LMUX);
+    lmuyPrime_ = A * c.LMUY / (1 + (A - 1) * c.LMUY);
+    pKya_ = c.PKY1 * Fz0p_ * (1 + c.PPY1 * dpi) * c.LKY;
+    pKyaPeak_ = 1 + c.PPY2 * dpi;
+    pKyg_ = (1 + c.PPY5 * dpi) * c.LKYC;
+    pKx_ = (1 + c.PPX1 * dpi + c.PPX2 * dpi * dpi) * c.LKX;
+    pMux_ = (1 + c.PPX3 * dpi + c.PPX4 * dpi * dpi) * c.LMUX;
+    pMuy_ = (1 + c.PPY3 * dpi + c.PPY4 * dpi * dpi) * c.LMUY;
+    pDt_ = (1 - c.PPZ1 * dpi) * c.LTR;
+    pDr_ = 1 + c.PPZ2 * dpi;
+    pMx_ = 1 + c.PPMX1 * dpi;
+    pMy_ = std::pow(c.pressure / c.NOMPRES, c.QSY8);
+    pCy_ = 1 + c.PCFY3 * dpi;
+  }
 
   TyreForces calcForces(const TyreSlip& in) const override {
-    Common k = makeCommon(in.Fz, in.gamma, in.alpha);
-    k.w = calcLowSpeedFactor(in.Vx);
-    const PureLateral py = calcPureLateral(k, in.Fz, k.gammaStar);
-    const double Kxk = calcKxk(k, in.Fz);
+    const Common k = makeCommon(in.Fz, in.gamma, in.alpha, in.Vx);
+    const double Fz = in.Fz, g = k.gammaStar, g2 = g * g, dfz = k.dfz;
+    const PureLateral py = calcPureLateral(k, Fz, g);
+    const double Kxk = calcKxk(Fz, dfz);
     // Longitudinal, pure (4.E9-4.E18) and combined (4.E50-4.E57).
     const double Cx = c_.PCX1 * c_.LCX;
-    const double mux = (c_.PDX1 + c_.PDX2 * k.dfz) * (1 + c_.PPX3 * k.dpi + c_.PPX4 * k.dpi * k.dpi) *
-                       (1 - c_.PDX3 * k.gammaStar * k.gammaStar) * c_.LMUX;
-    const double Dx = mux * in.Fz;
-    const double SHx = (c_.PHX1 + c_.PHX2 * k.dfz) * c_.LHX * k.w;
+    const double Dx = (c_.PDX1 + c_.PDX2 * dfz) * pMux_ * (1 - c_.PDX3 * g2) * Fz;
+    const double SHx = (c_.PHX1 + c_.PHX2 * dfz) * c_.LHX * k.w;
     const double kappax = in.kappa + SHx;
-    const double Ex = std::min(1.0, (c_.PEX1 + c_.PEX2 * k.dfz + c_.PEX3 * k.dfz * k.dfz) * (1 - c_.PEX4 * sgn(kappax)) * c_.LEX);
+    const double Ex = std::min(1.0, (c_.PEX1 + c_.PEX2 * dfz + c_.PEX3 * dfz * dfz) * (1 - c_.PEX4 * sgn(kappax)) * c_.LEX);
     const double Bx = Kxk / (Cx * Dx + kEps);
-    const double SVx = in.Fz * (c_.PVX1 + c_.PVX2 * k.dfz) * c_.LVX * k.lmuxPrime * k.w;
+    const double SVx = Fz * (c_.PVX1 + c_.PVX2 * dfz) * c_.LVX * lmuxPrime_ * k.w;
     const double Fx0 = magicSin(Bx, Cx, Dx, Ex, kappax) + SVx;
-    const double Bxa = (c_.RBX1 + c_.RBX3 * k.gammaStar * k.gammaStar) * cosAtan(c_.RBX2 * in.kappa) * c_.LXAL;
-    const double Cxa = c_.RCX1, Exa = std::min(1.0, c_.REX1 + c_.REX2 * k.dfz), SHxa = c_.RHX1;
+    const double Bxa = (c_.RBX1 + c_.RBX3 * g2) * cosAtan(c_.RBX2 * in.kappa) * c_.LXAL;
+    const double Cxa = c_.RCX1, Exa = std::min(1.0, c_.REX1 + c_.REX2 * dfz), SHxa = c_.RHX1;
     const double Gxa = magicCos(Bxa, Cxa, Exa, k.alphaStar + SHxa) / (SHxa == 0 ? 1.0 : magicCos(Bxa, Cxa, Exa, SHxa));
     TyreForces f;
     f.Fx = Gxa * Fx0;
     // Lateral, combined (4.E58-4.E67).
     const double Gyk = calcGyk(k, in.kappa);
-    f.Fy = calcCombinedSideForce(k, in, py, Gyk);
+    const double DVyk = py.muy * Fz * (c_.RVY1 + c_.RVY2 * dfz + c_.RVY3 * g) * cosAtan(c_.RVY4 * k.alphaStar);
+    const double SVyk = DVyk * std::sin(c_.RVY5 * std::atan(c_.RVY6 * in.kappa)) * c_.LVYKA;
+    f.Fy = Gyk * py.Fy0 + SVyk;
     // Aligning moment, combined (4.E71-4.E78, with the pure-slip parts 4.E31-4.E49).
-    f.Mz = calcAligning(k, in, py, Kxk, Gyk, f.Fx, f.Fy);
-    // Overturning moment (4.E69, MF 6.1 terms) and rolling resistance (4.E70).
-    const double Fz0p = k.Fz0p, R0 = c_.R0;
-    f.Mx = R0 * in.Fz * c_.LMX *
-           (c_.QSX1 * c_.LVMX * k.w - c_.QSX2 * k.gammaStar * (1 + c_.PPMX1 * k.dpi) + c_.QSX3 * f.Fy / Fz0p +
-            c_.QSX4 * std::cos(c_.QSX5 * std::atan(square(c_.QSX6 * in.Fz / Fz0p))) *
-                std::sin(c_.QSX7 * k.gammaStar + c_.QSX8 * std::atan(c_.QSX9 * f.Fy / Fz0p)) +
-            c_.QSX10 * std::atan(c_.QSX11 * in.Fz / Fz0p) * k.gammaStar);
+    f.Mz = calcAligning(k, Fz, in.kappa, py, Kxk, Gyk, f.Fx, f.Fy);
+    // Overturning moment: 4.E69 with MF-Tyre 6.1's bracketing of the QSX4-6 term and its QSX12-14 terms
+    // (Besselink, Schmeitz & Pacejka 2010, eq. 49), gamma* for gamma and Fz0' for Fz0 as in the rest.
+    const double R0 = c_.R0, FyN = f.Fy / Fz0p_, FzN = Fz / Fz0p_;
+    f.Mx = R0 * c_.LMX *
+           (Fz * (c_.QSX1 * c_.LVMX * k.w - c_.QSX2 * g * pMx_ + c_.QSX3 * FyN +
+                  c_.QSX4 * std::cos(c_.QSX5 * std::atan(square(c_.QSX6 * FzN))) *
+                      std::sin(c_.QSX7 * g + c_.QSX8 * std::atan(c_.QSX9 * FyN)) +
+                  c_.QSX10 * std::atan(c_.QSX11 * FzN) * g) +
+            f.Fy * (c_.QSX13 + c_.QSX14 * std::abs(g)) - Fz * c_.QSX12 * g * std::abs(g));
+    // Rolling resistance (4.E70), with sgn(Vx) so that it opposes the rolling either way.
     const double vr = in.Vx / c_.LONGVL;
-    f.My = in.Fz <= 0 ? 0.0
-                      : -R0 * Fz0p * c_.LMY * k.w *
-                            (c_.QSY1 + c_.QSY2 * f.Fx / Fz0p + c_.QSY3 * std::abs(vr) + c_.QSY4 * square(square(vr)) +
-                             (c_.QSY5 + c_.QSY6 * in.Fz / Fz0p) * k.gammaStar * k.gammaStar) *
-                            std::pow(in.Fz / Fz0p, c_.QSY7) * pressureFactorMy_;
+    f.My = Fz <= 0 ? 0.0
+                   : -R0 * Fz0p_ * c_.LMY * k.w * sgn(in.Vx) *
+                         (c_.QSY1 + c_.QSY2 * f.Fx / Fz0p_ + c_.QSY3 * std::abs(vr) + c_.QSY4 * square(square(vr)) +
+                          (c_.QSY5 + c_.QSY6 * FzN) * g2) *
+                         std::pow(FzN, c_.QSY7) * pMy_;
     return f;
   }
 
-  double calcCorneringStiffness(double Fz) const override { return calcKya(makeCommon(Fz, 0, 0), Fz, 0); }
-  double calcCamberStiffness(double Fz) const override {
-    const Common k = makeCommon(Fz, 0, 0);
-    return Fz * (c_.PKY6 + c_.PKY7 * k.dfz) * (1 + c_.PPY5 * k.dpi) * c_.LKYC;  // K_yg0 (4.E30)
+  double calcCorneringStiffness(double Fz) const override { return calcKya(Fz, 0); }
+  double calcCamberStiffness(double Fz) const override { return calcKyg0(Fz, (Fz - Fz0p_) / Fz0p_); }
+  double calcLongitudinalStiffness(double Fz) const override { return calcKxk(Fz, (Fz - Fz0p_) / Fz0p_); }
+  // MF 6.1/6.2: sigma_y = |K_ya / C_y| with C_y = LATERAL_STIFFNESS (1 + PCFY1 dfz + PCFY2 dfz^2)(1 + PCFY3 dpi)
+  // (Besselink, Schmeitz & Pacejka 2010, eqs. 18-19; Pacejka 2012 sec. 7.2). Files without the carcass
+  // stiffness but with PTY1, PTY2 get MF 5.2's PTY1 sin(2 atan(Fz/(PTY2 Fz0'))) (1 - PKY3 |gamma*|) R0 LFZO
+  // LSGAL (the MF-Tyre 5.2 manual); else NaN.
+  double calcRelaxationLength(double Fz, double gamma, double) const override {
+    const double g = std::sin(gamma);
+    if (c_.CY0 > 0) {
+      const double dfz = (Fz - Fz0p_) / Fz0p_;
+      const double Cy = c_.CY0 * (1 + c_.PCFY1 * dfz + c_.PCFY2 * dfz * dfz) * pCy_;
+      return std::abs(calcKya(Fz, g) / Cy) * c_.LSGAL;
+    }
+    if (c_.PTY2 != 0)
+      return c_.PTY1 * std::sin(2 * std::atan(Fz / (c_.PTY2 * Fz0p_))) * (1 - c_.PKY3 * std::abs(g)) * c_.R0 * c_.LFZO *
+             c_.LSGAL;
+    return std::numeric_limits<double>::quiet_NaN();
   }
-  double calcLongitudinalStiffness(double Fz) const override { return calcKxk(makeCommon(Fz, 0, 0), Fz); }
-  // sigma_alpha = PTY1 sin(2 atan(Fz/(PTY2 Fz0'))) (1 - PKY3 |gamma*|) R0 LFZO LSGAL (Pacejka 2012 sec. 7.2.2,
-  // MF-Tyre 6.1 form without the pressure term).
-  double calcRelaxationLength(double Fz, double gamma) const override {
-    const double Fz0p = c_.FNOMIN * c_.LFZO;
-    return c_.PTY1 * std::sin(2 * std::atan(Fz / (c_.PTY2 * Fz0p))) * (1 - c_.PKY3 * std::abs(std::sin(gamma))) * c_.R0 *
-           c_.LFZO * c_.LSGAL;
+  // sigma_x = |K_xk / C_x|, C_x = LONGITUDINAL_STIFFNESS (1 + PCFX1 dfz + PCFX2 dfz^2)(1 + PCFX3 dpi)
+  // (Besselink et al. 2010, eqs. 17, 19), LSGKP applied; NaN without LONGITUDINAL_STIFFNESS.
+  double calcLongitudinalRelaxationLength(double Fz) const override {
+    if (!(c_.CX0 > 0)) return std::numeric_limits<double>::quiet_NaN();
+    const double dfz = (Fz - Fz0p_) / Fz0p_;
+    const double Cx = c_.CX0 * (1 + c_.PCFX1 * dfz + c_.PCFX2 * dfz * dfz) * (1 + c_.PCFX3 * dpi_);
+    return std::abs(calcKxk(Fz, dfz) / Cx) * c_.LSGKP;
   }
-  double getNominalLoad() const override { return c_.FNOMIN * c_.LFZO; }
+  double getNominalLoad() const override { return Fz0p_; }
   double getUnloadedRadius() const override { return c_.R0; }
 
  private:
   static constexpr double kEps = 1e-12;  // the book's epsilon against 0/0 at zero load, N
 
   struct Common {
-    double Fz0p, dfz, dpi, alphaStar, gammaStar, cosAlpha, lmuxPrime, lmuyPrime;
+    double dfz, alphaStar, gammaStar, cosAlpha;
     double w = 1;  ///< low-speed factor of the forces at zero slip (calcLowSpeedFactor)
   };
-  // 4.E1-4.E8.
-  Common makeCommon(double Fz, double gamma, double alpha) const {
+  // 4.E1-4.E8 (the pressure and scaling parts are in the constructor).
+  Common makeCommon(double Fz, double gamma, double alpha, double Vx) const {
     Common k;
-    k.Fz0p = c_.FNOMIN * c_.LFZO;
-    k.dfz = (Fz - k.Fz0p) / k.Fz0p;
-    k.dpi = (c_.pressure - c_.NOMPRES) / c_.NOMPRES;
+    k.dfz = (Fz - Fz0p_) / Fz0p_;
     k.alphaStar = std::tan(alpha);
     k.gammaStar = std::sin(gamma);
     k.cosAlpha = cosAtan(k.alphaStar);  // cos(alpha), |alpha| < pi/2
-    const double A = 10;
-    k.lmuxPrime = A * c_.LMUX / (1 + (A - 1) * c_.LMUX);
-    k.lmuyPrime = A * c_.LMUY / (1 + (A - 1) * c_.LMUY);
+    k.w = calcLowSpeedFactor(Vx);
     return k;
   }
-  // The forces at zero slip (shifts SHx, SVx, SHy, SVy; residual torque QDZ6-7; overturning offset
-  // QSX1; rolling resistance) fade out below VXLOW as sin^2(pi/2 |Vx|/VXLOW): they have no meaning at
-  // standstill, where no slip can balance them (MF-Tyre's low-speed treatment in spirit, not its form).
+  // Not from the book: the forces at zero slip (SHx, SVx, SHy, SVy, the QDZ6-7 residual torque, the
+  // QSX1 overturning offset and the rolling resistance) fade out below VXLOW as sin^2(pi/2 |Vx|/VXLOW):
+  // at standstill no slip can balance them (MF-Tyre has a low-speed treatment of its own, not copied).
   double calcLowSpeedFactor(double Vx) const {
     const double v = std::abs(Vx) / c_.VXLOW;
     if (v >= 1) return 1;
@@ -239,28 +326,20 @@ class MagicFormula61 : public TyreForceLaw {
     return s * s;
   }
   // K_ya (4.E25) at camber gamma* = g.
-  double calcKya(const Common& k, double Fz, double g) const {
-    return c_.PKY1 * k.Fz0p * (1 + c_.PPY1 * k.dpi) * (1 - c_.PKY3 * std::abs(g)) *
-           std::sin(c_.PKY4 * std::atan((Fz / k.Fz0p) / ((c_.PKY2 + c_.PKY5 * g * g) * (1 + c_.PPY2 * k.dpi)))) * c_.LKY;
+  double calcKya(double Fz, double g) const {
+    return pKya_ * (1 - c_.PKY3 * std::abs(g)) *
+           std::sin(c_.PKY4 * std::atan((Fz / Fz0p_) / ((c_.PKY2 + c_.PKY5 * g * g) * pKyaPeak_)));
   }
+  // K_yg0 (4.E30).
+  double calcKyg0(double Fz, double dfz) const { return Fz * (c_.PKY6 + c_.PKY7 * dfz) * pKyg_; }
   // K_xk (4.E15).
-  double calcKxk(const Common& k, double Fz) const {
-    return Fz * (c_.PKX1 + c_.PKX2 * k.dfz) * std::exp(c_.PKX3 * k.dfz) * (1 + c_.PPX1 * k.dpi + c_.PPX2 * k.dpi * k.dpi) *
-           c_.LKX;
-  }
-  // G_yk (4.E58-4.E66 without the shift's vertical part).
+  double calcKxk(double Fz, double dfz) const { return Fz * (c_.PKX1 + c_.PKX2 * dfz) * std::exp(c_.PKX3 * dfz) * pKx_; }
+  // G_yk (4.E59-4.E66).
   double calcGyk(const Common& k, double kappa) const {
-    const double Byk = (c_.RBY1 + c_.RBY4 * k.gammaStar * k.gammaStar) * cosAtan(c_.RBY2 * (k.alphaStar - c_.RBY3)) * c_.LYKA;
+    const double Byk =
+        (c_.RBY1 + c_.RBY4 * k.gammaStar * k.gammaStar) * cosAtan(c_.RBY2 * (k.alphaStar - c_.RBY3)) * c_.LYKA;
     const double Cyk = c_.RCY1, Eyk = std::min(1.0, c_.REY1 + c_.REY2 * k.dfz), SHyk = c_.RHY1 + c_.RHY2 * k.dfz;
     return magicCos(Byk, Cyk, Eyk, kappa + SHyk) / (SHyk == 0 ? 1.0 : magicCos(Byk, Cyk, Eyk, SHyk));
-  }
-
-  struct PureLateral;
-  // Fy = Gyk Fy0 + SVyk (4.E58, 4.E67-4.E68).
-  double calcCombinedSideForce(const Common& k, const TyreSlip& in, const PureLateral& py, double Gyk) const {
-    const double DVyk = py.muy * in.Fz * (c_.RVY1 + c_.RVY2 * k.dfz + c_.RVY3 * k.gammaStar) * cosAtan(c_.RVY4 * k.alphaStar);
-    const double SVyk = DVyk * std::sin(c_.RVY5 * std::atan(c_.RVY6 * in.kappa)) * c_.LVYKA;
-    return Gyk * py.Fy0 + SVyk;
   }
 
   struct PureLateral {
@@ -269,51 +348,50 @@ class MagicFormula61 : public TyreForceLaw {
   // Pure side slip (4.E19-4.E30) at camber gamma* = g.
   PureLateral calcPureLateral(const Common& k, double Fz, double g) const {
     PureLateral p;
-    p.Kya = calcKya(k, Fz, g);
-    const double Kyg0 = Fz * (c_.PKY6 + c_.PKY7 * k.dfz) * (1 + c_.PPY5 * k.dpi) * c_.LKYC;
-    const double SVyg = Fz * (c_.PVY3 + c_.PVY4 * k.dfz) * g * c_.LKYC * k.lmuyPrime;
-    p.SVy = Fz * (c_.PVY1 + c_.PVY2 * k.dfz) * c_.LVY * k.lmuyPrime * k.w + SVyg;
-    p.SHy = (c_.PHY1 + c_.PHY2 * k.dfz) * c_.LHY * k.w + (Kyg0 * g - SVyg) / (p.Kya + kEps * sgnOr1(p.Kya));
+    const double dfz = k.dfz;
+    p.Kya = calcKya(Fz, g);
+    const double SVyg = Fz * (c_.PVY3 + c_.PVY4 * dfz) * g * c_.LKYC * lmuyPrime_;
+    p.SVy = Fz * (c_.PVY1 + c_.PVY2 * dfz) * c_.LVY * lmuyPrime_ * k.w + SVyg;
+    p.SHy = (c_.PHY1 + c_.PHY2 * dfz) * c_.LHY * k.w + (calcKyg0(Fz, dfz) * g - SVyg) / (p.Kya + kEps * sgnOr1(p.Kya));
     const double alphay = k.alphaStar + p.SHy;
     p.Cy = c_.PCY1 * c_.LCY;
-    p.muy = (c_.PDY1 + c_.PDY2 * k.dfz) * (1 + c_.PPY3 * k.dpi + c_.PPY4 * k.dpi * k.dpi) * (1 - c_.PDY3 * g * g) * c_.LMUY;
+    p.muy = (c_.PDY1 + c_.PDY2 * dfz) * pMuy_ * (1 - c_.PDY3 * g * g);
     const double Dy = p.muy * Fz;
-    const double Ey = std::min(1.0, (c_.PEY1 + c_.PEY2 * k.dfz) * (1 + c_.PEY5 * g * g - (c_.PEY3 + c_.PEY4 * g) * sgn(alphay)) * c_.LEY);
+    const double Ey =
+        std::min(1.0, (c_.PEY1 + c_.PEY2 * dfz) * (1 + c_.PEY5 * g * g - (c_.PEY3 + c_.PEY4 * g) * sgn(alphay)) * c_.LEY);
     p.By = p.Kya / (p.Cy * Dy + kEps * sgnOr1(p.Cy * Dy));
     p.Fy0 = magicSin(p.By, p.Cy, Dy, Ey, alphay) + p.SVy;
     return p;
   }
   static double sgnOr1(double x) { return x < 0 ? -1.0 : 1.0; }
 
-  // Mz = -t F'y + Mzr + s Fx (4.E71), F'y the combined side force at zero camber.
-  double calcAligning(const Common& k, const TyreSlip& in, const PureLateral& py, double Kxk, double Gyk, double Fx,
+  // Mz = -t F'y + Mzr + s Fx (4.E71), F'y = G_yk Fy0(gamma = 0) (4.E74).
+  double calcAligning(const Common& k, double Fz, double kappa, const PureLateral& py, double Kxk, double Gyk, double Fx,
                       double Fy) const {
-    const double Fz = in.Fz, g = k.gammaStar, R0 = c_.R0;
-    const double Kyap = py.Kya + kEps * sgnOr1(py.Kya);
-    const double SHt = c_.QHZ1 + c_.QHZ2 * k.dfz + (c_.QHZ3 + c_.QHZ4 * k.dfz) * g;  // 4.E35
-    const double alphat = k.alphaStar + SHt;
-    const double SHf = py.SHy + py.SVy / Kyap;  // 4.E38
-    const double alphar = k.alphaStar + SHf;
-    const double ratio = Kxk / Kyap * in.kappa;
-    const double alphateq = std::sqrt(alphat * alphat + ratio * ratio) * sgn(alphat);  // 4.E77
-    const double alphareq = std::sqrt(alphar * alphar + ratio * ratio) * sgn(alphar);  // 4.E78
-    const double Bt = (c_.QBZ1 + c_.QBZ2 * k.dfz + c_.QBZ3 * k.dfz * k.dfz) * (1 + c_.QBZ5 * std::abs(g) + c_.QBZ6 * g * g) *
-                      c_.LKY / c_.LMUY;  // 4.E40
-    const double Ct = c_.QCZ1;
-    const double Dt0 = Fz * (R0 / k.Fz0p) * (c_.QDZ1 + c_.QDZ2 * k.dfz) * (1 - c_.PPZ1 * k.dpi) * c_.LTR;  // 4.E42
-    const double Dt = Dt0 * (1 + c_.QDZ3 * std::abs(g) + c_.QDZ4 * g * g);                                // 4.E43
-    const double Et = std::min(1.0, (c_.QEZ1 + c_.QEZ2 * k.dfz + c_.QEZ3 * k.dfz * k.dfz) *
+    const double g = k.gammaStar, absG = std::abs(g), dfz = k.dfz, R0 = c_.R0;
+    const double Kyap = py.Kya + kEps * sgnOr1(py.Kya);                                       // 4.E39
+    const double SHt = c_.QHZ1 + c_.QHZ2 * dfz + (c_.QHZ3 + c_.QHZ4 * dfz) * g;                // 4.E35
+    const double alphat = k.alphaStar + SHt;                                                   // 4.E34
+    const double alphar = k.alphaStar + py.SHy + py.SVy / Kyap;                                // 4.E37-4.E38
+    const double ratio = Kxk / Kyap * kappa;
+    const double alphateq = std::sqrt(alphat * alphat + ratio * ratio) * sgn(alphat);         // 4.E77
+    const double alphareq = std::sqrt(alphar * alphar + ratio * ratio) * sgn(alphar);         // 4.E78
+    // 4.E40 with MF-Tyre 6.1's QBZ4 gamma term (Besselink et al. 2010, eq. A58) and the book's QBZ6.
+    const double Bt = (c_.QBZ1 + c_.QBZ2 * dfz + c_.QBZ3 * dfz * dfz) * (1 + c_.QBZ4 * g + c_.QBZ5 * absG + c_.QBZ6 * g * g) *
+                      c_.LKY / c_.LMUY;
+    const double Ct = c_.QCZ1;                                                                 // 4.E41
+    const double Dt = Fz * (R0 / Fz0p_) * (c_.QDZ1 + c_.QDZ2 * dfz) * pDt_ * (1 + c_.QDZ3 * absG + c_.QDZ4 * g * g);  // 4.E42-43
+    const double Et = std::min(1.0, (c_.QEZ1 + c_.QEZ2 * dfz + c_.QEZ3 * dfz * dfz) *
                                         (1 + (c_.QEZ4 + c_.QEZ5 * g) * (2 / M_PI) * std::atan(Bt * Ct * alphat)));  // 4.E44
-    const double t = Dt * magicCos(Bt, Ct, Et, alphateq) * k.cosAlpha;                                    // 4.E73
-    const double Br = c_.QBZ9 * c_.LKY / c_.LMUY + c_.QBZ10 * py.By * py.Cy;                             // 4.E45
+    const double t = Dt * magicCos(Bt, Ct, Et, alphateq) * k.cosAlpha;                        // 4.E73
+    const double Br = c_.QBZ9 * c_.LKY / c_.LMUY + c_.QBZ10 * py.By * py.Cy;                  // 4.E45
     const double Dr = Fz * R0 *
-                      ((c_.QDZ6 + c_.QDZ7 * k.dfz) * c_.LRES * k.w +
-                       ((c_.QDZ8 + c_.QDZ9 * k.dfz) * (1 + c_.PPZ2 * k.dpi) + (c_.QDZ10 + c_.QDZ11 * k.dfz) * std::abs(g)) * g *
-                           c_.LKZC) *
-                      c_.LMUY * k.cosAlpha;                                                              // 4.E47
-    const double Mzr = Dr * cosAtan(Br * alphareq) * k.cosAlpha;                            // 4.E75
-    const double FyPrime = Gyk * (g == 0 ? py.Fy0 : calcPureLateral(k, Fz, 0.0).Fy0);                 // F'y at gamma = 0
-    const double s = R0 * (c_.SSZ1 + c_.SSZ2 * Fy / k.Fz0p + (c_.SSZ3 + c_.SSZ4 * k.dfz) * g) * c_.LS;  // 4.E76
+                      ((c_.QDZ6 + c_.QDZ7 * dfz) * c_.LRES * k.w +
+                       ((c_.QDZ8 + c_.QDZ9 * dfz) * pDr_ + (c_.QDZ10 + c_.QDZ11 * dfz) * absG) * g * c_.LKZC) *
+                      c_.LMUY * k.cosAlpha;                                                    // 4.E47 (cos alpha here only)
+    const double Mzr = Dr * cosAtan(Br * alphareq);                                            // 4.E75, Cr = 1 (4.E46)
+    const double FyPrime = Gyk * (g == 0 ? py.Fy0 : calcPureLateral(k, Fz, 0.0).Fy0);         // 4.E74
+    const double s = R0 * (c_.SSZ1 + c_.SSZ2 * Fy / Fz0p_ + (c_.SSZ3 + c_.SSZ4 * dfz) * g) * c_.LS;  // 4.E76
     return -t * FyPrime + Mzr + s * Fx;
   }
 
@@ -321,7 +399,8 @@ class MagicFormula61 : public TyreForceLaw {
   static double cosAtan(double x) { return 1 / std::sqrt(1 + x * x); }  // cos(atan(x))
 
   Mf61 c_;
-  double pressureFactorMy_;  ///< (p/NOMPRES)^QSY8 of My (4.E70)
+  // Constants of the coefficients and the pressure (constructor).
+  double Fz0p_, dpi_, lmuxPrime_, lmuyPrime_, pKya_, pKyaPeak_, pKyg_, pKx_, pMux_, pMuy_, pDt_, pDr_, pMx_, pMy_, pCy_;
 };
 
 }  // namespace
@@ -354,7 +433,18 @@ std::unique_ptr<TyreForceLaw> makeTyreForceLaw(MagicFormulaVariant v, const Coef
 std::unique_ptr<TyreForceLaw> loadTirForceLaw(const std::string& path, const std::map<std::string, double>* scaling) {
   const TirFile file = TirFile::load(path);
   const auto source = makeTirSource(file, scaling);
-  return makeTyreForceLaw(file.getFitType() == 62 ? MagicFormulaVariant::MF62 : MagicFormulaVariant::MF61, *source);
+  auto law = makeTyreForceLaw(file.getFitType() == 62 ? MagicFormulaVariant::MF62 : MagicFormulaVariant::MF61, *source);
+  warnUnused(*source, path, std::cerr);
+  return law;
+}
+
+void warnUnused(const CoefficientSource& source, const std::string& name, std::ostream& out) {
+  const auto unused = source.listUnused();
+  if (unused.empty()) return;
+  out << "warning: " << name << ": " << unused.size()
+      << " nonzero coefficient(s) that the implemented equations do not use, ignored:";
+  for (const auto& u : unused) out << " " << u;
+  out << "\n";
 }
 
 }  // namespace motostab

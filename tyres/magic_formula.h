@@ -8,10 +8,13 @@
 // kappa = -V_sx/|V_cx|; slip angle alpha with tan(alpha) = V_cy/|V_cx| (a wheel sliding left has
 // alpha > 0, and Fy = K_ya alpha with K_ya < 0); camber (inclination) gamma > 0 when the wheel's
 // top leans right (towards -y). Forces in N, moments in N m about x, y, z at the contact point.
+#include <limits>
 #include <map>
 #include <memory>
 #include <optional>
+#include <ostream>
 #include <string>
+#include <vector>
 
 #include "scenario/yaml_map.h"
 #include "tyres/tir_file.h"
@@ -43,11 +46,17 @@ class TyreForceLaw {
   virtual double calcCamberStiffness(double Fz) const = 0;
   /// dFx/dkappa at kappa = alpha = gamma = 0 (N).
   virtual double calcLongitudinalStiffness(double Fz) const = 0;
-  /// Lateral relaxation length (m) at load Fz and camber gamma; NaN if the law has none.
-  virtual double calcRelaxationLength(double Fz, double gamma) const = 0;
+  /// Lateral relaxation length (m) at load Fz (N), camber gamma (rad) and forward speed Vx (m/s); NaN
+  /// if the law has none.
+  virtual double calcRelaxationLength(double Fz, double gamma, double Vx) const = 0;
+  /// Longitudinal relaxation length (m) at load Fz (N); NaN if the law has none. Reported only (the
+  /// contact does not lag the slip ratio).
+  virtual double calcLongitudinalRelaxationLength(double) const { return std::numeric_limits<double>::quiet_NaN(); }
   /// Nominal load F_z0' (N) and unloaded radius R0 (m).
   virtual double getNominalLoad() const = 0;
   virtual double getUnloadedRadius() const = 0;
+  /// Crown (cross-section) radius the law's moments use (m); NaN if the law uses none.
+  virtual double getCrownRadius() const { return std::numeric_limits<double>::quiet_NaN(); }
 };
 
 /// Where coefficients come from: a .tir file or an inline `coefficients` map, with scaling factors
@@ -66,6 +75,11 @@ class CoefficientSource {
   double getScaling(const std::string& name) const;
   /// An optional value.
   double get(const std::string& name, double fallback) const;
+  /// A text value (e.g. TYRESIDE), or nothing; sources without text values return nothing.
+  virtual std::optional<std::string> findText(const std::string&) const { return std::nullopt; }
+  /// The source's nonzero coefficients that no equation has read so far ("KEY (line N)"), scaling
+  /// factors only when they differ from 1; sources that reject unread keys themselves return none.
+  virtual std::vector<std::string> listUnused() const { return {}; }
 
  protected:
   /// The source's own value of `name`, or nothing.
@@ -92,7 +106,12 @@ const std::vector<std::string>& getScalingNames(MagicFormulaVariant v);
 std::unique_ptr<TyreForceLaw> makeTyreForceLaw(MagicFormulaVariant v, const CoefficientSource& source,
                                                std::optional<double> pressure = std::nullopt);
 
-/// The force law of a .tir file (variant from its FITTYP), with optional scaling overrides.
+/// Writes one warning line to `out` naming the source's unused nonzero coefficients (listUnused), if any;
+/// `name` names the source (a file path).
+void warnUnused(const CoefficientSource& source, const std::string& name, std::ostream& out);
+
+/// The force law of a .tir file (variant from its FITTYP), with optional scaling overrides; unused
+/// nonzero coefficients are reported on std::cerr (warnUnused).
 std::unique_ptr<TyreForceLaw> loadTirForceLaw(const std::string& path, const std::map<std::string, double>* scaling = nullptr);
 
 }  // namespace motostab

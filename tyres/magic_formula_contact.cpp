@@ -3,8 +3,10 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <iostream>
 #include <limits>
 
+#include "io/input_error.h"
 #include "tyres/magic_formula.h"
 #include "tyres/tyre_contact.h"
 
@@ -20,6 +22,7 @@ struct MagicFormulaTyre {
   std::shared_ptr<const TyreForceLaw> law;
   double relaxationLength = std::numeric_limits<double>::quiet_NaN();  ///< m; NaN: the law's
   RadialLaw radial;
+  InputLocation where;  ///< the tyre's scenario map, for errors found when the wheel is known
   bool isLagged() const { return std::isnan(relaxationLength) || relaxationLength > 0; }
 };
 
@@ -71,7 +74,9 @@ MagicFormulaTyre readTyre(YamlMap m) {
     const TirFile file = TirFile::load(path);
     if (!variant) variant = file.getFitType() == 62 ? MagicFormulaVariant::MF62 : MagicFormulaVariant::MF61;
     const auto scaling = readScaling(m, *variant);
-    build(*makeTirSource(file, &scaling));
+    const auto source = makeTirSource(file, &scaling);
+    build(*source);
+    warnUnused(*source, path, std::cerr);
   } else {
     if (!variant) m.fail("variant", "required with inline coefficients (mf61, mf62 or motorcycle)");
     const auto scaling = readScaling(m, *variant);
@@ -80,7 +85,8 @@ MagicFormulaTyre readTyre(YamlMap m) {
     coefficients.finish();
   }
   if (m.has("relaxation_length_m")) t.relaxationLength = m.getNonNegative("relaxation_length_m");
-  if (std::isnan(t.relaxationLength) && std::isnan(t.law->calcRelaxationLength(t.law->getNominalLoad(), 0)))
+  t.where = m.locate();
+  if (std::isnan(t.relaxationLength) && std::isnan(t.law->calcRelaxationLength(t.law->getNominalLoad(), 0, 0)))
     m.fail("relaxation_length_m", "required: this Magic Formula variant has no relaxation length of its own");
   if (!(-t.law->calcCorneringStiffness(t.law->getNominalLoad()) > 0))
     m.fail(m.has("tir") ? "tir" : "coefficients", "the cornering stiffness at the nominal load must push against the slip");
@@ -122,7 +128,7 @@ class MagicFormulaTyreForce : public TyreForceElement {
   double calcRelaxationLength(const TyreKinematics& k) const override {
     if (!std::isnan(t_.relaxationLength)) return t_.relaxationLength;
     const TyreForceLaw& law = *t_.law;
-    return law.calcRelaxationLength(std::max(k.Fz, kLoadFloor * law.getNominalLoad()), -k.camber);
+    return law.calcRelaxationLength(std::max(k.Fz, kLoadFloor * law.getNominalLoad()), -k.camber, k.forwardSpeed);
   }
 
  private:
@@ -136,7 +142,13 @@ class MagicFormulaContact : public TyreContactModel {
 
  protected:
   TyreForceElement* makeForceElement(BuildContext& ctx, const WheelSite& w) const override {
-    return new MagicFormulaTyreForce(ctx.forces, w, tyreFor(w));
+    // A law whose moments use a crown radius (the motorcycle one) must be on a wheel of that crown.
+    const MagicFormulaTyre& t = tyreFor(w);
+    const double crown = t.law->getCrownRadius();
+    if (!std::isnan(crown) && std::abs(crown - w.crownRadius) > 1e-9)
+      throw InputError(t.where, "CROWN_RADIUS " + std::to_string(crown) + " m of the coefficients differs from " + w.name +
+                                    ".crown_radius_m " + std::to_string(w.crownRadius) + " m");
+    return new MagicFormulaTyreForce(ctx.forces, w, t);
   }
   bool isLagged(const WheelSite& w) const override { return tyreFor(w).isLagged(); }
 

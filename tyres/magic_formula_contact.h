@@ -7,8 +7,9 @@
 // With s the lagged equivalent slip (the z state, rad), K_ya and K_yg the law's cornering and camber
 // stiffnesses at zero slip (tyres/magic_formula.h) and phi the camber:
 //   relaxation          sigma/V s' + s = alpha + (K_yg/K_ya) phi   (relaxation_linear's equivalent slip,
-//                       k_phi/k_alpha = K_yg/K_ya), sigma from the scenario or the law (MF 6.1: PTY1, PTY2
-//                       at the current load and camber)
+//                       k_phi/k_alpha = K_yg/K_ya), sigma from the scenario or the law at the current
+//                       load, camber and speed (MF 6.x: |K_ya/C_y|, or PTY1, PTY2; motorcycle:
+//                       K_ya (c1 + c2 V + c3 V^2))
 //   lagged slip angle   alpha_l = s - (K_yg/K_ya) phi
 //   forces              Fx, Fy, Mz, Mx, My of the law at (kappa, alpha_l, phi, Fz): one evaluation; in
 //                       steady state s = alpha + (K_yg/K_ya) phi, alpha_l = alpha, the law's own forces
@@ -22,7 +23,8 @@
 //   tir: FILE | coefficients: {NAME: value, ...}   the coefficients (names of the .tir keys)
 //   variant: mf61 | mf62 | motorcycle              default: the file's FITTYP (required inline)
 //   scaling: {LKY: 1.1, ...}                       scaling factors overriding the file's (default 1)
-//   relaxation_length_m                            optional for MF 6.x (0: no lag), required for motorcycle
+//   relaxation_length_m                            optional (0: no lag); required when the law has none
+// A law with a crown radius (motorcycle: CROWN_RADIUS) must sit on a wheel of that crown_radius_m.
 //   radial_stiffness_N_per_m, radial_damping_Ns_per_m   default VERTICAL_STIFFNESS, VERTICAL_DAMPING
 //   pressure_Pa                                    default INFLPRES, else NOMPRES (MF 6.x)
 #include "plugins/plugin_api.h"

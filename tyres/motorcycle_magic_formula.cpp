@@ -13,12 +13,14 @@ double sgn(double x) { return (x > 0) - (x < 0); }
 double curved(double x, double E) { return x - E * (x - std::atan(x)); }
 
 struct Coefficients {
-  double FNOMIN, R0, LFZO, LMUX, LKX, LMUY, LKY, LKYC, LTR, LRES;
+  double FNOMIN, R0, crown, LFZO, LMUX, LKX, LMUY, LKY, LKYC, LTR, LRES;
   double PCX1, PDX1, PDX2, PEX1, PEX2, PEX3, PEX4, PKX1, PKX2, PKX3;
   double PCY1, PCY2, PDY1, PEY1, PEY2, PEY4, PEY5, PKY1, PKY2, PKY3, PKY4, PKY5, PKY6, PKY7;
   double QHZ3, QHZ4, QBZ1, QBZ2, QBZ5, QBZ6, QBZ9, QBZ10, QCZ1, QDZ1, QDZ2, QDZ3, QDZ4, QDZ8, QDZ9, QDZ10, QDZ11, QEZ1,
       QEZ2, QEZ3, QEZ5;
   double RBX1, RBX2, RCX1, RBY1, RBY2, RBY3, RCY1;
+  double relax[3] = {std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::quiet_NaN(),
+                      std::numeric_limits<double>::quiet_NaN()};  ///< c1 (m/N), c2 (s/N), c3 (s^2/(N m)) of sigma = K_ya (c1 + c2 V + c3 V^2)
 };
 
 const std::vector<std::string> kScaling = {"LFZO", "LMUX", "LKX", "LMUY", "LKY", "LKYC", "LTR", "LRES"};
@@ -29,70 +31,79 @@ class MotorcycleMagicFormula : public TyreForceLaw {
 
   TyreForces calcForces(const TyreSlip& in) const override {
     const double Fz = in.Fz, a = -std::tan(in.alpha), g = -in.gamma, k = in.kappa;
-    const Lateral lat = calcLateral(Fz, a, g);
+    const double dfz = calcDfz(Fz), Fz0 = calcFz0();
+    const double Dy = c_.PDY1 * c_.LMUY * Fz;
+    const Lateral lat = calcLateral(Fz, dfz, Dy, a, g);
+    const Lateral lat0 = g == 0 ? lat : calcLateral(Fz, dfz, Dy, a, 0.0);  // the camber-free side force
     // Longitudinal, pure and combined.
-    const double dfz = calcDfz(Fz), Kx = calcKx(Fz);
+    const double Kx = calcKx(Fz, dfz);
     const double Cx = c_.PCX1, Dx = (c_.PDX1 + c_.PDX2 * dfz) * c_.LMUX * Fz;
     const double Ex = (c_.PEX1 + c_.PEX2 * dfz + c_.PEX3 * dfz * dfz) * (1 - c_.PEX4 * sgn(k));
     const double Fx0 = Dx * std::sin(Cx * std::atan(curved(Kx / (Cx * Dx + kEps) * k, Ex)));
     const double Fx = Fx0 * std::cos(c_.RCX1 * std::atan(c_.RBX1 * std::cos(std::atan(c_.RBX2 * k)) * a));
-    const double Gyk = calcGyk(a, k);
-    // Aligning moment with the equivalent slip of the combined law.
-    const double ratio = Kx * k / (lat.Kya + kEps);
-    const double at = a + (c_.QHZ3 + c_.QHZ4 * dfz) * g;
-    const double ateq = std::sqrt(at * at + ratio * ratio) * sgn(at);
-    const double areq = std::sqrt(a * a + ratio * ratio) * sgn(a);
+    const double Gyk = std::cos(c_.RCY1 * std::atan(c_.RBY1 * std::cos(std::atan(c_.RBY2 * (a - c_.RBY3))) * k));
+    // Aligning moment: the trail acts on the camber-free side force and its slip is unshifted; the
+    // camber shift S_Hr = (QHZ3 + QHZ4 dfz) g moves the residual-torque slip only; the combined-slip
+    // equivalent slips use K_ya at zero camber.
+    const double ratio = Kx * k / (lat0.Kya + kEps);
+    const double ar = a + (c_.QHZ3 + c_.QHZ4 * dfz) * g;
+    const double ateq = std::sqrt(a * a + ratio * ratio) * sgn(a);
+    const double areq = std::sqrt(ar * ar + ratio * ratio) * sgn(ar);
     const double cosA = 1 / std::sqrt(1 + a * a);
-    const double Bt = (c_.QBZ1 + c_.QBZ2 * dfz) * (1 + c_.QBZ5 * std::abs(g) + c_.QBZ6 * g * g);
+    const double absG = std::abs(g);
+    const double Bt = (c_.QBZ1 + c_.QBZ2 * dfz) * (1 + c_.QBZ5 * absG + c_.QBZ6 * g * g);
     const double Ct = c_.QCZ1;
-    const double Dt = Fz * (c_.R0 / calcFz0()) * (c_.QDZ1 + c_.QDZ2 * dfz) * (1 + c_.QDZ3 * std::abs(g) + c_.QDZ4 * g * g) * c_.LTR;
-    const double Et = (c_.QEZ1 + c_.QEZ2 * dfz + c_.QEZ3 * dfz * dfz) * (1 + c_.QEZ5 * g * (2 / M_PI) * std::atan(Bt * Ct * at));
+    const double Dt = Fz * (c_.crown / Fz0) * (c_.QDZ1 + c_.QDZ2 * dfz) * (1 + c_.QDZ3 * absG + c_.QDZ4 * g * g) * c_.LTR;
+    const double Et = (c_.QEZ1 + c_.QEZ2 * dfz + c_.QEZ3 * dfz * dfz) * (1 + c_.QEZ5 * g * (2 / M_PI) * std::atan(Bt * Ct * a));
     const double t = Dt * std::cos(Ct * std::atan(curved(Bt * ateq, Et))) * cosA;
-    const double Br = c_.QBZ9 + c_.QBZ10 * lat.By * c_.PCY1;
-    const double Dr = Fz * c_.R0 * ((c_.QDZ8 + c_.QDZ9 * dfz) * g + (c_.QDZ10 + c_.QDZ11 * dfz) * g * std::abs(g)) * c_.LRES;
-    const double Mzr = Dr * std::cos(std::atan(Br * areq)) * cosA;
-    const double FyNoCamber = Gyk * calcLateral(Fz, a, 0.0).Fy0;
+    const double Br = c_.QBZ9 + c_.QBZ10 * lat0.By * c_.PCY1;
+    const double Dr = Fz * c_.crown * ((c_.QDZ8 + c_.QDZ9 * dfz) * g + (c_.QDZ10 + c_.QDZ11 * dfz) * g * absG) * c_.LRES * cosA;
+    const double Mzr = Dr * std::cos(std::atan(Br * areq));
     TyreForces f;
     f.Fx = Fx;
-    f.Fy = Gyk * lat.Fy0;   // +y is the same axis in both conventions
-    f.Mz = -t * FyNoCamber + Mzr;
+    f.Fy = Gyk * lat.Fy0;  // +y is the same axis in both conventions
+    f.Mz = -t * Gyk * lat0.Fy0 + Mzr;
     return f;
   }
 
   // ISO signs: dFy/dalpha_ISO = -dFy/da, dFy/dgamma_ISO = -dFy/dg.
-  double calcCorneringStiffness(double Fz) const override { return -calcLateral(Fz, 0, 0).Kya; }
-  double calcCamberStiffness(double Fz) const override { return -calcLateral(Fz, 0, 0).Kyg; }
-  double calcLongitudinalStiffness(double Fz) const override { return calcKx(Fz); }
-  double calcRelaxationLength(double, double) const override { return std::numeric_limits<double>::quiet_NaN(); }
+  double calcCorneringStiffness(double Fz) const override { return -calcKya(Fz, 0); }
+  double calcCamberStiffness(double Fz) const override { return -calcKyg(Fz, calcDfz(Fz)); }
+  double calcLongitudinalStiffness(double Fz) const override { return calcKx(Fz, calcDfz(Fz)); }
+  // sigma = K_ya (c1 + c2 V + c3 V^2) (Sharp et al. 2004 sec. 4; Evangelou 2004 Table 9.5), K_ya at the
+  // camber; NaN without the c's.
+  double calcRelaxationLength(double Fz, double gamma, double Vx) const override {
+    const double V = std::abs(Vx);
+    return calcKya(Fz, -gamma) * (c_.relax[0] + c_.relax[1] * V + c_.relax[2] * V * V);
+  }
   double getNominalLoad() const override { return calcFz0(); }
   double getUnloadedRadius() const override { return c_.R0; }
+  double getCrownRadius() const override { return c_.crown; }
 
  private:
   static constexpr double kEps = 1e-12;
   double calcFz0() const { return c_.FNOMIN * c_.LFZO; }
-  // The side force's combined-slip weight in the paper's slip a and slip ratio k.
-  double calcGyk(double a, double k) const {
-    return std::cos(c_.RCY1 * std::atan(c_.RBY1 * std::cos(std::atan(c_.RBY2 * (a - c_.RBY3))) * k));
-  }
   double calcDfz(double Fz) const { return (Fz - calcFz0()) / calcFz0(); }
-  double calcKx(double Fz) const {
-    const double dfz = calcDfz(Fz);
-    return Fz * (c_.PKX1 + c_.PKX2 * dfz) * std::exp(c_.PKX3 * dfz) * c_.LKX;
+  double calcKx(double Fz, double dfz) const { return Fz * (c_.PKX1 + c_.PKX2 * dfz) * std::exp(c_.PKX3 * dfz) * c_.LKX; }
+  // K_ya = PKY1 Fz0 sin(PKY2 atan(Fz/((PKY3 + PKY4 g^2) Fz0)))/(1 + PKY5 g^2) (Sharp et al. 2004 sec. 4).
+  double calcKya(double Fz, double g) const {
+    const double Fz0 = calcFz0(), g2 = g * g;
+    return c_.PKY1 * Fz0 * std::sin(c_.PKY2 * std::atan(Fz / ((c_.PKY3 + c_.PKY4 * g2) * Fz0))) / (1 + c_.PKY5 * g2) * c_.LKY;
   }
+  // K_yg = (PKY6 + PKY7 dfz) Fz (Sharp et al. 2004 sec. 4).
+  double calcKyg(double Fz, double dfz) const { return (c_.PKY6 + c_.PKY7 * dfz) * Fz * c_.LKYC; }
 
   struct Lateral {
-    double Fy0, Kya, Kyg, By;
+    double Fy0, Kya, By;
   };
   // Pure side slip and camber in the paper's signs: slip a (tan of the angle) and camber g (rad).
-  Lateral calcLateral(double Fz, double a, double g) const {
+  Lateral calcLateral(double Fz, double dfz, double Dy, double a, double g) const {
     Lateral l;
-    const double Fz0 = calcFz0(), dfz = calcDfz(Fz), g2 = g * g;
-    const double Dy = c_.PDY1 * c_.LMUY * Fz, Cy = c_.PCY1, Cg = c_.PCY2;
-    l.Kya = c_.PKY1 * Fz0 * std::sin(2 * std::atan(Fz / ((c_.PKY2 + c_.PKY4 * g2) * Fz0))) / (1 + c_.PKY3 * g2) * c_.LKY;
-    l.Kyg = (c_.PKY6 + c_.PKY7 * dfz) * Fz / (1 + c_.PKY5 * g2) * c_.LKYC;
+    const double Cy = c_.PCY1, Cg = c_.PCY2;
+    l.Kya = calcKya(Fz, g);
     l.By = l.Kya / (Cy * Dy + kEps);
-    const double Bg = l.Kyg / (Cg * Dy + kEps);
-    const double Ey = c_.PEY1 + c_.PEY2 * g2 + c_.PEY4 * g * sgn(a);
+    const double Bg = calcKyg(Fz, dfz) / (Cg * Dy + kEps);
+    const double Ey = c_.PEY1 + c_.PEY2 * g * g + c_.PEY4 * g * sgn(a);
     l.Fy0 = Dy * std::sin(Cy * std::atan(curved(l.By * a, Ey)) + Cg * std::atan(curved(Bg * g, c_.PEY5)));
     return l;
   }
@@ -107,7 +118,7 @@ const std::vector<std::string>& getMotorcycleScalingNames() { return kScaling; }
 std::unique_ptr<TyreForceLaw> makeMotorcycleMagicFormula(const CoefficientSource& s) {
   Coefficients c{};
   const std::pair<const char*, double*> required[] = {
-      {"FNOMIN", &c.FNOMIN}, {"UNLOADED_RADIUS", &c.R0}, {"PCX1", &c.PCX1}, {"PDX1", &c.PDX1}, {"PDX2", &c.PDX2},
+      {"FNOMIN", &c.FNOMIN}, {"UNLOADED_RADIUS", &c.R0}, {"CROWN_RADIUS", &c.crown}, {"PCX1", &c.PCX1}, {"PDX1", &c.PDX1}, {"PDX2", &c.PDX2},
       {"PEX1", &c.PEX1}, {"PEX2", &c.PEX2}, {"PEX3", &c.PEX3}, {"PEX4", &c.PEX4}, {"PKX1", &c.PKX1}, {"PKX2", &c.PKX2},
       {"PKX3", &c.PKX3}, {"PCY1", &c.PCY1}, {"PCY2", &c.PCY2}, {"PDY1", &c.PDY1}, {"PEY1", &c.PEY1}, {"PEY2", &c.PEY2},
       {"PEY4", &c.PEY4}, {"PEY5", &c.PEY5}, {"PKY1", &c.PKY1}, {"PKY2", &c.PKY2}, {"PKY3", &c.PKY3}, {"PKY4", &c.PKY4},
@@ -126,6 +137,17 @@ std::unique_ptr<TyreForceLaw> makeMotorcycleMagicFormula(const CoefficientSource
   if (!(c.R0 > 0)) s.fail("UNLOADED_RADIUS", "must be positive");
   if (!(c.LFZO > 0)) s.fail("LFZO", "must be positive");
   if (!(c.PDY1 > 0)) s.fail("PDY1", "must be positive");
+  if (!(c.crown > 0)) s.fail("CROWN_RADIUS", "must be positive");
+  // The relaxation law's c1, c2, c3: all three or none.
+  const char* relaxNames[] = {"RELAX_C1", "RELAX_C2", "RELAX_C3"};
+  int given = 0;
+  for (int i = 0; i < 3; ++i) {
+    if (const auto v = s.find(relaxNames[i])) {
+      c.relax[i] = *v;
+      ++given;
+    }
+  }
+  if (given != 0 && given != 3) s.fail("RELAX_C1", "give all of RELAX_C1, RELAX_C2, RELAX_C3 or none");
   return std::make_unique<MotorcycleMagicFormula>(c);
 }
 

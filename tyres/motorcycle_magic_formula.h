@@ -1,12 +1,13 @@
 #pragma once
 // The motorcycle Magic Formula of Sharp, Evangelou & Limebeer (2004), "Advances in the modelling of
-// motorcycle dynamics", Multibody System Dynamics 12:251-283, sec. 4 (after de Vries & Pacejka
-// 1998 and Pacejka 2012 ch. 11). Camber is large and its thrust dominant, so camber enters the side
-// force through its own Magic Formula term instead of MF 6.1's shifts, and the camber coefficients
-// share names with MF 6.1 but not meanings (docs/tyres.md lists both). Internally the equations use
-// the motorcycle sign convention of the paper (a positive slip angle and a positive camber both push
-// the tyre to +y: alpha_m = -alpha_ISO, gamma_m = -gamma_ISO, gamma_m in rad, not sin gamma); the
-// law's inputs and outputs are ISO-W like every TyreForceLaw (tyres/magic_formula.h).
+// motorcycle dynamics", Multibody System Dynamics 12:251-283, sec. 4, and S. Evangelou (2004), PhD
+// thesis, Imperial College London, ch. 9 (after de Vries & Pacejka 1998 and Pacejka 2012 ch. 11).
+// Camber is large and its thrust dominant, so camber enters the side force through its own Magic
+// Formula term instead of MF 6.1's shifts, and the camber coefficients share names with MF 6.1 but not
+// meanings (docs/tyres.md lists both). Internally the equations use the motorcycle sign convention of
+// the paper (a positive slip angle and a positive camber both push the tyre to +y: alpha_m =
+// -alpha_ISO, gamma_m = -gamma_ISO, gamma_m in rad, not sin gamma); the law's inputs and outputs are
+// ISO-W like every TyreForceLaw (tyres/magic_formula.h). Rc = CROWN_RADIUS.
 //
 //   dfz = (Fz - Fz0)/Fz0,  Fz0 = FNOMIN LFZO
 //   Fx0 = Dx sin(Cx atan(Bx k - Ex (Bx k - atan(Bx k)))),  Cx = PCX1,  Dx = (PDX1 + PDX2 dfz) LMUX Fz,
@@ -14,17 +15,19 @@
 //         Ex = (PEX1 + PEX2 dfz + PEX3 dfz^2)(1 - PEX4 sgn k)
 //   Fy0 = Dy sin(Cy atan(By a - Ey (By a - atan(By a))) + Cg atan(Bg g - Eg (Bg g - atan(Bg g)))),
 //         Dy = PDY1 LMUY Fz,  Cy = PCY1,  Cg = PCY2,  Eg = PEY5,  Ey = PEY1 + PEY2 g^2 + PEY4 g sgn a,
-//         Kya = PKY1 Fz0 sin(2 atan(Fz/((PKY2 + PKY4 g^2) Fz0)))/(1 + PKY3 g^2) LKY,  By = Kya/(Cy Dy),
-//         Kyg = (PKY6 + PKY7 dfz) Fz/(1 + PKY5 g^2) LKYC,  Bg = Kyg/(Cg Dy)
-//   Mz0 = -t Fy0(a, g = 0) + Mzr,  t = Dt cos(Ct atan(Bt at - Et (Bt at - atan(Bt at)))) cos a,
-//         at = a + (QHZ3 + QHZ4 dfz) g,  Bt = (QBZ1 + QBZ2 dfz)(1 + QBZ5 |g| + QBZ6 g^2),  Ct = QCZ1,
-//         Dt = Fz (R0/Fz0)(QDZ1 + QDZ2 dfz)(1 + QDZ3 |g| + QDZ4 g^2) LTR,
-//         Et = (QEZ1 + QEZ2 dfz + QEZ3 dfz^2)(1 + QEZ5 g (2/pi) atan(Bt Ct at)),
-//         Mzr = Dr cos(atan(Br a)) cos a,  Br = QBZ9 + QBZ10 By Cy,
-//         Dr = Fz R0 ((QDZ8 + QDZ9 dfz) g + (QDZ10 + QDZ11 dfz) g |g|) LRES
+//         Kya = PKY1 Fz0 sin(PKY2 atan(Fz/((PKY3 + PKY4 g^2) Fz0)))/(1 + PKY5 g^2) LKY,  By = Kya/(Cy Dy),
+//         Kyg = (PKY6 + PKY7 dfz) Fz LKYC,  Bg = Kyg/(Cg Dy)
 //   combined: Fx = Fx0 cos(RCX1 atan(RBX1 cos(atan(RBX2 k)) a)),
-//             Fy = Fy0 cos(RCY1 atan(RBY1 cos(atan(RBY2 (a - RBY3))) k)),
-//             Mz as Mz0 with the side force of the combined law and a_eq = sqrt(a^2 + (Kx k/Kya)^2) sgn a
+//             Fy = Fy0 cos(RCY1 atan(RBY1 cos(atan(RBY2 (a - RBY3))) k)) = Gyk Fy0
+//   Mz = -t Gyk Fy0(a, g = 0) + Mzr,  t = Dt cos(Ct atan(Bt a_teq - Et (Bt a_teq - atan(Bt a_teq)))) cos a,
+//         a_teq = sqrt(a^2 + (Kx k/Kya0)^2) sgn a  (Kya0 = Kya at g = 0; the trail slip is unshifted),
+//         Bt = (QBZ1 + QBZ2 dfz)(1 + QBZ5 |g| + QBZ6 g^2),  Ct = QCZ1,
+//         Dt = Fz (Rc/Fz0)(QDZ1 + QDZ2 dfz)(1 + QDZ3 |g| + QDZ4 g^2) LTR,
+//         Et = (QEZ1 + QEZ2 dfz + QEZ3 dfz^2)(1 + QEZ5 g (2/pi) atan(Bt Ct a)),
+//         Mzr = Dr cos(atan(Br a_req)),  a_r = a + (QHZ3 + QHZ4 dfz) g,  a_req = sqrt(a_r^2 + (Kx k/Kya0)^2) sgn a_r,
+//         Br = QBZ9 + QBZ10 By0 Cy (By0 at g = 0),
+//         Dr = Fz Rc ((QDZ8 + QDZ9 dfz) g + (QDZ10 + QDZ11 dfz) g |g|) LRES cos a
+//   relaxation: sigma = Kya (RELAX_C1 + RELAX_C2 V + RELAX_C3 V^2) (Evangelou 2004 Table 9.5), optional
 //   Mx = My = 0 (the toroidal contact point carries the overturning geometry; no rolling resistance).
 #include <memory>
 #include <string>
@@ -37,8 +40,8 @@ namespace motostab {
 /// The scaling factors the motorcycle equations use (LFZO, LMUX, LKX, LMUY, LKY, LKYC, LTR, LRES).
 const std::vector<std::string>& getMotorcycleScalingNames();
 
-/// Reads the motorcycle coefficients (names as above, FNOMIN and UNLOADED_RADIUS) from `source`.
-/// It has no relaxation length of its own (calcRelaxationLength returns NaN).
+/// Reads the motorcycle coefficients (names as above, FNOMIN, UNLOADED_RADIUS, CROWN_RADIUS, and
+/// optionally all of RELAX_C1-3) from `source`. Without RELAX_C1-3 calcRelaxationLength returns NaN.
 std::unique_ptr<TyreForceLaw> makeMotorcycleMagicFormula(const CoefficientSource& source);
 
 }  // namespace motostab

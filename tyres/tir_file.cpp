@@ -124,10 +124,14 @@ TirFile TirFile::parse(const std::string& text, const std::string& source) {
                                                                     {"FORCE", {"NEWTON", "N"}},
                                                                     {"ANGLE", {"RADIANS", "RADIAN", "RAD"}},
                                                                     {"MASS", {"KG", "KILOGRAM"}},
-                                                                    {"TIME", {"SECOND", "SEC", "S"}}};
+                                                                    {"TIME", {"SECOND", "SEC", "S"}},
+                                                                    {"PRESSURE", {"PASCAL", "PA", "N/M2", "N/M^2"}}};
   for (const auto& [name, allowed] : units) {
     const auto it = f.units_.find(name);
-    if (it == f.units_.end()) continue;  // absent: SI assumed
+    if (it == f.units_.end()) {
+      if (std::string(name) == "PRESSURE") continue;  // optional: Pa when absent
+      throw InputError(p.at(0, name), std::string("[UNITS] ") + name + " missing (the units must be stated; SI only)");
+    }
     const std::string u = upper(it->second.text);
     if (std::find(allowed.begin(), allowed.end(), u) == allowed.end())
       throw InputError(p.at(it->second.line, name), "unit '" + it->second.text + "' is not supported (SI only: " +

@@ -5,7 +5,7 @@
 // comments, and a line `{...}` starts a table (rows of numbers, e.g. [SHAPE]) whose rows are kept
 // out of the keys. Anything else is malformed: an InputError naming file:line. A key given twice in
 // one section is an error at its second line. The [UNITS] section must say meter, newton, radians,
-// kg and second (no unit conversion is done). Keys are case-insensitive (stored upper-case).
+// kg and second, and pascal if it names PRESSURE (no unit conversion is done). Keys are case-insensitive (stored upper-case).
 #include <map>
 #include <optional>
 #include <string>
@@ -38,6 +38,8 @@ class TirFile {
   /// 61 or 62 (from [MODEL] FITTYP).
   int getFitType() const { return fitType_; }
   const std::string& getSource() const { return source_; }
+  /// Every entry outside [UNITS] and [MDI_HEADER], by upper-case key.
+  const std::map<std::string, TirEntry>& getEntries() const { return entries_; }
   /// An InputError at the line of `key` (or the file when absent) with `message`.
   [[noreturn]] void fail(const std::string& key, const std::string& message) const;
 

