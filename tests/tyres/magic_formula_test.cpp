@@ -425,6 +425,33 @@ TEST(MotorcycleMagicFormula, MatchesSharpEvangelouLimebeerAtDrawnPoints) {
   EXPECT_NEAR(law->calcRelaxationLength(1100, 0, 20), 0.178, 0.002);
 }
 
+// The physical signs of the law with the published front set, at its nominal load (Cossalter 2006,
+// Motorcycle Dynamics, ch. 2): camber thrust pushes the tyre towards the lean and the camber
+// (twisting) moment turns it towards the lean; the self-aligning moment of a slip turns it towards its
+// velocity. ISO-W: a wheel leaning right has gamma_ISO > 0, a wheel sliding left alpha_ISO > 0. The
+// twisting slope per unit load, Rc QDZ8 = 0.022 m/rad, is of the order of the seed paper's Table 6
+// linear front tyre (0.032 m/rad); with the unloaded radius in its place it would be 0.116 m/rad.
+TEST(MotorcycleMagicFormula, CamberTwistsTowardsTheLeanAndSlipAlignsTowardsTheVelocity) {
+  const auto law = makeMotorcycleMagicFormula(MapSource(kFront120, nullptr));
+  const double Fz = kFront120.at("FNOMIN");
+  for (double gamma : {0.2, 0.4, 0.8}) {
+    const TyreForces right = law->calcForces({Fz, 0, 0, gamma, 25});
+    const TyreForces left = law->calcForces({Fz, 0, 0, -gamma, 25});
+    EXPECT_LT(right.Fy, 0) << gamma;
+    EXPECT_LT(right.Mz, 0) << gamma;
+    EXPECT_NEAR(left.Fy, -right.Fy, 1e-9 * Fz) << gamma;
+    EXPECT_NEAR(left.Mz, -right.Mz, 1e-9 * Fz) << gamma;
+  }
+  const double h = 1e-6;
+  const double twisting = -(law->calcForces({Fz, 0, 0, h, 25}).Mz - law->calcForces({Fz, 0, 0, -h, 25}).Mz) / (2 * h) / Fz;
+  EXPECT_NEAR(twisting, kFront120.at("CROWN_RADIUS") * kFront120.at("QDZ8"), 1e-6);
+  EXPECT_GT(twisting, 0.032 / 3);
+  EXPECT_LT(twisting, 0.032 * 3);
+  const TyreForces slipping = law->calcForces({Fz, 0, 0.01, 0, 25});
+  EXPECT_LT(slipping.Fy, 0);
+  EXPECT_GT(slipping.Mz, 0);
+}
+
 TEST(MotorcycleMagicFormula, RelaxationCoefficientsAllOrNone) {
   auto m = kFront120;
   m.erase("RELAX_C2");
