@@ -7,9 +7,9 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
-#include <random>
 #include <sstream>
 
+#include "io/portable_random.h"
 #include "scenario/bicycle_parameters.h"
 #include "scenario/bicycle_parameters_uncertainty.h"
 #include "scenario/scenario.h"
@@ -34,8 +34,8 @@ std::pair<std::string, int> writeWith(const std::string& bundled, const std::str
 }
 
 TEST(UncertaintySection, ReadsSigmasDistributionsAndAnyNumericPath) {
-  std::mt19937_64 g(31);
-  const double s1 = 1e-3 * static_cast<double>(1 + g() % 9), s2 = static_cast<double>(100 + g() % 2000);
+  PortableRandom g(31);
+  const double s1 = 1e-3 * static_cast<double>(1 + g.drawBits() % 9), s2 = static_cast<double>(100 + g.drawBits() % 2000);
   std::ostringstream sec;
   sec.precision(17);
   sec << "uncertainty:\n  geometry.normal_trail_m: " << s1 << "\n  rear_frame.com_m[2]: {sigma: 0.01, distribution: uniform}\n"
