@@ -7,6 +7,7 @@
 #include <regex>
 #include <sstream>
 
+#include "tests/support/temp_dir.h"
 #include "io/portable_random.h"
 #include "scenario/parameter_paths.h"
 #include "scenario/scenario.h"
@@ -33,7 +34,7 @@ std::string variant(const std::string& name, const std::string& from, const std:
   const auto pos = text.find(from);
   EXPECT_NE(pos, std::string::npos) << from;
   text.replace(pos, from.size(), to);
-  const auto p = std::filesystem::temp_directory_path() / ("motostab_bad_" + name + ".yaml");
+  const auto p = makeTempDir("bad") / ("motostab_bad_" + name + ".yaml");
   std::ofstream(p) << text;
   return p.string();
 }
