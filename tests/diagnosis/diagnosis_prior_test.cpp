@@ -18,10 +18,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-double drawUniform(PortableRandom& rng, double lo, double hi) {
-  return lo + (hi - lo) * rng.drawUniform();
-}
-
 TEST(DiagnosisPrior, UncertaintySectionSetsTheSigma) {
   PortableRandom rng(20261124);
   const double sigmaTrail = rng.drawUniform(0.001, 0.02), sigmaMass = rng.drawUniform(0.01, 2.0);
