@@ -27,7 +27,7 @@ FrfEstimate makeEstimate(size_t bins, double df) {
 }
 
 TEST(AutomaticSettings, BandEndsWhereForceDropsTwentyDbAndStartsWhereCoherenceHolds) {
-  PortableRandom rng(7);
+  motostab::PortableRandom rng(7);
   for (int trial = 0; trial < 20; ++trial) {
     const double fc = rng.drawUniform(80, 200), fLow = std::floor(rng.drawUniform(15, 60));
     FrfEstimate e = makeEstimate(513, 1.0);  // Nyquist 512 Hz

@@ -25,7 +25,7 @@ struct Draw {
   double uniform(double a, double b) { return a + (b - a) * rng.drawUniform(); }
   double logUniform(double a, double b) { return std::exp(uniform(std::log(a), std::log(b))); }
   int integer(int a, int b) { return a + static_cast<int>(rng.drawBits() % static_cast<std::uint64_t>(b - a + 1)); }
-  PortableRandom rng;
+  motostab::PortableRandom rng;
 };
 
 // |accelerance| at resonance of mode m between the hit and sensor j, written here from the 1-DOF modal

@@ -25,7 +25,7 @@ TEST(NeverSilent, NoModeIsExit3WithWhatWasTriedAndWhatToSet) {
   const auto dir = makeTempDir("no_mode");
   const VirtualSwingarm rig;
   auto hits = simulateHammerHits(rig, {}, RigNoise(), 3);
-  PortableRandom rng(99);
+  motostab::PortableRandom rng(99);
   for (auto& h : hits)
     for (auto& ch : h.responses)
       for (auto& v : ch) v = rng.drawUniform(-1.0, 1.0);  // the accelerometers saw nothing but noise
