@@ -15,6 +15,10 @@ class PortableRandom {
  public:
   explicit PortableRandom(std::uint64_t seed) : engine_(seed) {}
 
+  /// The engine's next raw 64-bit output (std::mt19937_64, fixed by the standard): seeds, bit patterns.
+  std::uint64_t drawBits() { return engine_(); }
+  /// Uniform integer in [0, n) for n > 0 (modulo reduction; its bias, below n / 2^64, is negligible here).
+  std::uint64_t drawIndex(std::uint64_t n) { return engine_() % n; }
   /// Uniform on [0, 1), resolution 2^-53.
   double drawUniform() { return static_cast<double>(engine_() >> 11) * 0x1.0p-53; }
   /// Uniform on [a, b) (units of a and b).

@@ -41,6 +41,10 @@ std::string quoteCell(const std::string& text) {
   return out + "\"";
 }
 
+bool hasFiniteValue(const std::vector<double>& v) {
+  return std::any_of(v.begin(), v.end(), [](double x) { return std::isfinite(x); });
+}
+
 // Parameter indices ranked by |sensitivity| (NaNs last).
 std::vector<size_t> rankParameters(const std::vector<double>& sensitivity) {
   std::vector<size_t> order(sensitivity.size());
@@ -145,7 +149,13 @@ std::string makeUncertaintyReport(const std::string& name, const UncertaintySetu
     if (c.count == 0) continue;
     r << "\n### " << c.mode;
     if (s.options.method == SamplingMethod::MonteCarlo) r << " (R^2 = " << f(c.r2, 4) << ")";
-    r << "\n\n| rank | parameter | index | dv/dx (m/s per unit) |\n|---|---|---|---|\n";
+    r << "\n\n";
+    if (!hasFiniteValue(c.sensitivity))
+      r << (s.options.method == SamplingMethod::MonteCarlo
+                ? "No index: the regression on " + std::to_string(s.params.size()) + " parameters needs at least " +
+                      std::to_string(s.params.size() + 2) + " samples with this crossing (" + std::to_string(c.count) + " here).\n\n"
+                : std::string("No index: fewer than two complete rows, or no spread of the speed.\n\n"));
+    r << "| rank | parameter | index | dv/dx (m/s per unit) |\n|---|---|---|---|\n";
     int rank = 0;
     for (size_t p : rankParameters(c.sensitivity))
       r << "| " << ++rank << " | `" << s.params[p].path << "` | " << f(c.sensitivity[p], 3) << " | " << f(c.derivatives[p], 4)
@@ -191,20 +201,32 @@ std::string makeSensitivityCsv(const UncertaintySetup& s, const UncertaintySumma
 
 const std::string kCommon = "  set datafile separator ','\n  set grid\n  set key outside right\n";
 
-// Fan chart of column pair (p05, p50, p95) = (c, c+1, c+2) of mode_quantiles.csv against speed.
+// Whether a fan mode has a finite 5-95 % band value somewhere (frequency: `frequency`, else real part).
+// gnuplot stops with an error on a plot whose every point is undefined.
+bool hasFiniteBand(const ModeQuantiles& q, bool frequency) {
+  for (const auto& k : frequency ? q.frequency : q.real)
+    if (std::isfinite(k[0]) || std::isfinite(k[2])) return true;
+  return false;
+}
+
+// Fan chart of column pair (p05, p50, p95) = (c, c+1, c+2) of mode_quantiles.csv against speed, for
+// the modes with a finite band (c = 7: frequency); empty when no mode has one.
 std::string makeFanBody(const UncertaintySummary& sum, int c, const std::string& title, const std::string& ylabel) {
   std::string b = kCommon + "  set title " + gnuplotQuote(title) + "\n  set xlabel 'speed (m/s)'\n  set ylabel " +
                   gnuplotQuote(ylabel) + "\n  set xzeroaxis lt -1\n  set style fill transparent solid 0.25 noborder\n  plot ";
   const std::string lo = std::to_string(c), mid = std::to_string(c + 1), hi = std::to_string(c + 2);
+  bool any = false;
   for (size_t m = 0; m < sum.modes.size(); ++m) {
+    if (!hasFiniteBand(sum.modes[m], c == 7)) continue;
     const std::string sel = "(strcol(2) eq '" + sum.modes[m].mode + "' ? $";
     const std::string lt = std::to_string(m + 1);
-    b += std::string(m ? ", \\\n       " : "") + "'mode_quantiles.csv' skip 1 using 1:" + sel + lo + " : NaN):" + sel + hi +
+    b += std::string(any ? ", \\\n       " : "") + "'mode_quantiles.csv' skip 1 using 1:" + sel + lo + " : NaN):" + sel + hi +
          " : NaN) with filledcurves lt " + lt + " title '" + sum.modes[m].mode + " 5-95 %', \\\n       " +
          "'mode_quantiles.csv' skip 1 using 1:" + sel + mid + " : NaN) with lines lt " + lt + " lw 2 title '" +
          sum.modes[m].mode + " median'";
+    any = true;
   }
-  return b + "\n";
+  return any ? b + "\n" : std::string();
 }
 
 // Histogram of one samples.csv column (1-based), binned by gnuplot into 30 bins over its range.
@@ -236,16 +258,17 @@ void writeUncertaintyOutputs(const std::filesystem::path& dir, const std::string
   writeFileAtomically(dir / "mode_quantiles.csv", makeModeQuantilesCsv(sum));
   writeFileAtomically(dir / "sensitivity.csv", makeSensitivityCsv(s, sum, rows));
   writeFileAtomically(dir / "report.md", makeUncertaintyReport(name, s, sum));
-  if (!sum.modes.empty()) {
-    renderGnuplot(dir, "fan_real_part", makeFanBody(sum, 4, "Real part against speed, 5-95 % band: " + name, "real part (1/s)"));
-    renderGnuplot(dir, "fan_frequency", makeFanBody(sum, 7, "Frequency against speed, 5-95 % band: " + name, "frequency (Hz)"));
-  }
+  // A chart is drawn only when it has a finite value to show (few samples can leave none).
+  const std::string fanReal = makeFanBody(sum, 4, "Real part against speed, 5-95 % band: " + name, "real part (1/s)");
+  const std::string fanFrequency = makeFanBody(sum, 7, "Frequency against speed, 5-95 % band: " + name, "frequency (Hz)");
+  if (!fanReal.empty()) renderGnuplot(dir, "fan_real_part", fanReal);
+  if (!fanFrequency.empty()) renderGnuplot(dir, "fan_frequency", fanFrequency);
   const bool sobol = s.options.method == SamplingMethod::Sobol;
   for (size_t m = 0; m < sum.criticalSpeeds.size(); ++m) {
     const auto& c = sum.criticalSpeeds[m];
     if (c.count < 2) continue;
     renderGnuplot(dir, "histogram_" + c.mode, makeHistogramBody(c.mode, static_cast<int>(6 + s.params.size() + m)));
-    renderGnuplot(dir, "sensitivity_" + c.mode, makeSensitivityBody(c.mode, rows[m], sobol));
+    if (hasFiniteValue(c.sensitivity)) renderGnuplot(dir, "sensitivity_" + c.mode, makeSensitivityBody(c.mode, rows[m], sobol));
   }
 }
 

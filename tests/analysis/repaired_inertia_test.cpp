@@ -10,6 +10,7 @@
 
 #include <Eigen/Dense>
 
+#include "tests/support/temp_dir.h"
 #include "analysis/sweep.h"
 #include "io/atomic_file.h"
 #include "scenario/bicycle_parameters.h"
@@ -89,7 +90,7 @@ TEST(RepairedInertia, EigenvaluesEqualMeijaardFormulasOnTheFileValues) {
     const std::string file = kBicycles + bike + "/Parameters/" + bike + "Benchmark.txt";
     const auto p = readBicycleParameters(file);  // unrepaired
     const WhippleMatrices m = calcMeijaardMatrices(p);
-    const auto tmp = std::filesystem::temp_directory_path() / ("motostab_repaired_" + std::string(bike) + ".yaml");
+    const auto tmp = makeTempDir("repaired") / ("motostab_repaired_" + std::string(bike) + ".yaml");
     writeFileAtomically(tmp, convertBicycleParametersToScenario(file, bike, {true}));
     const VehicleModel model(loadScenario(tmp.string()));
     double worst = 0;

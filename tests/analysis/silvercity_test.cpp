@@ -6,6 +6,7 @@
 
 #include <filesystem>
 
+#include "tests/support/temp_dir.h"
 #include "analysis/sweep.h"
 #include "io/atomic_file.h"
 #include "scenario/bicycle_parameters.h"
@@ -33,7 +34,7 @@ TEST(Silvercity, WeaveAndCapsizeSpeeds) {
 
 // The imported parameter files give the same eigenvalues as the hand-written scenarios.
 void expectSameEigenvalues(const std::string& parameterFile, const std::string& scenarioFile) {
-  const auto tmp = std::filesystem::temp_directory_path() / ("motostab_import_" + std::filesystem::path(scenarioFile).stem().string() + ".yaml");
+  const auto tmp = makeTempDir("import") / ("motostab_import_" + std::filesystem::path(scenarioFile).stem().string() + ".yaml");
   writeFileAtomically(tmp, convertBicycleParametersToScenario(parameterFile, "imported"));
   const VehicleModel imported(loadScenario(tmp.string()));
   const VehicleModel written(loadScenario(scenarioFile));

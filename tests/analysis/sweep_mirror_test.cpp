@@ -6,9 +6,9 @@
 #include <gtest/gtest.h>
 
 #include <Eigen/Eigenvalues>
-#include <random>
 #include <sstream>
 
+#include "io/portable_random.h"
 #include "analysis/sweep.h"
 #include "tests/uncertainty/test_support.h"
 
@@ -18,11 +18,11 @@ namespace {
 const std::string kEnduro = std::string(MOTOSTAB_SOURCE_DIR) + "/scenarios/enduro.yaml";
 
 // The four issue-10 extensions with stiffnesses and dampings drawn at random (seeded).
-std::vector<std::string> drawExtensions(std::mt19937_64& g) {
+std::vector<std::string> drawExtensions(PortableRandom& g) {
   auto draw = [&](double a, double b) {
     std::ostringstream s;
     s.precision(17);
-    s << test::drawUniformIn(g, a, b);
+    s << g.drawUniform(a, b);
     return s.str();
   };
   return {"steer_damper={damping_Nms_per_rad: " + draw(2, 10) + "}",
@@ -85,7 +85,7 @@ void expectEigensystemsOfA(const SweepResult& s) {
 }
 
 TEST(MirrorSymmetry, SymmetricVehicleWithExtensionsMatchesCentralDifferences) {
-  std::mt19937_64 g(20261124);
+  PortableRandom g(20261124);
   const VehicleModel model(loadScenario(kEnduro, drawExtensions(g)));
   const SweepResult mirrored = sweep(model, true), central = sweep(model, false);
   // Mirrored sweeps have exact zeros between the lateral and in-plane blocks of A, which are then
@@ -157,8 +157,8 @@ LinearState findMirroredState(const VehicleModel& model, const SweepResult& s) {
 }
 
 TEST(MirrorSymmetry, SecondOrderAsymmetryFailsTheCheck) {
-  std::mt19937_64 g(7);
-  const double c = test::drawUniformIn(g, 2e3, 1e4);  // N m per (unit of x)^2
+  PortableRandom g(7);
+  const double c = g.drawUniform(2e3, 1e4);  // N m per (unit of x)^2
   const Scenario scenario = loadScenario(kEnduro);
   const VehicleModel symmetric(scenario);
   const SweepResult plain = sweep(symmetric, false);

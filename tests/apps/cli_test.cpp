@@ -6,8 +6,12 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <algorithm>
 #include <complex>
+#include <fstream>
+#include <iterator>
 #include <map>
+#include <regex>
 #include <string>
 #include <vector>
 
@@ -123,13 +127,65 @@ TEST(CliCommands, ImportedBenchmarkBicycleMatchesTable2) {
   expectEigenvalues(readLinearEigenvalues(dir / "lin" / "eigenvalues.csv"), {kWeave5, kCapsize5, kCastor5}, 1e-4);
 }
 
-// The study's variants are the sweeps of the same scenario with the variant's --set overrides.
+using SweepEigenvalues = std::map<std::pair<double, std::string>, std::vector<cd>>;
+
+// The weave's upper member (largest imaginary part) at `speed`.
+cd getWeave(const SweepEigenvalues& sweep, double speed) {
+  const auto& values = sweep.at({speed, "weave"});
+  return *std::max_element(values.begin(), values.end(), [](cd x, cd y) { return x.imag() < y.imag(); });
+}
+
+// study/report.md on the rigid model: its critical-speed lines and its weave frequency range and most
+// stable speed (at or above 10 m/s), recomputed from the test's sweep `sweep` and its summary.json.
+void expectRigidReportNumbers(const std::string& report, const SweepEigenvalues& sweep, const nlohmann::json& summary) {
+  size_t lines = 0;
+  for (const auto& k : summary.at("critical_speeds")) {
+    const std::string head = "- rigid: " + k.at("mode").get<std::string>() +
+                             (k.at("direction") == "stabilising" ? " becomes stable at " : " becomes unstable at ");
+    const size_t at = report.find(head);
+    ASSERT_NE(at, std::string::npos) << head;
+    EXPECT_NEAR(std::stod(report.substr(at + head.size())), k.at("speed_mps").get<double>(), 5e-4 + 1e-6) << head;
+    ++lines;
+  }
+  size_t stated = 0;
+  for (size_t at = report.find("\n- rigid: "); at != std::string::npos; at = report.find("\n- rigid: ", at + 1)) ++stated;
+  EXPECT_EQ(stated, lines);
+  double fLo = INFINITY, fHi = 0, best = INFINITY, bestSpeed = 0;
+  for (const auto& [key, values] : sweep) {
+    if (key.second != "weave") continue;
+    const cd w = getWeave(sweep, key.first);
+    if (w.imag() > 0) fLo = std::min(fLo, w.imag() / (2 * M_PI)), fHi = std::max(fHi, w.imag() / (2 * M_PI));
+    if (key.first >= 10 && w.real() < best) best = w.real(), bestSpeed = key.first;
+  }
+  std::smatch m;
+  const std::regex here(R"(- Here \(rigid\): ([0-9.]+)-([0-9.]+) Hz; most stable at ([0-9.]+) m/s \(real part (-?[0-9.]+) 1/s\))");
+  ASSERT_TRUE(std::regex_search(report, m, here));
+  EXPECT_NEAR(std::stod(m[1]), fLo, 5e-3 + 1e-6);
+  EXPECT_NEAR(std::stod(m[2]), fHi, 5e-3 + 1e-6);
+  EXPECT_NEAR(std::stod(m[3]), bestSpeed, 5e-2);
+  EXPECT_NEAR(std::stod(m[4]), best, 5e-4 + 1e-6);
+}
+
+// The halved-stiffness column of the weave table for the torsion model at the grid speeds 12 and 20 m/s.
+void expectHalvedTorsionReportNumbers(const std::string& report, const SweepEigenvalues& sweep) {
+  for (double speed : {12.0, 20.0}) {
+    std::smatch m;
+    const std::regex row("\\| " + std::to_string(static_cast<int>(speed)) +
+                         R"( \| torsion \| -?[0-9.]+ \| -?[0-9.]+ % \| (-?[0-9.]+) \|)");
+    ASSERT_TRUE(std::regex_search(report, m, row)) << speed;
+    EXPECT_NEAR(std::stod(m[1]), getWeave(sweep, speed).real(), 5e-4 + 1e-6) << speed;
+  }
+}
+
+// The study's variants are the sweeps of the same scenario with the variant's --set overrides; the
+// numbers its report states are those of the sweeps.
 TEST(CliCommands, StudyVariantsEqualTheirSweeps) {
   const auto dir = makeTempDir("cli_study");
   const CliRun r = runCli({"study", kEnduro, "--speeds", "4:40:4", "--compare", "rigid,torsion", "--out", (dir / "study").string()});
   ASSERT_EQ(r.exitCode, 0) << r.output;
   EXPECT_GE(checkOutputsParse(dir / "study"), 6);
-  EXPECT_GT(fs::file_size(dir / "study" / "report.md"), 100u);
+  std::ifstream reportFile(dir / "study" / "report.md");
+  const std::string report((std::istreambuf_iterator<char>(reportFile)), std::istreambuf_iterator<char>());
   const struct {
     std::string sub;
     std::vector<std::string> sets;
@@ -148,6 +204,9 @@ TEST(CliCommands, StudyVariantsEqualTheirSweeps) {
       ASSERT_TRUE(b.count(key)) << c.sub << " " << key.second << " at " << key.first;
       expectEigenvalues(b.at(key), values, 1e-6);
     }
+    // The report's numbers (printed to 1-3 decimals) against this test's own sweep of the variant.
+    if (c.sub == "nominal/rigid") expectRigidReportNumbers(report, b, readJson(dir / "sweep" / "summary.json"));
+    else expectHalvedTorsionReportNumbers(report, b);
   }
 }
 

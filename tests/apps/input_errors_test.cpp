@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <fstream>
 
+#include "tests/support/temp_dir.h"
 #include "tests/apps/run_motostab.h"
 
 namespace motostab {
@@ -19,7 +20,7 @@ struct Outcome {
 };
 
 Outcome run(const std::vector<std::string>& args) {
-  const auto dir = std::filesystem::temp_directory_path() / "motostab_cli_errors";
+  static const auto dir = makeTempDir("cli_errors");
   std::filesystem::create_directories(dir);
   static int calls = 0;  // ctest runs the cases of this file in parallel processes: one log per run
   const std::string log = (dir / ("log-" + std::to_string(getpid()) + "-" + std::to_string(++calls) + ".txt")).string();
@@ -90,7 +91,7 @@ TEST(CliInput, BadSetNamesTheOverride) {
 }
 
 TEST(CliInput, BadScenarioFiles) {
-  const auto dir = std::filesystem::temp_directory_path() / "motostab_cli_errors";
+  const auto dir = makeTempDir("cli_errors");
   std::filesystem::create_directories(dir);
   const auto dup = (dir / "dup.yaml").string();
   std::ofstream(dup) << "name: a\ngravity_mps2: 9.81\nname: b\n";

@@ -10,6 +10,7 @@
 #include <set>
 #include <thread>
 
+#include "tests/support/temp_dir.h"
 #include "tests/apps/run_motostab.h"
 
 namespace motostab {
@@ -44,7 +45,7 @@ bool waitForFirstOutputFile(const fs::path& dir, pid_t pid) {
 }
 
 TEST(WholeRunOutputs, KilledSweepLeavesCompleteOldOrNewOutputs) {
-  const fs::path dir = fs::temp_directory_path() / "motostab_killed_run";
+  const fs::path dir = makeTempDir("killed_run");
   fs::remove_all(dir);
   fs::create_directories(dir);
   const fs::path target = dir / "out";
@@ -84,7 +85,7 @@ TEST(WholeRunOutputs, KilledSweepLeavesCompleteOldOrNewOutputs) {
 }
 
 TEST(WholeRunOutputs, FailedRunKeepsOldOutputs) {
-  const fs::path dir = fs::temp_directory_path() / "motostab_failed_run";
+  const fs::path dir = makeTempDir("failed_run");
   fs::remove_all(dir);
   fs::create_directories(dir);
   writeOldOutputs(dir / "out");

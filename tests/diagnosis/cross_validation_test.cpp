@@ -5,24 +5,22 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <random>
 #include <stdexcept>
 
+#include "io/portable_random.h"
 #include "diagnosis/cross_validation.h"
 
 namespace motostab {
 namespace {
 
-double draw(std::mt19937_64& rng, double lo, double hi) { return lo + (hi - lo) * (rng() >> 11) * 0x1.0p-53; }
-
 TEST(CrossValidation, FailedAndDivergingFoldsAreMarkedAndDoNotPoisonTheScore) {
-  std::mt19937_64 rng(911);
-  const int K = 5 + static_cast<int>(rng() % 4), n = 40 + static_cast<int>(rng() % 40);
+  PortableRandom rng(911);
+  const int K = 5 + static_cast<int>(rng.drawBits() % 4), n = 40 + static_cast<int>(rng.drawBits() % 40);
   std::vector<int> foldOf(n);
   for (int i = 0; i < n; ++i) foldOf[i] = i * K / n;
   Eigen::VectorXd full(n), held(n);
-  for (int i = 0; i < n; ++i) full(i) = draw(rng, -1.5, 1.5), held(i) = full(i) * draw(rng, 1.0, 4.0);
-  const int throws = static_cast<int>(rng() % K);
+  for (int i = 0; i < n; ++i) full(i) = rng.drawUniform(-1.5, 1.5), held(i) = full(i) * rng.drawUniform(1.0, 4.0);
+  const int throws = static_cast<int>(rng.drawBits() % K);
   const int nan = (throws + 1) % K, huge = (throws + 2) % K;
   const auto fitFold = [&](int f) -> Eigen::VectorXd {
     if (f == throws) throw std::runtime_error("trim failed");

@@ -7,9 +7,9 @@
 
 #include <filesystem>
 #include <fstream>
-#include <random>
 #include <sstream>
 
+#include "io/portable_random.h"
 #include "diagnosis/diagnosis.h"
 #include "io/csv.h"
 
@@ -18,13 +18,9 @@ namespace {
 
 namespace fs = std::filesystem;
 
-double drawUniform(std::mt19937_64& rng, double lo, double hi) {
-  return lo + (hi - lo) * static_cast<double>(rng() >> 11) * 0x1.0p-53;
-}
-
 TEST(DiagnosisPrior, UncertaintySectionSetsTheSigma) {
-  std::mt19937_64 rng(20261124);
-  const double sigmaTrail = drawUniform(rng, 0.001, 0.02), sigmaMass = drawUniform(rng, 0.01, 2.0);
+  PortableRandom rng(20261124);
+  const double sigmaTrail = rng.drawUniform(0.001, 0.02), sigmaMass = rng.drawUniform(0.01, 2.0);
   const fs::path dir = fs::temp_directory_path() / ("motostab-prior-" + std::to_string(::getpid()));
   fs::create_directories(dir);
   std::ifstream in(std::string(MOTOSTAB_SOURCE_DIR) + "/scenarios/whipple-benchmark.yaml");

@@ -8,10 +8,10 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
-#include <random>
 #include <string>
 #include <vector>
 
+#include "io/portable_random.h"
 #include "analysis/sweep.h"
 #include "io/csv.h"
 #include "scenario/scenario.h"
@@ -22,13 +22,13 @@ namespace motostab::testing {
 /// Portable draws: uniform in [0, 1) from the top 53 bits, normal by Box-Muller.
 struct Draw {
   explicit Draw(uint64_t seed) : rng(seed) {}
-  double uniform() { return (rng() >> 11) * (1.0 / 9007199254740992.0); }
+  double uniform() { return rng.drawUniform(); }
   double uniform(double a, double b) { return a + (b - a) * uniform(); }
   double normal() {
     const double u = std::max(uniform(), 1e-300), v = uniform();
     return std::sqrt(-2 * std::log(u)) * std::cos(2 * M_PI * v);
   }
-  std::mt19937_64 rng;
+  PortableRandom rng;
 };
 
 struct HiddenEffect {

@@ -1,25 +1,23 @@
 // Bounded Levenberg-Marquardt and the chi-square tail against independent calculations.
+#include "io/portable_random.h"
 #include "diagnosis/least_squares.h"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <random>
 
 namespace motostab {
 namespace {
 
-double uniform(std::mt19937_64& g) { return (g() >> 11) * (1.0 / 9007199254740992.0); }
-
 // y = a exp(-b t) + noise: the fit must return a and b near the truth, with the standard errors of
 // the linearised model computed here independently, (J'J)^-1 s^2.
 TEST(LeastSquares, ExponentialDecayAndStandardErrors) {
-  std::mt19937_64 g(11);
-  const double a = 1 + uniform(g), b = 0.5 + uniform(g), sigma = 0.01;
+  PortableRandom g(11);
+  const double a = 1 + g.drawUniform(), b = 0.5 + g.drawUniform(), sigma = 0.01;
   std::vector<double> t, y;
   for (int i = 0; i < 60; ++i) {
     t.push_back(0.05 * i);
-    const double u1 = std::max(uniform(g), 1e-300), u2 = uniform(g);
+    const double u1 = std::max(g.drawUniform(), 1e-300), u2 = g.drawUniform();
     y.push_back(a * std::exp(-b * t.back()) + sigma * std::sqrt(-2 * std::log(u1)) * std::cos(2 * M_PI * u2));
   }
   LeastSquaresProblem p;

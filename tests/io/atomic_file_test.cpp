@@ -4,10 +4,11 @@
 #include <fstream>
 #include <sstream>
 
+#include "tests/support/temp_dir.h"
 #include "io/atomic_file.h"
 
 TEST(AtomicFile, WritesWholeContentAndLeavesNoTemporary) {
-  const auto dir = std::filesystem::temp_directory_path() / "motostab_atomic_test";
+  const auto dir = makeTempDir("atomic_test");
   std::filesystem::remove_all(dir);
   motostab::writeFileAtomically(dir / "a.txt", "hello\n");
   std::ifstream in(dir / "a.txt");
@@ -20,7 +21,7 @@ TEST(AtomicFile, WritesWholeContentAndLeavesNoTemporary) {
 }
 
 TEST(AtomicFile, FailureLeavesOldFileIntact) {
-  const auto dir = std::filesystem::temp_directory_path() / "motostab_atomic_test2";
+  const auto dir = makeTempDir("atomic_test2");
   std::filesystem::remove_all(dir);
   motostab::writeFileAtomically(dir / "a.txt", "old");
   // A folder in the way of the target makes the rename fail.

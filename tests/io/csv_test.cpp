@@ -3,13 +3,14 @@
 #include <filesystem>
 #include <fstream>
 
+#include "tests/support/temp_dir.h"
 #include "io/csv.h"
 #include "io/input_error.h"
 
 namespace {
 
 std::filesystem::path writeTemp(const std::string& name, const std::string& text) {
-  auto p = std::filesystem::temp_directory_path() / name;
+  auto p = makeTempDir("csv") / name;
   std::ofstream(p) << text;
   return p;
 }

@@ -4,17 +4,17 @@
 #include <cmath>
 #include <cstdio>
 #include <cstring>
-#include <random>
 
+#include "io/portable_random.h"
 #include "io/number.h"
 
 namespace motostab {
 namespace {
 
 // Random finite doubles over many magnitudes (portable: raw mt19937_64 bits reinterpreted).
-double drawFinite(std::mt19937_64& rng) {
+double drawFinite(PortableRandom& rng) {
   for (;;) {
-    const std::uint64_t bits = rng();
+    const std::uint64_t bits = rng.drawBits();
     double v;
     std::memcpy(&v, &bits, sizeof v);
     if (std::isfinite(v)) return v;
@@ -22,7 +22,7 @@ double drawFinite(std::mt19937_64& rng) {
 }
 
 TEST(Number, RoundTripsRandomFiniteValues) {
-  std::mt19937_64 rng(20261124);
+  PortableRandom rng(20261124);
   for (int i = 0; i < 2000; ++i) {
     const double v = drawFinite(rng);
     char text[64];

@@ -7,6 +7,7 @@
 #include <set>
 #include <sstream>
 
+#include "tests/support/temp_dir.h"
 #include "io/input_error.h"
 #include "io/output_folder.h"
 
@@ -15,7 +16,7 @@ namespace {
 namespace fs = std::filesystem;
 
 fs::path freshDir(const std::string& name) {
-  const fs::path d = fs::temp_directory_path() / ("motostab_output_folder_" + name);
+  const fs::path d = makeTempDir("output_folder_" + name);
   fs::remove_all(d);
   fs::create_directories(d);
   return d;

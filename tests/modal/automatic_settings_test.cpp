@@ -6,19 +6,14 @@
 #include <cmath>
 #include <complex>
 #include <cstdint>
-#include <random>
 
+#include "io/portable_random.h"
 #include "modal/automatic_settings.h"
 
 namespace {
 
 using namespace motostab::modal;
 using cd = std::complex<double>;
-
-// Portable uniform draw in [a, b].
-double drawUniform(std::mt19937_64& rng, double a, double b) {
-  return a + (b - a) * static_cast<double>(rng() >> 11) * 0x1.0p-53;
-}
 
 FrfEstimate makeEstimate(size_t bins, double df) {
   FrfEstimate e;
@@ -32,9 +27,9 @@ FrfEstimate makeEstimate(size_t bins, double df) {
 }
 
 TEST(AutomaticSettings, BandEndsWhereForceDropsTwentyDbAndStartsWhereCoherenceHolds) {
-  std::mt19937_64 rng(7);
+  motostab::PortableRandom rng(7);
   for (int trial = 0; trial < 20; ++trial) {
-    const double fc = drawUniform(rng, 80, 200), fLow = std::floor(drawUniform(rng, 15, 60));
+    const double fc = rng.drawUniform(80, 200), fLow = std::floor(rng.drawUniform(15, 60));
     FrfEstimate e = makeEstimate(513, 1.0);  // Nyquist 512 Hz
     for (size_t k = 0; k < 513; ++k) {
       const double f = e.frequency[k];

@@ -4,8 +4,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <random>
 
+#include "io/portable_random.h"
 #include "plugins/pin_spring_damper.h"
 
 namespace motostab {
@@ -26,13 +26,12 @@ struct OnePin {
 };
 
 TEST(PinSpringDamper, GeneralizedForceAndEnergyMatchTheLinearLaw) {
-  std::mt19937_64 rng(20261124);
-  std::uniform_real_distribution<double> unit(0, 1);
+  PortableRandom rng(20261124);
   for (int trial = 0; trial < 20; ++trial) {
-    const double k = 10 + 1e5 * unit(rng), c = 100 * unit(rng), q0 = unit(rng) - 0.5;
-    OnePin m(k, c, q0, 0.5 + unit(rng));
+    const double k = 10 + 1e5 * rng.drawUniform(), c = 100 * rng.drawUniform(), q0 = rng.drawUniform() - 0.5;
+    OnePin m(k, c, q0, 0.5 + rng.drawUniform());
     SimTK::State s = m.system.getDefaultState();
-    const double q = 2 * unit(rng) - 1, u = 20 * unit(rng) - 10;
+    const double q = 2 * rng.drawUniform() - 1, u = 20 * rng.drawUniform() - 10;
     m.pin.setOneQ(s, 0, q);
     m.pin.setOneU(s, 0, u);
     m.system.realize(s, SimTK::Stage::Dynamics);

@@ -6,6 +6,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "tests/support/temp_dir.h"
 #include "analysis/sweep.h"
 #include "vehicle/vehicle_model.h"
 
@@ -14,7 +15,7 @@ namespace {
 
 // The benchmark scenario with its contact replaced and a plugin library listed.
 std::string scenarioWith(const std::string& name, const std::string& contact, const std::string& library,
-                         const std::filesystem::path& dir = std::filesystem::temp_directory_path()) {
+                         const std::filesystem::path& dir = makeTempDir("plugins")) {
   std::ifstream in(std::string(MOTOSTAB_SOURCE_DIR) + "/scenarios/whipple-benchmark.yaml");
   std::stringstream ss;
   ss << in.rdbuf();
@@ -215,7 +216,7 @@ TEST(Plugins, BareLibraryNameIsAnInputError) {
 
 TEST(Plugins, RelativeLibraryPathIsRelativeToTheScenario) {
   namespace fs = std::filesystem;
-  const fs::path dir = fs::temp_directory_path() / "motostab_plugin_relative";
+  const fs::path dir = makeTempDir("plugin_relative");
   fs::remove_all(dir);
   fs::create_directories(dir / "lib");
   fs::copy_file(MOTOSTAB_EXAMPLE_PLUGIN, dir / "lib" / "spring.so");

@@ -9,6 +9,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "tests/support/temp_dir.h"
 #include "io/input_error.h"
 #include "response/response_csv.h"
 
@@ -18,13 +19,6 @@ namespace fs = std::filesystem;
 using motostab::InputError;
 using motostab::response::CsvIdentificationRequest;
 using motostab::response::identifyModesFromCsv;
-
-fs::path makeTempDir(const std::string& name) {
-  const fs::path dir = fs::temp_directory_path() / ("motostab_response_" + name);
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  return dir;
-}
 
 // A record with comments, the time in the second column: y = 0.2 + 1.3 e^{-0.5 t} cos(4 t + 0.6), 0..6 s.
 fs::path writeRecord(const fs::path& dir) {

@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <fstream>
 
+#include "tests/support/temp_dir.h"
 #include "../apps/run_motostab.h"
 #include "io/atomic_file.h"
 #include "io/input_error.h"
@@ -74,7 +75,7 @@ TEST(BicycleParameters, RepairMovesYyExactlyOntoTheBound) {
     EXPECT_NEAR(calcExcess(xx, repairs[0].after, zz, xz), 0.0, 1e-14);
     const std::string verb = c.brokenAxis == 'y' ? " lowered" : " raised";
     EXPECT_NE(text.find("# --repair-inertia: " + std::string(c.key) + verb), std::string::npos) << text;
-    const auto tmp = std::filesystem::temp_directory_path() / ("motostab_repair_" + std::string(c.bike) + ".yaml");
+    const auto tmp = makeTempDir("repair") / ("motostab_repair_" + std::string(c.bike) + ".yaml");
     writeFileAtomically(tmp, text);
     EXPECT_NO_THROW(loadScenario(tmp.string())) << c.bike;
   }
@@ -89,7 +90,7 @@ TEST(BicycleParameters, ValidFilesAreNotTouched) {
 
 TEST(BicycleParameters, NamesThatYamlWouldRetypeStayStrings) {
   for (const std::string name : {"null", "1", "true", "~", "1e3", "no", "a: b", "say \"hi\"", "back\\slash"}) {
-    const auto tmp = std::filesystem::temp_directory_path() / "motostab_import_name.yaml";
+    const auto tmp = makeTempDir("import_name") / "import_name.yaml";
     writeFileAtomically(tmp, convertBicycleParametersToScenario(getParameterFile("Benchmark"), name));
     EXPECT_EQ(loadScenario(tmp.string()).name, name);
   }
@@ -97,7 +98,7 @@ TEST(BicycleParameters, NamesThatYamlWouldRetypeStayStrings) {
 
 // Through the command line: the default name is the output file's stem, and it must stay a string.
 TEST(BicycleParameters, ImportCommandToNullOneAndTrueYaml) {
-  const auto dir = std::filesystem::temp_directory_path() / "motostab_import_cli";
+  const auto dir = makeTempDir("import_cli");
   std::filesystem::create_directories(dir);
   std::string output;
   for (const std::string stem : {"null", "1", "true"}) {

@@ -1,9 +1,9 @@
 // Key paths of scalar parameters (scenario/parameter_paths.h) and `--set` with sequence indices.
+#include "io/portable_random.h"
 #include "scenario/parameter_paths.h"
 
 #include <gtest/gtest.h>
 
-#include <random>
 #include <set>
 
 #include "scenario/scenario.h"
@@ -61,8 +61,8 @@ TEST(ParameterPaths, SwingarmBodyAndPivotAreListedButNotItsPluginKeys) {
 }
 
 TEST(ParameterPaths, IndexedOverrideChangesOnlyThatElement) {
-  std::mt19937_64 rng(20261124);
-  const double z = 0.5 + static_cast<double>(rng() % 1000) / 1000.0;
+  PortableRandom rng(20261124);
+  const double z = 0.5 + static_cast<double>(rng.drawBits() % 1000) / 1000.0;
   const Scenario base = loadScenario(kWhipple);
   const Scenario s = loadScenario(kWhipple, {formatOverride("rear_frame.com_m[2]", z)});
   EXPECT_EQ(s.rearFrame.com[2], z);  // 17 digits round-trip exactly

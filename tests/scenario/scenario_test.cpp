@@ -4,10 +4,11 @@
 #include <filesystem>
 #include <fstream>
 #include <functional>
-#include <random>
 #include <regex>
 #include <sstream>
 
+#include "tests/support/temp_dir.h"
+#include "io/portable_random.h"
 #include "scenario/parameter_paths.h"
 #include "scenario/scenario.h"
 #include "vehicle/vehicle_model.h"
@@ -33,7 +34,7 @@ std::string variant(const std::string& name, const std::string& from, const std:
   const auto pos = text.find(from);
   EXPECT_NE(pos, std::string::npos) << from;
   text.replace(pos, from.size(), to);
-  const auto p = std::filesystem::temp_directory_path() / ("motostab_bad_" + name + ".yaml");
+  const auto p = makeTempDir("bad") / ("motostab_bad_" + name + ".yaml");
   std::ofstream(p) << text;
   return p.string();
 }
@@ -178,8 +179,8 @@ std::string catchMessage(const std::function<void()>& f) {
 // Key by key, --set creates the missing `suspension` map; the result equals the whole-section form
 // (values drawn in the test). A created section still meets the strict reader.
 TEST(Scenario, SetCreatesAMissingSectionKeyByKey) {
-  std::mt19937_64 rng(20261124);
-  const double rate = 1e4 + 3e4 * (rng() >> 11) * 0x1.0p-53, damping = 500 + 2000 * (rng() >> 11) * 0x1.0p-53;
+  PortableRandom rng(20261124);
+  const double rate = 1e4 + 3e4 * rng.drawUniform(), damping = 500 + 2000 * rng.drawUniform();
   const Scenario keys = loadScenario(kEnduro, {formatOverride("swingarm.suspension.wheel_rate_N_per_m", rate),
                                                formatOverride("swingarm.suspension.damping_Ns_per_m", damping)});
   const std::string r = formatOverride("r", rate).substr(2), c = formatOverride("c", damping).substr(2);

@@ -7,9 +7,10 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
-#include <random>
 #include <sstream>
 
+#include "tests/support/temp_dir.h"
+#include "io/portable_random.h"
 #include "scenario/bicycle_parameters.h"
 #include "scenario/bicycle_parameters_uncertainty.h"
 #include "scenario/scenario.h"
@@ -27,15 +28,15 @@ std::string readText(const std::string& p) {
 // The bundled scenario with `section` appended; the section starts at line (returned .second).
 std::pair<std::string, int> writeWith(const std::string& bundled, const std::string& section, const std::string& tag) {
   const std::string base = readText(std::string(MOTOSTAB_SOURCE_DIR) + "/scenarios/" + bundled) + "\n";
-  const auto file = std::filesystem::temp_directory_path() / ("motostab-uqsec-" + tag + ".yaml");
+  const auto file = makeTempDir("uqsec") / ("motostab-uqsec-" + tag + ".yaml");
   std::ofstream(file) << base << section;
   const int lines = static_cast<int>(std::count(base.begin(), base.end(), '\n'));
   return {file.string(), lines + 1};
 }
 
 TEST(UncertaintySection, ReadsSigmasDistributionsAndAnyNumericPath) {
-  std::mt19937_64 g(31);
-  const double s1 = 1e-3 * static_cast<double>(1 + g() % 9), s2 = static_cast<double>(100 + g() % 2000);
+  PortableRandom g(31);
+  const double s1 = 1e-3 * static_cast<double>(1 + g.drawBits() % 9), s2 = static_cast<double>(100 + g.drawBits() % 2000);
   std::ostringstream sec;
   sec.precision(17);
   sec << "uncertainty:\n  geometry.normal_trail_m: " << s1 << "\n  rear_frame.com_m[2]: {sigma: 0.01, distribution: uniform}\n"
@@ -95,7 +96,7 @@ TEST(UncertaintySection, ImportedBicycleParametersSigmasReachTheSection) {
   }
   size_t nonzero = 0;
   for (const auto& [k, v] : own) nonzero += v > 0 && k != "v" ? 1 : 0;
-  const auto out = std::filesystem::temp_directory_path() / "motostab-uqsec-crescendo.yaml";
+  const auto out = makeTempDir("uqsec-crescendo") / "uqsec-crescendo.yaml";
   std::ofstream(out) << convertBicycleParametersToScenario(src, "crescendo")
                      << formatBicycleParametersUncertainty(readBicycleParameterSigmas(src));
   const Scenario s = loadScenario(out.string());

@@ -2,6 +2,7 @@
 // rule, and errors located by file:line:column and key path.
 #include <gtest/gtest.h>
 
+#include "tests/support/temp_dir.h"
 #include "tests/support/catch_input_error.h"
 
 #include <filesystem>
@@ -14,7 +15,7 @@ namespace {
 namespace fs = std::filesystem;
 
 std::string writeYaml(const std::string& name, const std::string& text) {
-  const fs::path dir = fs::temp_directory_path() / "motostab_yaml_map";
+  static const fs::path dir = makeTempDir("yaml_map");
   fs::create_directories(dir);
   const fs::path p = dir / name;
   std::ofstream(p) << text;

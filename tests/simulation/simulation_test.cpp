@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <iostream>
 
+#include "tests/support/temp_dir.h"
 #include "analysis/state_function.h"
 #include "io/csv.h"
 #include "io/input_error.h"
@@ -99,7 +100,7 @@ TEST(SimulationRobustness, UnstableRunFallsAndKeepsData) {
   EXPECT_NEAR(r.rows.size(), std::round(r.endTime / o.outputStep) + 1, 0.5);
   std::cout << r.message << "\n";
 
-  const auto dir = std::filesystem::temp_directory_path() / "motostab_sim_fall_test";
+  const auto dir = makeTempDir("sim_fall_test");
   std::filesystem::remove_all(dir);
   writeTimeseries(dir, r);
   const CsvTable t = readCsv(dir / "timeseries.csv");
@@ -219,7 +220,7 @@ TEST(SimulationOutput, WritesTimeseriesPlotAndModes) {
     EXPECT_LE(row.back(), 0.35 + 1e-9);
   EXPECT_NEAR(withExtra.rows.front().back(), 0.35, 1e-9);  // upright at the trim
 
-  const auto dir = std::filesystem::temp_directory_path() / "motostab_sim_output_test";
+  const auto dir = makeTempDir("sim_output_test");
   std::filesystem::remove_all(dir);
   writeTimeseries(dir, r);
   writeResponsePlot(dir, r, "test");

@@ -9,8 +9,8 @@
 #include <cmath>
 #include <complex>
 #include <cstdint>
-#include <random>
 
+#include "io/portable_random.h"
 #include "rig_truth.h"
 #include "swingarm/identification/virtual_rig.h"
 #include "tests/support/temp_dir.h"
@@ -22,10 +22,10 @@ using namespace motostab::identification;
 // Portable draws: mt19937_64 is specified bit for bit; the transforms below are ours.
 struct Draw {
   explicit Draw(std::uint64_t seed) : rng(seed) {}
-  double uniform(double a, double b) { return a + (b - a) * static_cast<double>(rng() >> 11) * 0x1.0p-53; }
+  double uniform(double a, double b) { return a + (b - a) * rng.drawUniform(); }
   double logUniform(double a, double b) { return std::exp(uniform(std::log(a), std::log(b))); }
-  int integer(int a, int b) { return a + static_cast<int>(rng() % static_cast<std::uint64_t>(b - a + 1)); }
-  std::mt19937_64 rng;
+  int integer(int a, int b) { return a + static_cast<int>(rng.drawBits() % static_cast<std::uint64_t>(b - a + 1)); }
+  motostab::PortableRandom rng;
 };
 
 // |accelerance| at resonance of mode m between the hit and sensor j, written here from the 1-DOF modal

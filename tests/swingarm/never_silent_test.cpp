@@ -4,8 +4,8 @@
 #include <gtest/gtest.h>
 
 #include <cstdint>
-#include <random>
 
+#include "io/portable_random.h"
 #include "../apps/run_motostab.h"
 #include "swingarm/identification/frf_diagnosis.h"
 #include "swingarm/identification/virtual_rig.h"
@@ -14,9 +14,6 @@
 namespace {
 
 using namespace motostab::identification;
-
-// Portable uniform noise in [-a, a] (mt19937_64 is specified bit for bit).
-double drawNoise(std::mt19937_64& rng, double a) { return a * (2.0 * static_cast<double>(rng() >> 11) * 0x1.0p-53 - 1.0); }
 
 std::vector<double> getLoads() {
   std::vector<double> loads;
@@ -28,10 +25,10 @@ TEST(NeverSilent, NoModeIsExit3WithWhatWasTriedAndWhatToSet) {
   const auto dir = makeTempDir("no_mode");
   const VirtualSwingarm rig;
   auto hits = simulateHammerHits(rig, {}, RigNoise(), 3);
-  std::mt19937_64 rng(99);
+  motostab::PortableRandom rng(99);
   for (auto& h : hits)
     for (auto& ch : h.responses)
-      for (auto& v : ch) v = drawNoise(rng, 1.0);  // the accelerometers saw nothing but noise
+      for (auto& v : ch) v = rng.drawUniform(-1.0, 1.0);  // the accelerometers saw nothing but noise
   writeFrfTestFiles(dir, rig, hits);
   std::string output;
   const int code = motostab::test::runMotostab(

@@ -11,6 +11,7 @@
 #include <sstream>
 #include <unistd.h>
 
+#include "tests/support/temp_dir.h"
 #include "analysis/linearize.h"
 #include "analysis/sweep.h"
 #include "tyres/relaxation_linear.h"
@@ -101,7 +102,7 @@ TEST(BicycleTyres, KeysBesideThePresetOverrideIt) {
 }
 
 TEST(BicycleTyres, BadPresetInputNamesFileLineColumnAndKey) {
-  const auto dir = std::filesystem::temp_directory_path();
+  const auto dir = makeTempDir("bicycle_tyres");
   auto expectError = [&](const std::string& contact, const std::string& key, int column) {
     std::ifstream in(kWhipple);
     std::stringstream text;

@@ -3,7 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <random>
+#include "io/portable_random.h"
 
 #include "tests/uncertainty/test_support.h"
 #include "uncertainty/sampling.h"
@@ -27,15 +27,15 @@ Moments calcMoments(const std::vector<double>& v) {
 }
 
 TEST(Sampling, EachDistributionHasTheStatedMeanAndStandardDeviation) {
-  std::mt19937_64 g(20261124);
-  const uint64_t seed = g();
+  PortableRandom g(20261124);
+  const uint64_t seed = g.drawBits();
   const int n = 40000;
   for (D d : {D::Normal, D::Uniform, D::Lognormal}) {
     ParameterUncertainty p;
     p.path = "rear_frame.mass_kg";
     p.distribution = d;
-    const double mu = test::drawUniformIn(g, 1, 100);
-    p.sigma = mu * test::drawUniformIn(g, 0.01, 0.3);
+    const double mu = g.drawUniform(1, 100);
+    p.sigma = mu * g.drawUniform(0.01, 0.3);
     std::vector<double> x(n);
     for (int i = 0; i < n; ++i) x[i] = drawParameters(seed, static_cast<uint64_t>(i), 0, {p}, {mu})[0];
     const Moments m = calcMoments(x);
@@ -60,8 +60,8 @@ TEST(Sampling, StandardNormalTailsMatchTheNormalDistribution) {
 }
 
 TEST(Sampling, DrawsDependOnlyOnSeedSampleAndPath) {
-  std::mt19937_64 g(99);
-  const uint64_t seed = g(), sample = g() % 100000;
+  PortableRandom g(99);
+  const uint64_t seed = g.drawBits(), sample = g.drawBits() % 100000;
   auto make = [](const std::string& path, double sigma) {
     ParameterUncertainty p;
     p.path = path, p.sigma = sigma;

@@ -9,12 +9,12 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
-#include <random>
 #include <sstream>
 #include <string>
 #include <unistd.h>
 #include <vector>
 
+#include "io/portable_random.h"
 #include "analysis/linearize.h"
 #include "analysis/sweep.h"
 #include "analysis/trim.h"
@@ -27,11 +27,6 @@ using cd = std::complex<double>;
 
 inline const std::string kWhipple = std::string(MOTOSTAB_SOURCE_DIR) + "/scenarios/whipple-benchmark.yaml";
 inline const std::string kEnduro = std::string(MOTOSTAB_SOURCE_DIR) + "/scenarios/enduro.yaml";
-
-/// Uniform draw in [a, b) from the top 53 bits of mt19937_64 (same on every standard library).
-inline double drawUniform(std::mt19937_64& rng, double a, double b) {
-  return a + (b - a) * static_cast<double>(rng() >> 11) * 0x1.0p-53;
-}
 
 /// Eigenvalues of the fourth-order linearisation at `speed` (m/s).
 inline Eigen::VectorXcd calcEigenvaluesAt(const Scenario& s, double speed) {

@@ -7,6 +7,7 @@
 #include <set>
 #include <sstream>
 
+#include "io/portable_random.h"
 #include "extension_test_util.h"
 
 namespace motostab {
@@ -21,15 +22,15 @@ struct Fork {
 
 // Stiffnesses around a motorcycle fork's (Sharp & Alstead 1980; Cossalter 2006 sec. 8.6: tens of
 // kN m/rad in bending), drawn at random (seeded) with the axis point and the moving fraction.
-Fork drawFork(std::mt19937_64& rng, bool torsion) {
+Fork drawFork(PortableRandom& rng, bool torsion) {
   Fork f;
-  f.k = drawUniform(rng, 2e4, 6e4);
-  f.c = drawUniform(rng, 5, 30);
-  f.distance = drawUniform(rng, 0.6, 0.9);
-  f.fraction = drawUniform(rng, 0.2, 0.45);
+  f.k = rng.drawUniform(2e4, 6e4);
+  f.c = rng.drawUniform(5, 30);
+  f.distance = rng.drawUniform(0.6, 0.9);
+  f.fraction = rng.drawUniform(0.2, 0.45);
   f.torsion = torsion;
-  f.kt = drawUniform(rng, 2e4, 6e4);
-  f.ct = drawUniform(rng, 5, 30);
+  f.kt = rng.drawUniform(2e4, 6e4);
+  f.ct = rng.drawUniform(5, 30);
   return f;
 }
 
@@ -65,7 +66,7 @@ Eigen::Matrix3d toMatrix(const InertiaSpec& I) {
 }
 
 TEST(ForkCompliance, MassSplitKeepsTheTotals) {
-  std::mt19937_64 rng(11);
+  PortableRandom rng(11);
   for (const std::string& file : {kWhipple, kEnduro}) {
     const Scenario base = loadScenario(file);
     const Scenario fork = loadScenario(file, {toYaml(drawFork(rng, true))});
@@ -78,7 +79,7 @@ TEST(ForkCompliance, MassSplitKeepsTheTotals) {
 // fraction) and the wheel swing about the bending axis,
 // omega^2 = k / J; the torsion link (massless) turns the wheel alone about the steer-axis direction.
 TEST(ForkCompliance, LockedVehicleFrequenciesAreSqrtKOverJ) {
-  std::mt19937_64 rng(22);
+  PortableRandom rng(22);
   for (int trial = 0; trial < 3; ++trial) {
     const Fork f = drawFork(rng, true);
     const Scenario s = loadScenario(kEnduro, {toYaml(f), "gravity_mps2=0"});
@@ -97,7 +98,7 @@ TEST(ForkCompliance, LockedVehicleFrequenciesAreSqrtKOverJ) {
 }
 
 TEST(ForkCompliance, StiffForkReproducesTheRigidFork) {
-  std::mt19937_64 rng(33);
+  PortableRandom rng(33);
   expectWhippleSpectrumKept(loadScenario(kWhipple, {toYaml(drawFork(rng, true), 1e4, 1e2)}));
 
   expectEnduroWeaveAndWobbleKept({toYaml(drawFork(rng, true), 1e4, 1e2)});
@@ -105,7 +106,7 @@ TEST(ForkCompliance, StiffForkReproducesTheRigidFork) {
 
 // With a realistic fork the sweep still finds weave and wobble, and names the fork's own mode.
 TEST(ForkCompliance, LabelsNameTheForkModeAndKeepWeaveAndWobble) {
-  std::mt19937_64 rng(44);
+  PortableRandom rng(44);
   const SweepResult r = runScenarioSweep(loadScenario(kEnduro, {toYaml(drawFork(rng, false))}), 5, 35, 1);
   std::set<std::string> labels;
   for (const auto& b : r.branches) labels.insert(b.label);

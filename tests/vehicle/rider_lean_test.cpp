@@ -5,6 +5,7 @@
 #include <cmath>
 #include <sstream>
 
+#include "io/portable_random.h"
 #include "extension_test_util.h"
 
 namespace motostab {
@@ -16,15 +17,15 @@ using namespace motostab::testing;
 // frame's and 0.2-0.3 m above the hinge, inertia of a trunk-sized body (Winter 2009, Table 4.1:
 // head-arms-trunk radius of gyration about 0.5 of its 0.5 m length). Small enough that the rest of the
 // Meijaard (2007) rear frame (85 kg, I_xx 9.2 kg m^2) stays a valid body.
-RiderLeanSpec drawRider(std::mt19937_64& rng, const BodySpec& rearFrame) {
+RiderLeanSpec drawRider(PortableRandom& rng, const BodySpec& rearFrame) {
   RiderLeanSpec r;
-  r.body.mass = drawUniform(rng, 20, 30);
-  r.body.com = {rearFrame.com[0] + drawUniform(rng, -0.05, 0.05), 0, rearFrame.com[2] + drawUniform(rng, 0.15, 0.25)};
-  r.hingeHeight = r.body.com[2] - drawUniform(rng, 0.2, 0.3);
-  const double xx = drawUniform(rng, 1.0, 1.5);
-  r.body.inertia = {xx, xx * drawUniform(rng, 1.0, 1.1), drawUniform(rng, 0.3, 0.5), 0, drawUniform(rng, -0.1, 0.1), 0};
-  r.stiffness = drawUniform(rng, 800, 2000);
-  r.damping = drawUniform(rng, 20, 80);
+  r.body.mass = rng.drawUniform(20, 30);
+  r.body.com = {rearFrame.com[0] + rng.drawUniform(-0.05, 0.05), 0, rearFrame.com[2] + rng.drawUniform(0.15, 0.25)};
+  r.hingeHeight = r.body.com[2] - rng.drawUniform(0.2, 0.3);
+  const double xx = rng.drawUniform(1.0, 1.5);
+  r.body.inertia = {xx, xx * rng.drawUniform(1.0, 1.1), rng.drawUniform(0.3, 0.5), 0, rng.drawUniform(-0.1, 0.1), 0};
+  r.stiffness = rng.drawUniform(800, 2000);
+  r.damping = rng.drawUniform(20, 80);
   return r;
 }
 
@@ -41,7 +42,7 @@ std::string toYaml(const RiderLeanSpec& r, double stiffnessScale = 1, double dam
 }
 
 TEST(RiderLean, WholeVehicleTotalsAreKept) {
-  std::mt19937_64 rng(1010);
+  PortableRandom rng(1010);
   for (const std::string& file : {kWhipple, kEnduro}) {
     const Scenario base = loadScenario(file);
     const RiderLeanSpec r = drawRider(rng, base.rearFrame);
@@ -54,7 +55,7 @@ TEST(RiderLean, WholeVehicleTotalsAreKept) {
 // With everything else locked and no gravity the upper body swings about the hinge axis (design x
 // through (0, 0, h)): omega^2 = k / J, J = I_xx + m ((z_G - h)^2 + y_G^2) (parallel axes).
 TEST(RiderLean, LockedVehicleFrequencyIsSqrtKOverJ) {
-  std::mt19937_64 rng(2020);
+  PortableRandom rng(2020);
   for (int trial = 0; trial < 3; ++trial) {
     const RiderLeanSpec r = drawRider(rng, loadScenario(kEnduro).rearFrame);
     const Scenario s = loadScenario(kEnduro, {toYaml(r), "gravity_mps2=0"});
@@ -66,14 +67,14 @@ TEST(RiderLean, LockedVehicleFrequencyIsSqrtKOverJ) {
 }
 
 TEST(RiderLean, StiffRiderReproducesTheRigidRider) {
-  std::mt19937_64 rng(3030);
+  PortableRandom rng(3030);
   expectWhippleSpectrumKept(loadScenario(kWhipple, {toYaml(drawRider(rng, loadScenario(kWhipple).rearFrame), 1e4, 1e2)}));
 
   expectEnduroWeaveAndWobbleKept({toYaml(drawRider(rng, loadScenario(kEnduro).rearFrame), 1e4, 1e2)});
 }
 
 TEST(RiderLean, SetCreatesTheSectionAndEditsIt) {
-  std::mt19937_64 rng(4040);
+  PortableRandom rng(4040);
   const RiderLeanSpec r = drawRider(rng, loadScenario(kWhipple).rearFrame);
   const Scenario s = loadScenario(kWhipple, {toYaml(r), "rider_lean.stiffness_Nm_per_rad=1234"});
   ASSERT_TRUE(s.hasRiderLean);

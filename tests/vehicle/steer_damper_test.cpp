@@ -5,6 +5,7 @@
 #include <Eigen/Eigenvalues>
 #include <cmath>
 
+#include "io/portable_random.h"
 #include "extension_test_util.h"
 #include "meijaard_benchmark.h"
 #include "vehicle/steer_damper.h"
@@ -50,15 +51,15 @@ TEST(SteerDamper, BenchmarkBicycleMatchesMeijaardWithDampingInC) {
 
 // A randomly drawn bicycle (seeded): frame masses, rear-frame CoM and the damping vary.
 TEST(SteerDamper, RandomBicycleMatchesMeijaard) {
-  std::mt19937_64 rng(20260410);
+  PortableRandom rng(20260410);
   Scenario s = loadScenario(kWhipple);
-  s.rearFrame.mass *= drawUniform(rng, 0.7, 1.3);
-  s.rearFrame.com[0] *= drawUniform(rng, 0.8, 1.2);
-  s.rearFrame.com[2] *= drawUniform(rng, 0.9, 1.1);
-  s.frontFrame.mass *= drawUniform(rng, 0.7, 1.3);
-  s.geometry.trail *= drawUniform(rng, 0.7, 1.3);
+  s.rearFrame.mass *= rng.drawUniform(0.7, 1.3);
+  s.rearFrame.com[0] *= rng.drawUniform(0.8, 1.2);
+  s.rearFrame.com[2] *= rng.drawUniform(0.9, 1.1);
+  s.frontFrame.mass *= rng.drawUniform(0.7, 1.3);
+  s.geometry.trail *= rng.drawUniform(0.7, 1.3);
   s.hasSteerDamper = true;
-  s.steerDamper.damping = drawUniform(rng, 0.1, 2.0);
+  s.steerDamper.damping = rng.drawUniform(0.1, 2.0);
   expectMatchesBenchmark(s, s.steerDamper.damping);
 }
 
@@ -77,8 +78,8 @@ TEST(SteerDamper, DampingStabilisesWobble) {
 
 // Linearised, the smoothed friction f tanh(delta'/omega_s) is a viscous damper f/omega_s.
 TEST(SteerDamper, LinearisedCoulombFrictionIsViscous) {
-  std::mt19937_64 rng(77);
-  const double f = drawUniform(rng, 0.05, 0.5), ws = drawUniform(rng, 0.5, 5.0), c = drawUniform(rng, 0.0, 1.0);
+  PortableRandom rng(77);
+  const double f = rng.drawUniform(0.05, 0.5), ws = rng.drawUniform(0.5, 5.0), c = rng.drawUniform(0.0, 1.0);
   const Scenario dry = loadScenario(kWhipple, {"steer_damper={damping_Nms_per_rad: " + std::to_string(c) +
                                                    ", coulomb_Nm: " + std::to_string(f) +
                                                    ", coulomb_smoothing_rad_per_s: " + std::to_string(ws) + "}"});
@@ -88,7 +89,7 @@ TEST(SteerDamper, LinearisedCoulombFrictionIsViscous) {
   viscous.steerDamper.damping = dry.steerDamper.damping + dry.steerDamper.coulomb / dry.steerDamper.coulombSmoothing;
   for (double v : {3.0, 6.0}) EXPECT_LT(calcSpectrumDistance(calcEigenvaluesAt(viscous, v), calcEigenvaluesAt(dry, v)), 1e-7);
   // The torque law itself, at a rate drawn at random.
-  const double rate = drawUniform(rng, -3, 3);
+  const double rate = rng.drawUniform(-3, 3);
   EXPECT_NEAR(calcSteerDamperTorque(dry.steerDamper, rate),
               -dry.steerDamper.damping * rate - dry.steerDamper.coulomb * std::tanh(rate / dry.steerDamper.coulombSmoothing), 1e-14);
 }

@@ -3,6 +3,7 @@
 
 #include <complex>
 
+#include "tests/support/temp_dir.h"
 #include "analysis/sweep.h"
 #include "swingarm/compliance/swingarm_compliance.h"
 
@@ -139,7 +140,7 @@ TEST(SwingarmCompliance, IdentificationFragmentIsUsedUnchanged) {
   fill(id.bending, 0.388, 90.0, 94200, 2.25);
   fill(id.torsion, 0.014, 0.0, 55200, 0.49);
   fill(id.twist, 0.375, 86.48, 87600, 2.09);
-  const auto file = std::filesystem::temp_directory_path() / "motostab_identified_swingarm.yaml";
+  const auto file = makeTempDir("identified_swingarm") / "identified_swingarm.yaml";
   std::ofstream(file) << identification::formatSwingarmYaml(id, "static.yaml", "frf.yaml", {0.5625, 0});
   for (const char* model : {"bending", "torsion", "twist"}) {
     const std::string sel = std::string("swingarm.compliance=") + model;
@@ -153,7 +154,7 @@ TEST(SwingarmCompliance, IdentificationFragmentIsUsedUnchanged) {
     for (const char* k : {"bending", "torsion", "twist"}) tree["swingarm"].remove(k);
     tree["swingarm"]["axes_from"] = file.string();
     tree["swingarm"]["compliance"] = model;
-    const auto scenarioFile = std::filesystem::temp_directory_path() / "motostab_enduro_from_fragment.yaml";
+    const auto scenarioFile = makeTempDir("enduro_from_fragment") / "enduro_from_fragment.yaml";
     std::ofstream(scenarioFile) << tree;
     const VehicleModel fromFragment(loadScenario(scenarioFile.string()));
     const LinearModel a = linearize(inlineModel, calcTrim(inlineModel, 20.0));
