@@ -20,7 +20,8 @@ struct CandidateParameter {
   double off = 0;           ///< value at which the effect vanishes (when !offAtInfinity)
   bool offAtInfinity = false;  ///< the effect vanishes as value -> infinity (a stiffness)
   bool offAtBound = false;  ///< "off" is a bound (damping 0): the likelihood ratio uses the 50:50 mixture
-  double priorMean = 0, priorSigma = 0;  ///< Gaussian prior (measured parameters); sigma 0: none
+  double priorMean = 0, priorSigma = 0;  ///< Student-t prior (diagnosis/priors.h); sigma 0: none
+  bool priorMeasured = false;  ///< the sigma is the scenario's `uncertainty:` one, not motostab's default
   std::vector<std::string> alsoPaths;  ///< further keys set to the same value (both tyres)
 };
 
