@@ -247,6 +247,9 @@ void judge(const FitProblem& problem, const Step& step, size_t i, FitSummary& fi
     const ParameterEstimate& e = fit.parameters[k];
     const double seInternal = c.parameters[k].logScale ? e.stderr_ / std::max(e.value, 1e-300) : e.stderr_;
     if (!excludesOff(c.parameters[k], e, fit.x(off + k), seInternal)) fit.failed.push_back("confidence interval includes off");
+    // An estimate held at a bound of its search range (30 prior sigmas, a stiffness's factor 1000) is
+    // not determined by the data: its fit only says "further than this".
+    if (e.atBound && e.value != c.parameters[k].off) fit.failed.push_back("estimate at a bound of its range");
     for (int l = 0; l < k; ++l)
       if (std::abs(fit.correlation(off + k, off + l)) > opt.maxCorrelation) fit.failed.push_back("correlation > 0.95");
   }

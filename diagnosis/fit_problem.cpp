@@ -205,8 +205,15 @@ std::vector<std::vector<double>> FitProblem::getResponseSigma() const {
   return s;
 }
 
+std::vector<std::vector<ArNoise>> FitProblem::getResponseNoise() const {
+  std::vector<std::vector<ArNoise>> s(data_.responses.size());
+  for (const auto& o : observations)
+    if (o.run >= 0 && o.sample == 0) s[o.run].push_back(o.knownSigma > 0 ? ArNoise() : componentAr[o.component]);
+  return s;
+}
+
 Prediction FitProblem::predict(const ModelSpec& model, const Eigen::VectorXd& x, bool exact) const {
-  return predictor_.predict(model.makeOverrides(x), getResponseSigma(), exact);
+  return predictor_.predict(model.makeOverrides(x), getResponseSigma(), exact, getResponseNoise());
 }
 
 double FitProblem::getPredicted(const Prediction& p, const Observation& o) const {

@@ -60,6 +60,8 @@ class FitProblem {
   double getMarginalSigma(const Observation& o) const;
   /// Per run and signal sigma, for the response fits.
   std::vector<std::vector<double>> getResponseSigma() const;
+  /// Per run and signal AR noise, for the response fits.
+  std::vector<std::vector<ArNoise>> getResponseNoise() const;
   /// Fast (interpolated) predictions unless `exact`.
   Prediction predict(const ModelSpec& model, const Eigen::VectorXd& x, bool exact = false) const;
   /// (measured - predicted) / sigma of every observation, each response series prewhitened by its

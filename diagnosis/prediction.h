@@ -33,6 +33,7 @@
 
 #include "analysis/sweep.h"
 #include "diagnosis/measured_data.h"
+#include "diagnosis/noise_model.h"
 
 namespace motostab {
 
@@ -53,9 +54,11 @@ struct Prediction {
 };
 
 /// Fits one run's free response for a linear model (A at the run's speed). `sigma` per signal
-/// (column unit) weights the signals. Throws InputError (at the run) if a signal's quantity is not
-/// a state of the model.
-ResponseFit fitFreeResponse(const LinearModel& lin, const ResponseRun& run, const std::vector<double>& sigma);
+/// (column unit, the noise's marginal sigma) weights the signals; `noise` per signal (optional): its
+/// AR noise, which prewhitens the fit (generalised least squares, noise_model.h). Throws InputError
+/// (at the run) if a signal's quantity is not a state of the model.
+ResponseFit fitFreeResponse(const LinearModel& lin, const ResponseRun& run, const std::vector<double>& sigma,
+                            const std::vector<ArNoise>& noise = {});
 
 /// Predicts measured data for a scenario file with overrides. Thread-safe: predict() builds its own
 /// model on each call.
@@ -64,8 +67,9 @@ class Predictor {
   /// Sweeps the base scenario (`overrides` applied) once for the mode labels.
   Predictor(std::string scenarioFile, std::vector<std::string> baseOverrides, const MeasuredData& data);
   /// Predictions with `overrides` added to the base overrides; `sigma` per response run and signal.
+  /// `noise` per run and signal (optional): AR noise prewhitening the response fits.
   Prediction predict(const std::vector<std::string>& overrides, const std::vector<std::vector<double>>& sigma,
-                     bool exact = true) const;
+                     bool exact = true, const std::vector<std::vector<ArNoise>>& noise = {}) const;
   /// Linear models at `speeds` (sorted, unique; m/s) for `overrides`.
   std::vector<LinearModel> calcLinearModels(const std::vector<std::string>& overrides, const std::vector<double>& speeds) const;
   /// The sorted, unique speeds predict() linearises at, m/s.
