@@ -22,7 +22,7 @@ inline DiagnosisResult runHidden(const HiddenEffect& h, const std::string& name,
   const std::filesystem::path dir = makeHiddenDir(name);
   const MeasuredData data = loadMeasuredData(writeHiddenEffectData(h, dir, eigen, runs, runNoise));
   DiagnosisOptions opt;
-  opt.candidates = splitFields(candidates, ',');
+  if (!candidates.empty()) opt.candidates = splitFields(candidates, ',');  // empty: every default candidate
   opt.maxCauses = maxCauses;
   opt.threads = 2;
   DiagnosisResult r = runDiagnosis(h.scenario, data, opt);
