@@ -483,6 +483,9 @@ std::vector<RobustnessRun> runRobustness(const std::string& scenarioFile, const 
   const std::vector<DataVariant> variants = makeRobustnessVariants(data);
   DiagnosisOptions quiet = opt;
   quiet.progress = nullptr;
+  // As many steps as named on all the data (one when none was): a rerun asks whether those causes
+  // survive, not what a further step would add.
+  quiet.maxCauses = std::max(1, static_cast<int>(causes.size()));
   for (size_t k = 0; k < variants.size(); ++k) {
     if (opt.progress) opt.progress("robustness reruns", static_cast<int>(k), static_cast<int>(variants.size()));
     RobustnessRun run;
