@@ -70,12 +70,12 @@ void addTyreSlipCandidate(const YAML::Node& tree, std::vector<Candidate>& out) {
   CandidateParameter k = makeStiffness("cornering_stiffness_per_rad", "contact.front.cornering_stiffness_per_rad", 15);
   k.alsoPaths = {"contact.rear.cornering_stiffness_per_rad"};
   // The relaxation length of both tyres free too, from the preset's 0.1 m.
-  CandidateParameter sigma = makeFreeParameter("relaxation_length_m", "contact.front.relaxation_length_m", 0.005, 1.0, 0.1, 1e-4);
-  sigma.alsoPaths = {"contact.rear.relaxation_length_m"};
+  CandidateParameter length = makeFreeParameter("relaxation_length_m", "contact.front.relaxation_length_m", 0.005, 1.0, 0.1, 1e-4);
+  length.alsoPaths = {"contact.rear.relaxation_length_m"};
   out.push_back({"tyre_slip",
                  {"contact={model: relaxation_linear, preset: bicycle, front: {cornering_stiffness_per_rad: 15}, "
                   "rear: {cornering_stiffness_per_rad: 15}}"},
-                 {k, sigma}});
+                 {k, length}});
 }
 
 // Rider lean (issue 10): the rider's upper body, a 75 kg rider's head-arms-trunk (Winter 2009,

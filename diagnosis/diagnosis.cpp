@@ -395,6 +395,27 @@ std::vector<std::pair<std::string, double>> getUncertainty(const std::string& fi
 }
 
 
+// Per candidate of the step: the correlation of what it changes in the (whitened, normalised)
+// residuals, r_baseline - r_candidate, with what the named candidate k changes; 0 for failed fits.
+std::vector<double> calcPredictionCorrelations(const FitProblem& problem, const Step& step, int k) {
+  const auto change = [&](size_t i) -> Eigen::VectorXd {
+    const ModelSpec base = makeModel(step.causes, nullptr), cand = makeModel(step.causes, step.pool[i]);
+    return problem.calcResiduals(problem.predict(base, step.baseline.x)) - problem.calcResiduals(problem.predict(cand, step.fits[i].x));
+  };
+  std::vector<double> out(step.fits.size(), 0.0);
+  try {
+    const Eigen::VectorXd dk = change(k);
+    for (size_t i = 0; i < step.fits.size(); ++i) {
+      if (static_cast<int>(i) == k || !std::isfinite(step.fits[i].chi2) || !step.fits[i].failed.empty()) continue;
+      const Eigen::VectorXd di = change(i);
+      const double den = dk.norm() * di.norm();
+      out[i] = den > 0 ? dk.dot(di) / den : 0.0;
+    }
+  } catch (const std::exception&) {  // a prediction that fails here was fitted: leave the rest at 0
+  }
+  return out;
+}
+
 // The forward stepwise search. `candidateTable`: cross-validate every first-step candidate (for the
 // report's table); else only those meeting the cheap criteria (the robustness reruns).
 void runSearch(FitProblem& problem, Step& step, const DiagnosisOptions& opt, DiagnosisResult& result, bool candidateTable) {
@@ -414,8 +435,10 @@ void runSearch(FitProblem& problem, Step& step, const DiagnosisOptions& opt, Dia
     for (int i : contradicting) result.contradicting.push_back(step.fits[i]);
     if (k < 0) break;
     Cause cause{step.fits[k], {}};
+    const std::vector<double> similarity = calcPredictionCorrelations(problem, step, k);
     for (size_t i = 0; i < step.fits.size(); ++i)
-      if (static_cast<int>(i) != k && std::abs(step.fits[i].bic - step.fits[k].bic) <= opt.indistinguishableBic)
+      if (static_cast<int>(i) != k && (std::abs(step.fits[i].bic - step.fits[k].bic) <= opt.indistinguishableBic ||
+                                       (step.fits[i].failed.empty() && similarity[i] > opt.maxPredictionCorrelation)))
         cause.indistinguishable.push_back(step.fits[i]);
     result.causes.push_back(cause);
     const Candidate* named = step.pool[k];

@@ -41,6 +41,9 @@ struct DiagnosisOptions {
   double minFoldShare = 0.8;
   double maxCorrelation = 0.95;
   double indistinguishableBic = 2;
+  /// A candidate meeting every criterion whose change of the residuals correlates with the named
+  /// cause's above this is listed with it as indistinguishable (swingarm bending vs twist).
+  double maxPredictionCorrelation = 0.95;
   /// Rerun the stepwise search on each variant of the data (diagnosis/robustness.h).
   bool robustness = false;
 };

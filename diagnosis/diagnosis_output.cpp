@@ -19,7 +19,8 @@ json makeParameters(const std::vector<ParameterEstimate>& ps) {
   json j = json::object();
   for (const auto& p : ps) {
     json e{{"value", p.value}, {"stderr", p.stderr_}, {"key", p.path}, {"at_bound", p.atBound}};
-    if (p.priorSigma > 0) e["prior_sigma"] = p.priorSigma, e["change_in_sigmas"] = p.sigmas;
+    if (p.priorSigma > 0)
+      e["prior_sigma"] = p.priorSigma, e["change_in_sigmas"] = p.sigmas, e["prior_measured"] = p.priorMeasured;
     if (p.hasProfile) e["profile_interval_95"] = {p.profileLow, p.profileHigh};
     j[p.name] = e;
   }
@@ -126,7 +127,9 @@ std::string makeParameterText(const std::vector<ParameterEstimate>& ps) {
   std::string s;
   for (const auto& p : ps) {
     s += (s.empty() ? "" : ", ") + p.name + " = " + fmt(p.value) + " +/- " + fmt(p.stderr_, 2);
-    if (p.priorSigma > 0) s += " (" + fmt(p.sigmas, 3) + " sigma from the measured " + fmt(p.priorMean, 6) + ")";
+    if (p.priorSigma > 0)
+      s += " (" + fmt(p.sigmas, 3) + (p.priorMeasured ? " sigma from the measured " : " default sigma from the scenario's ") +
+           fmt(p.priorMean, 6) + ")";
   }
   return s;
 }
@@ -204,7 +207,8 @@ std::string makeCauseSection(const DiagnosisResult& r) {
       if (p.hasProfile) o << " 95 % profile-likelihood interval of " << p.name << ": [" << fmt(p.profileLow) << ", " << fmt(p.profileHigh) << "].";
     o << "\n";
     if (!c.indistinguishable.empty()) {
-      o << "   The data cannot tell it apart from (within 2 BIC):";
+      o << "   The data cannot tell it apart from (within 2 BIC, or meeting every criterion with a change of the "
+           "residuals correlated above 0.95):";
       for (const auto& i : c.indistinguishable) o << " " << i.name << " (" << makeParameterText(i.parameters) << ", delta BIC " << fmt(i.bic - c.fit.bic, 3) << ");";
       o << " measurements at other speeds, with larger amplitudes, or of another mode (wobble, capsize) would separate them.\n";
     }

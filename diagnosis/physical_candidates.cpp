@@ -6,14 +6,10 @@
 namespace motostab {
 namespace {
 
+// A wheel's scalar key, or `fallback` when absent or no number (the scenario loader reports those).
 double getWheelValue(const YAML::Node& tree, const char* wheel, const char* key, double fallback) {
   const YAML::Node w = tree[wheel];
-  if (!w || !w.IsMap() || !w[key] || !w[key].IsScalar()) return fallback;
-  try {
-    return w[key].as<double>();
-  } catch (const YAML::Exception&) {
-    return fallback;
-  }
+  return w && w.IsMap() && w[key] ? w[key].as<double>(fallback) : fallback;
 }
 
 void addTyreCrown(const YAML::Node& tree, std::vector<Candidate>& out) {

@@ -28,6 +28,7 @@ int countFalseCauses(const std::string& scenario, double start, double stop, dou
     const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     std::printf("%s seed %d: %zu candidates, %s, %.1f s\n", scenario.c_str(), static_cast<int>(seed), r.candidates.size(),
                 r.causes.empty() ? "no cause" : r.causes[0].fit.name.c_str(), s);
+    std::fflush(stdout);
     named += !r.causes.empty();
   }
   return named;
