@@ -6,7 +6,8 @@
 // pair, its imaginary part; per response signal each sample. sigma is the row's stderr or the
 // signal's noise_std when given, else one per component (mode.real, mode.imag, run.column) estimated
 // at each step from the best candidate's fit (RSS / (n - k)), not the baseline's. chi2 = sum r^2 plus
-// the priors ((change / sigma_p)^2) of fitted scenario parameters. Models are compared by their
+// the priors (Student-t, diagnosis/priors.h) of fitted scenario parameters; response signals whose
+// noise is estimated are prewhitened by their AR(p) noise (diagnosis/noise_model.h). Models are compared by their
 // deviance -2 ln L, in which the noise of each unestimated component is profiled out for that model
 // (n_c ln(RSS_c / n_c)): a candidate is never judged with the noise fitted to another model's
 // residuals, which with a few rows per component lets a flexible model trade misfit between
