@@ -1,8 +1,9 @@
 // The success path of `motostab diagnose` on the bundled example: Kooijman, Schwab, Meijaard (2008)
 // riderless Silvercity, 26 measured weave eigenvalues with their speed ranges and run 52's lean-rate
 // trace, every default candidate, the robustness reruns on. The named cause must be the tyres' crown
-// radius, within 10-40 mm: a toroidal crown of a bicycle tyre is about half its width (the
-// Silvercity's tyres are 37 mm wide, ISO 5775 size 37-349). The files, the report's sections and the
+// radius, within 10-40 mm: the scenario's knife-edge wheels leave out the rounded crown of a real
+// tyre, whose radius is of the order of half the tyre's width (25-50 mm wide bicycle tyres: 12-25 mm;
+// the range allows for the fit standing in for more than the crown). The files, the report's sections and the
 // robustness entries (each data source left out, speed ranges at mid speeds) are checked.
 #include <gtest/gtest.h>
 
