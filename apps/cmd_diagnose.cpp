@@ -29,6 +29,7 @@ void registerDiagnoseCommands(CLI::App& app) {
   struct Args {
     std::string scenario, measurements, out, candidates;
     int maxCauses = 3, folds = 0, threads = 1;
+    bool noRobustness = false;
     std::vector<std::string> overrides;
   };
   auto a = std::make_shared<Args>();
@@ -39,6 +40,8 @@ void registerDiagnoseCommands(CLI::App& app) {
   cmd->add_option("--max-causes", a->maxCauses, "Causes named at most (forward stepwise)")->check(CLI::Range(0, 20));
   cmd->add_option("--folds", a->folds, "Cross-validation folds (default 5, or one per run)")->check(CLI::Range(2, 1000));
   cmd->add_option("--threads", a->threads, "Candidates fitted in parallel")->check(CLI::Range(1, 256));
+  cmd->add_flag("--no-robustness", a->noRobustness,
+                "Skip the reruns with each data source left out and speed ranges at mid speeds");
   cmd->add_option("--out", a->out, "Output folder (default: diagnosis-<scenario name>)");
   cmd->add_option("--set", a->overrides, "Override a scenario value, e.g. --set geometry.trail_m=0.1");
   cmd->callback([a]() {
@@ -50,6 +53,7 @@ void registerDiagnoseCommands(CLI::App& app) {
     opt.folds = a->folds;
     opt.threads = a->threads;
     opt.overrides = a->overrides;
+    opt.robustness = !a->noRobustness;
     const bool terminal = isatty(fileno(stderr));
     if (terminal) opt.progress = showProgress;
     const std::string out = a->out.empty() ? "diagnosis-" + scenario.name : a->out;

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "diagnosis/physical_candidates.h"
 #include "io/csv.h"
 #include "scenario/parameter_paths.h"
 
@@ -85,10 +86,13 @@ void addTyreSlipCandidate(const YAML::Node& tree, std::vector<Candidate>& out) {
   if (!c || !c.IsMap() || !c["model"] || c["model"].Scalar() != "rolling_no_slip") return;
   CandidateParameter k = makeStiffness("cornering_stiffness_per_rad", "contact.front.cornering_stiffness_per_rad", 15);
   k.alsoPaths = {"contact.rear.cornering_stiffness_per_rad"};
+  // The relaxation length of both tyres free too, from the preset's 0.1 m.
+  CandidateParameter length = makeFreeParameter("relaxation_length_m", "contact.front.relaxation_length_m", 0.005, 1.0, 0.1, 1e-4);
+  length.alsoPaths = {"contact.rear.relaxation_length_m"};
   out.push_back({"tyre_slip",
                  {"contact={model: relaxation_linear, preset: bicycle, front: {cornering_stiffness_per_rad: 15}, "
                   "rear: {cornering_stiffness_per_rad: 15}}"},
-                 {k}});
+                 {k, length}});
 }
 
 // Rider lean (issue 10): the rider's upper body, a 75 kg rider's head-arms-trunk (Winter 2009,
@@ -148,6 +152,12 @@ double findSigma(const ScalarParameter& p, const std::vector<std::pair<std::stri
   return getDefaultSigma(p);
 }
 
+bool isMeasured(const ScalarParameter& p, const std::vector<std::pair<std::string, double>>& uncertainty) {
+  for (const auto& u : uncertainty)
+    if (u.first == p.path) return true;
+  return false;
+}
+
 // Bounds keep the vehicle physical: masses, inertias and positive lengths stay above a tenth of their
 // value; everything within 30 sigma (and within a factor 5 of positive masses and inertias).
 Candidate makeParameterCandidate(const ScalarParameter& p, double sigma) {
@@ -200,9 +210,11 @@ std::vector<Candidate> listCandidates(const YAML::Node& tree,
   addTyreSlipCandidate(tree, out);
   addSteerControllerCandidates(tree, out);
   addTyreScalingCandidates(tree, out);
+  addPhysicalCandidates(tree, out);
   for (const ScalarParameter& p : listScalarParameters(tree)) {
     const double sigma = findSigma(p, uncertainty);
     if (sigma > 0) out.push_back(makeParameterCandidate(p, sigma));
+    if (sigma > 0) out.back().parameters[0].priorMeasured = isMeasured(p, uncertainty);
   }
   return out;
 }

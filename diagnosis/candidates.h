@@ -1,7 +1,7 @@
 #pragma once
 // Candidate causes of a model's misfit (issue 11, item 2). A candidate is data: `--set` overrides that
 // switch an effect on, and free parameters (each an override key path with bounds and, for a measured
-// scenario parameter, a Gaussian prior). Nothing here touches the model: the diagnosis applies the
+// scenario parameter, a Student-t prior: diagnosis/priors.h). Nothing here touches the model: the diagnosis applies the
 // overrides to the scenario's YAML tree through loadScenario(file, overrides).
 #include <yaml-cpp/yaml.h>
 
@@ -20,7 +20,8 @@ struct CandidateParameter {
   double off = 0;           ///< value at which the effect vanishes (when !offAtInfinity)
   bool offAtInfinity = false;  ///< the effect vanishes as value -> infinity (a stiffness)
   bool offAtBound = false;  ///< "off" is a bound (damping 0): the likelihood ratio uses the 50:50 mixture
-  double priorMean = 0, priorSigma = 0;  ///< Gaussian prior (measured parameters); sigma 0: none
+  double priorMean = 0, priorSigma = 0;  ///< Student-t prior (diagnosis/priors.h); sigma 0: none
+  bool priorMeasured = false;  ///< the sigma is the scenario's `uncertainty:` one, not motostab's default
   std::vector<std::string> alsoPaths;  ///< further keys set to the same value (both tyres)
 };
 

@@ -11,6 +11,8 @@
 #include "diagnosis/cross_validation.h"
 #include "diagnosis/fit_problem.h"
 #include "diagnosis/least_squares.h"
+#include "diagnosis/priors.h"
+#include "diagnosis/robustness.h"
 #include "scenario/scenario.h"
 #include "scenario/yaml_map.h"
 
@@ -95,6 +97,7 @@ ParameterEstimate makeEstimate(const ModelSpec& model, const LeastSquaresResult&
   e.profileLow = e.profileHigh = e.value;
   e.priorSigma = p.priorSigma;
   e.priorMean = p.priorMean;
+  e.priorMeasured = p.priorMeasured;
   e.sigmas = p.priorSigma > 0 ? (e.value - p.priorMean) / p.priorSigma : 0.0;
   e.atBound = r.atBound.size() > i && r.atBound(i);
   return e;
@@ -211,7 +214,7 @@ void estimateNoise(FitProblem& problem, Step& step, const DiagnosisOptions& opt,
       if (step.fits[i].deviance < best->deviance) best = &step.fits[i], bestCandidate = step.pool[i];
     const ModelSpec model = makeModel(step.causes, bestCandidate);
     const std::vector<double> before = problem.componentSigma;
-    problem.updateSigma(problem.calcResiduals(problem.predict(model, best->x)), best->numParameters);
+    problem.updateNoise(problem.calcRawResiduals(problem.predict(model, best->x)), best->numParameters);
     double change = 0;
     for (size_t c = 0; c < before.size(); ++c)
       change = std::max(change, std::abs(std::log(problem.componentSigma[c] / before[c])));
@@ -245,9 +248,15 @@ void judge(const FitProblem& problem, const Step& step, size_t i, FitSummary& fi
     const ParameterEstimate& e = fit.parameters[k];
     const double seInternal = c.parameters[k].logScale ? e.stderr_ / std::max(e.value, 1e-300) : e.stderr_;
     if (!excludesOff(c.parameters[k], e, fit.x(off + k), seInternal)) fit.failed.push_back("confidence interval includes off");
+    // An estimate held at a bound of its search range (30 prior sigmas, a stiffness's factor 1000) is
+    // not determined by the data: its fit only says "further than this".
+    if (e.atBound && e.value != c.parameters[k].off) fit.failed.push_back("estimate at a bound of its range");
     for (int l = 0; l < k; ++l)
       if (std::abs(fit.correlation(off + k, off + l)) > opt.maxCorrelation) fit.failed.push_back("correlation > 0.95");
   }
+  fit.contradictsMeasurement = false;
+  for (const ParameterEstimate& e : fit.parameters)
+    fit.contradictsMeasurement |= e.priorMeasured && std::abs(e.sigmas) > kContradictionSigmas;
   if (fit.failed.empty() || alwaysCv) crossValidate(problem, model, fit);
   if (fit.hasCv) {
     fit.foldsBetter = 0;
@@ -386,31 +395,51 @@ std::vector<std::pair<std::string, double>> getUncertainty(const std::string& fi
   return out;
 }
 
-// Names the cause of this step, if any: the lowest BIC among the candidates meeting every criterion.
-int pickCause(const Step& step) {
-  int best = -1;
-  for (size_t i = 0; i < step.fits.size(); ++i)
-    if (step.fits[i].failed.empty() && (best < 0 || step.fits[i].bic < step.fits[best].bic)) best = static_cast<int>(i);
-  return best;
+
+// Per candidate of the step: the correlation of what it changes in the (whitened, normalised)
+// residuals, r_baseline - r_candidate, with what the named candidate k changes; 0 for failed fits.
+std::vector<double> calcPredictionCorrelations(const FitProblem& problem, const Step& step, int k) {
+  const auto change = [&](size_t i) -> Eigen::VectorXd {
+    const ModelSpec base = makeModel(step.causes, nullptr), cand = makeModel(step.causes, step.pool[i]);
+    return problem.calcResiduals(problem.predict(base, step.baseline.x)) - problem.calcResiduals(problem.predict(cand, step.fits[i].x));
+  };
+  std::vector<double> out(step.fits.size(), 0.0);
+  try {
+    const Eigen::VectorXd dk = change(k);
+    for (size_t i = 0; i < step.fits.size(); ++i) {
+      if (static_cast<int>(i) == k || !std::isfinite(step.fits[i].chi2) || !step.fits[i].failed.empty()) continue;
+      const Eigen::VectorXd di = change(i);
+      const double den = dk.norm() * di.norm();
+      out[i] = den > 0 ? dk.dot(di) / den : 0.0;
+    }
+  } catch (const std::exception&) {  // a prediction that fails here was fitted: leave the rest at 0
+  }
+  return out;
 }
 
-void runSearch(FitProblem& problem, Step& step, const DiagnosisOptions& opt, DiagnosisResult& result) {
+// The forward stepwise search. `candidateTable`: cross-validate every first-step candidate (for the
+// report's table); else only those meeting the cheap criteria (the robustness reruns).
+void runSearch(FitProblem& problem, Step& step, const DiagnosisOptions& opt, DiagnosisResult& result, bool candidateTable) {
   for (int s = 0; s < opt.maxCauses && !step.pool.empty(); ++s) {
     const std::string stage = "step " + std::to_string(s + 1);
     step.fits.clear();
     fitStep(problem, step, opt, stage);
     estimateNoise(problem, step, opt, stage);
     crossValidate(problem, makeModel(step.causes, nullptr), step.baseline, opt.threads);
-    runParallel(step.fits.size(), opt.threads, [&](size_t i) { judge(problem, step, i, step.fits[i], opt, s == 0); });
+    runParallel(step.fits.size(), opt.threads, [&](size_t i) { judge(problem, step, i, step.fits[i], opt, s == 0 && candidateTable); });
     if (s == 0) {
       result.candidates = step.fits;
       std::sort(result.candidates.begin(), result.candidates.end(), [](auto& a, auto& b) { return a.bic < b.bic; });
     }
-    const int k = pickCause(step);
+    std::vector<int> contradicting;
+    const int k = pickCause(step.fits, step.baseline.bic, &contradicting);
+    for (int i : contradicting) result.contradicting.push_back(step.fits[i]);
     if (k < 0) break;
     Cause cause{step.fits[k], {}};
+    const std::vector<double> similarity = calcPredictionCorrelations(problem, step, k);
     for (size_t i = 0; i < step.fits.size(); ++i)
-      if (static_cast<int>(i) != k && std::abs(step.fits[i].bic - step.fits[k].bic) <= opt.indistinguishableBic)
+      if (static_cast<int>(i) != k && (std::abs(step.fits[i].bic - step.fits[k].bic) <= opt.indistinguishableBic ||
+                                       (step.fits[i].failed.empty() && similarity[i] > opt.maxPredictionCorrelation)))
         cause.indistinguishable.push_back(step.fits[i]);
     result.causes.push_back(cause);
     const Candidate* named = step.pool[k];
@@ -442,9 +471,10 @@ void finish(FitProblem& problem, const Step& step, DiagnosisResult& result, int 
     result.residualsBefore[k].vafBefore = result.residualsBefore[k].vafAfter;
   }
   for (size_t c = 0; c < problem.components.size(); ++c)
-    result.noise.push_back({problem.components[c], problem.componentSigma[c], !problem.componentKnown[c]});
+    result.noise.push_back({problem.components[c], problem.componentSigma[c], !problem.componentKnown[c],
+                            problem.componentAr[c].phi, problem.componentSigma[c] * problem.componentAr[c].calcMarginalFactor()});
   for (const auto& o : problem.observations) {
-    result.sigma.push_back(problem.getSigma(o));
+    result.sigma.push_back(problem.getMarginalSigma(o));
     result.observed.push_back(o.value);
     result.observationComponent.push_back(problem.components[o.component]);
     result.predictedBefore.push_back(problem.getPredicted(result.before, o));
@@ -460,21 +490,66 @@ void finish(FitProblem& problem, const Step& step, DiagnosisResult& result, int 
   result.numFolds = problem.numFolds;
 }
 
+// The stepwise search on the problem's data with the candidates `pool` (probed against the scenario once).
+DiagnosisResult searchCauses(const DiagnosisOptions& opt, const std::vector<const Candidate*>& pool, FitProblem& problem,
+                             Step& step, bool candidateTable) {
+  DiagnosisResult result;
+  step.pool = pool;
+  const Prediction base = problem.predict(ModelSpec(), Eigen::VectorXd());
+  problem.updateNoise(problem.calcRawResiduals(base), base.numLinear);  // provisional
+  runSearch(problem, step, opt, result, candidateTable);
+  return result;
+}
+
+std::vector<RobustnessRun> runRobustness(const std::string& scenarioFile, const MeasuredData& data, const DiagnosisOptions& opt,
+                                         const std::vector<const Candidate*>& pool, const std::vector<Cause>& causes) {
+  std::vector<RobustnessRun> out;
+  const std::vector<DataVariant> variants = makeRobustnessVariants(data);
+  DiagnosisOptions quiet = opt;
+  quiet.progress = nullptr;
+  // As many steps as named on all the data (one when none was): a rerun asks whether those causes
+  // survive, not what a further step would add.
+  quiet.maxCauses = std::max(1, static_cast<int>(causes.size()));
+  for (size_t k = 0; k < variants.size(); ++k) {
+    if (opt.progress) opt.progress("robustness reruns", static_cast<int>(k), static_cast<int>(variants.size()));
+    RobustnessRun run;
+    run.leftOut = variants[k].leftOut;
+    try {
+      const Predictor predictor(scenarioFile, opt.overrides, variants[k].data);
+      FitProblem problem(predictor, variants[k].data, opt.folds);
+      Step step;
+      const DiagnosisResult r = searchCauses(quiet, pool, problem, step, false);
+      for (const auto& c : r.causes) run.causes.push_back(c.fit.name), run.fits.push_back(c.fit);
+    } catch (const std::exception& e) {
+      run.error = e.what();
+    }
+    run.sameCauses = run.error.empty() && run.causes.size() == causes.size();
+    for (size_t c = 0; run.sameCauses && c < causes.size(); ++c) run.sameCauses = run.causes[c] == causes[c].fit.name;
+    out.push_back(run);
+  }
+  if (opt.progress) opt.progress("robustness reruns", static_cast<int>(variants.size()), static_cast<int>(variants.size()));
+  return out;
+}
+
 }  // namespace
 
+bool DiagnosisResult::isFragile() const {
+  for (const auto& r : robustness)
+    if (!r.sameCauses) return true;
+  return false;
+}
+
 DiagnosisResult runDiagnosis(const std::string& scenarioFile, const MeasuredData& data, const DiagnosisOptions& opt) {
-  DiagnosisResult result;
-  result.scenarioFile = scenarioFile;
-  result.data = &data;
   if (opt.progress) opt.progress("reference sweep", 0, 1);
   const Predictor predictor(scenarioFile, opt.overrides, data);
   FitProblem problem(predictor, data, opt.folds);
+  std::vector<std::string> unavailable;
   std::vector<Candidate> listed = listCandidates(makeScenarioTree(scenarioFile, opt.overrides),
-                                                getUncertainty(scenarioFile, opt), &result.unavailable);
+                                                getUncertainty(scenarioFile, opt), &unavailable);
   for (const std::string& path : getControllerPaths(data))  // set per row/run by the data: not one value
     for (auto it = listed.begin(); it != listed.end();)
       if (it->name == "parameter:" + path) {
-        result.unavailable.push_back(it->name + ": the measured data set it per controller setting");
+        unavailable.push_back(it->name + ": the measured data set it per controller setting");
         it = listed.erase(it);
       } else {
         ++it;
@@ -484,16 +559,18 @@ DiagnosisResult runDiagnosis(const std::string& scenarioFile, const MeasuredData
     all = filterCandidates(listed, opt.candidates);
   } catch (const std::invalid_argument& e) {  // say why a known candidate is missing
     std::string why = e.what();
-    for (const auto& u : result.unavailable) why += "; " + u;
+    for (const auto& u : unavailable) why += "; " + u;
     throw std::invalid_argument(why);
   }
-  result.extendedOverrides = opt.overrides;
+  const std::vector<const Candidate*> pool = probeCandidates(scenarioFile, opt, all, unavailable);
   Step step;
-  step.pool = probeCandidates(scenarioFile, opt, all, result.unavailable);
-  const Prediction base = problem.predict(ModelSpec(), Eigen::VectorXd());
-  problem.updateSigma(problem.calcResiduals(base), base.numLinear);  // provisional
-  runSearch(problem, step, opt, result);
+  DiagnosisResult result = searchCauses(opt, pool, problem, step, true);
+  result.scenarioFile = scenarioFile;
+  result.data = &data;
+  result.unavailable = unavailable;
+  result.extendedOverrides = opt.overrides;
   finish(problem, step, result, opt.threads);
+  if (opt.robustness) result.robustness = runRobustness(scenarioFile, data, opt, pool, result.causes);
   return result;
 }
 

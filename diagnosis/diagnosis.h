@@ -6,7 +6,8 @@
 // pair, its imaginary part; per response signal each sample. sigma is the row's stderr or the
 // signal's noise_std when given, else one per component (mode.real, mode.imag, run.column) estimated
 // at each step from the best candidate's fit (RSS / (n - k)), not the baseline's. chi2 = sum r^2 plus
-// the priors ((change / sigma_p)^2) of fitted scenario parameters. Models are compared by their
+// the priors (Student-t, diagnosis/priors.h) of fitted scenario parameters; response signals whose
+// noise is estimated are prewhitened by their AR(p) noise (diagnosis/noise_model.h). Models are compared by their
 // deviance -2 ln L, in which the noise of each unestimated component is profiled out for that model
 // (n_c ln(RSS_c / n_c)): a candidate is never judged with the noise fitted to another model's
 // residuals, which with a few rows per component lets a flexible model trade misfit between
@@ -41,6 +42,11 @@ struct DiagnosisOptions {
   double minFoldShare = 0.8;
   double maxCorrelation = 0.95;
   double indistinguishableBic = 2;
+  /// A candidate meeting every criterion whose change of the residuals correlates with the named
+  /// cause's above this is listed with it as indistinguishable (swingarm bending vs twist).
+  double maxPredictionCorrelation = 0.95;
+  /// Rerun the stepwise search on each variant of the data (diagnosis/robustness.h).
+  bool robustness = false;
 };
 
 struct ParameterEstimate {
@@ -50,6 +56,7 @@ struct ParameterEstimate {
   bool hasProfile = false;
   double priorSigma = 0;                ///< measured parameter's sigma (0: none)
   double priorMean = 0;                 ///< its measured value
+  bool priorMeasured = false;           ///< priorSigma is the scenario's `uncertainty:` sigma (not the default)
   double sigmas = 0;                    ///< (value - prior mean) / priorSigma
   bool atBound = false;
 };
@@ -70,6 +77,8 @@ struct FitSummary {
   Eigen::MatrixXd jacobian;                   ///< of the full fit's residuals (data, then priors) in x
   std::vector<std::string> failed;            ///< criteria not met
   int numParameters = 0;                      ///< k of BIC
+  /// Moves a measured parameter by more than kContradictionSigmas sigma (diagnosis/priors.h).
+  bool contradictsMeasurement = false;
   Eigen::VectorXd x;                          ///< internal coordinates
 };
 
@@ -89,8 +98,19 @@ struct Cause {
 
 struct NoiseLevel {
   std::string component;
-  double sigma = 0;       ///< 1/s, rad/s or column unit
+  double sigma = 0;       ///< 1/s, rad/s or column unit; the innovation sigma of AR noise
   bool estimated = true;  ///< false: from stderr columns or noise_std
+  std::vector<double> ar; ///< AR coefficients phi_1..phi_p of a response signal's noise (noise_model.h); empty: white
+  double marginalSigma = 0;  ///< sigma of the noise itself (equal to sigma when white)
+};
+
+/// The causes the stepwise search names on one variant of the data (diagnosis/robustness.h).
+struct RobustnessRun {
+  std::string leftOut;
+  std::vector<std::string> causes;          ///< names, in the order named
+  std::vector<FitSummary> fits;             ///< their fits (estimates before the final refit)
+  bool sameCauses = false;                  ///< the same causes as on all the data
+  std::string error;                        ///< the search failed on this variant (then causes is empty)
 };
 
 struct DiagnosisResult {
@@ -100,6 +120,12 @@ struct DiagnosisResult {
   FitSummary baseline, extended;               ///< the base model and the model with every cause
   std::vector<FitSummary> candidates;          ///< first step's, best (lowest BIC) first
   std::vector<Cause> causes;
+  /// Candidates that met every criterion but "fit, but contradict the measurement" and were not
+  /// named (diagnosis/priors.h), with the step they were found at.
+  std::vector<FitSummary> contradicting;
+  std::vector<RobustnessRun> robustness;      ///< empty unless DiagnosisOptions::robustness
+  /// Some variant names other causes (or fails): the causes are fragile.
+  bool isFragile() const;
   std::vector<ComponentResidual> residualsBefore, residualsAfter;
   std::vector<NoiseLevel> noise;
   std::vector<std::string> unavailable;        ///< candidates this build or scenario cannot apply, with why

@@ -19,7 +19,8 @@ json makeParameters(const std::vector<ParameterEstimate>& ps) {
   json j = json::object();
   for (const auto& p : ps) {
     json e{{"value", p.value}, {"stderr", p.stderr_}, {"key", p.path}, {"at_bound", p.atBound}};
-    if (p.priorSigma > 0) e["prior_sigma"] = p.priorSigma, e["change_in_sigmas"] = p.sigmas;
+    if (p.priorSigma > 0)
+      e["prior_sigma"] = p.priorSigma, e["change_in_sigmas"] = p.sigmas, e["prior_measured"] = p.priorMeasured;
     if (p.hasProfile) e["profile_interval_95"] = {p.profileLow, p.profileHigh};
     j[p.name] = e;
   }
@@ -91,13 +92,25 @@ json makeDiagnosisJson(const DiagnosisResult& r) {
       e["indistinguishable"].push_back({{"name", o.name}, {"parameters", makeParameters(o.parameters)}, {"delta_bic", o.bic - c.fit.bic}});
     j["causes"].push_back(e);
   }
+  j["robustness"] = json::array();
+  for (const auto& run : r.robustness) {
+    json causes = json::array();
+    for (const auto& f : run.fits) causes.push_back({{"name", f.name}, {"parameters", makeParameters(f.parameters)}});
+    json e{{"left_out", run.leftOut}, {"causes", causes}, {"same_causes", run.sameCauses}};
+    if (!run.error.empty()) e["error"] = run.error;
+    j["robustness"].push_back(e);
+  }
+  if (!r.robustness.empty()) j["fragile"] = r.isFragile();
+  j["contradicts_measurement"] = json::array();
+  for (const auto& c : r.contradicting) j["contradicts_measurement"].push_back(makeFit(c));
   const double factor = r.extended.cvRms > 0 ? r.baseline.cvRms / r.extended.cvRms : 0.0;
   j["gain"] = {{"rms_before", r.baseline.rms}, {"rms_after", r.extended.rms}, {"cv_rms_before", r.baseline.cvRms},
                {"cv_rms_after", r.extended.cvRms}, {"factor", factor}};
   j["extended_scenario"] = "extended.yaml";
   j["folds"] = r.numFolds;
   j["noise"] = json::object();
-  for (const auto& n : r.noise) j["noise"][n.component] = {{"sigma", n.sigma}, {"estimated", n.estimated}};
+  for (const auto& n : r.noise)
+    j["noise"][n.component] = {{"sigma", n.sigma}, {"estimated", n.estimated}, {"ar", n.ar}, {"marginal_sigma", n.marginalSigma}};
   j["unavailable_candidates"] = r.unavailable;
   j["extended_overrides"] = r.extendedOverrides;
   return j;
@@ -114,7 +127,9 @@ std::string makeParameterText(const std::vector<ParameterEstimate>& ps) {
   std::string s;
   for (const auto& p : ps) {
     s += (s.empty() ? "" : ", ") + p.name + " = " + fmt(p.value) + " +/- " + fmt(p.stderr_, 2);
-    if (p.priorSigma > 0) s += " (" + fmt(p.sigmas, 3) + " sigma from the measured " + fmt(p.priorMean, 6) + ")";
+    if (p.priorSigma > 0)
+      s += " (" + fmt(p.sigmas, 3) + (p.priorMeasured ? " sigma from the measured " : " default sigma from the scenario's ") +
+           fmt(p.priorMean, 6) + ")";
   }
   return s;
 }
@@ -125,9 +140,15 @@ std::string makeDataSection(const DiagnosisResult& r) {
   const MeasuredData& d = *r.data;
   o << "## The data\n\n`" << d.file << "` (" << d.name << "): " << d.eigenvalues.size() << " eigenvalue rows, "
     << d.responses.size() << " response runs; " << r.numObservations << " scalar observations, " << r.numFolds
-    << " cross-validation folds.\n\nNoise (sigma per component; estimated ones from the best fit's residuals):\n\n"
-    << "| component | sigma | source |\n|---|---|---|\n";
-  for (const auto& n : r.noise) o << "| " << n.component << " | " << fmt(n.sigma) << " | " << (n.estimated ? "estimated" : "given") << " |\n";
+    << " cross-validation folds.\n\nNoise (sigma per component; estimated ones from the best fit's residuals; a response "
+    << "signal's residuals as AR(p) noise, sigma its innovations', prewhitened in every fit):\n\n"
+    << "| component | sigma | source | AR coefficients | marginal sigma |\n|---|---|---|---|---|\n";
+  for (const auto& n : r.noise) {
+    std::string ar;
+    for (double a : n.ar) ar += (ar.empty() ? "" : ", ") + fmt(a, 3);
+    o << "| " << n.component << " | " << fmt(n.sigma) << " | " << (n.estimated ? "estimated" : "given") << " | "
+      << (ar.empty() ? "white" : ar) << " | " << fmt(n.marginalSigma) << " |\n";
+  }
   return o.str();
 }
 
@@ -186,10 +207,42 @@ std::string makeCauseSection(const DiagnosisResult& r) {
       if (p.hasProfile) o << " 95 % profile-likelihood interval of " << p.name << ": [" << fmt(p.profileLow) << ", " << fmt(p.profileHigh) << "].";
     o << "\n";
     if (!c.indistinguishable.empty()) {
-      o << "   The data cannot tell it apart from (within 2 BIC):";
+      o << "   The data cannot tell it apart from (within 2 BIC, or meeting every criterion with a change of the "
+           "residuals correlated above 0.95):";
       for (const auto& i : c.indistinguishable) o << " " << i.name << " (" << makeParameterText(i.parameters) << ", delta BIC " << fmt(i.bic - c.fit.bic, 3) << ");";
       o << " measurements at other speeds, with larger amplitudes, or of another mode (wobble, capsize) would separate them.\n";
     }
+  }
+  return o.str();
+}
+
+std::string makeContradictionSection(const DiagnosisResult& r) {
+  if (r.contradicting.empty()) return "";
+  std::ostringstream o;
+  o << "\n## Fits, but contradicts the measurement\n\nThese candidates meet every criterion but move a measured "
+       "parameter by more than 3 of its sigmas (the scenario's `uncertainty:` section), without the overwhelming "
+       "evidence (a BIC at least 40 below the best alternative) that would overrule the measurement. Check the "
+       "measurement before believing them:\n\n";
+  for (const auto& c : r.contradicting)
+    o << "- " << c.name << ": " << makeParameterText(c.parameters) << "; delta BIC " << fmt(c.deltaBic) << "\n";
+  return o.str();
+}
+
+std::string makeRobustnessSection(const DiagnosisResult& r) {
+  if (r.robustness.empty()) return "";
+  std::ostringstream o;
+  std::string named;
+  for (const auto& c : r.causes) named += (named.empty() ? "" : ", ") + c.fit.name;
+  o << "\n## Robustness\n\nThe stepwise search rerun on other preparations of the same data (each source left out, "
+       "speed ranges taken at their mid speeds). On all the data: "
+    << (named.empty() ? "no cause" : named) << ". "
+    << (r.isFragile() ? "**Fragile**: some preparation names something else." : "Robust: every preparation names the same.")
+    << "\n\n| left out | causes named | same |\n|---|---|---|\n";
+  for (const auto& run : r.robustness) {
+    std::string causes;
+    for (const auto& f : run.fits) causes += (causes.empty() ? "" : "; ") + f.name + " (" + makeParameterText(f.parameters) + ")";
+    if (!run.error.empty()) causes = "search failed: " + run.error;
+    o << "| " << run.leftOut << " | " << (causes.empty() ? "none" : causes) << " | " << (run.sameCauses ? "yes" : "no") << " |\n";
   }
   return o.str();
 }
@@ -284,7 +337,8 @@ void writeResponsePlots(const std::filesystem::path& dir, const DiagnosisResult&
 
 std::string makeDiagnosisReport(const DiagnosisResult& r) {
   return "# Diagnosis of " + r.scenarioFile + " against " + r.data->name + "\n\n" + makeDataSection(r) +
-         makeResidualSection(r) + makeCandidateSection(r) + makeCauseSection(r) + makeGainSection(r);
+         makeResidualSection(r) + makeCandidateSection(r) + makeCauseSection(r) + makeContradictionSection(r) +
+         makeRobustnessSection(r) + makeGainSection(r);
 }
 
 void writeDiagnosisOutputs(const std::filesystem::path& dir, const DiagnosisResult& r) {

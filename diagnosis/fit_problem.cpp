@@ -4,6 +4,7 @@
 #include <cmath>
 #include <numeric>
 
+#include "diagnosis/priors.h"
 #include "scenario/parameter_paths.h"
 
 namespace motostab {
@@ -50,7 +51,7 @@ Eigen::VectorXd ModelSpec::calcPriorResiduals(const Eigen::VectorXd& x) const {
   const auto ps = getParameters();
   std::vector<double> r;
   for (size_t i = 0; i < ps.size(); ++i)
-    if (ps[i]->priorSigma > 0) r.push_back((getValue(static_cast<int>(i), x) - ps[i]->priorMean) / ps[i]->priorSigma);
+    if (ps[i]->priorSigma > 0) r.push_back(calcPriorResidual(getValue(static_cast<int>(i), x), ps[i]->priorMean, ps[i]->priorSigma));
   return Eigen::Map<Eigen::VectorXd>(r.data(), static_cast<int>(r.size()));
 }
 
@@ -61,6 +62,24 @@ FitProblem::FitProblem(const Predictor& predictor, const MeasuredData& data, int
   poolSmallComponents();
   markGivenComponents();
   assignFolds(folds);
+  indexSeries();
+}
+
+// Each response signal's samples are contiguous in `observations`, in time order.
+void FitProblem::indexSeries() {
+  componentAr.assign(components.size(), ArNoise());
+  seriesStart.assign(components.size(), -1);
+  seriesLength.assign(components.size(), 0);
+  for (size_t i = 0; i < observations.size(); ++i) {
+    const Observation& o = observations[i];
+    if (o.run < 0) continue;
+    if (seriesStart[o.component] < 0) seriesStart[o.component] = static_cast<int>(i);
+    ++seriesLength[o.component];
+  }
+}
+
+double FitProblem::getMarginalSigma(const Observation& o) const {
+  return o.knownSigma > 0 ? o.knownSigma : componentSigma[o.component] * componentAr[o.component].calcMarginalFactor();
 }
 
 // A component whose every row has its stderr is known: its sigma (reported only) is their RMS.
@@ -182,12 +201,19 @@ void FitProblem::assignFolds(int folds) {
 std::vector<std::vector<double>> FitProblem::getResponseSigma() const {
   std::vector<std::vector<double>> s(data_.responses.size());
   for (const auto& o : observations)
-    if (o.run >= 0 && o.sample == 0) s[o.run].push_back(getSigma(o));
+    if (o.run >= 0 && o.sample == 0) s[o.run].push_back(getMarginalSigma(o));
+  return s;
+}
+
+std::vector<std::vector<ArNoise>> FitProblem::getResponseNoise() const {
+  std::vector<std::vector<ArNoise>> s(data_.responses.size());
+  for (const auto& o : observations)
+    if (o.run >= 0 && o.sample == 0) s[o.run].push_back(o.knownSigma > 0 ? ArNoise() : componentAr[o.component]);
   return s;
 }
 
 Prediction FitProblem::predict(const ModelSpec& model, const Eigen::VectorXd& x, bool exact) const {
-  return predictor_.predict(model.makeOverrides(x), getResponseSigma(), exact);
+  return predictor_.predict(model.makeOverrides(x), getResponseSigma(), exact, getResponseNoise());
 }
 
 double FitProblem::getPredicted(const Prediction& p, const Observation& o) const {
@@ -195,10 +221,21 @@ double FitProblem::getPredicted(const Prediction& p, const Observation& o) const
   return p.responses[o.run].predicted[o.signal][o.sample];
 }
 
+Eigen::VectorXd FitProblem::calcRawResiduals(const Prediction& p) const {
+  Eigen::VectorXd e(observations.size());
+  for (size_t i = 0; i < observations.size(); ++i) e(i) = observations[i].value - getPredicted(p, observations[i]);
+  return e;
+}
+
 Eigen::VectorXd FitProblem::calcResiduals(const Prediction& p) const {
-  Eigen::VectorXd r(observations.size());
-  for (size_t i = 0; i < observations.size(); ++i)
-    r(i) = (observations[i].value - getPredicted(p, observations[i])) / getSigma(observations[i]);
+  Eigen::VectorXd r = calcRawResiduals(p);
+  for (size_t i = 0; i < observations.size(); ++i) r(i) /= getSigma(observations[i]);
+  std::vector<double> series;
+  for (size_t c = 0; c < components.size(); ++c) {
+    if (componentAr[c].getOrder() == 0 || seriesLength[c] == 0) continue;
+    series.assign(r.data() + seriesStart[c], r.data() + seriesStart[c] + seriesLength[c]);
+    whitenSeries(componentAr[c], series.data(), r.data() + seriesStart[c], seriesLength[c]);
+  }
   return r;
 }
 
@@ -217,12 +254,21 @@ double FitProblem::calcDeviance(const Eigen::VectorXd& r) const {
     rss[o.component] += raw * raw;
     ++count[o.component];
   }
-  for (size_t c = 0; c < components.size(); ++c)
+  for (size_t c = 0; c < components.size(); ++c) {
     if (count[c] > 0) d += count[c] * (std::log(std::max(rss[c] / count[c], 1e-300)) + 1.0);
+    if (count[c] > 0) d += componentAr[c].calcLogDeterminant();
+  }
   return d;
 }
 
 void FitProblem::updateSigma(const Eigen::VectorXd& r, int k) {
+  Eigen::VectorXd e = r;
+  for (size_t i = 0; i < observations.size(); ++i) e(i) *= componentSigma[observations[i].component];
+  setWhiteSigma(e, k);
+}
+
+// Unknown components' sigma from raw (or whitened raw) residuals e: RSS / n times n / (n - k).
+void FitProblem::setWhiteSigma(const Eigen::VectorXd& e, int k) {
   const int n = static_cast<int>(observations.size());
   const double dof = n > k ? static_cast<double>(n) / (n - k) : 1.0;
   std::vector<double> rss(components.size(), 0.0);
@@ -230,12 +276,23 @@ void FitProblem::updateSigma(const Eigen::VectorXd& r, int k) {
   for (int i = 0; i < n; ++i) {
     const Observation& o = observations[i];
     if (o.knownSigma > 0) continue;
-    const double raw = r(i) * componentSigma[o.component];
-    rss[o.component] += raw * raw;
+    rss[o.component] += e(i) * e(i);
     ++count[o.component];
   }
   for (size_t c = 0; c < components.size(); ++c)
     if (!componentKnown[c] && count[c] > 0) componentSigma[c] = std::max(std::sqrt(rss[c] / count[c] * dof), 1e-12);
+}
+
+void FitProblem::updateNoise(const Eigen::VectorXd& e, int k) {
+  setWhiteSigma(e, k);
+  const int n = static_cast<int>(observations.size());
+  const double dof = n > k ? static_cast<double>(n) / (n - k) : 1.0;
+  for (size_t c = 0; c < components.size(); ++c) {
+    if (componentKnown[c] || seriesLength[c] == 0) continue;
+    double v = 0;
+    componentAr[c] = fitArNoise(e.data() + seriesStart[c], seriesLength[c], &v);
+    componentSigma[c] = std::max(std::sqrt(v * dof), 1e-12);
+  }
 }
 
 }  // namespace motostab

@@ -177,6 +177,14 @@ void readNoise(YamlMap& run, ResponseRun& r) {
   noise.finish();
 }
 
+// A run must cover its window (to within half a sample interval at each end).
+void checkWindowCovered(YamlMap& run, const std::vector<double>& time, double w0, double w1) {
+  const double half = 0.5 * (time.back() - time.front()) / std::max<size_t>(time.size() - 1, 1);
+  if (w0 < time.front() - half || w1 > time.back() + half)
+    run.fail("window_s", "the run's samples span [" + formatNumber(time.front(), 6) + ", " + formatNumber(time.back(), 6) +
+                             "] s: shorter than its window");
+}
+
 std::vector<bool> selectWindow(YamlMap& run, const std::vector<double>& time) {
   double w0 = -HUGE_VAL, w1 = HUGE_VAL;
   if (run.has("window_s")) {
@@ -189,6 +197,7 @@ std::vector<bool> selectWindow(YamlMap& run, const std::vector<double>& time) {
   int n = 0;
   for (size_t i = 0; i < time.size(); ++i) n += (keep[i] = time[i] >= w0 && time[i] <= w1);
   if (n < 20) run.fail(run.has("window_s") ? "window_s" : "file", "the window holds " + std::to_string(n) + " samples; need at least 20");
+  if (run.has("window_s")) checkWindowCovered(run, time, w0, w1);
   return keep;
 }
 

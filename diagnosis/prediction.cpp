@@ -77,29 +77,56 @@ struct BilinearFit {
   double cost = 0;
 };
 
-double calcCost(const std::vector<Eigen::MatrixXd>& basis, const ResponseRun& run, const std::vector<double>& sigma,
-                BilinearFit& f) {
-  f.cost = 0;
+// One run's least-squares system per signal, each side prewhitened by the signal's AR noise
+// (noise_model.h) and divided by its innovation sigma: basis W B_j / s_j, offset column W 1 / s_j,
+// data W y_j / s_j. Whitening is linear, so W (g B x0 + o 1 - y) = g (W B) x0 + o (W 1) - W y: the
+// fit of x0, offsets and gains is generalised least squares (white noise: W = identity).
+struct WeightedRun {
+  std::vector<Eigen::MatrixXd> basis;
+  std::vector<Eigen::VectorXd> ones, y;
+};
+
+Eigen::VectorXd whitenColumn(const ArNoise* ar, const Eigen::VectorXd& v) {
+  if (!ar || ar->getOrder() == 0) return v;
+  Eigen::VectorXd w(v.size());
+  whitenSeries(*ar, v.data(), w.data(), static_cast<int>(v.size()));
+  return w;
+}
+
+WeightedRun makeWeightedRun(const std::vector<Eigen::MatrixXd>& basis, const ResponseRun& run, const std::vector<double>& sigma,
+                            const std::vector<ArNoise>& noise) {
+  WeightedRun w;
   for (size_t j = 0; j < basis.size(); ++j) {
-    const Eigen::VectorXd y = Eigen::Map<const Eigen::VectorXd>(run.signals[j].values.data(), basis[j].rows());
-    f.cost += ((f.gains[j] * (basis[j] * f.x0)).array() + f.offsets[j] - y.array()).matrix().squaredNorm() /
-              (sigma[j] * sigma[j]);
+    const ArNoise* ar = j < noise.size() ? &noise[j] : nullptr;
+    const double s = ar ? sigma[j] / ar->calcMarginalFactor() : sigma[j];  // innovation sigma
+    const int m = static_cast<int>(basis[j].rows());
+    Eigen::MatrixXd b(m, basis[j].cols());
+    for (int c = 0; c < b.cols(); ++c) b.col(c) = whitenColumn(ar, basis[j].col(c)) / s;
+    w.basis.push_back(b);
+    w.ones.push_back(whitenColumn(ar, Eigen::VectorXd::Ones(m)) / s);
+    w.y.push_back(whitenColumn(ar, Eigen::Map<const Eigen::VectorXd>(run.signals[j].values.data(), m)) / s);
   }
+  return w;
+}
+
+double calcCost(const WeightedRun& w, BilinearFit& f) {
+  f.cost = 0;
+  for (size_t j = 0; j < w.basis.size(); ++j)
+    f.cost += (f.gains[j] * (w.basis[j] * f.x0) + f.offsets[j] * w.ones[j] - w.y[j]).squaredNorm();
   return f.cost;
 }
 
 // x0 and offsets for fixed gains: one weighted least-squares problem (minimum norm: unobservable
 // directions of x0 stay zero).
-void solveStateAndOffsets(const std::vector<Eigen::MatrixXd>& basis, const ResponseRun& run,
-                          const std::vector<double>& sigma, BilinearFit& f) {
-  const int n = static_cast<int>(basis[0].cols()), ns = static_cast<int>(basis.size());
-  const int m = static_cast<int>(basis[0].rows());
+void solveStateAndOffsets(const WeightedRun& w, BilinearFit& f) {
+  const int n = static_cast<int>(w.basis[0].cols()), ns = static_cast<int>(w.basis.size());
+  const int m = static_cast<int>(w.basis[0].rows());
   Eigen::MatrixXd M = Eigen::MatrixXd::Zero(m * ns, n + ns);
   Eigen::VectorXd y(m * ns);
   for (int j = 0; j < ns; ++j) {
-    M.block(j * m, 0, m, n) = f.gains[j] * basis[j] / sigma[j];
-    M.block(j * m, n + j, m, 1).setConstant(1.0 / sigma[j]);
-    y.segment(j * m, m) = Eigen::Map<const Eigen::VectorXd>(run.signals[j].values.data(), m) / sigma[j];
+    M.block(j * m, 0, m, n) = f.gains[j] * w.basis[j];
+    M.block(j * m, n + j, m, 1) = w.ones[j];
+    y.segment(j * m, m) = w.y[j];
   }
   Eigen::CompleteOrthogonalDecomposition<Eigen::MatrixXd> cod(M);
   cod.setThreshold(1e-10);
@@ -109,13 +136,11 @@ void solveStateAndOffsets(const std::vector<Eigen::MatrixXd>& basis, const Respo
 }
 
 // Gain and offset of signal j for fixed x0.
-void solveGain(const Eigen::MatrixXd& basis, const ResponseSignal& sig, BilinearFit& f, size_t j) {
-  const Eigen::VectorXd z = basis * f.x0;
-  const Eigen::VectorXd y = Eigen::Map<const Eigen::VectorXd>(sig.values.data(), z.size());
-  Eigen::MatrixXd M(z.size(), 2);
-  M.col(0) = z;
-  M.col(1).setOnes();
-  const Eigen::VectorXd s = M.colPivHouseholderQr().solve(y);
+void solveGain(const WeightedRun& w, BilinearFit& f, size_t j) {
+  Eigen::MatrixXd M(w.y[j].size(), 2);
+  M.col(0) = w.basis[j] * f.x0;
+  M.col(1) = w.ones[j];
+  const Eigen::VectorXd s = M.colPivHouseholderQr().solve(w.y[j]);
   f.gains[j] = s(0);
   f.offsets[j] = s(1);
 }
@@ -163,8 +188,10 @@ std::complex<double> interpolate(const std::vector<double>& x, const std::vector
 
 }  // namespace
 
-ResponseFit fitFreeResponse(const LinearModel& lin, const ResponseRun& run, const std::vector<double>& sigma) {
+ResponseFit fitFreeResponse(const LinearModel& lin, const ResponseRun& run, const std::vector<double>& sigma,
+                            const std::vector<ArNoise>& noise) {
   const std::vector<Eigen::MatrixXd> basis = calcFreeResponseBasis(lin, run);
+  const WeightedRun w = makeWeightedRun(basis, run, sigma, noise);
   const size_t ns = run.signals.size();
   BilinearFit f;
   f.gains.resize(ns);
@@ -180,10 +207,10 @@ ResponseFit fitFreeResponse(const LinearModel& lin, const ResponseRun& run, cons
   if (anyCalibrated) reference = -1;
   double last = HUGE_VAL;
   for (int it = 0; it < 200; ++it) {
-    solveStateAndOffsets(basis, run, sigma, f);
+    solveStateAndOffsets(w, f);
     for (size_t j = 0; j < ns; ++j)
-      if (run.signals[j].freeScale && static_cast<int>(j) != reference) solveGain(basis[j], run.signals[j], f, j);
-    const double cost = calcCost(basis, run, sigma, f);
+      if (run.signals[j].freeScale && static_cast<int>(j) != reference) solveGain(w, f, j);
+    const double cost = calcCost(w, f);
     if (numFree - (reference >= 0) == 0 || last - cost <= 1e-13 * cost) break;
     last = cost;
   }
@@ -424,15 +451,20 @@ std::complex<double> Predictor::pickEigenvalue(const std::vector<LinearModel>& m
 }
 
 Prediction Predictor::predictParts(const std::vector<std::string>& overrides,
-                                   const std::vector<std::vector<double>>& sigma, bool exact) const {
+                                   const std::vector<std::vector<double>>& sigma, bool exact,
+                                   const std::vector<std::vector<ArNoise>>& noise) const {
   Prediction p;
   p.eigenvalues.resize(data_.eigenvalues.size());
   p.responses.resize(data_.responses.size());
   for (const auto& part : parts_) {
     const ControllerGroup& g = part->group;
     std::vector<std::vector<double>> partSigma;
-    for (size_t r : g.runs) partSigma.push_back(sigma[r]);
-    const Prediction q = part->predictor->predict(overrides, partSigma, exact);
+    std::vector<std::vector<ArNoise>> partNoise;
+    for (size_t r : g.runs) {
+      partSigma.push_back(sigma[r]);
+      if (!noise.empty()) partNoise.push_back(noise[r]);
+    }
+    const Prediction q = part->predictor->predict(overrides, partSigma, exact, partNoise);
     for (size_t i = 0; i < g.rows.size(); ++i) p.eigenvalues[g.rows[i]] = q.eigenvalues[i];
     for (size_t i = 0; i < g.runs.size(); ++i) p.responses[g.runs[i]] = q.responses[i];
     p.numLinear += q.numLinear;
@@ -441,8 +473,9 @@ Prediction Predictor::predictParts(const std::vector<std::string>& overrides,
 }
 
 Prediction Predictor::predict(const std::vector<std::string>& overrides,
-                              const std::vector<std::vector<double>>& sigma, bool exact) const {
-  if (!parts_.empty()) return predictParts(overrides, sigma, exact);
+                              const std::vector<std::vector<double>>& sigma, bool exact,
+                              const std::vector<std::vector<ArNoise>>& noise) const {
+  if (!parts_.empty()) return predictParts(overrides, sigma, exact, noise);
   const bool fast = !exact && !nodes_.empty();
   const std::vector<double>& speeds = fast ? fastSpeeds_ : speeds_;
   const std::vector<LinearModel> models = calcLinearModels(overrides, speeds);
@@ -457,7 +490,8 @@ Prediction Predictor::predict(const std::vector<std::string>& overrides,
     p.eigenvalues.push_back(sum / static_cast<double>(nodes.size()));
   }
   for (size_t r = 0; r < data_.responses.size(); ++r) {
-    p.responses.push_back(fitFreeResponse(models[findSpeed(speeds, data_.responses[r].speed)], data_.responses[r], sigma[r]));
+    p.responses.push_back(fitFreeResponse(models[findSpeed(speeds, data_.responses[r].speed)], data_.responses[r], sigma[r],
+                                          r < noise.size() ? noise[r] : std::vector<ArNoise>()));
     p.numLinear += p.responses.back().numLinear;
   }
   return p;

@@ -34,6 +34,7 @@
 #include "analysis/sweep.h"
 #include "diagnosis/controller_groups.h"
 #include "diagnosis/measured_data.h"
+#include "diagnosis/noise_model.h"
 
 namespace motostab {
 
@@ -54,9 +55,11 @@ struct Prediction {
 };
 
 /// Fits one run's free response for a linear model (A at the run's speed). `sigma` per signal
-/// (column unit) weights the signals. Throws InputError (at the run) if a signal's quantity is not
-/// a state of the model.
-ResponseFit fitFreeResponse(const LinearModel& lin, const ResponseRun& run, const std::vector<double>& sigma);
+/// (column unit, the noise's marginal sigma) weights the signals; `noise` per signal (optional): its
+/// AR noise, which prewhitens the fit (generalised least squares, noise_model.h). Throws InputError
+/// (at the run) if a signal's quantity is not a state of the model.
+ResponseFit fitFreeResponse(const LinearModel& lin, const ResponseRun& run, const std::vector<double>& sigma,
+                            const std::vector<ArNoise>& noise = {});
 
 /// Predicts measured data for a scenario file with overrides. Thread-safe: predict() builds its own
 /// model on each call.
@@ -67,8 +70,9 @@ class Predictor {
   /// predictor of its own whose base overrides end with the group's.
   Predictor(std::string scenarioFile, std::vector<std::string> baseOverrides, const MeasuredData& data);
   /// Predictions with `overrides` added to the base overrides; `sigma` per response run and signal.
+  /// `noise` per run and signal (optional): AR noise prewhitening the response fits.
   Prediction predict(const std::vector<std::string>& overrides, const std::vector<std::vector<double>>& sigma,
-                     bool exact = true) const;
+                     bool exact = true, const std::vector<std::vector<ArNoise>>& noise = {}) const;
   /// Linear models at `speeds` (sorted, unique; m/s) for `overrides` (after the base overrides only:
   /// no controller setting of the data is added here).
   std::vector<LinearModel> calcLinearModels(const std::vector<std::string>& overrides, const std::vector<double>& speeds) const;
@@ -86,7 +90,7 @@ class Predictor {
     std::unique_ptr<Predictor> predictor;
   };
   Prediction predictParts(const std::vector<std::string>& overrides, const std::vector<std::vector<double>>& sigma,
-                          bool exact) const;
+                          bool exact, const std::vector<std::vector<ArNoise>>& noise) const;
   std::vector<std::complex<double>> predictInterpolated(const std::vector<LinearModel>& models,
                                                         const std::vector<double>& speeds) const;
   struct ModeTrack {

@@ -2,6 +2,7 @@
 // output folder is neither created nor changed (issue 11, Bad input).
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 
@@ -17,7 +18,28 @@ TEST(DiagnoseCli, BadMeasurementsExit2AndLeaveTheFolderAlone) {
   const fs::path dir = fs::temp_directory_path() / ("motostab_diagnose_cli_" + std::to_string(::getpid()));
   fs::create_directories(dir);
   std::ofstream(dir / "e.csv") << "speed_mps,mode,real,imag\n4,weave,0.4,3\n5,weave,nan,4\n";
+  // Speed range with min > max on line 3; a 40-sample trace (0.01 s apart) with NaN on line 12.
+  std::ofstream(dir / "r.csv") << "speed_mps,mode,real,imag,speed_min_mps,speed_max_mps\n4,weave,0.4,3,3.9,4.1\n"
+                                  "5,weave,0.3,4,5.2,4.8\n";
+  std::string trace = "t_s,lean_V\n", nanTrace = trace;
+  for (int i = 0; i < 40; ++i) {
+    trace += std::to_string(0.01 * i) + "," + std::to_string(std::sin(0.3 * i)) + "\n";
+    nanTrace += std::to_string(0.01 * i) + "," + (i == 10 ? std::string("nan") : std::to_string(std::sin(0.3 * i))) + "\n";
+  }
+  std::ofstream(dir / "trace.csv") << trace;
+  std::ofstream(dir / "nan.csv") << nanTrace;
+  const std::string run = "responses:\n  - file: FILE\n    speed_mps: 5\n    time_column: t_s\n    window_s: WINDOW\n"
+                          "    signals:\n      - {column: lean_V, quantity: roll_rate, scale: free}\n";
+  auto makeRun = [&](const std::string& file, const std::string& window) {
+    std::string y = run;
+    y.replace(y.find("FILE"), 4, file);
+    y.replace(y.find("WINDOW"), 6, window);
+    return y;
+  };
   const std::vector<std::pair<std::string, std::string>> cases = {
+      {"eigenvalues:\n  - file: r.csv\n", "r.csv:3"},                    // speed range min > max
+      {makeRun("nan.csv", "[0, 0.39]"), "nan.csv:12"},                    // trace with NaN
+      {makeRun("trace.csv", "[0, 2.5]"), "m.yaml:5"},                     // run shorter than its window
       {"eigenvalues:\n  - file: e.csv\n", "e.csv:3"},                     // NaN cell
       {"eigenvalues:\n  - file: missing.csv\n", "m.yaml:2:5"},           // missing file
       {"eigenvalues:\n  - {file: e.csv, colour: red}\n", "m.yaml:2"},    // unknown key

@@ -40,6 +40,8 @@ struct HiddenEffect {
   double absoluteNoise = 0.01;          ///< plus this, 1/s
   bool withStderr = false;              ///< write real_stderr/imag_stderr columns
   uint64_t seed = 1;
+  double runNoiseRho = 0;               ///< responses: AR(1) noise e_t = rho e_{t-1} + sqrt(1 - rho^2) w_t (stationary)
+  int runSamples = 300;                 ///< responses: samples per run (0.01 s apart)
 };
 
 inline std::string writeEigenvalueData(const HiddenEffect& h, const std::filesystem::path& dir, Draw& draw) {
@@ -85,9 +87,13 @@ inline std::string writeResponseData(const HiddenEffect& h, const std::vector<do
     const Eigen::MatrixXd step = (lin.A * dt).exp();
     std::string csv = "time_s,roll_rate_radps,steer_V\n";
     Eigen::VectorXd x = x0;
-    for (int i = 0; i < 300; ++i, x = step * x)
-      csv += formatNumber(i * dt) + "," + formatNumber(x(rollRate) + noise * draw.normal()) + "," +
-             formatNumber(gain * x(steer) + offset + noise * gain * draw.normal()) + "\n";
+    const double rho = h.runNoiseRho, innovation = std::sqrt(1 - rho * rho);
+    double e1 = draw.normal(), e2 = draw.normal();  // stationary start
+    for (int i = 0; i < h.runSamples; ++i, x = step * x) {
+      if (i > 0) e1 = rho * e1 + innovation * draw.normal(), e2 = rho * e2 + innovation * draw.normal();
+      csv += formatNumber(i * dt) + "," + formatNumber(x(rollRate) + noise * e1) + "," +
+             formatNumber(gain * x(steer) + offset + noise * gain * e2) + "\n";
+    }
     const std::string name = "run" + std::to_string(r + 1) + ".csv";
     std::ofstream(dir / name) << csv;
     yaml += "  - file: " + name + "\n    speed_mps: " + formatNumber(speeds[r]) + "\n    time_column: time_s\n"

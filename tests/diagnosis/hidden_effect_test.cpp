@@ -9,7 +9,7 @@
 
 #include "diagnosis/diagnosis.h"
 #include "diagnosis/diagnosis_output.h"
-#include "hidden_effect.h"
+#include "run_hidden.h"
 
 namespace motostab {
 namespace {
@@ -19,31 +19,7 @@ const std::string kDir = MOTOSTAB_SOURCE_DIR;
 const std::string kBenchmark = kDir + "/scenarios/whipple-benchmark.yaml";
 const std::string kEnduro = kDir + "/scenarios/enduro.yaml";
 
-fs::path makeDir(const std::string& name) {
-  return fs::temp_directory_path() / ("motostab-hidden-" + std::to_string(::getpid()) + "-" + name);
-}
-
-DiagnosisResult diagnose(const std::string& scenario, const std::string& measured, const std::string& candidates,
-                         MeasuredData& data, int maxCauses = 3) {
-  data = loadMeasuredData(measured);
-  DiagnosisOptions opt;
-  opt.candidates = splitFields(candidates, ',');
-  opt.maxCauses = maxCauses;
-  opt.threads = 2;
-  return runDiagnosis(scenario, data, opt);
-}
-
-// Writes the hidden effect's data into a fresh folder, diagnoses `scenario` (h.scenario) with
-// `candidates`, removes the folder.
-DiagnosisResult runHidden(const testing::HiddenEffect& h, const std::string& name, bool eigen,
-                          const std::vector<double>& runs, const std::string& candidates, int maxCauses) {
-  const fs::path dir = makeDir(name);
-  MeasuredData data;
-  DiagnosisResult r = diagnose(h.scenario, testing::writeHiddenEffectData(h, dir, eigen, runs), candidates, data, maxCauses);
-  r.data = nullptr;  // `data` dies here
-  fs::remove_all(dir);
-  return r;
-}
+using testing::runHidden;
 
 testing::HiddenEffect makeEffect(const std::string& scenario, uint64_t seed, std::vector<std::string> overrides,
                                  std::vector<std::string> modes) {

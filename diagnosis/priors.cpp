@@ -1,0 +1,32 @@
+#include "diagnosis/priors.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace motostab {
+
+double calcPriorResidual(double value, double mean, double sigma) {
+  const double z = (value - mean) / sigma;
+  const double r = std::sqrt((kPriorNu + 1) * std::log1p(z * z / (kPriorNu + 1)));
+  return z < 0 ? -r : r;
+}
+
+bool isOverwhelming(double contradicting, double alternative) { return contradicting <= alternative - kOverwhelmingBic; }
+
+int pickCause(const std::vector<FitSummary>& fits, double baselineBic, std::vector<int>* contradicting) {
+  int best = -1, bestContra = -1;
+  for (size_t i = 0; i < fits.size(); ++i) {
+    if (!fits[i].failed.empty()) continue;
+    int& slot = fits[i].contradictsMeasurement ? bestContra : best;
+    if (slot < 0 || fits[i].bic < fits[slot].bic) slot = static_cast<int>(i);
+  }
+  const double alternative = best >= 0 ? std::min(baselineBic, fits[best].bic) : baselineBic;
+  const int named = bestContra >= 0 && isOverwhelming(fits[bestContra].bic, alternative) ? bestContra : best;
+  if (contradicting)
+    for (size_t i = 0; i < fits.size(); ++i)
+      if (fits[i].failed.empty() && fits[i].contradictsMeasurement && static_cast<int>(i) != named)
+        contradicting->push_back(static_cast<int>(i));
+  return named;
+}
+
+}  // namespace motostab
