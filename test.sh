@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Installs what is missing, builds, and runs the test suite with ctest.
-#   ./test.sh [CTEST_ARGS...]          Release build (./build), whole suite
+#   ./test.sh [CTEST_ARGS...]          Release build (./build), whole suite but the `long` label
+#   ./test.sh --long [CTEST_ARGS]      Release build, the `long` label only (wide null tests of diagnose)
 #   ./test.sh --sanitize [CTEST_ARGS]  AddressSanitizer + UndefinedBehaviorSanitizer build (./build-asan), whole suite
 #   ./test.sh --tsan [CTEST_ARGS]      ThreadSanitizer build (./build-tsan): the tests that run worker threads
 #   ./test.sh --fuzz [SECONDS]         libFuzzer targets (clang, ./build-fuzz), SECONDS each (default 60)
@@ -17,7 +18,7 @@ case "$mode" in
     export UBSAN_OPTIONS="${UBSAN_OPTIONS:-print_stacktrace=1:halt_on_error=1}"
     "$root/scripts/build.sh"
     cd "$root/build-asan"
-    ctest --output-on-failure -j "$jobs" "$@" ;;
+    ctest --output-on-failure -j "$jobs" -LE long "$@" ;;
   --tsan)
     shift
     export MOTOSTAB_BUILD_DIR=build-tsan MOTOSTAB_CMAKE_ARGS="-DMOTOSTAB_BUILD_BENCH=OFF -DMOTOSTAB_EIGEN_CHECKS=ON"
@@ -31,8 +32,13 @@ case "$mode" in
   --fuzz)
     shift
     "$root/scripts/fuzz.sh" "${1:-60}" ;;
+  --long)
+    shift
+    "$root/scripts/build.sh"
+    cd "$root/build"
+    ctest --output-on-failure -j "$jobs" -L long "$@" ;;
   *)
     "$root/scripts/build.sh"
     cd "$root/build"
-    ctest --output-on-failure -j "$jobs" "$@" ;;
+    ctest --output-on-failure -j "$jobs" -LE long "$@" ;;
 esac
