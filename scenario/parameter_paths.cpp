@@ -65,7 +65,7 @@ std::vector<ScalarParameter> listScalarParameters(const YAML::Node& tree) {
     if (n && n.IsMap()) collect(n, section, out);
   }
   // Measured parts of optional sections: the swingarm, the leaning rider's upper body and its lean
-  // stiffness and damping (issue 10), the fork's hub carrier when given explicitly, and a steer
+  // stiffness and damping, the fork's hub carrier when given explicitly, and a steer
   // controller's gains, gain factor, delay and schedule speed.
   const std::pair<const char*, std::vector<const char*>> sections[] = {
       {"swingarm", {"pivot_m", "mass_kg", "com_m", "inertia_kgm2"}},
