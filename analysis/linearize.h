@@ -52,7 +52,7 @@ struct LinearState {
   StateEntry entry;  ///< the q, u or z it stands for
 };
 
-/// x' = A x + B u about a trim, restricted to the constraint tangent space (docs/simbody-notes.md:
+/// x' = A x + B u about a trim, restricted to the constraint tangent space (docs/simbody.md:
 /// T = [I; -G_dep^-1 G_ind]) with the cyclic coordinates removed.
 ///
 /// About a steady turn (TrimSummary::turn) the model is in the heading frame (docs/cornering.md): the

@@ -1,6 +1,6 @@
 #pragma once
 // Evaluation of the vehicle's first-order dynamics y' = f(y) on a working Simbody State, and
-// stage-aware finite differences of it (docs/simbody-notes.md: perturb q/u/z in place, realize, restore).
+// stage-aware finite differences of it (docs/simbody.md: perturb q/u/z in place, realize, restore).
 #include <Eigen/Dense>
 #include <functional>
 

@@ -1,4 +1,4 @@
-// Issue 10 speed goal: the 401-speed enduro sweep (0-40 m/s at 0.1 m/s, serial) with all four model
+// Speed figures: the 401-speed enduro sweep (0-40 m/s at 0.1 m/s, serial) with all four model
 // extensions present (steer_damper with friction, fork_compliance with torsion, rider_lean, and the
 // relaxation_linear tyres read through the `bicycle` preset with every enduro value given beside it,
 // so the tyres are the enduro's) against the same sweep without them. Sweeps alternate, so both see

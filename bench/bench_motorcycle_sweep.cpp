@@ -1,4 +1,4 @@
-// Issue 3 speed figures: the enduro `twist` model over 0-40 m/s at 0.1 m/s (401 speeds), serial and
+// Speed figures: the enduro `twist` model over 0-40 m/s at 0.1 m/s (401 speeds), serial and
 // on two threads, with the (2n+1)-realize yardstick timed before each sweep (counters: n states,
 // realize_us, yardstick_ms = 401 (2n+1) realizes, ratio = median of sweep / yardstick), and the
 // two-thread speed-up from 15 alternated pairs against the machine's own two-thread yardstick.

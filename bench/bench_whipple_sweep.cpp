@@ -1,4 +1,4 @@
-// Issue 2 speed figures: one Whipple sweep over 0-10 m/s in 0.01 m/s steps (1001 speeds), and the
+// Speed figures: one Whipple sweep over 0-10 m/s in 0.01 m/s steps (1001 speeds), and the
 // cost of one realize to Acceleration after a q, u or z change.
 #include <benchmark/benchmark.h>
 

@@ -95,7 +95,7 @@ void addTyreSlipCandidate(const YAML::Node& tree, std::vector<Candidate>& out) {
                  {k, length}});
 }
 
-// Rider lean (issue 10): the rider's upper body, a 75 kg rider's head-arms-trunk (Winter 2009,
+// Rider lean: the rider's upper body, a 75 kg rider's head-arms-trunk (Winter 2009,
 // Table 4.1: 0.678 of the body mass; the rider mass is an estimate), taken out of the rear frame as a
 // proportional slice (CoM at the rear frame's, inertia scaled by the mass share: the rest stays a valid
 // body), hinged 0.25 m below that CoM (docs/rider-lean-parameters.py: 0.24 m for rider Jason). Free:

@@ -1,5 +1,5 @@
 #pragma once
-// Candidate causes of a model's misfit (issue 11, item 2). A candidate is data: `--set` overrides that
+// Candidate causes of a model's misfit. A candidate is data: `--set` overrides that
 // switch an effect on, and free parameters (each an override key path with bounds and, for a measured
 // scenario parameter, a Student-t prior: diagnosis/priors.h). Nothing here touches the model: the diagnosis applies the
 // overrides to the scenario's YAML tree through loadScenario(file, overrides).

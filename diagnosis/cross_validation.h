@@ -1,5 +1,5 @@
 #pragma once
-// Scores of K-fold cross-validation (issue 11, item 4) with a guard against folds whose fit fails or
+// Scores of K-fold cross-validation with a guard against folds whose fit fails or
 // diverges: such a fold must neither poison the cross-validated RMS nor count for the candidate.
 #include <Eigen/Dense>
 #include <functional>

@@ -229,7 +229,7 @@ bool excludesOff(const CandidateParameter& p, const ParameterEstimate& e, double
   return std::abs(e.value - p.off) > kZ95 * e.stderr_;
 }
 
-// The criteria of a cause (issue 11, item 4) that `fit` fails; CV only if the cheap ones pass.
+// The criteria of a cause that `fit` fails; CV only if the cheap ones pass.
 void judge(const FitProblem& problem, const Step& step, size_t i, FitSummary& fit, const DiagnosisOptions& opt,
            bool alwaysCv) {
   const Candidate& c = *step.pool[i];

@@ -1,5 +1,5 @@
 #pragma once
-// motostab diagnose (issue 11): what a scenario gets wrong against measured data, which candidate
+// motostab diagnose: what a scenario gets wrong against measured data, which candidate
 // change explains it, the extended scenario and the gain.
 //
 // Residuals r = (measured - predicted) / sigma: per eigenvalue row its real part and, for a complex
@@ -36,7 +36,7 @@ struct DiagnosisOptions {
   std::vector<std::string> overrides;    ///< --set on the base scenario
   /// Called as work proceeds: stage name, done, total.
   std::function<void(const std::string&, int, int)> progress;
-  // Evidence needed to name a cause (issue 11, item 4).
+  // Evidence needed to name a cause.
   double minBicDrop = 10;
   double maxPValue = 0.01;
   double minFoldShare = 0.8;
@@ -141,7 +141,7 @@ struct DiagnosisResult {
   std::vector<int> observationRun, observationSignal; ///< response run (-1: eigenvalue) and signal
 };
 
-/// Runs the whole diagnosis (items 1-6 of issue 11).
+/// Runs the whole diagnosis.
 DiagnosisResult runDiagnosis(const std::string& scenarioFile, const MeasuredData& data, const DiagnosisOptions& options);
 
 /// The base scenario's YAML tree with `overrides` applied (what extended.yaml holds).

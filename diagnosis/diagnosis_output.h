@@ -1,5 +1,5 @@
 #pragma once
-// Writers of a diagnosis (issue 11, Outputs): diagnosis.json (pinned keys), report.md, residuals.csv,
+// Writers of a diagnosis: diagnosis.json (pinned keys), report.md, residuals.csv,
 // extended.yaml and gnuplot plots. They format what runDiagnosis computed.
 #include <filesystem>
 #include <string>

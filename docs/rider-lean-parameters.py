@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 """Derives scenarios/browser-jason-rider.yaml: the Browser bicycle with rider Jason and his passive upper
-body (issue 10, `rider_lean`), from the BicycleParameters measurements (Moore et al. 2010; data in
+body (`rider_lean`), from the BicycleParameters measurements (Moore et al. 2010; data in
 tests/data/measured-data/BicycleParameters, BSD 2-Clause):
 
 - bicycles/Browser/Parameters/BrowserBenchmark.txt: the bicycle in Meijaard (2007) form (z down);

@@ -1,7 +1,7 @@
 #pragma once
 // Whole-run outputs: a command writes every output into a temporary sibling of its output folder
 // and renames it into place at the end, so a failed or killed run leaves either the complete new
-// outputs or the complete old ones, never a mix (issue 13). Use it in every command that writes a
+// outputs or the complete old ones, never a mix. Use it in every command that writes a
 // folder:
 //
 //   OutputFolder out(args.out);              // ".NAME.partial-PID" beside NAME, empty

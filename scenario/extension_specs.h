@@ -1,5 +1,5 @@
 #pragma once
-// Readers of the optional model-extension sections of a scenario (issue 10): `steer_damper`,
+// Readers of the optional model-extension sections of a scenario: `steer_damper`,
 // `fork_compliance`, `rider_lean`, `steer_controller`. Each section is strict (unknown keys, wrong types, negative
 // stiffnesses are InputErrors at file:line:col); absent sections leave the model as it was.
 #include "scenario/scenario.h"

@@ -1,5 +1,5 @@
 #pragma once
-// Lateral fork compliance (issue 10, `fork_compliance`), after Sharp & Alstead (1980) "The influence
+// Lateral fork compliance (`fork_compliance`), after Sharp & Alstead (1980) "The influence
 // of structural flexibilities on the straight-running stability of motorcycles" (VSD 9(6)), Spierings
 // (1981) "The effects of lateral front fork flexibility on the vibrational modes of straight-running
 // single-track vehicles" (VSD 10(1)) and Cossalter, Lot, Massaro (2007) "The influence of frame

@@ -1,5 +1,5 @@
 #pragma once
-// Passive rider lean (issue 10, `rider_lean`): the rider's upper body on a revolute joint about the
+// Passive rider lean (`rider_lean`): the rider's upper body on a revolute joint about the
 // longitudinal axis (design x) through (0, 0, h) in the rear frame, with a torsional spring k and
 // damper c: T = -k theta - c theta' (N m) on the upper body, its reaction on the rear frame.
 // Coordinate `rider_lean` (rad, right-hand rule about forward x: > 0 moves the head towards -y, i.e.

@@ -1,5 +1,5 @@
 #pragma once
-// Steering damper (issue 10, `steer_damper`): a rotary damper between the front frame and the rear
+// Steering damper (`steer_damper`): a rotary damper between the front frame and the rear
 // frame about the steer axis. With delta' the steer rate (rad/s, front frame relative to rear frame),
 // the torque on the front frame about the steer axis (its reaction on the rear frame) is
 //   T = -c delta' - f tanh(delta' / omega_s)                     (N m)

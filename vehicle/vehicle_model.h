@@ -28,7 +28,7 @@ struct CoordinateIndices {
   int steer = -1, rearSpin = -1, frontSpin = -1;
   std::vector<int> compliance;  ///< swingarm compliance coordinates, if any
   int suspension = -1;          ///< rear suspension angle about the pivot (rad, > 0 lifts the hub), if any
-  std::vector<int> extension;   ///< rider_lean, fork_bending, fork_torsion (issue 10), those present
+  std::vector<int> extension;   ///< rider_lean, fork_bending, fork_torsion, those present
 };
 
 /// Model inputs: generalized forces the trim may solve for and B is taken against.

@@ -1,4 +1,4 @@
-// Issue 14 item 4: the BicycleParameters bicycles whose measured frame inertia breaks the triangle
+// the BicycleParameters bicycles whose measured frame inertia breaks the triangle
 // inequality (Browser rear frame, Yellow and Yellowrev front frames), imported with --repair-inertia,
 // give the eigenvalues of the linearised Whipple model of Meijaard, Papadopoulos, Ruina, Schwab (2007),
 // Proc. R. Soc. A 463:1955-1982, Appendix A (M, C1, K0, K2), evaluated here on the file's unrepaired

@@ -1,7 +1,7 @@
 // End-to-end tests of the motostab command line: every command on a bundled scenario or example
 // exits 0 and writes files that parse; values are checked against published numbers where there are
 // some (Meijaard et al. 2007 Table 2; Kooijman et al. 2008 run 52; the virtual rig's truth). Bad options
-// and files exit 2 (issue 13: 2 = bad input, 1 = failed computation; CLI11 and number cases are in
+// and files exit 2 (2 = bad input, 1 = failed computation; CLI11 and number cases are in
 // input_errors_test.cpp).
 #include <gtest/gtest.h>
 

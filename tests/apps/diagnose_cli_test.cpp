@@ -1,5 +1,5 @@
 // motostab diagnose on bad measurement files: exit 2, the message names file and line, and the
-// output folder is neither created nor changed (issue 11, Bad input).
+// output folder is neither created nor changed.
 #include <gtest/gtest.h>
 
 #include <cmath>

@@ -1,4 +1,4 @@
-// Every input error exits with code 2 and names what was wrong (issue 13): CLI11's own parse and
+// Every input error exits with code 2 and names what was wrong: CLI11's own parse and
 // validation errors, non-finite or out-of-range numbers, bad --set overrides, bad scenario files.
 #include <gtest/gtest.h>
 
@@ -40,7 +40,7 @@ void expectInputError(const std::vector<std::string>& args, const std::string& n
 }
 
 TEST(CliInput, SpeedsMustBeFinite) {
-  expectInputError({"sweep", kWhipple, "--speeds", "nan:10:0.1"}, "--speeds");  // segfaulted before issue 13
+  expectInputError({"sweep", kWhipple, "--speeds", "nan:10:0.1"}, "--speeds");  // once a segfault
   expectInputError({"sweep", kWhipple, "--speeds", "0:inf:0.1"}, "--speeds");
   expectInputError({"sweep", kWhipple, "--speeds", "0:10:0"}, "--speeds");
   expectInputError({"sweep", kWhipple, "--speeds", "5:1:0.1"}, "--speeds");

@@ -1,4 +1,4 @@
-// Whole-run outputs (issue 13): a sweep killed while it writes leaves the output folder with the
+// Whole-run outputs: a sweep killed while it writes leaves the output folder with the
 // complete old outputs or the complete new ones, and the next run cleans up after it.
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-// Default candidates (issue 11, item 2): rider_lean is offered where the rear frame holds a rider
+// Default candidates: rider_lean is offered where the rear frame holds a rider
 // (the benchmark bicycle's 85 kg rear frame includes its rider, Meijaard et al. 2007) and loads as a
 // valid scenario; on the riderless Kooijman (2008) Silvercity (12.06 kg rear frame) it is listed as
 // unavailable with the reason. The upper body's mass is Winter's (2009, Table 4.1) head-arms-trunk

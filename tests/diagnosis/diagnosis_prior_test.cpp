@@ -1,5 +1,5 @@
 // The prior of a parameter candidate is the scenario's `uncertainty:` sigma (in the key's unit) where
-// the scenario states one, else motostab's default (issue 11 with issue 12's reader): a benchmark copy
+// the scenario states one, else motostab's default: a benchmark copy
 // states sigmas drawn here for two keys; a third key keeps the default (10 mm for a length,
 // scenario/parameter_paths.h).
 #include <gtest/gtest.h>

@@ -1,4 +1,4 @@
-// Diagnosis tests that hide an effect (issue 11): "measured" data come from the extended model
+// Diagnosis tests that hide an effect: "measured" data come from the extended model
 // (hidden_effect.h) with values and noise drawn here; diagnose must name the effect (or list it as
 // indistinguishable from the named one), estimate its parameter within 2 standard errors and 15 %,
 // and improve the cross-validated RMS by a factor of at least 2. Candidate lists are trimmed to the

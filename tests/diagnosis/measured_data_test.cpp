@@ -1,4 +1,4 @@
-// loadMeasuredData: the pinned format (issue 11) and every bad input it names by file and line.
+// loadMeasuredData: the pinned format and every bad input it names by file and line.
 #include "diagnosis/measured_data.h"
 
 #include <gtest/gtest.h>

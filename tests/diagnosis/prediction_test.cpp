@@ -180,7 +180,7 @@ TEST(Prediction, YawRateUnderRollingConstraints) {
 }
 
 // extended.yaml (the base tree with overrides applied) swept at a row's speed gives the exact
-// prediction to 1e-9 (issue 11, item 5).
+// prediction to 1e-9.
 TEST(Prediction, SweepOfTheExtendedTreeReproducesPredictions) {
   const double v = testing::Draw(31).uniform(3, 7);
   MeasuredData data;

@@ -102,7 +102,7 @@ SweepResult sweepWithThreads(const VehicleModel& model, int threads) {
   return runSweep(model, o);
 }
 
-// Issue 13: sweep workers rebuilt the model with the built-in plugins only, dropping plugins
+// Regression: sweep workers rebuilt the model with the built-in plugins only, dropping plugins
 // supplied through the registry and every ModelExtension on --threads 2. Threaded sweeps agree with
 // the serial one to the trim tolerance (the workers meet at timing-dependent speeds).
 TEST(Plugins, SharedLibraryContactReachesEverySweepWorker) {

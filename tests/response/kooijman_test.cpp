@@ -21,7 +21,7 @@ using motostab::response::IdentificationResult;
 
 const std::string kDir = std::string(MOTOSTAB_TEST_DATA_DIR) + "/measured-data/Kooijman2008/";
 constexpr double kPublishedReal = -1.16, kPublishedImag = 5.44;  // Kooijman et al. 2008, Fig. 6 caption
-constexpr double kTolerance = 0.05;                               // issue 5 acceptance
+constexpr double kTolerance = 0.05;                               // acceptance tolerance
 
 IdentificationOptions makePaperWindow() {
   IdentificationOptions o;

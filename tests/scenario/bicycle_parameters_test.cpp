@@ -1,4 +1,4 @@
-// BicycleParameters import: impossible measured inertias explained and repaired (issue 14 item 4), and
+// BicycleParameters import: impossible measured inertias explained and repaired, and
 // scenario names that YAML would read as null, numbers or booleans written quoted (item 5). Browser's rear
 // frame has I_yy > I_xx + I_zz (lowered onto it); the Yellow front frames have their largest moment about
 // an axis near x, exceeding I_yy + the smallest (I_yy raised onto |l_1 - l_2|).
@@ -32,7 +32,7 @@ double calcExcess(double xx, double yy, double zz, double xz) {
 
 struct Case {
   const char* bike;
-  const char* key;  // the frame inertia that breaks the inequality (issue 14: Browser rear, Yellow(rev) front)
+  const char* key;  // the frame inertia that breaks the inequality (Browser rear, Yellow(rev) front)
   char brokenAxis;  // the principal moment that exceeds the other two is about this axis (closed form above)
 };
 const Case kCases[] = {{"Browser", "IByy", 'y'}, {"Yellow", "IHyy", 'x'}, {"Yellowrev", "IHyy", 'x'}};

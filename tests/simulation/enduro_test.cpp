@@ -27,7 +27,7 @@ const Scenario& getEnduroTorsion() {
 
 LinearModel linearizeAt(double speed) { return linearizeScenarioAt(getEnduroTorsion(), speed); }
 
-// Issue 5 sec. 3: roll, steer and swingarm torsion follow exp(A t) x0 to 1e-4 relative over 2 s at 3 speeds.
+// roll, steer and swingarm torsion follow exp(A t) x0 to 1e-4 relative over 2 s at 3 speeds.
 TEST(SimulationEnduro, SmallPerturbationFollowsMatrixExponential) {
   for (double v : {10.0, 20.0, 30.0}) {
     const LinearModel lin = linearizeAt(v);
@@ -70,7 +70,7 @@ std::complex<double> findLateralMode(const LinearModel& lin, const std::string& 
   return best;
 }
 
-// Issue 5 sec. 3: weave and wobble identified (response/) from a simulated small steer-rate kick match the
+// weave and wobble identified (response/) from a simulated small steer-rate kick match the
 // linear eigenvalues within 0.5 % in frequency and 0.01 in damping ratio at 5 speeds.
 TEST(SimulationEnduro, IdentifiedWeaveAndWobbleMatchLinearEigenvalues) {
   for (double v : {10.0, 15.0, 20.0, 25.0, 30.0}) {

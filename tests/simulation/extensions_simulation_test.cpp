@@ -1,4 +1,4 @@
-// Issue 10 item 5: simulate with every model extension present (steer_damper, fork_compliance with
+// simulate with every model extension present (steer_damper, fork_compliance with
 // torsion, rider_lean; enduro tyres): small perturbations follow the linearisation exp(A t) x0 (computed
 // independently of the integration path), the extension coordinates are output by name, and a
 // steer-torque pulse acts between front frame and rear frame (not on the fork's hub carrier).

@@ -1,7 +1,7 @@
 // Held-out style round trips: virtual swingarm rigs drawn at random inside the test (axes, stiffnesses,
 // frequencies, damping, lever arms of the hit down to 1/30 of the other mode's, sensor noise, channel
 // count and layout), identified with default settings only (no processing section: automatic band and
-// orders). Tolerances of issue 14 item 6: static k_tw 2 % and axis angle 1 deg, frequencies 0.5 %, damping
+// orders). Tolerances of static k_tw 2 % and axis angle 1 deg, frequencies 0.5 %, damping
 // ratios 15 % (bending) and 30 % (torsion); bending and torsion labels from the modal axes.
 // Truth: the drawn parameters, and seed eq. 5-9 (rig_truth.h) for the static twist axis.
 #include <gtest/gtest.h>

@@ -1,4 +1,4 @@
-// Bad input is an InputError naming the file, line and key (issue 4, item 6).
+// Bad input is an InputError naming the file, line and key.
 #include <gtest/gtest.h>
 
 #include "tests/support/catch_input_error.h"
@@ -35,7 +35,7 @@ using motostab::test::catchInputError;
 TEST(StaticInput, AcceptsTheIssueFormatAsIs) {
   const Files f{makeTempDir("static_ok")};
   f.write("static.csv", kGoodCsv);
-  // Verbatim from issue 4, comments included.
+  // A bad file with comments.
   const auto y = f.write("static.yaml",
       "test: static\n"
       "frame: \"x along the swingarm from the pivot towards the hub, z up, y lateral (the force direction); metres\"\n"

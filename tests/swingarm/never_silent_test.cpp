@@ -1,4 +1,4 @@
-// Issue 14 items 2-3: when the hammer test yields no mode, or only one of bending and torsion, the
+// when the hammer test yields no mode, or only one of bending and torsion, the
 // command says so (exit 3) with what was tried, what to set and, for a missing mode, which one, why and
 // where to hit; `--verbose` prints the stabilisation summary.
 #include <gtest/gtest.h>

@@ -63,7 +63,7 @@ RoundTrip runRoundTrip(const std::string& name, double noiseFactor, std::uint64_
   return r;
 }
 
-// Acceptance (issue 4, item 6): static axis angle 0.5 deg, k_tw 2 %, frequencies 0.5 %, damping ratios 10 %;
+// Acceptance: static axis angle 0.5 deg, k_tw 2 %, frequencies 0.5 %, damping ratios 10 %;
 // plus k_b 2 %, k_t 10 %, c_tw 10 % at realistic noise (4 um lasers, 0.05 m/s^2 accelerometers).
 TEST(VirtualRig, RoundTripRecoversTruthAtRealisticNoise) {
   for (std::uint64_t seed : {1, 2, 3}) {

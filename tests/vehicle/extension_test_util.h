@@ -1,5 +1,5 @@
 #pragma once
-// Shared by the model-extension tests (issue 10): eigenvalues at one speed, matching of spectra,
+// Shared by the model-extension tests: eigenvalues at one speed, matching of spectra,
 // labelled modes of a sweep, scenario files with an extra section, and a portable random draw.
 #include <gtest/gtest.h>
 
@@ -62,7 +62,7 @@ inline SweepResult runScenarioSweep(const Scenario& s, double start, double stop
   return runSweep(model, o);
 }
 
-/// The limit test of issue 10 on the enduro: weave and wobble at 10, 20 and 30 m/s with `overrides`
+/// The limit test on the enduro: weave and wobble at 10, 20 and 30 m/s with `overrides`
 /// within `tolerance` (relative) of the plain enduro's.
 inline void expectEnduroWeaveAndWobbleKept(const std::vector<std::string>& overrides, double tolerance = 1e-3) {
   const SweepResult a = runScenarioSweep(loadScenario(kEnduro), 10, 30, 1);
@@ -76,7 +76,7 @@ inline void expectEnduroWeaveAndWobbleKept(const std::vector<std::string>& overr
     }
 }
 
-/// The limit test of issue 10 on the Whipple bicycle: every eigenvalue at 2, 5 and 8 m/s of
+/// The limit test on the Whipple bicycle: every eigenvalue at 2, 5 and 8 m/s of
 /// `extended` within `tolerance` (relative to max(1, |lambda|)) of one of the plain benchmark's.
 inline void expectWhippleSpectrumKept(const Scenario& extended, double tolerance = 1e-4) {
   const Scenario plain = loadScenario(kWhipple);
