@@ -4,6 +4,8 @@
 #include <future>
 #include <memory>
 
+#include "scenario/scenario_source.h"
+
 namespace motostab {
 
 const ModeBranch* findBranch(const SweepResult& sweep, const std::string& label) {
@@ -53,29 +55,30 @@ ModeShape calcWeaveShape(const VehicleModel& model, const SweepResult& sweep, do
 
 StudyResult runStudy(const std::string& file, const StudyOptions& opt) {
   StudyResult out;
-  const Scenario base = loadScenario(file, opt.overrides);
+  const ScenarioSource source(file);  // read once for every variant
+  const Scenario base = source.load(opt.overrides);
   out.scenario = base.name;
   out.wheelbase = base.geometry.wheelbase;
   // Each variant owns its model, so variants run in parallel safely.
   struct Job {
-    std::vector<std::string> overrides;
+    ParameterOverrides overrides;
     bool halved;
     std::string name;
   };
   std::vector<Job> jobs;
   for (int halved = 0; halved < 2; ++halved)
     for (const auto& v : opt.variants) {
-      std::vector<std::string> o = opt.overrides;
-      o.push_back("swingarm.compliance=" + v);
-      if (halved) {
-        o.push_back("swingarm.stiffness_scale=" + std::to_string(opt.stiffnessScale));
-        o.push_back("swingarm.damping_scale=" + std::to_string(opt.dampingScale));
+      ParameterOverrides o = opt.overrides;
+      o.set("swingarm.compliance", v);
+      if (halved) {  // the scale factors as doubles, at full precision
+        o.set("swingarm.stiffness_scale", opt.stiffnessScale);
+        o.set("swingarm.damping_scale", opt.dampingScale);
       }
       jobs.push_back({o, halved == 1, v});
     }
   std::vector<SweepResult> results(jobs.size());
   auto runJob = [&](size_t j) {
-    const VehicleModel model(loadScenario(file, jobs[j].overrides));
+    const VehicleModel model(source.load(jobs[j].overrides));
     results[j] = runSweep(model, opt.sweep);
   };
   const int threads = std::max(1, opt.threads);
@@ -90,7 +93,7 @@ StudyResult runStudy(const std::string& file, const StudyOptions& opt) {
 
   for (const auto& v : out.nominal) {
     if (v.name != opt.shapeVariant) continue;
-    const VehicleModel model(loadScenario(file, v.overrides));
+    const VehicleModel model(source.load(v.overrides));
     for (double speed : opt.shapeSpeeds) out.weaveShapes.push_back(calcWeaveShape(model, v.sweep, speed, opt.sweep));
   }
   return out;

@@ -6,12 +6,13 @@
 #include <vector>
 
 #include "analysis/sweep.h"
+#include "scenario/parameter_overrides.h"
 
 namespace motostab {
 
 struct StudyVariant {
   std::string name;                    ///< rigid, bending, torsion, twist
-  std::vector<std::string> overrides;  ///< scenario overrides that select it
+  ParameterOverrides overrides;        ///< scenario changes that select it
   SweepResult sweep;
 };
 
@@ -35,7 +36,7 @@ struct StudyOptions {
   double dampingScale = 1.0 / std::sqrt(2.0);  ///< keeps the damping ratio (seed eq. 18)
   std::string shapeVariant = "torsion";
   std::vector<double> shapeSpeeds{10.0, 18.5, 30.0};
-  std::vector<std::string> overrides;      ///< applied to every variant first
+  ParameterOverrides overrides;            ///< applied to every variant first
   int threads = 2;
 };
 

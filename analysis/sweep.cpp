@@ -10,6 +10,7 @@
 #include <memory>
 #include <mutex>
 #include <optional>
+#include <stdexcept>
 
 namespace motostab {
 
@@ -102,8 +103,9 @@ constexpr double kMirrorTolerance = 1e-8;
 // One sweep in progress: the chains of trims and linearisations, shared by the workers.
 class SweepRun {
  public:
-  SweepRun(const VehicleModel& model, const SweepOptions& opt) : model_(model), opt_(opt), fixed_(opt) {
-    out_.speeds = makeSpeedGrid(opt.start, opt.stop, opt.step);
+  SweepRun(const VehicleModel& model, std::vector<double> speeds, const SweepOptions& opt)
+      : model_(model), opt_(opt), fixed_(opt) {
+    out_.speeds = std::move(speeds);
     plan_ = planSweep(out_.speeds, opt.threads);
     replicas_.resize(plan_.workers);
     out_.trims.resize(plan_.n);
@@ -120,7 +122,7 @@ class SweepRun {
     if (decideYaw && plan_.leadTurns) {
       refReady_ = refPromise_.get_future().share();
     } else if (decideYaw) {  // no speed of 1 m/s or more in the lead's span: a separate reference
-      TrimResult top = calcTrim(model_, std::max(1.0, opt_.stop), opt_.trim);
+      TrimResult top = calcTrim(model_, std::max(1.0, out_.speeds.back()), opt_.trim);
       ownReference_ = linearizeInPlace(model_, top, opt_.linearize);
       ref_ = &*ownReference_;
       fixed_.linearize.removeYaw = ref_->findState("yaw") < 0 ? 1 : 0;  // the sweep's states are ref's
@@ -311,7 +313,14 @@ void findCriticalSpeeds(const VehicleModel& model, const SweepOptions& opt, cons
 }  // namespace
 
 SweepResult runSweep(const VehicleModel& model, const SweepOptions& opt) {
-  SweepRun run(model, opt);
+  return runSweep(model, makeSpeedGrid(opt.start, opt.stop, opt.step), opt);
+}
+
+SweepResult runSweep(const VehicleModel& model, const std::vector<double>& speeds, const SweepOptions& opt) {
+  if (speeds.empty() || !std::is_sorted(speeds.begin(), speeds.end()) ||
+      std::adjacent_find(speeds.begin(), speeds.end()) != speeds.end())
+    throw std::invalid_argument("runSweep: the speeds must be sorted, unique and not empty");
+  SweepRun run(model, speeds, opt);
   run.prepareReference();
   run.runChains();
   const SweepOptions fixed = run.getFixedOptions();

@@ -66,6 +66,11 @@ std::vector<double> makeSpeedGrid(double start, double stop, double step);
 /// labels modes, and brackets every sign change of a labelled mode's real part to the tolerance.
 SweepResult runSweep(const VehicleModel& model, const SweepOptions& options);
 
+/// The same at the given speeds (sorted, unique, m/s; options.start, stop and step unused), e.g. the
+/// speeds of measured data: one chain of warm-started trims with the sweep's column grouping and
+/// mirrored lateral columns, and its modes tracked and labelled as a sweep's.
+SweepResult runSweep(const VehicleModel& model, const std::vector<double>& speeds, const SweepOptions& options);
+
 /// Recomputes sweep.criticalSpeeds from the branches' current labels (e.g. after trackModesAcrossRoll);
 /// `options` as the sweep was run with.
 void updateCriticalSpeeds(const VehicleModel& model, const SweepOptions& options, SweepResult& sweep);

@@ -11,6 +11,7 @@
 #include "io/csv.h"
 #include "io/output_folder.h"
 #include "scenario/scenario.h"
+#include "scenario/scenario_source.h"
 
 namespace motostab::cli {
 namespace {
@@ -45,14 +46,15 @@ void registerDiagnoseCommands(CLI::App& app) {
   cmd->add_option("--out", a->out, "Output folder (default: diagnosis-<scenario name>)");
   cmd->add_option("--set", a->overrides, "Override a scenario value, e.g. --set geometry.trail_m=0.1");
   cmd->callback([a]() {
-    const Scenario scenario = loadScenario(a->scenario, a->overrides);
+    const ParameterOverrides changes(a->overrides);  // the --set text, parsed once
+    const Scenario scenario = ScenarioSource(a->scenario).load(changes);
     const MeasuredData data = loadMeasuredData(a->measurements);
     DiagnosisOptions opt;
     if (!a->candidates.empty()) opt.candidates = splitFields(a->candidates, ',');
     opt.maxCauses = a->maxCauses;
     opt.folds = a->folds;
     opt.threads = a->threads;
-    opt.overrides = a->overrides;
+    opt.overrides = changes;
     opt.robustness = !a->noRobustness;
     const bool terminal = isatty(fileno(stderr));
     if (terminal) opt.progress = showProgress;

@@ -10,6 +10,7 @@
 #include "output/map_output.h"
 #include "output/study_report.h"
 #include "output/sweep_output.h"
+#include "scenario/scenario_source.h"
 
 namespace motostab::cli {
 
@@ -142,7 +143,8 @@ void registerStabilityCommands(CLI::App& app) {
   study->add_option("--roll-deg", st->rollDeg, "Compare the variants about steady turns at this roll angle (deg)")
       ->check(makeRollCheck());
   study->callback([st]() {
-    const Scenario scenario = loadScenario(st->scenario, st->overrides);
+    const ParameterOverrides changes(st->overrides);  // the --set text, parsed once
+    const Scenario scenario = ScenarioSource(st->scenario).load(changes);
     StudyOptions opt;
     opt.sweep.start = scenario.speeds.start;
     opt.sweep.stop = scenario.speeds.stop;
@@ -152,7 +154,7 @@ void registerStabilityCommands(CLI::App& app) {
     opt.stiffnessScale = st->stiffnessScale;
     opt.dampingScale = st->dampingScale;
     opt.shapeSpeeds = st->shapeSpeeds;
-    opt.overrides = st->overrides;
+    opt.overrides = changes;
     opt.threads = st->threads;
     if (st->rollDeg != 0) {
       checkTurnSpeeds(opt.sweep.start, st->speeds.empty() ? "speeds_mps (the scenario's; override with --speeds)" : "--speeds");

@@ -13,6 +13,7 @@
 #include "apps/common_options.h"
 #include "io/input_error.h"
 #include "io/output_folder.h"
+#include "scenario/scenario_source.h"
 #include "uncertainty/distributed.h"
 #include "uncertainty/uncertainty_output.h"
 
@@ -71,8 +72,9 @@ UncertaintyOptions makeOptions(const UncertaintyArgs& a, const Scenario& scenari
 
 void runUncertainty(const UncertaintyArgs& a) {
   DistributedSession session;
-  const Scenario scenario = loadScenario(a.scenario, a.overrides);
-  const UncertaintySetup setup = prepareUncertainty(a.scenario, a.overrides, makeOptions(a, scenario));
+  const ParameterOverrides changes(a.overrides);  // the --set text, parsed once
+  const Scenario scenario = ScenarioSource(a.scenario).load(changes);
+  const UncertaintySetup setup = prepareUncertainty(a.scenario, changes, makeOptions(a, scenario));
   const std::string out = a.out.empty() ? scenario.name + "-uncertainty" : a.out;
   std::unique_ptr<OutputFolder> folder;  // rank 0 writes; inputs are all checked by now
   if (session.getRank() == 0) folder = std::make_unique<OutputFolder>(out);

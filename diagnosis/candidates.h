@@ -8,6 +8,8 @@
 #include <string>
 #include <vector>
 
+#include "scenario/parameter_overrides.h"
+
 namespace motostab {
 
 struct CandidateParameter {
@@ -27,7 +29,7 @@ struct CandidateParameter {
 
 struct Candidate {
   std::string name;                         ///< steer_damper, parameter:geometry.trail_m, ...
-  std::vector<std::string> fixedOverrides;  ///< applied before the parameters' (switch the effect on)
+  ParameterOverrides fixedOverrides;        ///< applied before the parameters' (switch the effect on)
   std::vector<CandidateParameter> parameters;
 };
 

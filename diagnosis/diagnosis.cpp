@@ -14,6 +14,7 @@
 #include "diagnosis/priors.h"
 #include "diagnosis/robustness.h"
 #include "scenario/scenario.h"
+#include "scenario/scenario_source.h"
 #include "scenario/yaml_map.h"
 
 namespace motostab {
@@ -350,15 +351,15 @@ std::vector<ComponentResidual> summariseResiduals(const FitProblem& problem, con
   return out;
 }
 
-std::vector<const Candidate*> probeCandidates(const std::string& file, const DiagnosisOptions& opt,
+std::vector<const Candidate*> probeCandidates(const ScenarioSource& source, const DiagnosisOptions& opt,
                                               const std::vector<Candidate>& all, std::vector<std::string>& unavailable) {
   std::vector<const Candidate*> out;
   for (const auto& c : all) {
-    std::vector<std::string> ov = opt.overrides;
+    ParameterOverrides ov = opt.overrides;
     const ModelSpec m = makeModel({}, &c);
-    for (const auto& o : m.makeOverrides(m.getStart())) ov.push_back(o);
+    ov.append(m.makeOverrides(m.getStart()));
     try {
-      loadScenario(file, ov);
+      source.load(ov);
       out.push_back(&c);
     } catch (const InputError& e) {
       unavailable.push_back(c.name + ": " + e.getReason() + " (" + e.getLocation().key + ")");
@@ -369,10 +370,9 @@ std::vector<const Candidate*> probeCandidates(const std::string& file, const Dia
 
 // Candidates that cannot join a model holding `cause` (same switch or same parameter).
 bool conflicts(const Candidate& a, const Candidate& b) {
-  auto key = [](const std::string& o) { return o.substr(0, o.find('=')); };
-  for (const auto& x : a.fixedOverrides)
-    for (const auto& y : b.fixedOverrides)
-      if (key(x) == key(y)) return true;
+  for (const auto& x : a.fixedOverrides.getItems())
+    for (const auto& y : b.fixedOverrides.getItems())
+      if (x.path == y.path) return true;
   for (const auto& p : a.parameters)
     for (const auto& q : b.parameters)
       if (p.path == q.path) return true;
@@ -389,9 +389,9 @@ YAML::Node makeScenarioTree(const std::string& scenarioFile, const std::vector<s
 
 namespace {
 
-std::vector<std::pair<std::string, double>> getUncertainty(const std::string& file, const DiagnosisOptions& opt) {
+std::vector<std::pair<std::string, double>> getUncertainty(const ScenarioSource& source, const DiagnosisOptions& opt) {
   std::vector<std::pair<std::string, double>> out;
-  for (const auto& u : loadScenario(file, opt.overrides).uncertainty) out.push_back({u.path, u.sigma});
+  for (const auto& u : source.load(opt.overrides).uncertainty) out.push_back({u.path, u.sigma});
   return out;
 }
 
@@ -463,7 +463,7 @@ void finish(FitProblem& problem, const Step& step, DiagnosisResult& result, int 
     for (auto& e : result.causes[c].fit.parameters) e = result.extended.allParameters[i++];
   result.before = problem.predict(none, Eigen::VectorXd(), true);
   result.after = problem.predict(extended, result.extended.x, true);
-  for (const auto& o : extended.makeOverrides(result.extended.x)) result.extendedOverrides.push_back(o);
+  for (const auto& o : extended.makeOverrides(result.extended.x).format()) result.extendedOverrides.push_back(o);
   result.residualsBefore = summariseResiduals(problem, result.before);
   result.residualsAfter = summariseResiduals(problem, result.after);
   for (size_t k = 0; k < result.residualsAfter.size(); ++k) {
@@ -501,7 +501,8 @@ DiagnosisResult searchCauses(const DiagnosisOptions& opt, const std::vector<cons
   return result;
 }
 
-std::vector<RobustnessRun> runRobustness(const std::string& scenarioFile, const MeasuredData& data, const DiagnosisOptions& opt,
+std::vector<RobustnessRun> runRobustness(const std::shared_ptr<const ScenarioSource>& source, const MeasuredData& data,
+                                         const DiagnosisOptions& opt,
                                          const std::vector<const Candidate*>& pool, const std::vector<Cause>& causes) {
   std::vector<RobustnessRun> out;
   const std::vector<DataVariant> variants = makeRobustnessVariants(data);
@@ -515,7 +516,7 @@ std::vector<RobustnessRun> runRobustness(const std::string& scenarioFile, const 
     RobustnessRun run;
     run.leftOut = variants[k].leftOut;
     try {
-      const Predictor predictor(scenarioFile, opt.overrides, variants[k].data);
+      const Predictor predictor(source, opt.overrides, variants[k].data);
       FitProblem problem(predictor, variants[k].data, opt.folds);
       Step step;
       const DiagnosisResult r = searchCauses(quiet, pool, problem, step, false);
@@ -541,11 +542,12 @@ bool DiagnosisResult::isFragile() const {
 
 DiagnosisResult runDiagnosis(const std::string& scenarioFile, const MeasuredData& data, const DiagnosisOptions& opt) {
   if (opt.progress) opt.progress("reference sweep", 0, 1);
-  const Predictor predictor(scenarioFile, opt.overrides, data);
+  const auto source = ScenarioSource::open(scenarioFile);  // read once for every prediction
+  const Predictor predictor(source, opt.overrides, data);
   FitProblem problem(predictor, data, opt.folds);
   std::vector<std::string> unavailable;
-  std::vector<Candidate> listed = listCandidates(makeScenarioTree(scenarioFile, opt.overrides),
-                                                getUncertainty(scenarioFile, opt), &unavailable);
+  std::vector<Candidate> listed =
+      listCandidates(source->makeTree(opt.overrides), getUncertainty(*source, opt), &unavailable);
   for (const std::string& path : getControllerPaths(data))  // set per row/run by the data: not one value
     for (auto it = listed.begin(); it != listed.end();)
       if (it->name == "parameter:" + path) {
@@ -562,15 +564,15 @@ DiagnosisResult runDiagnosis(const std::string& scenarioFile, const MeasuredData
     for (const auto& u : unavailable) why += "; " + u;
     throw std::invalid_argument(why);
   }
-  const std::vector<const Candidate*> pool = probeCandidates(scenarioFile, opt, all, unavailable);
+  const std::vector<const Candidate*> pool = probeCandidates(*source, opt, all, unavailable);
   Step step;
   DiagnosisResult result = searchCauses(opt, pool, problem, step, true);
   result.scenarioFile = scenarioFile;
   result.data = &data;
   result.unavailable = unavailable;
-  result.extendedOverrides = opt.overrides;
+  result.extendedOverrides = opt.overrides.format();
   finish(problem, step, result, opt.threads);
-  if (opt.robustness) result.robustness = runRobustness(scenarioFile, data, opt, pool, result.causes);
+  if (opt.robustness) result.robustness = runRobustness(source, data, opt, pool, result.causes);
   return result;
 }
 

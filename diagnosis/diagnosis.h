@@ -33,7 +33,7 @@ struct DiagnosisOptions {
   int maxCauses = 3;
   int folds = 0;                         ///< 0: 5, or one per run for response-only data
   int threads = 1;
-  std::vector<std::string> overrides;    ///< --set on the base scenario
+  ParameterOverrides overrides;          ///< --set on the base scenario
   /// Called as work proceeds: stage name, done, total.
   std::function<void(const std::string&, int, int)> progress;
   // Evidence needed to name a cause.

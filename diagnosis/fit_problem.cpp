@@ -33,14 +33,14 @@ double ModelSpec::getValue(int i, const Eigen::VectorXd& x) const {
   return getParameters()[i]->logScale ? std::exp(x(i)) : x(i);
 }
 
-std::vector<std::string> ModelSpec::makeOverrides(const Eigen::VectorXd& x) const {
-  std::vector<std::string> out;
+ParameterOverrides ModelSpec::makeOverrides(const Eigen::VectorXd& x) const {
+  ParameterOverrides out;
   int i = 0;
   for (const auto* c : parts) {
-    out.insert(out.end(), c->fixedOverrides.begin(), c->fixedOverrides.end());
+    out.append(c->fixedOverrides);
     for (const auto& p : c->parameters) {
-      out.push_back(formatOverride(p.path, p.logScale ? std::exp(x(i)) : x(i)));
-      for (const auto& also : p.alsoPaths) out.push_back(formatOverride(also, p.logScale ? std::exp(x(i)) : x(i)));
+      out.set(p.path, p.logScale ? std::exp(x(i)) : x(i));
+      for (const auto& also : p.alsoPaths) out.set(also, p.logScale ? std::exp(x(i)) : x(i));
       ++i;
     }
   }

@@ -29,7 +29,8 @@ struct ModelSpec {
   int size() const;
   std::vector<const CandidateParameter*> getParameters() const;
   Eigen::VectorXd getStart() const;
-  std::vector<std::string> makeOverrides(const Eigen::VectorXd& x) const;
+  /// The candidates' switches and parameter values at x, as typed changes of the scenario.
+  ParameterOverrides makeOverrides(const Eigen::VectorXd& x) const;
   double getValue(int i, const Eigen::VectorXd& x) const;  ///< key-unit value of parameter i
   /// Residuals of the parameters' Student-t priors (priors.h eq. 1), one per parameter with a prior.
   Eigen::VectorXd calcPriorResiduals(const Eigen::VectorXd& x) const;

@@ -225,8 +225,8 @@ ResponseRun readRun(YamlMap run) {
     const std::string sc = run.getString("speed_column");
     const int j = findColumn(t, sc);
     if (j < 0) run.fail("speed_column", "no column '" + sc + "' in " + t.source);
-    const auto v = cut(t, j, keep);
-    for (double x : v) r.speed += x / v.size();
+    r.speeds = cut(t, j, keep);
+    for (double x : r.speeds) r.speed += x / r.speeds.size();
   }
   auto signals = getMapList(run, "signals");
   if (signals.empty()) run.fail("signals", "a run needs at least one signal");

@@ -43,6 +43,7 @@ struct ResponseRun {
   std::string file;       ///< resolved CSV path
   double speed = 0;       ///< m/s (given, or the mean of the speed column in the window)
   std::vector<double> time;  ///< s, samples in the window
+  std::vector<double> speeds;  ///< m/s per sample: the speed column in the window (empty: speed_mps given)
   std::vector<ResponseSignal> signals;
   InputLocation where;    ///< the run's entry in the YAML file
   std::vector<std::string> controller;  ///< `steer_controller.*` overrides of its `controller:` mapping

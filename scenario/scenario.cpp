@@ -5,6 +5,7 @@
 
 #include "scenario/extension_specs.h"
 #include "scenario/parameter_paths.h"
+#include "scenario/scenario_source.h"
 #include "scenario/yaml_map.h"
 
 namespace motostab {
@@ -164,18 +165,16 @@ void rethrowNamingOverride(const InputError& e, const std::vector<std::string>& 
   throw e;
 }
 
+Scenario readScenarioTree(const YAML::Node& tree, const std::string& file, const std::vector<std::string>& overrides) {
+  YamlMap m(tree, file, "");
+  Scenario s = readScenario(file, m);
+  s.overrides = overrides;
+  return s;
+}
+
 Scenario loadScenario(const std::string& file, const std::vector<std::string>& overrides) {
-  YamlMap root = loadYamlFile(file);
-  YAML::Node tree = root.getNode();
-  for (const auto& o : overrides) applyOverride(tree, o);
-  try {
-    YamlMap m(tree, file, "");
-    Scenario s = readScenario(file, m);
-    s.overrides = overrides;
-    return s;
-  } catch (const InputError& e) {
-    rethrowNamingOverride(e, overrides);
-  }
+  const ScenarioSource source(file);  // the file's own errors first, then the overrides'
+  return source.load(ParameterOverrides(overrides));
 }
 
 namespace {

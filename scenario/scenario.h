@@ -176,8 +176,13 @@ struct Scenario {
 };
 
 /// Loads and validates a scenario file. `overrides` are "a.b=value" assignments applied first.
-/// Every problem is an InputError naming file, line, column and key.
+/// Every problem is an InputError naming file, line, column and key. A convenience for one load:
+/// whoever loads variants of one scenario reads it once with ScenarioSource (scenario_source.h).
 Scenario loadScenario(const std::string& file, const std::vector<std::string>& overrides = {});
+
+/// Validates a scenario from its YAML tree (as read from `file`, with the changes `overrides` name
+/// already applied; they are kept in Scenario::overrides for messages). InputError as loadScenario.
+Scenario readScenarioTree(const YAML::Node& tree, const std::string& file, const std::vector<std::string>& overrides);
 
 /// Rethrows `error`, naming the override that set the value it is about ("(value from --set
 /// a.b=...)") when one did: for errors found after loading, e.g. by a plugin reading its section.

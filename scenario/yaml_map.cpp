@@ -2,11 +2,28 @@
 
 #include <filesystem>
 #include <map>
+#include <mutex>
 
 #include "io/number.h"
 
+// yaml-cpp 0.7 has no public setter of a node's mark: YAML::as_if is a friend of YAML::Node, and
+// this specialisation for a motostab type uses that to reach the node's mark (copyTree).
+namespace motostab {
+struct NodeMarkSetter {};
+}  // namespace motostab
+
+template <>
+struct YAML::as_if<motostab::NodeMarkSetter, void> {
+  static void set(YAML::Node& node, const YAML::Mark& mark) {
+    node.EnsureNodeExists();
+    node.m_pNode->set_mark(mark);
+  }
+};
+
 namespace motostab {
 namespace {
+
+void setNodeMark(YAML::Node& node, const YAML::Mark& mark) { YAML::as_if<NodeMarkSetter, void>::set(node, mark); }
 
 InputLocation locationOf(const YAML::Node& n, const std::string& file, const std::string& path) {
   const YAML::Mark m = n.Mark();
@@ -219,7 +236,24 @@ void YamlMap::finish() const {
   }
 }
 
+namespace {
+
+std::mutex gOpenCountLock;
+std::map<std::string, long> gOpenCounts;  // per file name as given to loadYamlFile
+
+}  // namespace
+
+long getYamlFileOpenCount(const std::string& file) {
+  std::lock_guard<std::mutex> guard(gOpenCountLock);
+  const auto it = gOpenCounts.find(file);
+  return it == gOpenCounts.end() ? 0 : it->second;
+}
+
 YamlMap loadYamlFile(const std::string& file) {
+  {
+    std::lock_guard<std::mutex> guard(gOpenCountLock);
+    ++gOpenCounts[file];
+  }
   YAML::Node root;
   try {
     root = YAML::LoadFile(file);
@@ -275,18 +309,32 @@ YAML::Node findKeyPath(const YAML::Node& root, const std::string& path) {
   return node;
 }
 
-void applyOverride(YAML::Node& root, const std::string& assignment) {
+ParsedOverride parseOverride(const std::string& assignment) {
   const auto eq = assignment.find('=');
   if (eq == std::string::npos || eq == 0)
     throw InputError({"--set", 0, 0, assignment}, "expected KEY.PATH=VALUE");
-  const std::string path = assignment.substr(0, eq);
-  YAML::Node value;
+  ParsedOverride out;
+  out.path = assignment.substr(0, eq);
   try {
-    value = YAML::Load(assignment.substr(eq + 1));
+    out.value = YAML::Load(assignment.substr(eq + 1));
   } catch (const YAML::Exception& e) {
     throw InputError({"--set", 0, 0, assignment}, "the value is not valid YAML: " + e.msg);
   }
-  checkKeys(value, "--set " + assignment, path, true);
+  checkKeys(out.value, "--set " + assignment, out.path, true);
+  try {
+    parseKeyPath(out.path);
+  } catch (const InputError& e) {
+    throw InputError({"--set", 0, 0, assignment}, e.getReason());
+  }
+  return out;
+}
+
+void applyOverride(YAML::Node& root, const std::string& assignment) {
+  const ParsedOverride o = parseOverride(assignment);
+  setKeyPath(root, o.path, o.value, assignment);
+}
+
+void setKeyPath(YAML::Node& root, const std::string& path, const YAML::Node& value, const std::string& assignment) {
   std::vector<KeyPathSegment> segments;
   try {
     segments = parseKeyPath(path);
@@ -323,6 +371,39 @@ void applyOverride(YAML::Node& root, const std::string& assignment) {
     }
     chain.push_back(next);
   }
+}
+
+YAML::Node makeOverrideScalar(const std::string& text) {
+  YAML::Node n(text);
+  YAML::Mark first;  // line 0, column 0: shown as 1:1, as for a value parsed from --set text
+  setNodeMark(n, first);
+  return n;
+}
+
+YAML::Node copyTree(const YAML::Node& node) {
+  YAML::Node out;
+  switch (node.Type()) {
+    case YAML::NodeType::Map:
+      out = YAML::Node(YAML::NodeType::Map);
+      for (const auto& kv : node) out.force_insert(copyTree(kv.first), copyTree(kv.second));
+      break;
+    case YAML::NodeType::Sequence:
+      out = YAML::Node(YAML::NodeType::Sequence);
+      for (const auto& element : node) out.push_back(copyTree(element));
+      break;
+    case YAML::NodeType::Scalar:
+      out = YAML::Node(node.Scalar());
+      break;
+    case YAML::NodeType::Null:
+      out = YAML::Node(YAML::NodeType::Null);
+      break;
+    case YAML::NodeType::Undefined:
+      return YAML::Node(YAML::NodeType::Undefined);
+  }
+  out.SetTag(node.Tag());
+  out.SetStyle(node.Style());
+  setNodeMark(out, node.Mark());
+  return out;
 }
 
 }  // namespace motostab

@@ -105,4 +105,26 @@ YAML::Node findKeyPath(const YAML::Node& root, const std::string& path);
 /// is not YAML is an InputError naming the override.
 void applyOverride(YAML::Node& root, const std::string& assignment);
 
+/// The key path and the value (read as YAML, its keys checked) of "a.b.c=value"; InputError naming
+/// the assignment as applyOverride reports it.
+struct ParsedOverride {
+  std::string path;
+  YAML::Node value;
+};
+ParsedOverride parseOverride(const std::string& assignment);
+
+/// Sets the node at key path `path` of `root` to `value`, as applyOverride does (missing intermediate
+/// maps created, `key[i]` addressing an existing element); `assignment` names the change in errors.
+void setKeyPath(YAML::Node& root, const std::string& path, const YAML::Node& value, const std::string& assignment);
+
+/// A deep copy of a YAML tree that keeps every node's mark (line and column), unlike YAML::Clone,
+/// so that a copy reports errors at the places of the file the original was read from.
+YAML::Node copyTree(const YAML::Node& node);
+
+/// A scalar node holding `text`, marked at line 1, column 1 as a value parsed from `--set` text is.
+YAML::Node makeOverrideScalar(const std::string& text);
+
+/// How many times loadYamlFile has opened `file` in this process (as named; for tests that count reads).
+long getYamlFileOpenCount(const std::string& file);
+
 }  // namespace motostab

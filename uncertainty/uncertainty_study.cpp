@@ -18,17 +18,17 @@ namespace {
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
-// The scenario with parameter values x applied as overrides after the user's.
-std::vector<std::string> makeOverrides(const UncertaintySetup& s, const std::vector<double>& x) {
-  std::vector<std::string> o = s.overrides;
-  for (size_t j = 0; j < x.size(); ++j) o.push_back(formatOverride(s.params[j].path, x[j]));
+// The scenario changes of parameter values x (full precision), after the user's.
+ParameterOverrides makeOverrides(const UncertaintySetup& s, const std::vector<double>& x) {
+  ParameterOverrides o = s.overrides;
+  for (size_t j = 0; j < x.size(); ++j) o.set(s.params[j].path, x[j]);
   return o;
 }
 
 // A model of the scenario with values x; nullptr (and `why`) if the loader or the model rejects them.
 std::unique_ptr<VehicleModel> buildModel(const UncertaintySetup& s, const std::vector<double>& x, std::string& why) {
   try {
-    return std::make_unique<VehicleModel>(loadScenario(s.scenarioFile, makeOverrides(s, x)));
+    return std::make_unique<VehicleModel>(s.source->load(makeOverrides(s, x)));
   } catch (const InputError& e) {
     why = e.what();
     return nullptr;
@@ -108,18 +108,18 @@ void extractSweep(const SweepResult& sweep, TaskResult& r) {
 
 }  // namespace
 
-UncertaintySetup prepareUncertainty(const std::string& file, const std::vector<std::string>& overrides,
+UncertaintySetup prepareUncertainty(const std::string& file, const ParameterOverrides& overrides,
                                     const UncertaintyOptions& options) {
   UncertaintySetup s;
   s.scenarioFile = file;
+  s.source = ScenarioSource::open(file);
   s.overrides = overrides;
   s.options = options;
-  const Scenario scenario = loadScenario(file, overrides);
+  const Scenario scenario = s.source->load(overrides);
   const VehicleModel model(scenario);  // the nominal scenario must build (plugins checked)
   if (scenario.uncertainty.empty())
     throw InputError({file, 0, 0, "uncertainty"}, "the scenario has no uncertainty section (or it is empty)");
-  YAML::Node tree = loadYamlFile(file).getNode();
-  for (const auto& o : overrides) applyOverride(tree, o);
+  const YAML::Node tree = s.source->makeTree(overrides);
   s.params = scenario.uncertainty;
   for (const auto& p : s.params) {
     s.nominal.push_back(getScalarParameter(tree, p.path));

@@ -19,10 +19,12 @@
 #include <array>
 #include <cstdint>
 #include <functional>
+#include <memory>
 #include <string>
 #include <vector>
 
 #include "scenario/scenario.h"
+#include "scenario/scenario_source.h"
 
 namespace motostab {
 
@@ -45,7 +47,8 @@ struct UncertaintyOptions {
 /// One uncertainty study: the scenario, its overrides, the uncertain parameters and their nominal values.
 struct UncertaintySetup {
   std::string scenarioFile;
-  std::vector<std::string> overrides;       ///< --set assignments, applied before every sample's own
+  std::shared_ptr<const ScenarioSource> source;  ///< the scenario file, read once for every sample
+  ParameterOverrides overrides;             ///< --set changes, applied before every sample's own
   std::vector<ParameterUncertainty> params; ///< the scenario's uncertainty section (sigma >= 0)
   std::vector<double> nominal;              ///< nominal value of each parameter (its unit)
   UncertaintyOptions options;
@@ -53,7 +56,7 @@ struct UncertaintySetup {
 
 /// Loads the scenario (with overrides), checks it builds, and reads the parameters' nominal values.
 /// InputError for a bad scenario or an empty uncertainty section.
-UncertaintySetup prepareUncertainty(const std::string& scenarioFile, const std::vector<std::string>& overrides,
+UncertaintySetup prepareUncertainty(const std::string& scenarioFile, const ParameterOverrides& overrides,
                                     const UncertaintyOptions& options);
 
 enum class TaskKind { Nominal, Plus, Minus, Sample, SobolA, SobolB, SobolAB };

@@ -31,7 +31,7 @@ TEST(Candidates, RiderLeanWhereTheRearFrameHoldsARider) {
   EXPECT_NEAR(c->parameters[0].start, 4 * gravity, 1e-9 * gravity);
   EXPECT_NEAR(c->parameters[0].lower, 1.1 * gravity, 1e-9 * gravity);
   EXPECT_TRUE(c->parameters[0].offAtInfinity);
-  std::vector<std::string> ov = c->fixedOverrides;
+  std::vector<std::string> ov = c->fixedOverrides.format();
   ov.push_back("rider_lean.stiffness_Nm_per_rad=1234");
   const Scenario s = loadScenario(file, ov);
   ASSERT_TRUE(s.hasRiderLean);
