@@ -206,6 +206,29 @@ void checkTimeIncreasing(const CsvTable& t, int column) {
     if (!(t.rows[i][column] > t.rows[i - 1][column])) failRow(t, i, t.header[column], "time must increase");
 }
 
+// `speed_trace: {file, time_column, speed_column}`: a speed record of its own (e.g. a speedometer
+// at its own sampling), linearly interpolated at the run's sample times; it must cover the window.
+std::vector<double> readSpeedTrace(YamlMap& run, const std::vector<double>& time) {
+  YamlMap m = run.getMap("speed_trace");
+  const CsvTable t = readCsv(resolve(m, "file", m.getString("file")));
+  const std::string tk = m.getString("time_column"), vk = m.getString("speed_column");
+  if (findColumn(t, tk) < 0) m.fail("time_column", "no column '" + tk + "' in " + t.source);
+  if (findColumn(t, vk) < 0) m.fail("speed_column", "no column '" + vk + "' in " + t.source);
+  m.finish();
+  checkTimeIncreasing(t, findColumn(t, tk));
+  const std::vector<double> ts = t.getColumn(tk), vs = t.getColumn(vk);
+  if (ts.size() < 2 || ts.front() > time.front() || ts.back() < time.back())
+    m.fail("file", "the speed trace does not cover the run's window");
+  std::vector<double> out;
+  for (double x : time) {
+    const size_t k = std::min<size_t>(std::upper_bound(ts.begin(), ts.end(), x) - ts.begin(), ts.size() - 1);
+    const double w = (x - ts[k - 1]) / (ts[k] - ts[k - 1]);
+    out.push_back((1 - w) * vs[k - 1] + w * vs[k]);
+    if (out.back() < 0) m.fail("speed_column", "speeds must not be negative");
+  }
+  return out;
+}
+
 ResponseRun readRun(YamlMap run) {
   ResponseRun r;
   r.where = run.locate();
@@ -218,9 +241,13 @@ ResponseRun readRun(YamlMap run) {
   checkTimeIncreasing(t, tc);
   const std::vector<bool> keep = selectWindow(run, t.getColumn(timeKey));
   r.time = cut(t, tc, keep);
-  if (run.has("speed_mps") == run.has("speed_column")) run.fail("", "give exactly one of speed_mps and speed_column");
+  if (run.has("speed_mps") + run.has("speed_column") + run.has("speed_trace") != 1)
+    run.fail("", "give exactly one of speed_mps, speed_column and speed_trace");
   if (run.has("speed_mps")) {
     r.speed = run.getNonNegative("speed_mps");
+  } else if (run.has("speed_trace")) {
+    r.speeds = readSpeedTrace(run, r.time);
+    for (double x : r.speeds) r.speed += x / r.speeds.size();
   } else {
     const std::string sc = run.getString("speed_column");
     const int j = findColumn(t, sc);

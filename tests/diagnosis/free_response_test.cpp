@@ -9,6 +9,9 @@
 
 #include "diagnosis/prediction.h"
 #include "io/portable_random.h"
+#include "tests/support/temp_dir.h"
+
+#include <fstream>
 
 namespace motostab {
 namespace {
@@ -87,6 +90,47 @@ TEST(FreeResponse, SlowingRunIsPredictedAlongItsSpeedTrace) {
   EXPECT_LT(errVarying, 0.1 * errMean) << errVarying << " vs " << errMean;
   EXPECT_EQ(getTraceSpeeds(run).size(), 3u);
   EXPECT_NEAR(getTraceSpeeds(run).front(), v0 - 3 * a, 1e-12);
+}
+
+// A speed record of its own (another sampling) is interpolated at the run's samples.
+TEST(FreeResponse, SpeedTraceFileIsInterpolatedAtTheSamples) {
+  PortableRandom random(5252);
+  const auto dir = makeTempDir("speed_trace");
+  std::ofstream run(dir / "run.csv"), trace(dir / "speed.csv");
+  run << "t_s,roll_rate\n";
+  for (int i = 0; i < 40; ++i) run << 0.01 * i << "," << random.drawUniform(-1, 1) << "\n";
+  run.close();
+  std::vector<double> tt, vv;
+  trace << "t_s,v_mps\n";
+  for (double t = -0.013; t < 0.5; t += random.drawUniform(0.02, 0.05)) {
+    tt.push_back(t), vv.push_back(random.drawUniform(4.5, 5.5));
+    trace << formatShortest(t) << "," << formatShortest(vv.back()) << "\n";
+  }
+  trace.close();
+  auto write = [&](const std::string& window) {
+    std::ofstream y(dir / "data.yaml");
+    y << "responses:\n  - file: run.csv\n    time_column: t_s\n" << window
+      << "    speed_trace: {file: speed.csv, time_column: t_s, speed_column: v_mps}\n"
+      << "    signals:\n      - {column: roll_rate, quantity: roll_rate}\n";
+  };
+  write("");
+  const MeasuredData data = loadMeasuredData((dir / "data.yaml").string());
+  const ResponseRun& r = data.responses[0];
+  ASSERT_EQ(r.speeds.size(), r.time.size());
+  for (size_t i = 0; i < r.time.size(); ++i) {
+    size_t k = 1;
+    while (tt[k] < r.time[i]) ++k;
+    const double expected = vv[k - 1] + (vv[k] - vv[k - 1]) * (r.time[i] - tt[k - 1]) / (tt[k] - tt[k - 1]);
+    EXPECT_NEAR(r.speeds[i], expected, 1e-12);
+  }
+  // A trace that ends before the run's samples do.
+  std::ofstream(dir / "speed.csv") << "t_s,v_mps\n0,5\n0.2,5\n";
+  try {
+    loadMeasuredData((dir / "data.yaml").string());
+    ADD_FAILURE() << "no InputError";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("speed_trace.file"), std::string::npos) << e.what();
+  }
 }
 
 }  // namespace
