@@ -8,7 +8,6 @@
 #include "analysis/parallel.h"
 #include "analysis/sweep.h"
 #include "scenario/parameter_paths.h"
-#include "scenario/yaml_map.h"
 #include "io/csv.h"
 #include "uncertainty/sampling.h"
 #include "vehicle/vehicle_model.h"
