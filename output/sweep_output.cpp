@@ -78,7 +78,7 @@ std::string markCriticalSpeeds(const SweepResult& sweep, size_t firstTag) {
     os << "  set arrow " << firstTag + i << " from " << v << ", graph 0 to " << v
        << ", graph 1 nohead front dashtype 3 linewidth 1.5 linecolor rgb '#303030'\n"
        << "  set label " << firstTag + i << " '" << c.mode << " " << formatSpeed(c.speed, 3) << " m/s' at " << v
-       << ", graph 0.98 rotate by 90 right offset -0.7,0 front\n";
+       << ", graph 0.98 rotate by 90 right offset -0.9,0 front boxed\n";
   }
   return os.str();
 }
@@ -117,7 +117,8 @@ std::string plotBranches(const SweepResult& sweep) {
 
 std::string makeEigenvaluePlot(const std::string& name, const SweepResult& sweep) {
   const std::vector<StableRange> stable = calcStableSpeedRanges(sweep);
-  return "  set datafile separator ','\n  set datafile columnheaders\n  set grid\n  set key outside right\n"
+  return "  set datafile separator ','\n  set datafile columnheaders\n  set grid\n"
+         "  set key below\n  set style textbox opaque noborder\n"
          "  set title " + gnuplotQuote("Eigenvalues against speed: " + name) + "\n"
          "  set xlabel 'forward speed v (m/s)'\n"
          "  set ylabel 'eigenvalue: real part (1/s, solid), imaginary part (rad/s, dashed)'\n"

@@ -127,7 +127,7 @@ TEST(SweepPlot, WhippleBenchmarkMarksWeaveAndCapsizeAndShadesTheStableRange) {
   // rad/s at 5 m/s (grid index 20).
   const TextCsv csv = readTextCsv(dir / "eigenvalues.csv");
   ASSERT_EQ(csv.find("mode"), 1);
-  const std::regex series(R"('eigenvalues.csv' every (\d+)::(\d+) using 1:([^ ]+) with lines .*? title '(\w+), (real|imaginary) part')");
+  const std::regex series(R"('eigenvalues.csv' every (\d+)::(\d+) using 1:(.+?) with lines .*? title '(\w+), (real|imaginary) part')");
   std::set<std::string> drawn;
   for (std::sregex_iterator it(script.begin(), script.end(), series), end; it != end; ++it) {
     const size_t n = std::stoul((*it)[1]), b = std::stoul((*it)[2]);
@@ -138,8 +138,10 @@ TEST(SweepPlot, WhippleBenchmarkMarksWeaveAndCapsizeAndShadesTheStableRange) {
       ASSERT_EQ(parseCell(row[0]), sweep.speeds[k]);
     }
     drawn.insert((*it)[4].str() + " " + (*it)[5].str());
-    if ((*it)[4] == "weave" && (*it)[5] == "imaginary")
+    EXPECT_EQ((*it)[3].str(), (*it)[5] == "real" ? "3" : "(abs($4) > 1e-9 ? abs($4) : NaN)");  // real, |imag| columns
+    if ((*it)[4] == "weave" && (*it)[5] == "imaginary") {
       EXPECT_NEAR(std::abs(parseCell(csv.rows[20 * n + b][3])), 4.46486771378823, 1e-6);
+    }
   }
   EXPECT_EQ(drawn, (std::set<std::string>{"weave real", "weave imaginary", "capsize real", "castor real"}));
   expectCompleteImages(dir, "real_part_vs_speed");
