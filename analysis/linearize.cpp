@@ -1,3 +1,4 @@
+// Linearisation about a trim: constraint tangent space, differenced A and B, state removal, eigensystem.
 #include "analysis/linearize.h"
 
 #include <Eigen/Eigenvalues>

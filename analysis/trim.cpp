@@ -1,3 +1,4 @@
+// Trims: Newton's method (straight running, or a turn at a fixed roll), the entry points and trim points.
 #include "analysis/trim.h"
 
 #include <algorithm>

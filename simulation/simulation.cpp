@@ -1,3 +1,4 @@
+// runSimulation: trim, model with the perturbation force, initial state, integration to the output grid.
 #include "simulation/simulation.h"
 
 #include <algorithm>

@@ -1,3 +1,4 @@
+// MF 6.1/6.2: coefficients, force law and stiffnesses; the factory of the Magic Formula variants.
 #include "tyres/magic_formula.h"
 
 #include <array>

@@ -1,3 +1,4 @@
+// Identification of a hammer test: hit screening, H1, LSCF stabilisation, modes, modal axes and labels.
 #include "swingarm/identification/hammer_frf.h"
 
 #include <cmath>
