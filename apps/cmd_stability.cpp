@@ -109,7 +109,9 @@ void registerLinearizeCommand(CLI::App& app) {
     }
     const TrimResult trim = calcTrim(model, linArgs->speed, trimOptions);
     const LinearModel lm = linearize(model, trim);
-    writeLinearModel(folder.getPath(), lm);
+    std::vector<std::string> modes;  // each eigenvalue's mode, from its content at this one speed
+    for (const ModeBranch& b : trackModes({lm}, scenario.geometry.wheelbase)) modes.push_back(b.label);
+    writeLinearModel(folder.getPath(), lm, modes);
     folder.commit();
     std::cout << "Trim at " << linArgs->speed << " m/s: residual " << trim.residualNorm << " after " << trim.iterations
               << " iterations; " << lm.states.size() << " states. Wrote " << linArgs->out
