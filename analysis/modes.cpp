@@ -1,6 +1,6 @@
 #include "analysis/modes.h"
 
-#include "analysis/parallel.h"
+#include "core/parallel.h"
 
 #include <algorithm>
 #include <cmath>

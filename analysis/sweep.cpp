@@ -1,6 +1,6 @@
 #include "analysis/sweep.h"
 
-#include "analysis/parallel.h"
+#include "core/parallel.h"
 
 #include <cmath>
 #include <functional>

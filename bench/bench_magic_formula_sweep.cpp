@@ -15,9 +15,9 @@
 
 #include "bench/sweep_timing.h"
 #include "analysis/linearize.h"
-#include "io/portable_random.h"
+#include "core/portable_random.h"
 #include "scenario/scenario.h"
-#include "scenario/yaml_map.h"
+#include "io/yaml_map.h"
 #include "tyres/magic_formula.h"
 
 namespace {

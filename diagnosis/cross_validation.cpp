@@ -4,7 +4,7 @@
 #include <cmath>
 #include <exception>
 
-#include "analysis/parallel.h"
+#include "core/parallel.h"
 
 namespace motostab {
 namespace {

@@ -6,7 +6,7 @@
 #include <mutex>
 #include <stdexcept>
 
-#include "analysis/parallel.h"
+#include "core/parallel.h"
 #include "diagnosis/controller_groups.h"
 #include "diagnosis/cross_validation.h"
 #include "diagnosis/fit_problem.h"
@@ -14,7 +14,7 @@
 #include "diagnosis/priors.h"
 #include "diagnosis/robustness.h"
 #include "scenario/scenario.h"
-#include "scenario/yaml_map.h"
+#include "io/yaml_map.h"
 
 namespace motostab {
 namespace {

@@ -12,7 +12,7 @@
 
 #include "Simbody.h"
 
-#include "scenario/yaml_map.h"
+#include "io/yaml_map.h"
 
 /// Version of this interface. A library built against another version is refused at load; bump it
 /// whenever a type in this header changes layout or meaning.

@@ -3,7 +3,7 @@
 // `fork_compliance`, `rider_lean`, `steer_controller`. Each section is strict (unknown keys, wrong types, negative
 // stiffnesses are InputErrors at file:line:col); absent sections leave the model as it was.
 #include "scenario/scenario.h"
-#include "scenario/yaml_map.h"
+#include "io/yaml_map.h"
 
 namespace motostab {
 

@@ -6,7 +6,7 @@
 #include <cstdio>
 
 #include "io/input_error.h"
-#include "scenario/yaml_map.h"
+#include "io/yaml_map.h"
 
 namespace motostab {
 namespace {

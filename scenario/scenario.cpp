@@ -5,7 +5,7 @@
 
 #include "scenario/extension_specs.h"
 #include "scenario/parameter_paths.h"
-#include "scenario/yaml_map.h"
+#include "io/yaml_map.h"
 
 namespace motostab {
 namespace {

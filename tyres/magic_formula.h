@@ -16,7 +16,7 @@
 #include <string>
 #include <vector>
 
-#include "scenario/yaml_map.h"
+#include "io/yaml_map.h"
 #include "tyres/tir_file.h"
 
 namespace motostab {

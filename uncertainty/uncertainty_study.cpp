@@ -5,10 +5,10 @@
 #include <cmath>
 #include <limits>
 
-#include "analysis/parallel.h"
+#include "core/parallel.h"
 #include "analysis/sweep.h"
 #include "scenario/parameter_paths.h"
-#include "scenario/yaml_map.h"
+#include "io/yaml_map.h"
 #include "io/csv.h"
 #include "uncertainty/sampling.h"
 #include "vehicle/vehicle_model.h"

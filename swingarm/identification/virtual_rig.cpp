@@ -7,7 +7,7 @@
 
 #include "io/atomic_file.h"
 #include "io/csv.h"
-#include "io/portable_random.h"
+#include "core/portable_random.h"
 
 namespace motostab::identification {
 namespace {

@@ -8,7 +8,7 @@
 #include <Eigen/Eigenvalues>
 #include <sstream>
 
-#include "io/portable_random.h"
+#include "core/portable_random.h"
 #include "analysis/sweep.h"
 #include "tests/uncertainty/test_support.h"
 

@@ -6,7 +6,7 @@
 #include <cmath>
 
 #include "analysis/linearize.h"
-#include "io/portable_random.h"
+#include "core/portable_random.h"
 #include "scenario/scenario.h"
 
 namespace motostab {

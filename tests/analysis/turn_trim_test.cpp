@@ -10,7 +10,7 @@
 
 #include "analysis/linearize.h"
 #include "analysis/trim.h"
-#include "io/portable_random.h"
+#include "core/portable_random.h"
 #include "scenario/scenario.h"
 #include "tyres/rolling_no_slip.h"
 

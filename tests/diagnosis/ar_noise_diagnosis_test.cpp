@@ -8,7 +8,7 @@
 #include <cmath>
 #include <cstdio>
 
-#include "io/portable_random.h"
+#include "core/portable_random.h"
 #include "run_hidden.h"
 
 namespace motostab {

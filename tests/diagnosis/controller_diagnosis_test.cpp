@@ -10,7 +10,7 @@
 
 #include "diagnosis/diagnosis.h"
 #include "hidden_effect.h"
-#include "io/portable_random.h"
+#include "core/portable_random.h"
 #include "scenario/parameter_paths.h"
 
 namespace motostab {

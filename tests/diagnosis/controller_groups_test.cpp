@@ -14,7 +14,7 @@
 #include "diagnosis/candidates.h"
 #include "diagnosis/prediction.h"
 #include "io/csv.h"
-#include "io/portable_random.h"
+#include "core/portable_random.h"
 #include "scenario/bicycle_parameters.h"
 #include "scenario/bicycle_parameters_uncertainty.h"
 #include "scenario/parameter_paths.h"

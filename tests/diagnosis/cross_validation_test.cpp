@@ -7,7 +7,7 @@
 #include <cmath>
 #include <stdexcept>
 
-#include "io/portable_random.h"
+#include "core/portable_random.h"
 #include "diagnosis/cross_validation.h"
 
 namespace motostab {

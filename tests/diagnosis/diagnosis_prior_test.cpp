@@ -9,7 +9,7 @@
 #include <fstream>
 #include <sstream>
 
-#include "io/portable_random.h"
+#include "core/portable_random.h"
 #include "diagnosis/diagnosis.h"
 #include "io/csv.h"
 

@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-#include "io/portable_random.h"
+#include "core/portable_random.h"
 #include "analysis/sweep.h"
 #include "io/csv.h"
 #include "scenario/scenario.h"

@@ -1,5 +1,5 @@
 // Bounded Levenberg-Marquardt and the chi-square tail against independent calculations.
-#include "io/portable_random.h"
+#include "core/portable_random.h"
 #include "diagnosis/least_squares.h"
 
 #include <gtest/gtest.h>

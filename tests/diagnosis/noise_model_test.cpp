@@ -10,7 +10,7 @@
 #include <Eigen/Dense>
 #include <cmath>
 
-#include "io/portable_random.h"
+#include "core/portable_random.h"
 
 namespace motostab {
 namespace {

@@ -11,7 +11,7 @@
 #include <fstream>
 #include <sstream>
 
-#include "io/portable_random.h"
+#include "core/portable_random.h"
 #include "run_hidden.h"
 
 namespace motostab {

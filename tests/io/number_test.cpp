@@ -5,7 +5,7 @@
 #include <cstdio>
 #include <cstring>
 
-#include "io/portable_random.h"
+#include "core/portable_random.h"
 #include "io/number.h"
 
 namespace motostab {

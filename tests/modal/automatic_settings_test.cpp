@@ -7,7 +7,7 @@
 #include <complex>
 #include <cstdint>
 
-#include "io/portable_random.h"
+#include "core/portable_random.h"
 #include "modal/automatic_settings.h"
 
 namespace {

@@ -3,7 +3,7 @@
 
 #include <cmath>
 
-#include "io/portable_random.h"
+#include "core/portable_random.h"
 #include "modal/lscf.h"
 #include "modal/spectra.h"
 

@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-#include "io/portable_random.h"
+#include "core/portable_random.h"
 #include "nlohmann/json.hpp"
 #include "output/sweep_output.h"
 #include "tests/support/temp_dir.h"

@@ -5,7 +5,7 @@
 
 #include <cmath>
 
-#include "io/portable_random.h"
+#include "core/portable_random.h"
 #include "plugins/pin_spring_damper.h"
 
 namespace motostab {

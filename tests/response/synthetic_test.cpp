@@ -9,7 +9,7 @@
 
 #include <Eigen/Dense>
 
-#include "io/portable_random.h"
+#include "core/portable_random.h"
 #include "response/mode_identification.h"
 
 namespace {

@@ -1,5 +1,5 @@
 // Key paths of scalar parameters (scenario/parameter_paths.h) and `--set` with sequence indices.
-#include "io/portable_random.h"
+#include "core/portable_random.h"
 #include "scenario/parameter_paths.h"
 
 #include <gtest/gtest.h>
@@ -7,7 +7,7 @@
 #include <set>
 
 #include "scenario/scenario.h"
-#include "scenario/yaml_map.h"
+#include "io/yaml_map.h"
 
 namespace motostab {
 namespace {

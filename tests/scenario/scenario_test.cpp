@@ -8,7 +8,7 @@
 #include <sstream>
 
 #include "tests/support/temp_dir.h"
-#include "io/portable_random.h"
+#include "core/portable_random.h"
 #include "scenario/parameter_paths.h"
 #include "scenario/scenario.h"
 #include "vehicle/vehicle_model.h"

@@ -10,7 +10,7 @@
 #include <sstream>
 
 #include "tests/support/temp_dir.h"
-#include "io/portable_random.h"
+#include "core/portable_random.h"
 #include "scenario/bicycle_parameters.h"
 #include "scenario/bicycle_parameters_uncertainty.h"
 #include "scenario/scenario.h"

@@ -3,7 +3,7 @@
 // (analysis/linearize.h, independent of the integration path) for small perturbations.
 #include <gtest/gtest.h>
 
-#include "scenario/yaml_map.h"
+#include "io/yaml_map.h"
 
 #include <unsupported/Eigen/MatrixFunctions>
 

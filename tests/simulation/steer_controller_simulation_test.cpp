@@ -12,7 +12,7 @@
 #include <unsupported/Eigen/MatrixFunctions>
 
 #include "io/csv.h"
-#include "io/portable_random.h"
+#include "core/portable_random.h"
 #include "analysis/linearize.h"
 #include "simulation/simulation.h"
 #include "tests/simulation/linear_reference.h"

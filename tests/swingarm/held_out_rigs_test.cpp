@@ -10,7 +10,7 @@
 #include <complex>
 #include <cstdint>
 
-#include "io/portable_random.h"
+#include "core/portable_random.h"
 #include "rig_truth.h"
 #include "swingarm/identification/virtual_rig.h"
 #include "tests/support/temp_dir.h"

@@ -5,7 +5,7 @@
 
 #include <cstdint>
 
-#include "io/portable_random.h"
+#include "core/portable_random.h"
 #include "../apps/run_motostab.h"
 #include "swingarm/identification/frf_diagnosis.h"
 #include "swingarm/identification/virtual_rig.h"

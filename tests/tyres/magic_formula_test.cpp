@@ -13,7 +13,7 @@
 #include <sstream>
 #include <regex>
 
-#include "io/portable_random.h"
+#include "core/portable_random.h"
 #include "tyres/magic_formula.h"
 #include "tyres/motorcycle_magic_formula.h"
 

@@ -3,7 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include "io/portable_random.h"
+#include "core/portable_random.h"
 
 #include "tests/uncertainty/test_support.h"
 #include "uncertainty/sampling.h"

@@ -6,7 +6,7 @@
 #include <cmath>
 #include <filesystem>
 
-#include "io/portable_random.h"
+#include "core/portable_random.h"
 #include "tests/uncertainty/test_support.h"
 #include "uncertainty/uncertainty_output.h"
 #include "uncertainty/uncertainty_study.h"

@@ -5,7 +5,7 @@
 
 #include <cmath>
 #include <cstring>
-#include "io/portable_random.h"
+#include "core/portable_random.h"
 
 #include "analysis/sweep.h"
 #include "tests/uncertainty/test_support.h"

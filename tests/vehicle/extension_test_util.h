@@ -14,7 +14,7 @@
 #include <unistd.h>
 #include <vector>
 
-#include "io/portable_random.h"
+#include "core/portable_random.h"
 #include "analysis/linearize.h"
 #include "analysis/sweep.h"
 #include "analysis/trim.h"

@@ -7,7 +7,7 @@
 #include <set>
 #include <sstream>
 
-#include "io/portable_random.h"
+#include "core/portable_random.h"
 #include "extension_test_util.h"
 
 namespace motostab {

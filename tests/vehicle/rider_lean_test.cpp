@@ -5,7 +5,7 @@
 #include <cmath>
 #include <sstream>
 
-#include "io/portable_random.h"
+#include "core/portable_random.h"
 #include "extension_test_util.h"
 
 namespace motostab {

@@ -9,7 +9,7 @@
 
 #include "extension_test_util.h"
 #include "io/csv.h"
-#include "io/portable_random.h"
+#include "core/portable_random.h"
 #include "meijaard_benchmark.h"
 #include "vehicle/steer_controller.h"
 

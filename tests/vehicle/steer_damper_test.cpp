@@ -5,7 +5,7 @@
 #include <Eigen/Eigenvalues>
 #include <cmath>
 
-#include "io/portable_random.h"
+#include "core/portable_random.h"
 #include "extension_test_util.h"
 #include "meijaard_benchmark.h"
 #include "vehicle/steer_damper.h"

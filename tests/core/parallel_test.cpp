@@ -5,7 +5,7 @@
 #include <stdexcept>
 #include <thread>
 
-#include "analysis/parallel.h"
+#include "core/parallel.h"
 
 namespace motostab {
 namespace {

@@ -1,11 +1,11 @@
-// PortableRandom (io/portable_random.h): the engine against the value the C++ standard fixes, and the
+// PortableRandom (core/portable_random.h): the engine against the value the C++ standard fixes, and the
 // uniform and normal transforms against their moments.
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <cstdint>
 
-#include "io/portable_random.h"
+#include "core/portable_random.h"
 
 namespace motostab {
 namespace {

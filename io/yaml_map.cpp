@@ -1,4 +1,4 @@
-#include "scenario/yaml_map.h"
+#include "io/yaml_map.h"
 
 #include <filesystem>
 #include <map>
