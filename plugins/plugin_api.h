@@ -98,11 +98,6 @@ class PluginRegistrar {
   virtual void addSwingarmModel(const std::string& name, SwingarmModelFactory factory) = 0;
 };
 
-/// A revolute joint about axis n_C (unit, child-body frame) through point p_C (child frame), with
-/// q = 0 at the design pose, where the child body frame sits at X_PC0 in the parent body frame.
-SimTK::MobilizedBody::Pin addPinAtDesignPose(SimTK::MobilizedBody& parent, const SimTK::Transform& X_PC0,
-                                             const SimTK::Body& body, const SimTK::Vec3& p_C, const SimTK::Vec3& n_C);
-
 }  // namespace motostab
 
 /// Entry point a plugin library defines: MOTOSTAB_PLUGIN_ENTRY { registry.addContactModel(...); }.

@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "multibody/pin_joint.h"
 #include "plugins/pin_spring_damper.h"
 #include "vehicle/body_builder.h"
 

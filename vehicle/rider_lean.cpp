@@ -1,5 +1,6 @@
 #include "vehicle/rider_lean.h"
 
+#include "multibody/pin_joint.h"
 #include "plugins/pin_spring_damper.h"
 #include "vehicle/body_builder.h"
 

@@ -1,10 +1,8 @@
 #include "vehicle/vehicle_model.h"
 
+#include "multibody/pin_joint.h"
+#include "plugins/builtin.h"
 #include "plugins/pin_spring_damper.h"
-#include "swingarm/compliance/swingarm_compliance.h"
-#include "tyres/magic_formula_contact.h"
-#include "tyres/relaxation_linear.h"
-#include "tyres/rolling_no_slip.h"
 #include "vehicle/aerodynamics.h"
 #include "vehicle/body_builder.h"
 #include "vehicle/fork_compliance.h"
@@ -19,15 +17,6 @@ using SimTK::Rotation;
 using SimTK::Transform;
 using SimTK::UnitVec3;
 using SimTK::Vec3;
-
-PluginRegistry makeBuiltinRegistry() {
-  PluginRegistry registry;
-  registerRollingNoSlip(registry);
-  registerRelaxationLinear(registry);
-  registerMagicFormula(registry);
-  registerSwingarmModels(registry);
-  return registry;
-}
 
 namespace {
 

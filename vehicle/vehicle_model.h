@@ -17,7 +17,7 @@
 #include <vector>
 
 #include "Simbody.h"
-#include "plugins/plugin_registry.h"
+#include "plugins/builtin.h"
 #include "scenario/scenario.h"
 
 namespace motostab {
@@ -34,9 +34,6 @@ struct CoordinateIndices {
 /// Model inputs: generalized forces the trim may solve for and B is taken against.
 enum class Input { SteerTorque = 0, DriveTorque = 1, RollTorque = 2 };
 constexpr int kNumInputs = 3;
-
-/// The registry with every built-in plugin registered (tyres/, swingarm/).
-PluginRegistry makeBuiltinRegistry();
 
 class VehicleModel;
 class SteerController;

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <filesystem>
 
+#include "multibody/pin_joint.h"
 #include "plugins/pin_spring_damper.h"
 
 namespace motostab {

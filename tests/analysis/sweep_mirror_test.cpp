@@ -10,6 +10,7 @@
 
 #include "core/portable_random.h"
 #include "analysis/sweep.h"
+#include "plugins/builtin.h"
 #include "tests/uncertainty/test_support.h"
 
 namespace motostab {

@@ -8,6 +8,7 @@
 
 #include "tests/support/temp_dir.h"
 #include "analysis/sweep.h"
+#include "plugins/builtin.h"
 #include "vehicle/vehicle_model.h"
 
 namespace motostab {

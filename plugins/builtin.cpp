@@ -1,0 +1,19 @@
+#include "plugins/builtin.h"
+
+#include "swingarm/compliance/swingarm_compliance.h"
+#include "tyres/magic_formula_contact.h"
+#include "tyres/relaxation_linear.h"
+#include "tyres/rolling_no_slip.h"
+
+namespace motostab {
+
+PluginRegistry makeBuiltinRegistry() {
+  PluginRegistry registry;
+  registerRollingNoSlip(registry);
+  registerRelaxationLinear(registry);
+  registerMagicFormula(registry);
+  registerSwingarmModels(registry);
+  return registry;
+}
+
+}  // namespace motostab
