@@ -8,7 +8,7 @@
 #include "io/input_error.h"
 #include "io/output_folder.h"
 #include "output/map_output.h"
-#include "output/study_report.h"
+#include "output/study_output.h"
 #include "output/sweep_output.h"
 
 namespace motostab::cli {

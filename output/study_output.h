@@ -2,8 +2,9 @@
 // Files written by `motostab study`: the seed paper's Figs. 9-12 with their data and scripts, and
 // a markdown report setting each finding of seed sec. 4 against this model.
 #include <filesystem>
+#include <string>
 
-#include "analysis/study.h"
+#include "studies/study.h"
 
 namespace motostab {
 
@@ -12,7 +13,7 @@ namespace motostab {
 /// eigenvalues.csv and summary.json under DIR/{nominal,halved}/VARIANT/, and DIR/report.md.
 void writeStudyOutputs(const std::filesystem::path& dir, const StudyResult& study, const StudyOptions& options);
 
-/// The markdown report alone.
+/// The markdown report alone (figures from calcStudyFindings, studies/study_findings.h).
 std::string makeStudyReport(const StudyResult& study, const StudyOptions& options);
 
 }  // namespace motostab

@@ -1,4 +1,4 @@
-#include "analysis/study.h"
+#include "studies/study.h"
 
 #include <cmath>
 #include <future>
