@@ -7,7 +7,7 @@
 
 #include "apps/commands.h"
 #include "diagnosis/diagnosis.h"
-#include "diagnosis/diagnosis_output.h"
+#include "output/diagnosis_output.h"
 #include "io/csv.h"
 #include "io/output_folder.h"
 #include "scenario/scenario.h"

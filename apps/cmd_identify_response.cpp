@@ -6,6 +6,7 @@
 #include "apps/commands.h"
 #include "io/output_folder.h"
 #include "response/modes_json.h"
+#include "output/response_output.h"
 #include "response/response_csv.h"
 
 namespace motostab::cli {

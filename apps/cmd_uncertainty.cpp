@@ -14,7 +14,7 @@
 #include "io/input_error.h"
 #include "io/output_folder.h"
 #include "uncertainty/distributed.h"
-#include "uncertainty/uncertainty_output.h"
+#include "output/uncertainty_output.h"
 
 namespace motostab::cli {
 namespace {

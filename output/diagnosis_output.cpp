@@ -1,4 +1,4 @@
-#include "diagnosis/diagnosis_output.h"
+#include "output/diagnosis_output.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,11 +1,10 @@
-#include "simulation/simulation_output.h"
+#include "output/simulation_output.h"
 
 #include <algorithm>
 
 #include "io/atomic_file.h"
 #include "io/csv.h"
 #include "io/plot.h"
-#include "response/response_csv.h"
 
 namespace motostab::simulation {
 
@@ -41,42 +40,6 @@ void writeResponsePlot(const std::filesystem::path& dir, const SimulationResult&
   }
   body += "  unset multiplot\n";
   renderGnuplot(dir, "response", body);
-}
-
-double getFreeResponseStart(const std::vector<Perturbation>& perturbations) {
-  double t = 0;
-  for (const auto& p : perturbations)
-    if (p.isPulse()) t = std::max(t, p.start + p.duration);
-  return t;
-}
-
-namespace {
-response::ResponseRecord makeRecord(const SimulationResult& result, const std::vector<std::string>& signals) {
-  response::ResponseRecord record;
-  record.source = "simulation";
-  record.timeColumn = "time";
-  record.signalColumns = signals;
-  record.time = result.getColumn("time");
-  for (const auto& s : signals) record.signals.push_back(result.getColumn(s));
-  return record;
-}
-}  // namespace
-
-response::IdentificationResult identifySimulatedModes(const SimulationResult& result, double windowStart,
-                                                      const std::vector<std::string>& signals,
-                                                      response::IdentificationOptions options) {
-  const auto record = makeRecord(result, signals);
-  options.windowStart = std::max(options.windowStart, windowStart);
-  return response::identifyModes(record.time, record.signals, options);
-}
-
-response::IdentificationResult writeSimulatedModes(const std::filesystem::path& dir, const SimulationResult& result,
-                                                   double windowStart, const nlohmann::json& settings,
-                                                   const std::vector<std::string>& signals) {
-  const auto record = makeRecord(result, signals);
-  const auto modes = identifySimulatedModes(result, windowStart, signals);
-  response::writeResponseReport(dir, record, modes, {{"simulation", settings}});
-  return modes;
 }
 
 }  // namespace motostab::simulation

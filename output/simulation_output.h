@@ -1,13 +1,9 @@
 #pragma once
-// Outputs of a simulation: DIR/timeseries.csv, the response plot, and modes identified from the
-// free response (DIR/modes.json, through response/).
+// Outputs of a simulation: DIR/timeseries.csv and the response plot. The modes identified from the
+// free response (`simulate --identify`) are written by output/response_output.h (apps/simulate_identify.h).
 #include <filesystem>
 #include <string>
-#include <vector>
 
-#include <nlohmann/json.hpp>
-
-#include "response/mode_identification.h"
 #include "simulation/simulation.h"
 
 namespace motostab::simulation {
@@ -20,22 +16,5 @@ void writeTimeseries(const std::filesystem::path& dir, const SimulationResult& r
 /// rigid vehicle's) against time: DIR/response.{gp,png,svg}, reading DIR/timeseries.csv.
 /// Throws std::runtime_error if gnuplot fails.
 void writeResponsePlot(const std::filesystem::path& dir, const SimulationResult& result, const std::string& title);
-
-/// Time (s) from which the response is free: the end of the last force pulse, 0 without pulses.
-double getFreeResponseStart(const std::vector<Perturbation>& perturbations);
-
-/// Identifies the modes of `signals` (column names; default roll_rate and steer_rate, fitted jointly)
-/// of `result` from `windowStart` (s) on. Throws std::invalid_argument if the window is too short.
-response::IdentificationResult identifySimulatedModes(
-    const SimulationResult& result, double windowStart,
-    const std::vector<std::string>& signals = {"roll_rate", "steer_rate"},
-    response::IdentificationOptions options = {});
-
-/// Identifies as above and writes DIR/modes.json (format of docs/response-identification.md, with the
-/// simulation settings under "simulation") plus the fit plot DIR/response_fit.{gp,png,svg}.
-response::IdentificationResult writeSimulatedModes(const std::filesystem::path& dir, const SimulationResult& result,
-                                                   double windowStart, const nlohmann::json& settings,
-                                                   const std::vector<std::string>& signals = {"roll_rate",
-                                                                                              "steer_rate"});
 
 }  // namespace motostab::simulation

@@ -1,4 +1,4 @@
-#include "uncertainty/uncertainty_output.h"
+#include "output/uncertainty_output.h"
 
 #include <algorithm>
 #include <cmath>

@@ -8,7 +8,7 @@
 #include <filesystem>
 
 #include "diagnosis/diagnosis.h"
-#include "diagnosis/diagnosis_output.h"
+#include "output/diagnosis_output.h"
 #include "run_hidden.h"
 
 namespace motostab {

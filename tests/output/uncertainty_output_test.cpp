@@ -8,7 +8,7 @@
 
 #include "core/portable_random.h"
 #include "tests/uncertainty/test_support.h"
-#include "uncertainty/uncertainty_output.h"
+#include "output/uncertainty_output.h"
 #include "uncertainty/uncertainty_study.h"
 #include "uncertainty/uncertainty_summary.h"
 

@@ -11,6 +11,7 @@
 
 #include "tests/support/temp_dir.h"
 #include "io/input_error.h"
+#include "output/response_output.h"
 #include "response/response_csv.h"
 
 namespace {

@@ -13,7 +13,7 @@
 #include "analysis/linearize.h"
 #include "io/input_error.h"
 #include "simulation/simulation.h"
-#include "simulation/simulation_output.h"
+#include "apps/simulate_identify.h"
 #include "tests/simulation/linear_reference.h"
 
 namespace motostab::simulation {
@@ -84,7 +84,7 @@ TEST(SimulationEnduro, IdentifiedWeaveAndWobbleMatchLinearEigenvalues) {
     o.perturbations = {parsePerturbation("steer-rate:1e-3")};
     const SimulationResult r = runSimulation(getEnduroTorsion(), o);
     ASSERT_EQ(r.status, SimulationStatus::Completed) << r.message;
-    const auto id = identifySimulatedModes(r, 0.0);
+    const auto id = cli::identifySimulatedModes(r, 0.0);
     for (const std::string name : {"weave", "wobble"}) {
       const std::complex<double> ref = findLateralMode(lin, name);
       ASSERT_GT(ref.imag(), 0) << "no linear " << name << " at " << v << " m/s";
