@@ -5,7 +5,12 @@
 #include <cmath>
 #include <limits>
 
-namespace motostab {
+namespace motostab::analysis {
+
+using vehicle::CoordinateIndices;
+using vehicle::Input;
+using vehicle::VehicleModel;
+using vehicle::kNumInputs;
 
 int LinearModel::findState(const std::string& name) const {
   for (size_t i = 0; i < states.size(); ++i)
@@ -659,4 +664,4 @@ LinearModel linearizeInPlace(const VehicleModel& model, TrimResult& trim, const 
   return lin;
 }
 
-}  // namespace motostab
+}  // namespace motostab::analysis

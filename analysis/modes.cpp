@@ -7,7 +7,9 @@
 #include <limits>
 #include <map>
 
-namespace motostab {
+namespace motostab::analysis {
+
+using core::runParallel;
 
 bool isComplianceCoordinate(const std::string& name) {
   auto starts = [&](const char* p) { return name.rfind(p, 0) == 0; };
@@ -338,4 +340,4 @@ std::vector<ModeBranch> trackModes(const std::vector<LinearModel>& models, doubl
   return branches;
 }
 
-}  // namespace motostab
+}  // namespace motostab::analysis

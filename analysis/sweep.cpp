@@ -11,7 +11,10 @@
 #include <mutex>
 #include <optional>
 
-namespace motostab {
+namespace motostab::analysis {
+
+using core::runWorkers;
+using vehicle::VehicleModel;
 
 std::vector<double> makeSpeedGrid(double start, double stop, double step) {
   std::vector<double> v;
@@ -328,4 +331,4 @@ void updateCriticalSpeeds(const VehicleModel& model, const SweepOptions& opt, Sw
   findCriticalSpeeds(model, opt, fixed, sweep, replicas);
 }
 
-}  // namespace motostab
+}  // namespace motostab::analysis

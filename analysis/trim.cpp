@@ -6,7 +6,16 @@
 
 #include "tyres/rolling_no_slip.h"
 
-namespace motostab {
+namespace motostab::analysis {
+
+using scenario::Scenario;
+using scenario::WheelSpec;
+using tyres::TorusContact;
+using tyres::calcTorusContact;
+using vehicle::CoordinateIndices;
+using vehicle::Input;
+using vehicle::VehicleModel;
+using vehicle::kNumInputs;
 
 namespace {
 std::string trimMessage(double speed, double residual, int iterations, double roll, const std::string& detail) {
@@ -461,4 +470,4 @@ TrimResult restoreTrim(const VehicleModel& model, const TrimPoint& point) {
   return t;
 }
 
-}  // namespace motostab
+}  // namespace motostab::analysis

@@ -10,6 +10,8 @@
 #include "response/response_csv.h"
 
 namespace motostab::cli {
+
+using io::OutputFolder;
 namespace {
 
 struct ResponseArgs {
@@ -34,7 +36,7 @@ void runResponseIdentify(ResponseArgs args) {
                        : std::filesystem::path(args.out);
   std::cout << response::formatModesTable(result, record.signalColumns);
   OutputFolder folder(out);
-  response::writeResponseReport(folder.getPath(), record, result);
+  output::writeResponseReport(folder.getPath(), record, result);
   folder.commit();
   std::cout << "wrote " << (out / "modes.json").string() << " and " << (out / "response_fit.png").string() << "\n";
 }

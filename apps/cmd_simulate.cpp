@@ -16,6 +16,13 @@
 #include "output/simulation_output.h"
 
 namespace motostab::cli {
+
+using io::InputError;
+using io::OutputFolder;
+using output::writeResponsePlot;
+using output::writeTimeseries;
+using scenario::Scenario;
+using scenario::loadScenario;
 namespace {
 
 struct SimulateArgs {

@@ -13,6 +13,33 @@
 
 namespace motostab::cli {
 
+using analysis::LinearModel;
+using analysis::SweepOptions;
+using analysis::SweepResult;
+using analysis::TrimOptions;
+using analysis::TrimResult;
+using analysis::TurnMapOptions;
+using analysis::TurnMapResult;
+using analysis::calcTrim;
+using analysis::linearize;
+using analysis::runSweep;
+using analysis::runTurnMap;
+using io::InputError;
+using io::OutputFolder;
+using output::formatSweepTable;
+using output::formatTurnMapTable;
+using output::makeStudyReport;
+using output::writeLinearModel;
+using output::writeStudyOutputs;
+using output::writeSweepOutputs;
+using output::writeTurnMapOutputs;
+using scenario::Scenario;
+using scenario::loadScenario;
+using studies::StudyOptions;
+using studies::StudyResult;
+using studies::runStudy;
+using vehicle::VehicleModel;
+
 namespace {
 
 // Turns need a positive speed: the slowest speed of a turn sweep or linearisation.

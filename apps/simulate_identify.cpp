@@ -33,7 +33,7 @@ response::IdentificationResult writeSimulatedModes(const std::filesystem::path& 
                                                    const std::vector<std::string>& signals) {
   const auto record = makeRecord(result, signals);
   const auto modes = identifySimulatedModes(result, windowStart, signals);
-  response::writeResponseReport(dir, record, modes, {{"simulation", settings}});
+  output::writeResponseReport(dir, record, modes, {{"simulation", settings}});
   return modes;
 }
 

@@ -16,7 +16,13 @@
 #include "scenario/scenario.h"
 #include "io/yaml_map.h"
 
-namespace motostab {
+namespace motostab::diagnosis {
+
+using core::runParallel;
+using io::InputError;
+using io::applyOverride;
+using io::loadYamlFile;
+using scenario::loadScenario;
 namespace {
 
 constexpr double kZ95 = 1.959963984540054;   // two-sided 95 % normal quantile
@@ -574,4 +580,4 @@ DiagnosisResult runDiagnosis(const std::string& scenarioFile, const MeasuredData
   return result;
 }
 
-}  // namespace motostab
+}  // namespace motostab::diagnosis

@@ -10,7 +10,16 @@
 #include "scenario/parameter_paths.h"
 #include "io/yaml_map.h"
 
-namespace motostab {
+namespace motostab::diagnosis {
+
+using io::CsvTable;
+using io::InputError;
+using io::YamlMap;
+using io::formatNumber;
+using io::loadYamlFile;
+using io::readCsv;
+using scenario::formatOverride;
+using scenario::getSteerControllerScalarKeys;
 namespace {
 
 namespace fs = std::filesystem;
@@ -270,4 +279,4 @@ MeasuredData loadMeasuredData(const std::string& path) {
   return data;
 }
 
-}  // namespace motostab
+}  // namespace motostab::diagnosis

@@ -5,7 +5,7 @@
 
 #include "io/number.h"
 
-namespace motostab {
+namespace motostab::io {
 namespace {
 
 InputLocation locationOf(const YAML::Node& n, const std::string& file, const std::string& path) {
@@ -325,4 +325,4 @@ void applyOverride(YAML::Node& root, const std::string& assignment) {
   }
 }
 
-}  // namespace motostab
+}  // namespace motostab::io

@@ -14,7 +14,7 @@
 
 #include "io/input_error.h"
 
-namespace motostab {
+namespace motostab::io {
 
 /// A YAML mapping read strictly (Drake-style): a missing key, a wrong type, or a key that
 /// finish() finds unused is an InputError naming file:line:column and the dotted key path.
@@ -105,4 +105,4 @@ YAML::Node findKeyPath(const YAML::Node& root, const std::string& path);
 /// is not YAML is an InputError naming the override.
 void applyOverride(YAML::Node& root, const std::string& assignment);
 
-}  // namespace motostab
+}  // namespace motostab::io

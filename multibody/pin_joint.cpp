@@ -1,6 +1,6 @@
 #include "multibody/pin_joint.h"
 
-namespace motostab {
+namespace motostab::multibody {
 
 SimTK::MobilizedBody::Pin addPinAtDesignPose(SimTK::MobilizedBody& parent, const SimTK::Transform& X_PC0,
                                              const SimTK::Body& body, const SimTK::Vec3& p_C, const SimTK::Vec3& n_C) {
@@ -8,4 +8,4 @@ SimTK::MobilizedBody::Pin addPinAtDesignPose(SimTK::MobilizedBody& parent, const
   return SimTK::MobilizedBody::Pin(parent, X_PC0 * X_CM, body, X_CM);
 }
 
-}  // namespace motostab
+}  // namespace motostab::multibody

@@ -4,11 +4,11 @@
 // them without an upward include; they need Simbody only.
 #include "Simbody.h"
 
-namespace motostab {
+namespace motostab::multibody {
 
 /// A revolute joint about axis n_C (unit, child-body frame) through point p_C (child frame), with
 /// q = 0 at the design pose, where the child body frame sits at X_PC0 in the parent body frame.
 SimTK::MobilizedBody::Pin addPinAtDesignPose(SimTK::MobilizedBody& parent, const SimTK::Transform& X_PC0,
                                              const SimTK::Body& body, const SimTK::Vec3& p_C, const SimTK::Vec3& n_C);
 
-}  // namespace motostab
+}  // namespace motostab::multibody

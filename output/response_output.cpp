@@ -8,7 +8,17 @@
 #include "io/plot.h"
 #include "response/modes_json.h"
 
-namespace motostab::response {
+namespace motostab::output {
+
+using io::CsvWriter;
+using io::formatNumber;
+using io::gnuplotQuote;
+using io::renderGnuplot;
+using io::writeFileAtomically;
+using response::IdentificationResult;
+using response::ResponseRecord;
+using response::calcModelResponse;
+using response::makeModesJson;
 
 void writeResponseReport(const std::filesystem::path& dir, const ResponseRecord& record,
                          const IdentificationResult& result, const nlohmann::json& extra) {
@@ -67,4 +77,4 @@ void writeResponseReport(const std::filesystem::path& dir, const ResponseRecord&
   renderGnuplot(dir, "response_fit", body);
 }
 
-}  // namespace motostab::response
+}  // namespace motostab::output

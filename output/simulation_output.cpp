@@ -6,7 +6,13 @@
 #include "io/csv.h"
 #include "io/plot.h"
 
-namespace motostab::simulation {
+namespace motostab::output {
+
+using io::CsvWriter;
+using io::gnuplotQuote;
+using io::renderGnuplot;
+using io::writeFileAtomically;
+using simulation::SimulationResult;
 
 void writeTimeseries(const std::filesystem::path& dir, const SimulationResult& result) {
   CsvWriter csv(result.columns);
@@ -42,4 +48,4 @@ void writeResponsePlot(const std::filesystem::path& dir, const SimulationResult&
   renderGnuplot(dir, "response", body);
 }
 
-}  // namespace motostab::simulation
+}  // namespace motostab::output

@@ -10,7 +10,19 @@
 #include "output/sweep_output.h"
 #include "studies/study_findings.h"
 
-namespace motostab {
+namespace motostab::output {
+
+using io::CsvWriter;
+using io::gnuplotQuote;
+using io::renderGnuplot;
+using io::writeFileAtomically;
+using studies::StudyFindings;
+using studies::StudyOptions;
+using studies::StudyResult;
+using studies::SwingarmModeFinding;
+using studies::WeaveFindings;
+using studies::WobbleFindings;
+using studies::calcStudyFindings;
 namespace {
 
 std::string variantSeries(const std::vector<std::string>& variants, const std::string& stiffness, const std::string& mode,
@@ -180,4 +192,4 @@ void writeStudyOutputs(const std::filesystem::path& dir, const StudyResult& st, 
   writeFileAtomically(dir / "report.md", makeStudyReport(st, opt));
 }
 
-}  // namespace motostab
+}  // namespace motostab::output

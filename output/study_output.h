@@ -6,14 +6,14 @@
 
 #include "studies/study.h"
 
-namespace motostab {
+namespace motostab::output {
 
 /// Writes DIR/study_modes.csv, DIR/weave_shapes.csv, fig09_root_locus, fig10_weave_real_part,
 /// fig11_weave_real_part_halved, fig12_weave_shapes (.gp/.png/.svg), each variant's
 /// eigenvalues.csv and summary.json under DIR/{nominal,halved}/VARIANT/, and DIR/report.md.
-void writeStudyOutputs(const std::filesystem::path& dir, const StudyResult& study, const StudyOptions& options);
+void writeStudyOutputs(const std::filesystem::path& dir, const studies::StudyResult& study, const studies::StudyOptions& options);
 
 /// The markdown report alone (figures from calcStudyFindings, studies/study_findings.h).
-std::string makeStudyReport(const StudyResult& study, const StudyOptions& options);
+std::string makeStudyReport(const studies::StudyResult& study, const studies::StudyOptions& options);
 
-}  // namespace motostab
+}  // namespace motostab::output

@@ -5,7 +5,12 @@
 #include "tyres/relaxation_linear.h"
 #include "tyres/rolling_no_slip.h"
 
-namespace motostab {
+namespace motostab::plugins {
+
+using swingarm::registerSwingarmModels;
+using tyres::registerMagicFormula;
+using tyres::registerRelaxationLinear;
+using tyres::registerRollingNoSlip;
 
 PluginRegistry makeBuiltinRegistry() {
   PluginRegistry registry;
@@ -16,4 +21,4 @@ PluginRegistry makeBuiltinRegistry() {
   return registry;
 }
 
-}  // namespace motostab
+}  // namespace motostab::plugins

@@ -6,7 +6,14 @@
 #include <mutex>
 #include <stdexcept>
 
-namespace motostab {
+namespace motostab::plugins {
+
+using io::InputError;
+using io::InputLocation;
+using io::YamlMap;
+using scenario::PluginSpec;
+using scenario::SwingarmSpec;
+using scenario::getSwingarmLoaderKeys;
 
 namespace {
 template <class Map>
@@ -141,4 +148,4 @@ void PluginRegistry::loadLibrary(const std::string& path, const InputLocation& w
   *this = std::move(staged);
 }
 
-}  // namespace motostab
+}  // namespace motostab::plugins

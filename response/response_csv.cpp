@@ -9,6 +9,12 @@
 #include "io/number.h"
 
 namespace motostab::response {
+
+using io::CsvTable;
+using io::InputError;
+using io::formatNumber;
+using io::parseFiniteNumber;
+using io::readCsv;
 namespace {
 
 double parseTime(const std::string& text, const std::string& source, const std::string& window) {

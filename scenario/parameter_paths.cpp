@@ -8,7 +8,10 @@
 #include "io/input_error.h"
 #include "io/yaml_map.h"
 
-namespace motostab {
+namespace motostab::scenario {
+
+using io::InputError;
+using io::findKeyPath;
 namespace {
 
 bool endsWith(const std::string& s, const std::string& tail) {
@@ -112,4 +115,4 @@ double getDefaultSigma(const ScalarParameter& p) {
   }
 }
 
-}  // namespace motostab
+}  // namespace motostab::scenario

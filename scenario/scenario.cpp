@@ -7,7 +7,12 @@
 #include "scenario/parameter_paths.h"
 #include "io/yaml_map.h"
 
-namespace motostab {
+namespace motostab::scenario {
+
+using io::InputError;
+using io::YamlMap;
+using io::applyOverride;
+using io::loadYamlFile;
 namespace {
 
 InertiaSpec readInertia(YamlMap m) {
@@ -344,4 +349,4 @@ double calcStaticPivotMoment(const Scenario& s) {
   return xP * (rearLoad - s.rearWheel.mass * g) + (calcSwingarmCom(s)[0] - xP) * s.swingarm.body.mass * g;
 }
 
-}  // namespace motostab
+}  // namespace motostab::scenario

@@ -11,6 +11,10 @@
 
 namespace motostab::simulation {
 
+using io::InputError;
+using io::parseFiniteNumber;
+using io::splitFields;
+
 namespace {
 
 [[noreturn]] void fail(const std::string& spec, const std::string& why) {

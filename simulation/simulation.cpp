@@ -13,6 +13,22 @@
 
 namespace motostab::simulation {
 
+using analysis::StateFunction;
+using analysis::TrimResult;
+using analysis::calcTrim;
+using analysis::chooseDependentColumns;
+using io::InputError;
+using io::extractColumn;
+using plugins::BuildContext;
+using plugins::PluginRegistry;
+using plugins::makeBuiltinRegistry;
+using scenario::Scenario;
+using scenario::calcMassSummary;
+using vehicle::CoordinateIndices;
+using vehicle::Input;
+using vehicle::ModelExtension;
+using vehicle::VehicleModel;
+
 using SimTK::State;
 using SimTK::Vec3;
 

@@ -4,7 +4,23 @@
 #include <future>
 #include <memory>
 
-namespace motostab {
+namespace motostab::studies {
+
+using analysis::LinearModel;
+using analysis::LinearizeOptions;
+using analysis::ModeBranch;
+using analysis::Slot;
+using analysis::SweepOptions;
+using analysis::SweepResult;
+using analysis::TrimResult;
+using analysis::findBestMatch;
+using analysis::linearize;
+using analysis::restoreTrim;
+using analysis::runSweep;
+using analysis::updTrim;
+using scenario::Scenario;
+using scenario::loadScenario;
+using vehicle::VehicleModel;
 
 const ModeBranch* findBranch(const SweepResult& sweep, const std::string& label) {
   for (const auto& b : sweep.branches)
@@ -96,4 +112,4 @@ StudyResult runStudy(const std::string& file, const StudyOptions& opt) {
   return out;
 }
 
-}  // namespace motostab
+}  // namespace motostab::studies

@@ -2,7 +2,9 @@
 
 #include <cmath>
 
-namespace motostab {
+namespace motostab::studies {
+
+using analysis::ModeBranch;
 namespace {
 
 constexpr double kWobbleMinSpeed = 10.0;  // m/s
@@ -109,4 +111,4 @@ StudyFindings calcStudyFindings(const StudyResult& study) {
   return out;
 }
 
-}  // namespace motostab
+}  // namespace motostab::studies

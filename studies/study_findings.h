@@ -6,7 +6,7 @@
 
 #include "studies/study.h"
 
-namespace motostab {
+namespace motostab::studies {
 
 /// Wobble over the nominal variants, from kWobbleMinSpeed up.
 struct WobbleFindings {
@@ -56,4 +56,4 @@ StudyFindings calcStudyFindings(const StudyResult& study);
 /// when it has no weave.
 double getWeaveRealPart(const StudyVariant& variant, double speed);
 
-}  // namespace motostab
+}  // namespace motostab::studies

@@ -9,7 +9,9 @@
 
 #include "tyres/motorcycle_magic_formula.h"
 
-namespace motostab {
+namespace motostab::tyres {
+
+using io::YamlMap;
 
 std::optional<double> CoefficientSource::find(const std::string& name) const {
   if (scaling_) {
@@ -447,4 +449,4 @@ void warnUnused(const CoefficientSource& source, const std::string& name, std::o
   out << "\n";
 }
 
-}  // namespace motostab
+}  // namespace motostab::tyres

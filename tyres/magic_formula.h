@@ -19,7 +19,7 @@
 #include "io/yaml_map.h"
 #include "tyres/tir_file.h"
 
-namespace motostab {
+namespace motostab::tyres {
 
 /// Operating point of a tyre (ISO-W signs, above).
 struct TyreSlip {
@@ -92,7 +92,7 @@ class CoefficientSource {
 /// Coefficients of a .tir file, with scaling factors from `scaling` (may be null) taking precedence.
 std::unique_ptr<CoefficientSource> makeTirSource(const TirFile& file, const std::map<std::string, double>* scaling);
 /// Coefficients of an inline YAML map (each key must be read, unknown keys are errors at finish()).
-std::unique_ptr<CoefficientSource> makeYamlSource(YamlMap& coefficients, const std::map<std::string, double>* scaling);
+std::unique_ptr<CoefficientSource> makeYamlSource(io::YamlMap& coefficients, const std::map<std::string, double>* scaling);
 
 /// The Magic Formula variants.
 enum class MagicFormulaVariant { MF61, MF62, Motorcycle };
@@ -114,4 +114,4 @@ void warnUnused(const CoefficientSource& source, const std::string& name, std::o
 /// nonzero coefficients are reported on std::cerr (warnUnused).
 std::unique_ptr<TyreForceLaw> loadTirForceLaw(const std::string& path, const std::map<std::string, double>* scaling = nullptr);
 
-}  // namespace motostab
+}  // namespace motostab::tyres

@@ -10,7 +10,28 @@
 #include "vehicle/steer_controller.h"
 #include "vehicle/steer_damper.h"
 
-namespace motostab {
+namespace motostab::vehicle {
+
+using io::InputError;
+using multibody::addPinAtDesignPose;
+using plugins::BuildContext;
+using plugins::PluginRegistry;
+using plugins::SwingarmAssembly;
+using plugins::SwingarmModel;
+using plugins::SwingarmSite;
+using plugins::WheelSite;
+using plugins::addPinSpringDamper;
+using plugins::makeBuiltinRegistry;
+using scenario::BodySpec;
+using scenario::Scenario;
+using scenario::SuspensionSpec;
+using scenario::SwingarmFrame;
+using scenario::WheelSpec;
+using scenario::calcBodyRemainder;
+using scenario::calcStaticPivotMoment;
+using scenario::calcStaticWheelLoads;
+using scenario::calcSwingarmFrame;
+using scenario::rethrowNamingOverride;
 
 using SimTK::MobilizedBody;
 using SimTK::Rotation;
@@ -275,4 +296,4 @@ double VehicleModel::getInput(const SimTK::State& state, Input which) const {
   return 0;
 }
 
-}  // namespace motostab
+}  // namespace motostab::vehicle

@@ -15,7 +15,17 @@
 #include "swingarm/identification/frf_diagnosis.h"
 #include "swingarm/identification/yaml_input.h"
 
-namespace motostab::identification {
+namespace motostab::swingarm::identification {
+
+using io::CsvTable;
+using io::CsvWriter;
+using io::InputError;
+using io::YamlMap;
+using io::formatNumber;
+using io::gnuplotQuote;
+using io::readCsv;
+using io::renderGnuplot;
+using io::writeFileAtomically;
 namespace {
 
 using cd = std::complex<double>;
@@ -561,4 +571,4 @@ void writeFrfOutputs(const FrfTest& test, const FrfResult& r, const std::filesys
   plotModalAxes(test, r, dir);
 }
 
-}  // namespace motostab::identification
+}  // namespace motostab::swingarm::identification

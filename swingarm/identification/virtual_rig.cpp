@@ -9,7 +9,11 @@
 #include "io/csv.h"
 #include "core/portable_random.h"
 
-namespace motostab::identification {
+namespace motostab::swingarm::identification {
+
+using core::PortableRandom;
+using io::formatNumber;
+using io::writeFileAtomically;
 namespace {
 
 constexpr double kDeg = M_PI / 180;
@@ -252,4 +256,4 @@ void writeInertiaTestFiles(const std::filesystem::path& dir, const VirtualPart& 
   writeFileAtomically(dir / "inertia.yaml", y.str());
 }
 
-}  // namespace motostab::identification
+}  // namespace motostab::swingarm::identification

@@ -8,12 +8,12 @@
 #include "io/yaml_map.h"
 #include "swingarm/identification/plate_motion.h"
 
-namespace motostab::identification {
+namespace motostab::swingarm::identification {
 
 /// Loads a test description and checks its `test: <kind>` key (consumed).
-YamlMap openTestFile(const std::filesystem::path& file, const std::string& kind);
+io::YamlMap openTestFile(const std::filesystem::path& file, const std::string& kind);
 
 /// The required `force_point: {x, z}` of a static or hammer test (m; consumed).
-PlatePoint readForcePoint(YamlMap& root);
+PlatePoint readForcePoint(io::YamlMap& root);
 
-}  // namespace motostab::identification
+}  // namespace motostab::swingarm::identification

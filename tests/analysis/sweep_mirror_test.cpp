@@ -13,7 +13,16 @@
 #include "plugins/builtin.h"
 #include "tests/uncertainty/test_support.h"
 
-namespace motostab {
+namespace motostab::analysis {
+
+using core::PortableRandom;
+using plugins::BuildContext;
+using plugins::PluginRegistry;
+using plugins::makeBuiltinRegistry;
+using scenario::Scenario;
+using scenario::loadScenario;
+using vehicle::ModelExtension;
+using vehicle::VehicleModel;
 namespace {
 
 const std::string kEnduro = std::string(MOTOSTAB_SOURCE_DIR) + "/scenarios/enduro.yaml";
@@ -216,9 +225,9 @@ TEST(MirrorSymmetry, NotProposedForATiltedAxisNorUsedWithConstraints) {
 }
 
 }  // namespace
-}  // namespace motostab
+}  // namespace motostab::analysis
 
-namespace motostab {
+namespace motostab::analysis {
 namespace {
 
 // Every bundled vehicle without constraints, mirrored or not: the same eigenvalues to the difference
@@ -248,4 +257,4 @@ TEST(MirrorSymmetry, BundledScenariosMatchCentralDifferences) {
 }
 
 }  // namespace
-}  // namespace motostab
+}  // namespace motostab::analysis

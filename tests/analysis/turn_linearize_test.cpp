@@ -9,7 +9,11 @@
 #include "core/portable_random.h"
 #include "scenario/scenario.h"
 
-namespace motostab {
+namespace motostab::analysis {
+
+using core::PortableRandom;
+using scenario::loadScenario;
+using vehicle::VehicleModel;
 namespace {
 
 const std::string kScenarios = std::string(MOTOSTAB_SOURCE_DIR) + "/scenarios/";
@@ -71,4 +75,4 @@ TEST(LinearizeTurn, YawColumnVanishesInTheHeadingFrame) {
 }
 
 }  // namespace
-}  // namespace motostab
+}  // namespace motostab::analysis

@@ -7,7 +7,7 @@
 
 #include "core/portable_random.h"
 
-namespace motostab {
+namespace motostab::core {
 namespace {
 
 // C++17 [rand.predef]: the 10000th consecutive output of a default-constructed mt19937_64 (seed 5489)
@@ -58,4 +58,4 @@ TEST(PortableRandom, UniformAndNormalMoments) {
 }
 
 }  // namespace
-}  // namespace motostab
+}  // namespace motostab::core

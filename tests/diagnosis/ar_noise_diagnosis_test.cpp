@@ -11,7 +11,11 @@
 #include "core/portable_random.h"
 #include "run_hidden.h"
 
-namespace motostab {
+namespace motostab::diagnosis {
+
+using core::PortableRandom;
+using io::formatNumber;
+
 namespace {
 
 const std::string kBenchmark = std::string(MOTOSTAB_SOURCE_DIR) + "/scenarios/whipple-benchmark.yaml";
@@ -84,4 +88,4 @@ TEST(ArNoiseDiagnosis, HiddenDamperIsNamedAndItsIntervalCoversTheTruth) {
 }
 
 }  // namespace
-}  // namespace motostab
+}  // namespace motostab::diagnosis

@@ -13,7 +13,12 @@
 #include "core/portable_random.h"
 #include "scenario/parameter_paths.h"
 
-namespace motostab {
+namespace motostab::diagnosis {
+
+using core::PortableRandom;
+using io::formatNumber;
+using scenario::formatOverride;
+
 namespace {
 
 namespace fs = std::filesystem;
@@ -61,4 +66,4 @@ TEST(ControllerDiagnosis, EffectiveGainFromThreeGainSettings) {
 }
 
 }  // namespace
-}  // namespace motostab
+}  // namespace motostab::diagnosis

@@ -20,7 +20,19 @@
 #include "scenario/parameter_paths.h"
 #include "vehicle/vehicle_model.h"
 
-namespace motostab {
+namespace motostab::diagnosis {
+
+using analysis::calcTrim;
+using analysis::linearize;
+using core::PortableRandom;
+using io::InputError;
+using scenario::Scenario;
+using scenario::convertBicycleParametersToScenario;
+using scenario::formatBicycleParametersUncertainty;
+using scenario::formatOverride;
+using scenario::loadScenario;
+using scenario::readBicycleParameterSigmas;
+using vehicle::VehicleModel;
 namespace {
 
 namespace fs = std::filesystem;
@@ -180,4 +192,4 @@ TEST(ControllerGroups, BalanceAssistExample) {
 }
 
 }  // namespace
-}  // namespace motostab
+}  // namespace motostab::diagnosis

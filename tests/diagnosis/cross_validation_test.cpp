@@ -10,7 +10,9 @@
 #include "core/portable_random.h"
 #include "diagnosis/cross_validation.h"
 
-namespace motostab {
+namespace motostab::diagnosis {
+
+using core::PortableRandom;
 namespace {
 
 TEST(CrossValidation, FailedAndDivergingFoldsAreMarkedAndDoNotPoisonTheScore) {
@@ -48,4 +50,4 @@ TEST(CrossValidation, FailedAndDivergingFoldsAreMarkedAndDoNotPoisonTheScore) {
 }
 
 }  // namespace
-}  // namespace motostab
+}  // namespace motostab::diagnosis

@@ -13,7 +13,10 @@
 #include "diagnosis/diagnosis.h"
 #include "io/csv.h"
 
-namespace motostab {
+namespace motostab::diagnosis {
+
+using core::PortableRandom;
+using io::formatNumber;
 namespace {
 
 namespace fs = std::filesystem;
@@ -48,4 +51,4 @@ TEST(DiagnosisPrior, UncertaintySectionSetsTheSigma) {
 }
 
 }  // namespace
-}  // namespace motostab
+}  // namespace motostab::diagnosis

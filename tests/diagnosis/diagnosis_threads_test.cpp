@@ -9,7 +9,9 @@
 #include "diagnosis/diagnosis.h"
 #include "hidden_effect.h"
 
-namespace motostab {
+namespace motostab::diagnosis {
+
+using io::formatNumber;
 namespace {
 
 namespace fs = std::filesystem;
@@ -43,4 +45,4 @@ TEST(DiagnosisThreads, TwoThreadsGiveTheOneThreadResult) {
 }
 
 }  // namespace
-}  // namespace motostab
+}  // namespace motostab::diagnosis

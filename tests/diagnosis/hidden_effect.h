@@ -19,6 +19,19 @@
 
 namespace motostab::testing {
 
+using analysis::LinearModel;
+using analysis::SweepOptions;
+using analysis::SweepResult;
+using analysis::TrimResult;
+using analysis::calcTrim;
+using analysis::linearize;
+using analysis::runSweep;
+using core::PortableRandom;
+using io::formatNumber;
+using scenario::Scenario;
+using scenario::loadScenario;
+using vehicle::VehicleModel;
+
 /// Portable draws: uniform in [0, 1) from the top 53 bits, normal by Box-Muller.
 struct Draw {
   explicit Draw(uint64_t seed) : rng(seed) {}

@@ -11,7 +11,9 @@
 #include "output/diagnosis_output.h"
 #include "run_hidden.h"
 
-namespace motostab {
+namespace motostab::diagnosis {
+
+using io::formatNumber;
 namespace {
 
 namespace fs = std::filesystem;
@@ -162,4 +164,4 @@ TEST(HiddenEffect, NullDataNamesNothing) {
 }
 
 }  // namespace
-}  // namespace motostab
+}  // namespace motostab::diagnosis

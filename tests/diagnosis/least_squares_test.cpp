@@ -6,7 +6,9 @@
 
 #include <cmath>
 
-namespace motostab {
+namespace motostab::diagnosis {
+
+using core::PortableRandom;
 namespace {
 
 // y = a exp(-b t) + noise: the fit must return a and b near the truth, with the standard errors of
@@ -64,4 +66,4 @@ TEST(LeastSquares, ChiSquareSurvival) {
 }
 
 }  // namespace
-}  // namespace motostab
+}  // namespace motostab::diagnosis

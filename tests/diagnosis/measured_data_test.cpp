@@ -6,7 +6,9 @@
 #include <filesystem>
 #include <fstream>
 
-namespace motostab {
+namespace motostab::diagnosis {
+
+using io::InputError;
 namespace {
 
 namespace fs = std::filesystem;
@@ -81,4 +83,4 @@ TEST_F(MeasuredDataTest, BadYamlNamesKeyAndLine) {
 }
 
 }  // namespace
-}  // namespace motostab
+}  // namespace motostab::diagnosis

@@ -12,7 +12,9 @@
 
 #include "core/portable_random.h"
 
-namespace motostab {
+namespace motostab::diagnosis {
+
+using core::PortableRandom;
 namespace {
 
 TEST(NoiseModel, BurgRecoversAnAr1Coefficient) {
@@ -79,4 +81,4 @@ TEST(NoiseModel, WhiteningIsTheExactAr2Likelihood) {
 }
 
 }  // namespace
-}  // namespace motostab
+}  // namespace motostab::diagnosis

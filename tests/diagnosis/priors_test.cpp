@@ -14,7 +14,11 @@
 #include "core/portable_random.h"
 #include "run_hidden.h"
 
-namespace motostab {
+namespace motostab::diagnosis {
+
+using core::PortableRandom;
+using io::formatNumber;
+
 namespace {
 
 namespace fs = std::filesystem;
@@ -116,4 +120,4 @@ TEST(Priors, HiddenDamperIsNotReplacedByAManySigmaInertiaChange) {
 }
 
 }  // namespace
-}  // namespace motostab
+}  // namespace motostab::diagnosis

@@ -10,7 +10,7 @@
 
 #include "io/yaml_map.h"
 
-namespace motostab {
+namespace motostab::io {
 namespace {
 namespace fs = std::filesystem;
 
@@ -112,4 +112,4 @@ TEST(YamlMap, OverrideValuesAreCheckedYaml) {
 }
 
 }  // namespace
-}  // namespace motostab
+}  // namespace motostab::io

@@ -13,7 +13,16 @@
 
 #include "core/portable_random.h"
 
-namespace motostab {
+namespace motostab::output {
+
+using core::PortableRandom;
+using diagnosis::Cause;
+using diagnosis::DiagnosisResult;
+using diagnosis::FitSummary;
+using diagnosis::MeasuredData;
+using diagnosis::MeasuredEigenvalue;
+using diagnosis::ParameterEstimate;
+using diagnosis::RobustnessRun;
 namespace {
 
 namespace fs = std::filesystem;
@@ -156,4 +165,4 @@ TEST(DiagnosisOutput, FilesAreWrittenWithTheirResiduals) {
 }
 
 }  // namespace
-}  // namespace motostab
+}  // namespace motostab::output

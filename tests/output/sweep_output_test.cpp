@@ -16,7 +16,12 @@
 #include "tests/support/temp_dir.h"
 #include "tests/support/text_csv.h"
 
-namespace motostab {
+namespace motostab::output {
+
+using analysis::LinearModel;
+using analysis::ModeBranch;
+using analysis::SweepResult;
+using core::PortableRandom;
 namespace {
 
 using cd = std::complex<double>;
@@ -184,4 +189,4 @@ TEST(SweepOutput, LinearModelFilesFollowTheReadme) {
 }
 
 }  // namespace
-}  // namespace motostab
+}  // namespace motostab::output

@@ -12,7 +12,17 @@
 #include "uncertainty/uncertainty_study.h"
 #include "uncertainty/uncertainty_summary.h"
 
-namespace motostab {
+namespace motostab::output {
+
+using core::PortableRandom;
+using uncertainty::TaskResult;
+using uncertainty::UncertaintyOptions;
+using uncertainty::UncertaintySetup;
+using uncertainty::UncertaintySummary;
+using uncertainty::getTaskCount;
+using uncertainty::prepareUncertainty;
+using uncertainty::runTasks;
+using uncertainty::summarizeUncertainty;
 namespace {
 
 namespace fs = std::filesystem;
@@ -79,4 +89,4 @@ TEST(UncertaintyOutput, FewSamplesLeaveOutTheEmptySensitivityCharts) {
 }
 
 }  // namespace
-}  // namespace motostab
+}  // namespace motostab::output

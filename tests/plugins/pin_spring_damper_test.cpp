@@ -8,7 +8,9 @@
 #include "core/portable_random.h"
 #include "plugins/pin_spring_damper.h"
 
-namespace motostab {
+namespace motostab::plugins {
+
+using core::PortableRandom;
 namespace {
 
 struct OnePin {
@@ -59,4 +61,4 @@ TEST(PinSpringDamper, FreeOscillationFollowsTheDampedOscillator) {
 }
 
 }  // namespace
-}  // namespace motostab
+}  // namespace motostab::plugins

@@ -11,7 +11,17 @@
 #include "plugins/builtin.h"
 #include "vehicle/vehicle_model.h"
 
-namespace motostab {
+namespace motostab::plugins {
+
+using analysis::SweepOptions;
+using analysis::SweepResult;
+using analysis::runSweep;
+using io::InputError;
+using io::InputLocation;
+using scenario::Scenario;
+using scenario::loadScenario;
+using vehicle::ModelExtension;
+using vehicle::VehicleModel;
 namespace {
 
 // The benchmark scenario with its contact replaced and a plugin library listed.
@@ -230,4 +240,4 @@ TEST(Plugins, RelativeLibraryPathIsRelativeToTheScenario) {
 }
 
 }  // namespace
-}  // namespace motostab
+}  // namespace motostab::plugins

@@ -14,10 +14,14 @@
 #include "output/response_output.h"
 #include "response/response_csv.h"
 
+using motostab::io::InputError;
+using motostab::response::CsvIdentificationRequest;
+using motostab::response::identifyModesFromCsv;
+
 namespace {
 
 namespace fs = std::filesystem;
-using motostab::InputError;
+using motostab::io::InputError;
 using motostab::response::CsvIdentificationRequest;
 using motostab::response::identifyModesFromCsv;
 
@@ -125,7 +129,7 @@ TEST(ResponseCsv, WritesModesJsonAndPlot) {
   motostab::response::ResponseRecord record;
   const auto result = identifyModesFromCsv(request, &record);
   const fs::path out = dir / "out";
-  motostab::response::writeResponseReport(out, record, result);
+  motostab::output::writeResponseReport(out, record, result);
   std::ifstream in(out / "modes.json");
   const auto j = nlohmann::json::parse(in);
   ASSERT_EQ(j.at("modes").size(), 1u);

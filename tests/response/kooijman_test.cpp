@@ -14,6 +14,9 @@
 #include "response/mode_identification.h"
 #include "response/response_csv.h"
 
+using motostab::response::IdentificationOptions;
+using motostab::response::IdentificationResult;
+
 namespace {
 
 using motostab::response::IdentificationOptions;
@@ -51,7 +54,7 @@ TEST(ResponseKooijman, Run52LeanRateFig6MatchesPublishedWeave) {
   EXPECT_GT(r.rSquared, 0.95);
 
   // The Fig. 7 bar of this run (4.794-5.344 m/s) carries the published value at 3 decimals.
-  const auto fig7 = motostab::readCsv(kDir + "kooijman2008_fig7_measured_weave.csv");
+  const auto fig7 = motostab::io::readCsv(kDir + "kooijman2008_fig7_measured_weave.csv");
   bool found = false;
   for (const auto& row : fig7.rows) {
     if (std::abs(row[fig7.getColumnIndex("v_min_mps")] - 4.794) < 1e-3 &&

@@ -9,7 +9,13 @@
 #include "scenario/scenario.h"
 #include "io/yaml_map.h"
 
-namespace motostab {
+namespace motostab::scenario {
+
+using core::PortableRandom;
+using io::InputError;
+using io::applyOverride;
+using io::findKeyPath;
+using io::loadYamlFile;
 namespace {
 
 const std::string kWhipple = std::string(MOTOSTAB_SOURCE_DIR) + "/scenarios/whipple-benchmark.yaml";
@@ -98,4 +104,4 @@ TEST(ParameterPaths, SetCanAddAWholeSection) {
 }
 
 }  // namespace
-}  // namespace motostab
+}  // namespace motostab::scenario

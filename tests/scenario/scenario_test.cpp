@@ -13,7 +13,11 @@
 #include "scenario/scenario.h"
 #include "vehicle/vehicle_model.h"
 
-namespace motostab {
+namespace motostab::scenario {
+
+using core::PortableRandom;
+using io::InputError;
+using vehicle::VehicleModel;
 namespace {
 
 const std::string kScenario = std::string(MOTOSTAB_SOURCE_DIR) + "/scenarios/whipple-benchmark.yaml";
@@ -217,4 +221,4 @@ TEST(Scenario, DerivedQuantities) {
 }
 
 }  // namespace
-}  // namespace motostab
+}  // namespace motostab::scenario

@@ -15,7 +15,10 @@
 #include "scenario/bicycle_parameters_uncertainty.h"
 #include "scenario/scenario.h"
 
-namespace motostab {
+namespace motostab::scenario {
+
+using core::PortableRandom;
+using io::InputError;
 namespace {
 
 std::string readText(const std::string& p) {
@@ -113,4 +116,4 @@ TEST(UncertaintySection, ImportedBicycleParametersSigmasReachTheSection) {
 }
 
 }  // namespace
-}  // namespace motostab
+}  // namespace motostab::scenario

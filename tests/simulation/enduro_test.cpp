@@ -17,6 +17,12 @@
 #include "tests/simulation/linear_reference.h"
 
 namespace motostab::simulation {
+
+using analysis::LinearModel;
+using io::InputError;
+using io::YamlMap;
+using scenario::Scenario;
+using scenario::loadScenario;
 namespace {
 
 const Scenario& getEnduroTorsion() {

@@ -15,6 +15,10 @@
 #include "apps/simulate_identify.h"
 
 namespace motostab::simulation {
+
+using analysis::LinearModel;
+using scenario::Scenario;
+using scenario::loadScenario;
 namespace {
 
 const Scenario& getWhipple() {

@@ -6,6 +6,8 @@
 #include "simulation/simulation.h"
 
 namespace motostab::simulation {
+
+using io::InputError;
 namespace {
 
 TEST(SimulationPerturbation, ParsesEveryKind) {

@@ -14,6 +14,18 @@
 #include "output/simulation_output.h"
 
 namespace motostab::simulation {
+
+using analysis::StateFunction;
+using analysis::TrimResult;
+using analysis::calcTrim;
+using io::CsvTable;
+using io::InputError;
+using io::readCsv;
+using output::writeResponsePlot;
+using output::writeTimeseries;
+using scenario::Scenario;
+using scenario::loadScenario;
+using vehicle::VehicleModel;
 namespace {
 
 const Scenario& getWhipple() {

@@ -18,6 +18,12 @@
 #include "tests/simulation/linear_reference.h"
 
 namespace motostab::simulation {
+
+using analysis::LinearModel;
+using core::PortableRandom;
+using io::formatNumber;
+using scenario::Scenario;
+using scenario::loadScenario;
 namespace {
 
 const std::string kWhipple = std::string(MOTOSTAB_SOURCE_DIR) + "/scenarios/whipple-benchmark.yaml";

@@ -7,7 +7,10 @@
 #include "core/portable_random.h"
 #include "studies/study_findings.h"
 
-namespace motostab {
+namespace motostab::studies {
+
+using analysis::ModeBranch;
+using core::PortableRandom;
 namespace {
 
 const std::vector<double> kSpeeds{4, 8, 12, 16, 17, 20, 23, 26, 30, 35};
@@ -75,4 +78,4 @@ TEST(StudyFindings, WeaveRealPartAtTheNearestGridSpeed) {
 }
 
 }  // namespace
-}  // namespace motostab
+}  // namespace motostab::studies

@@ -8,6 +8,8 @@
 
 namespace motostab::test {
 
+using io::InputError;
+
 inline InputError catchInputError(const std::function<void()>& f) {
   try {
     f();

@@ -17,7 +17,10 @@
 #include "tyres/magic_formula.h"
 #include "tyres/motorcycle_magic_formula.h"
 
-namespace motostab {
+namespace motostab::tyres {
+
+using core::PortableRandom;
+using io::InputError;
 namespace {
 
 const std::string kSample = std::string(MOTOSTAB_TEST_DATA_DIR) + "/reference/MF61-sample-tir/sample_MF61_ExternData.tir";
@@ -462,4 +465,4 @@ TEST(MotorcycleMagicFormula, RelaxationCoefficientsAllOrNone) {
 }
 
 }  // namespace
-}  // namespace motostab
+}  // namespace motostab::tyres

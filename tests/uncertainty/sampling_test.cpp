@@ -8,7 +8,10 @@
 #include "tests/uncertainty/test_support.h"
 #include "uncertainty/sampling.h"
 
-namespace motostab {
+namespace motostab::uncertainty {
+
+using core::PortableRandom;
+using scenario::ParameterUncertainty;
 namespace {
 
 using D = ParameterUncertainty::Distribution;
@@ -78,4 +81,4 @@ TEST(Sampling, DrawsDependOnlyOnSeedSampleAndPath) {
 }
 
 }  // namespace
-}  // namespace motostab
+}  // namespace motostab::uncertainty

@@ -23,6 +23,16 @@
 
 namespace motostab::testing {
 
+using analysis::SweepOptions;
+using analysis::SweepResult;
+using analysis::calcTrim;
+using analysis::linearize;
+using analysis::runSweep;
+using io::InputError;
+using scenario::Scenario;
+using scenario::loadScenario;
+using vehicle::VehicleModel;
+
 using cd = std::complex<double>;
 
 inline const std::string kWhipple = std::string(MOTOSTAB_SOURCE_DIR) + "/scenarios/whipple-benchmark.yaml";

@@ -10,7 +10,14 @@
 #include "core/portable_random.h"
 #include "extension_test_util.h"
 
-namespace motostab {
+namespace motostab::vehicle {
+
+using analysis::SweepResult;
+using core::PortableRandom;
+using scenario::InertiaSpec;
+using scenario::Scenario;
+using scenario::loadScenario;
+
 namespace {
 
 using namespace motostab::testing;
@@ -156,4 +163,4 @@ TEST(ForkCompliance, MalformedInputNamesFileLineColumnAndKey) {
 }
 
 }  // namespace
-}  // namespace motostab
+}  // namespace motostab::vehicle

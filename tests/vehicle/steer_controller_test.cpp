@@ -13,7 +13,16 @@
 #include "meijaard_benchmark.h"
 #include "vehicle/steer_controller.h"
 
-namespace motostab {
+namespace motostab::vehicle {
+
+using analysis::TrimResult;
+using analysis::calcTrim;
+using core::PortableRandom;
+using io::formatNumber;
+using scenario::Scenario;
+using scenario::SteerControllerSpec;
+using scenario::loadScenario;
+
 namespace {
 
 using namespace motostab::testing;
@@ -219,4 +228,4 @@ TEST(SteerController, MalformedInputNamesFileLineColumnAndKey) {
 }
 
 }  // namespace
-}  // namespace motostab
+}  // namespace motostab::vehicle

@@ -10,7 +10,13 @@
 #include "meijaard_benchmark.h"
 #include "vehicle/steer_damper.h"
 
-namespace motostab {
+namespace motostab::vehicle {
+
+using analysis::SweepResult;
+using core::PortableRandom;
+using scenario::Scenario;
+using scenario::loadScenario;
+
 namespace {
 
 using namespace motostab::testing;
@@ -119,4 +125,4 @@ TEST(SteerDamper, MalformedInputNamesFileLineColumnAndKey) {
 }
 
 }  // namespace
-}  // namespace motostab
+}  // namespace motostab::vehicle
