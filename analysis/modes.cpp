@@ -11,6 +11,7 @@ namespace motostab::analysis {
 
 using core::runParallel;
 
+
 bool isComplianceCoordinate(const std::string& name) {
   auto starts = [&](const char* p) { return name.rfind(p, 0) == 0; };
   return starts("swingarm") || starts("fork_bending") || starts("fork_torsion") || starts("rider_lean");

@@ -4,6 +4,7 @@ namespace motostab::analysis {
 
 using vehicle::Input;
 
+
 void StateFunction::calcYDot(const SimTK::State& s, Eigen::VectorXd& ydot) const {
   model_.getSystem().realize(s, SimTK::Stage::Acceleration);
   const SimTK::Vector& yd = s.getYDot();

@@ -8,6 +8,7 @@ namespace motostab::analysis {
 
 using vehicle::VehicleModel;
 
+
 TurnMapResult runTurnMap(const VehicleModel& model, const TurnMapOptions& opt) {
   if (opt.rolls.empty()) throw std::invalid_argument("runTurnMap: no roll angle");
   TurnMapResult map;

@@ -26,6 +26,7 @@ using output::makeDiagnosisReport;
 using output::writeDiagnosisOutputs;
 using scenario::Scenario;
 using scenario::loadScenario;
+
 namespace {
 
 // A one-line progress bar on stderr (only when stderr is a terminal).

@@ -12,6 +12,7 @@
 namespace motostab::cli {
 
 using io::OutputFolder;
+
 namespace {
 
 struct ResponseArgs {

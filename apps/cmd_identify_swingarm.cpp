@@ -23,6 +23,7 @@ namespace motostab::cli {
 using io::InputError;
 using io::OutputFolder;
 using io::writeFileAtomically;
+
 namespace {
 
 namespace id = motostab::swingarm::identification;

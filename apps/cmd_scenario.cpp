@@ -26,6 +26,7 @@ using scenario::formatBicycleParametersUncertainty;
 using scenario::loadScenario;
 using scenario::readBicycleParameterSigmas;
 using vehicle::VehicleModel;
+
 namespace {
 
 // The steer controller's law, schedule, delay and limit (vehicle/steer_controller.h).

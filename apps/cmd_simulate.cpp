@@ -23,6 +23,7 @@ using output::writeResponsePlot;
 using output::writeTimeseries;
 using scenario::Scenario;
 using scenario::loadScenario;
+
 namespace {
 
 struct SimulateArgs {

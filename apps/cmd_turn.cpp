@@ -25,6 +25,7 @@ using scenario::Scenario;
 using scenario::loadScenario;
 using vehicle::VehicleModel;
 
+
 void registerTurnCommands(CLI::App& app) {
   struct TrimArgs {
     std::string scenario, out, speeds;

@@ -28,6 +28,7 @@ using tyres::TirFile;
 using tyres::makeTirSource;
 using tyres::makeTyreForceLaw;
 using tyres::warnUnused;
+
 namespace {
 
 struct TyreArgs {

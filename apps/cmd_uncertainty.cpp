@@ -36,6 +36,7 @@ using uncertainty::getTaskCount;
 using uncertainty::prepareUncertainty;
 using uncertainty::runTasks;
 using uncertainty::summarizeUncertainty;
+
 namespace {
 
 struct UncertaintyArgs {

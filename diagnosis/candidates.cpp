@@ -16,6 +16,7 @@ using scenario::ParameterKind;
 using scenario::ScalarParameter;
 using scenario::getDefaultSigma;
 using scenario::listScalarParameters;
+
 namespace {
 
 double getScalar(const YAML::Node& tree, const char* section, const char* key, double fallback) {

@@ -9,6 +9,7 @@
 namespace motostab::diagnosis {
 
 using core::runParallel;
+
 namespace {
 
 // Sum of squares of r over the observations of fold f, and their count.

@@ -23,6 +23,7 @@ using io::InputError;
 using io::applyOverride;
 using io::loadYamlFile;
 using scenario::loadScenario;
+
 namespace {
 
 constexpr double kZ95 = 1.959963984540054;   // two-sided 95 % normal quantile

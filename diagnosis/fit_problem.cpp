@@ -11,6 +11,7 @@ namespace motostab::diagnosis {
 
 using scenario::formatOverride;
 
+
 int ModelSpec::size() const {
   int n = 0;
   for (const auto* c : parts) n += static_cast<int>(c->parameters.size());

@@ -20,6 +20,7 @@ using io::loadYamlFile;
 using io::readCsv;
 using scenario::formatOverride;
 using scenario::getSteerControllerScalarKeys;
+
 namespace {
 
 namespace fs = std::filesystem;

@@ -25,6 +25,7 @@ using io::InputError;
 using scenario::Scenario;
 using scenario::loadScenario;
 using vehicle::VehicleModel;
+
 namespace {
 
 std::string getStateName(Quantity q) {

@@ -22,6 +22,7 @@ using io::formatNumber;
 using io::gnuplotQuote;
 using io::renderGnuplot;
 using io::writeFileAtomically;
+
 namespace {
 
 using nlohmann::json;

@@ -19,6 +19,7 @@ using io::gnuplotQuote;
 using io::renderGnuplot;
 using io::writeFileAtomically;
 
+
 namespace {
 
 const char* kMapModes[] = {"weave", "wobble"};

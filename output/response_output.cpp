@@ -20,6 +20,7 @@ using response::ResponseRecord;
 using response::calcModelResponse;
 using response::makeModesJson;
 
+
 void writeResponseReport(const std::filesystem::path& dir, const ResponseRecord& record,
                          const IdentificationResult& result, const nlohmann::json& extra) {
   nlohmann::json json = makeModesJson(result, record.signalColumns);

@@ -14,6 +14,7 @@ using io::renderGnuplot;
 using io::writeFileAtomically;
 using simulation::SimulationResult;
 
+
 void writeTimeseries(const std::filesystem::path& dir, const SimulationResult& result) {
   CsvWriter csv(result.columns);
   for (const auto& row : result.rows) {

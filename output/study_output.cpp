@@ -23,6 +23,7 @@ using studies::SwingarmModeFinding;
 using studies::WeaveFindings;
 using studies::WobbleFindings;
 using studies::calcStudyFindings;
+
 namespace {
 
 std::string variantSeries(const std::vector<std::string>& variants, const std::string& stiffness, const std::string& mode,

@@ -16,6 +16,7 @@ using vehicle::CoordinateIndices;
 using vehicle::Input;
 using vehicle::VehicleModel;
 
+
 nlohmann::json makeTrimJson(const VehicleModel& model, const TrimResult& trim) {
   const CoordinateIndices& ix = model.getIndices();
   const SimTK::State& s = trim.state;

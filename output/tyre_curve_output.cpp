@@ -11,6 +11,7 @@ using io::gnuplotQuote;
 using io::renderGnuplot;
 using io::writeFileAtomically;
 
+
 const std::vector<std::string>& getTyreCurveColumns() {
   static const std::vector<std::string> columns{"fz_N",  "slip_angle_rad", "camber_rad", "slip_ratio", "fx_N",
                                                 "fy_N",  "mz_Nm",          "mx_Nm",      "my_Nm"};

@@ -19,12 +19,13 @@ using io::writeFileAtomically;
 using uncertainty::ModeQuantiles;
 using uncertainty::SamplingMethod;
 using uncertainty::TaskKind;
-using uncertainty::kUncertainModes;
 using uncertainty::TaskResult;
 using uncertainty::UncertaintySetup;
 using uncertainty::UncertaintySummary;
 using uncertainty::UncertaintyTask;
 using uncertainty::getTask;
+
+using uncertainty::kUncertainModes;
 namespace {
 
 nlohmann::json number(double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr); }

@@ -12,6 +12,7 @@ using tyres::registerMagicFormula;
 using tyres::registerRelaxationLinear;
 using tyres::registerRollingNoSlip;
 
+
 PluginRegistry makeBuiltinRegistry() {
   PluginRegistry registry;
   registerRollingNoSlip(registry);

@@ -15,6 +15,7 @@ using scenario::PluginSpec;
 using scenario::SwingarmSpec;
 using scenario::getSwingarmLoaderKeys;
 
+
 namespace {
 template <class Map>
 std::vector<std::string> namesOf(const Map& m) {

@@ -15,6 +15,7 @@ using io::InputError;
 using io::formatNumber;
 using io::parseFiniteNumber;
 using io::readCsv;
+
 namespace {
 
 double parseTime(const std::string& text, const std::string& source, const std::string& window) {

@@ -18,6 +18,7 @@ using io::InputError;
 using io::formatNumber;
 using io::parseFiniteNumber;
 
+
 std::map<std::string, double> readBicycleParameters(const std::string& file) {
   std::ifstream in(file);
   if (!in) throw InputError({file, 0, 0, ""}, "cannot open parameter file");

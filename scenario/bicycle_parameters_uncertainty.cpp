@@ -11,6 +11,7 @@ namespace motostab::scenario {
 
 using io::formatNumber;
 
+
 std::map<std::string, double> readBicycleParameterSigmas(const std::string& file) {
   readBicycleParameters(file);  // the same checks and errors as the values
   std::ifstream in(file);

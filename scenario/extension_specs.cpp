@@ -8,6 +8,7 @@ namespace motostab::scenario {
 
 using io::YamlMap;
 using io::parseFiniteNumber;
+
 namespace {
 
 // Fails at `key` unless the remainder of `whole` without `part` is a valid body.

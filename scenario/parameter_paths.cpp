@@ -12,6 +12,7 @@ namespace motostab::scenario {
 
 using io::InputError;
 using io::findKeyPath;
+
 namespace {
 
 bool endsWith(const std::string& s, const std::string& tail) {

@@ -13,6 +13,7 @@ using io::InputError;
 using io::YamlMap;
 using io::applyOverride;
 using io::loadYamlFile;
+
 namespace {
 
 InertiaSpec readInertia(YamlMap m) {

@@ -15,6 +15,7 @@ using io::InputError;
 using io::parseFiniteNumber;
 using io::splitFields;
 
+
 namespace {
 
 [[noreturn]] void fail(const std::string& spec, const std::string& why) {

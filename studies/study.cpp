@@ -22,6 +22,7 @@ using scenario::Scenario;
 using scenario::loadScenario;
 using vehicle::VehicleModel;
 
+
 const ModeBranch* findBranch(const SweepResult& sweep, const std::string& label) {
   for (const auto& b : sweep.branches)
     if (b.label == label && b.eigenvalue.back().imag() >= 0) return &b;

@@ -5,6 +5,7 @@
 namespace motostab::studies {
 
 using analysis::ModeBranch;
+
 namespace {
 
 constexpr double kWobbleMinSpeed = 10.0;  // m/s

@@ -20,6 +20,7 @@ using plugins::ContactModel;
 using plugins::PluginRegistrar;
 using plugins::WheelSite;
 
+
 namespace {
 
 // The load below which the cornering stiffness and the relaxation length are taken at this floor

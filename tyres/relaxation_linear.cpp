@@ -14,6 +14,7 @@ using plugins::ContactModel;
 using plugins::PluginRegistrar;
 using plugins::WheelSite;
 
+
 namespace {
 
 // One tyre's keys. With a preset every key is optional (given ones override the preset's value).

@@ -10,6 +10,7 @@ using plugins::ContactModel;
 using plugins::PluginRegistrar;
 using plugins::WheelSite;
 
+
 using SimTK::Array_;
 using SimTK::ConstrainedBodyIndex;
 using SimTK::ConstrainedQIndex;

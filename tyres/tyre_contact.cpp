@@ -10,6 +10,7 @@ namespace motostab::tyres {
 using plugins::BuildContext;
 using plugins::WheelSite;
 
+
 using SimTK::SpatialVec;
 using SimTK::State;
 using SimTK::Vec3;

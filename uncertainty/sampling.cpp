@@ -6,6 +6,7 @@ namespace motostab::uncertainty {
 
 using scenario::ParameterUncertainty;
 
+
 uint64_t mixSplit64(uint64_t x) {
   x += 0x9e3779b97f4a7c15ULL;
   x = (x ^ (x >> 30)) * 0xbf58476d1ce4e5b9ULL;

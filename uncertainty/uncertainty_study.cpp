@@ -30,6 +30,7 @@ using scenario::formatOverride;
 using scenario::getScalarParameter;
 using scenario::loadScenario;
 using vehicle::VehicleModel;
+
 namespace {
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();

@@ -10,6 +10,7 @@
 namespace motostab::uncertainty {
 
 using analysis::makeSpeedGrid;
+
 namespace {
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();

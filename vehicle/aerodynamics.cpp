@@ -4,6 +4,7 @@ namespace motostab::vehicle {
 
 using plugins::BuildContext;
 using scenario::AerodynamicsSpec;
+
 namespace {
 
 class AerodynamicDrag : public SimTK::Force::Custom::Implementation {

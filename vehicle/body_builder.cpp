@@ -4,6 +4,7 @@ namespace motostab::vehicle {
 
 using scenario::BodySpec;
 
+
 SimTK::Body::Rigid makeBody(const BodySpec& b, const SimTK::Vec3& origin_D) {
   const SimTK::Vec3 com_B = toVec3(b.com) - origin_D;
   const SimTK::Inertia I_com(SimTK::Vec3(b.inertia.xx, b.inertia.yy, b.inertia.zz),

@@ -14,6 +14,7 @@ using plugins::addPinSpringDamper;
 using scenario::ForkComplianceSpec;
 using scenario::Scenario;
 
+
 SimTK::Vec3 calcForkHingePoint(const Scenario& s) {
   const double lambda = s.geometry.steerAxisTilt, d = s.forkCompliance.axisDistance;
   return SimTK::Vec3(s.geometry.wheelbase + s.geometry.trail, 0, 0) +

@@ -11,6 +11,7 @@ using plugins::BuildContext;
 using plugins::addPinSpringDamper;
 using scenario::RiderLeanSpec;
 
+
 SimTK::MobilizedBody::Pin addRiderLean(BuildContext& ctx, SimTK::MobilizedBody& rearFrame, const SimTK::Vec3& p_DR,
                                        const RiderLeanSpec& spec) {
   const SimTK::Vec3 p_DH(0, 0, spec.hingeHeight);  // hinge point in D; the upper body's origin

@@ -7,6 +7,7 @@ namespace motostab::vehicle {
 
 using plugins::BuildContext;
 using scenario::SteerControllerSpec;
+
 namespace {
 
 using SimTK::MobilizerQIndex;

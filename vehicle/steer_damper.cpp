@@ -6,6 +6,7 @@ namespace motostab::vehicle {
 
 using plugins::BuildContext;
 using scenario::SteerDamperSpec;
+
 namespace {
 
 class SteerDamper : public SimTK::Force::Custom::Implementation {

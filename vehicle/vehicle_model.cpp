@@ -33,6 +33,7 @@ using scenario::calcStaticWheelLoads;
 using scenario::calcSwingarmFrame;
 using scenario::rethrowNamingOverride;
 
+
 using SimTK::MobilizedBody;
 using SimTK::Rotation;
 using SimTK::Transform;

@@ -19,6 +19,7 @@ using plugins::SwingarmModelFactory;
 using plugins::SwingarmSite;
 using plugins::addPinSpringDamper;
 
+
 using SimTK::MobilizedBody;
 using SimTK::Transform;
 using SimTK::Vec3;

@@ -14,6 +14,7 @@ using io::gnuplotQuote;
 using io::renderGnuplot;
 using io::writeFileAtomically;
 
+
 void writeAxesPlot(const std::filesystem::path& dir, const std::string& name, const std::string& title,
                    const std::vector<PlotMarker>& sensors, const PlatePoint& forcePoint,
                    const std::vector<PlotAxis>& axes) {

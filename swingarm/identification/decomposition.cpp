@@ -13,6 +13,7 @@ namespace motostab::swingarm::identification {
 
 using io::formatNumber;
 using io::writeFileAtomically;
+
 namespace {
 constexpr double kDeg = M_PI / 180;
 }

@@ -12,6 +12,7 @@ namespace motostab::swingarm::identification {
 
 using io::ResultError;
 using io::formatNumber;
+
 namespace {
 
 std::string fmt(double v, int digits = 6) { return formatNumber(v, digits); }

@@ -21,6 +21,7 @@ using io::YamlMap;
 using io::readCsv;
 using io::renderGnuplot;
 using io::writeFileAtomically;
+
 namespace {
 
 struct MeanStat {

@@ -19,6 +19,7 @@ using io::YamlMap;
 using io::readCsv;
 using io::writeFileAtomically;
 
+
 StaticTest readStaticTest(const std::filesystem::path& file) {
   YamlMap root = openTestFile(file, "static");
   StaticTest t;

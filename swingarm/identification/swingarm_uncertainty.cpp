@@ -9,6 +9,7 @@ namespace motostab::swingarm::identification {
 
 using io::formatNumber;
 
+
 std::string formatSwingarmUncertainty(const SwingarmIdentification& id) {
   std::ostringstream y;
   y << "# Standard errors of `motostab identify swingarm` as scenario uncertainties: append to a scenario\n"

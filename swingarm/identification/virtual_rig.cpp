@@ -14,6 +14,7 @@ namespace motostab::swingarm::identification {
 using core::PortableRandom;
 using io::formatNumber;
 using io::writeFileAtomically;
+
 namespace {
 
 constexpr double kDeg = M_PI / 180;

@@ -5,6 +5,7 @@ namespace motostab::swingarm::identification {
 using io::YamlMap;
 using io::loadYamlFile;
 
+
 YamlMap openTestFile(const std::filesystem::path& file, const std::string& kind) {
   YamlMap root = loadYamlFile(file.string());
   const std::string t = root.getString("test");

@@ -8,6 +8,7 @@ namespace motostab::analysis {
 using scenario::loadScenario;
 using vehicle::Input;
 using vehicle::VehicleModel;
+
 namespace {
 
 // Linearising in place perturbs the trim's own State and puts every value back: the same A as the

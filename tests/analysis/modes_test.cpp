@@ -10,6 +10,7 @@ namespace motostab::analysis {
 
 using scenario::loadScenario;
 using vehicle::VehicleModel;
+
 namespace {
 
 SweepResult sweepEnduro() {

@@ -15,6 +15,7 @@ using scenario::loadScenario;
 using vehicle::CoordinateIndices;
 using vehicle::Input;
 using vehicle::VehicleModel;
+
 namespace {
 
 const std::string kScenarios = std::string(MOTOSTAB_SOURCE_DIR) + "/scenarios/";

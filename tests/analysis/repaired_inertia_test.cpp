@@ -22,6 +22,7 @@ using scenario::convertBicycleParametersToScenario;
 using scenario::loadScenario;
 using scenario::readBicycleParameters;
 using vehicle::VehicleModel;
+
 namespace {
 
 const std::string kBicycles = std::string(MOTOSTAB_TEST_DATA_DIR) + "/measured-data/BicycleParameters/data/bicycles/";

@@ -17,6 +17,7 @@ using io::writeFileAtomically;
 using scenario::convertBicycleParametersToScenario;
 using scenario::loadScenario;
 using vehicle::VehicleModel;
+
 namespace {
 
 const std::string kScenarios = std::string(MOTOSTAB_SOURCE_DIR) + "/scenarios/";

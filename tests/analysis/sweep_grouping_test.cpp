@@ -12,6 +12,7 @@ namespace motostab::analysis {
 
 using scenario::loadScenario;
 using vehicle::VehicleModel;
+
 namespace {
 
 LinearModel makePatternModel(const Eigen::MatrixXd& A, const std::vector<Slot>& slots) {

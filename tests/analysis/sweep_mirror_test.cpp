@@ -23,6 +23,7 @@ using scenario::Scenario;
 using scenario::loadScenario;
 using vehicle::ModelExtension;
 using vehicle::VehicleModel;
+
 namespace {
 
 const std::string kEnduro = std::string(MOTOSTAB_SOURCE_DIR) + "/scenarios/enduro.yaml";

@@ -14,6 +14,7 @@ using vehicle::CoordinateIndices;
 using vehicle::Input;
 using vehicle::VehicleModel;
 using vehicle::kNumInputs;
+
 namespace {
 
 const std::string kScenario = std::string(MOTOSTAB_SOURCE_DIR) + "/scenarios/whipple-benchmark.yaml";

@@ -14,6 +14,7 @@ namespace motostab::analysis {
 using core::PortableRandom;
 using scenario::loadScenario;
 using vehicle::VehicleModel;
+
 namespace {
 
 const std::string kScenarios = std::string(MOTOSTAB_SOURCE_DIR) + "/scenarios/";

@@ -10,6 +10,7 @@ namespace motostab::analysis {
 
 using scenario::loadScenario;
 using vehicle::VehicleModel;
+
 namespace {
 
 // Nearby roll angles have nearby eigenvalues: at 2 and 4 deg, at every speed, the eigenvalue nearest to

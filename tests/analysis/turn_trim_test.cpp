@@ -23,6 +23,7 @@ using tyres::calcTorusContact;
 using vehicle::CoordinateIndices;
 using vehicle::Input;
 using vehicle::VehicleModel;
+
 namespace {
 
 const std::string kWhipple = std::string(MOTOSTAB_SOURCE_DIR) + "/scenarios/whipple-benchmark.yaml";

@@ -19,6 +19,7 @@ namespace motostab::analysis {
 using scenario::loadScenario;
 using vehicle::Input;
 using vehicle::VehicleModel;
+
 namespace {
 
 using cd = std::complex<double>;

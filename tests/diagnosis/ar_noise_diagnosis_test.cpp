@@ -16,6 +16,7 @@ namespace motostab::diagnosis {
 using core::PortableRandom;
 using io::formatNumber;
 
+
 namespace {
 
 const std::string kBenchmark = std::string(MOTOSTAB_SOURCE_DIR) + "/scenarios/whipple-benchmark.yaml";

@@ -13,6 +13,7 @@ namespace motostab::diagnosis {
 
 using scenario::Scenario;
 using scenario::loadScenario;
+
 namespace {
 
 const std::string kDir = MOTOSTAB_SOURCE_DIR;

@@ -19,6 +19,7 @@ using core::PortableRandom;
 using io::formatNumber;
 using scenario::formatOverride;
 
+
 namespace {
 
 namespace fs = std::filesystem;

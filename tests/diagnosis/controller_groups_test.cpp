@@ -33,6 +33,7 @@ using scenario::formatOverride;
 using scenario::loadScenario;
 using scenario::readBicycleParameterSigmas;
 using vehicle::VehicleModel;
+
 namespace {
 
 namespace fs = std::filesystem;

@@ -13,6 +13,7 @@
 namespace motostab::diagnosis {
 
 using core::PortableRandom;
+
 namespace {
 
 TEST(CrossValidation, FailedAndDivergingFoldsAreMarkedAndDoNotPoisonTheScore) {

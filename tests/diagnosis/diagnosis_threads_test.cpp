@@ -12,6 +12,7 @@
 namespace motostab::diagnosis {
 
 using io::formatNumber;
+
 namespace {
 
 namespace fs = std::filesystem;

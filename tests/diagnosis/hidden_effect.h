@@ -32,6 +32,7 @@ using scenario::Scenario;
 using scenario::loadScenario;
 using vehicle::VehicleModel;
 
+
 /// Portable draws: uniform in [0, 1) from the top 53 bits, normal by Box-Muller.
 struct Draw {
   explicit Draw(uint64_t seed) : rng(seed) {}

@@ -14,6 +14,7 @@
 namespace motostab::diagnosis {
 
 using io::formatNumber;
+
 namespace {
 
 namespace fs = std::filesystem;

@@ -9,6 +9,7 @@
 namespace motostab::diagnosis {
 
 using core::PortableRandom;
+
 namespace {
 
 // y = a exp(-b t) + noise: the fit must return a and b near the truth, with the standard errors of

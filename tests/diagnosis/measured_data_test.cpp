@@ -9,6 +9,7 @@
 namespace motostab::diagnosis {
 
 using io::InputError;
+
 namespace {
 
 namespace fs = std::filesystem;

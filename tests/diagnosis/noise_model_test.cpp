@@ -15,6 +15,7 @@
 namespace motostab::diagnosis {
 
 using core::PortableRandom;
+
 namespace {
 
 TEST(NoiseModel, BurgRecoversAnAr1Coefficient) {

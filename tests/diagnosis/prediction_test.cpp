@@ -28,6 +28,7 @@ using scenario::convertBicycleParametersToScenario;
 using scenario::loadScenario;
 using vehicle::VehicleModel;
 
+
 namespace {
 
 namespace fs = std::filesystem;

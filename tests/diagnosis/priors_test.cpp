@@ -19,6 +19,7 @@ namespace motostab::diagnosis {
 using core::PortableRandom;
 using io::formatNumber;
 
+
 namespace {
 
 namespace fs = std::filesystem;

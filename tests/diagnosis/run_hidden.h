@@ -19,6 +19,7 @@ using diagnosis::runDiagnosis;
 using io::splitFields;
 
 
+
 inline std::filesystem::path makeHiddenDir(const std::string& name) {
   return std::filesystem::temp_directory_path() / ("motostab-hidden-" + std::to_string(::getpid()) + "-" + name);
 }

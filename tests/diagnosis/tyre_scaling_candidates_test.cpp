@@ -17,6 +17,7 @@ using analysis::linearize;
 using scenario::formatOverride;
 using scenario::loadScenario;
 using vehicle::VehicleModel;
+
 namespace {
 
 const std::string kDir = MOTOSTAB_SOURCE_DIR;

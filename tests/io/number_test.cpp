@@ -11,6 +11,7 @@
 namespace motostab::io {
 
 using core::PortableRandom;
+
 namespace {
 
 // Random finite doubles over many magnitudes (portable: raw mt19937_64 bits reinterpreted).

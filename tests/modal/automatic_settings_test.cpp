@@ -20,6 +20,7 @@ using motostab::modal::chooseExponentialWindow;
 using motostab::modal::chooseOrders;
 using motostab::modal::findIndicatorPeaks;
 
+
 namespace {
 
 using namespace motostab::modal;

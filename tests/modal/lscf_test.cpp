@@ -14,6 +14,7 @@ using motostab::modal::findHalfPowerPeaks;
 using motostab::modal::fitModalModel;
 using motostab::modal::selectStableModes;
 
+
 namespace {
 
 using namespace motostab::modal;

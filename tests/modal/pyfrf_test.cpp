@@ -26,6 +26,7 @@ using motostab::modal::estimateH1;
 using motostab::modal::findHalfPowerPeaks;
 using motostab::modal::selectStableModes;
 
+
 namespace {
 
 using namespace motostab::modal;

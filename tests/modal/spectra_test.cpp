@@ -21,6 +21,7 @@ using motostab::modal::checkHit;
 using motostab::modal::estimateH1;
 using motostab::modal::selectStableModes;
 
+
 namespace {
 
 using namespace motostab::modal;

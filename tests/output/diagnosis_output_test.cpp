@@ -23,6 +23,7 @@ using diagnosis::MeasuredData;
 using diagnosis::MeasuredEigenvalue;
 using diagnosis::ParameterEstimate;
 using diagnosis::RobustnessRun;
+
 namespace {
 
 namespace fs = std::filesystem;

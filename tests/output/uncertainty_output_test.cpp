@@ -23,6 +23,7 @@ using uncertainty::getTaskCount;
 using uncertainty::prepareUncertainty;
 using uncertainty::runTasks;
 using uncertainty::summarizeUncertainty;
+
 namespace {
 
 namespace fs = std::filesystem;

@@ -11,6 +11,7 @@
 namespace motostab::plugins {
 
 using core::PortableRandom;
+
 namespace {
 
 struct OnePin {

@@ -22,6 +22,7 @@ using scenario::Scenario;
 using scenario::loadScenario;
 using vehicle::ModelExtension;
 using vehicle::VehicleModel;
+
 namespace {
 
 // The benchmark scenario with its contact replaced and a plugin library listed.

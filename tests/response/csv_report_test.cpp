@@ -18,12 +18,10 @@ using motostab::io::InputError;
 using motostab::response::CsvIdentificationRequest;
 using motostab::response::identifyModesFromCsv;
 
+
 namespace {
 
 namespace fs = std::filesystem;
-using motostab::io::InputError;
-using motostab::response::CsvIdentificationRequest;
-using motostab::response::identifyModesFromCsv;
 
 // A record with comments, the time in the second column: y = 0.2 + 1.3 e^{-0.5 t} cos(4 t + 0.6), 0..6 s.
 fs::path writeRecord(const fs::path& dir) {

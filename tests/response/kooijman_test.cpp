@@ -17,10 +17,9 @@
 using motostab::response::IdentificationOptions;
 using motostab::response::IdentificationResult;
 
+
 namespace {
 
-using motostab::response::IdentificationOptions;
-using motostab::response::IdentificationResult;
 
 const std::string kDir = std::string(MOTOSTAB_TEST_DATA_DIR) + "/measured-data/Kooijman2008/";
 constexpr double kPublishedReal = -1.16, kPublishedImag = 5.44;  // Kooijman et al. 2008, Fig. 6 caption

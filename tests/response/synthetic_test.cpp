@@ -17,12 +17,9 @@ using motostab::response::IdentificationResult;
 using motostab::response::IdentifiedMode;
 using motostab::response::identifyModes;
 
+
 namespace {
 
-using motostab::response::IdentificationOptions;
-using motostab::response::IdentificationResult;
-using motostab::response::IdentifiedMode;
-using motostab::response::identifyModes;
 
 struct TrueMode {
   double sigma, omega, amplitude, phase;  // 1/s, rad/s (0: real exponential), signal units, rad

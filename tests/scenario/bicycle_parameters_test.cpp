@@ -18,6 +18,7 @@ namespace motostab::scenario {
 
 using io::InputError;
 using io::writeFileAtomically;
+
 namespace {
 
 const std::string kBicycles = std::string(MOTOSTAB_TEST_DATA_DIR) + "/measured-data/BicycleParameters/data/bicycles/";

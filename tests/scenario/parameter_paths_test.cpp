@@ -16,6 +16,7 @@ using io::InputError;
 using io::applyOverride;
 using io::findKeyPath;
 using io::loadYamlFile;
+
 namespace {
 
 const std::string kWhipple = std::string(MOTOSTAB_SOURCE_DIR) + "/scenarios/whipple-benchmark.yaml";

@@ -18,6 +18,7 @@ namespace motostab::scenario {
 using core::PortableRandom;
 using io::InputError;
 using vehicle::VehicleModel;
+
 namespace {
 
 const std::string kScenario = std::string(MOTOSTAB_SOURCE_DIR) + "/scenarios/whipple-benchmark.yaml";

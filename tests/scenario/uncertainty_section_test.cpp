@@ -19,6 +19,7 @@ namespace motostab::scenario {
 
 using core::PortableRandom;
 using io::InputError;
+
 namespace {
 
 std::string readText(const std::string& p) {

@@ -23,6 +23,7 @@ using io::InputError;
 using io::YamlMap;
 using scenario::Scenario;
 using scenario::loadScenario;
+
 namespace {
 
 const Scenario& getEnduroTorsion() {

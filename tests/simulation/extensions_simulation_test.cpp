@@ -17,6 +17,7 @@ namespace motostab::simulation {
 using analysis::LinearModel;
 using scenario::Scenario;
 using scenario::loadScenario;
+
 namespace {
 
 const Scenario& getExtendedEnduro() {

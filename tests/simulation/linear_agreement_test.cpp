@@ -19,6 +19,7 @@ namespace motostab::simulation {
 using analysis::LinearModel;
 using scenario::Scenario;
 using scenario::loadScenario;
+
 namespace {
 
 const Scenario& getWhipple() {

@@ -18,6 +18,7 @@ using analysis::linearize;
 using scenario::Scenario;
 using vehicle::VehicleModel;
 
+
 inline LinearModel linearizeScenarioAt(const Scenario& scenario, double speed) {
   const VehicleModel model(scenario);
   return linearize(model, calcTrim(model, speed));

@@ -8,6 +8,7 @@
 namespace motostab::simulation {
 
 using io::InputError;
+
 namespace {
 
 TEST(SimulationPerturbation, ParsesEveryKind) {

@@ -26,6 +26,7 @@ using output::writeTimeseries;
 using scenario::Scenario;
 using scenario::loadScenario;
 using vehicle::VehicleModel;
+
 namespace {
 
 const Scenario& getWhipple() {

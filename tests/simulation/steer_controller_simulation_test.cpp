@@ -24,6 +24,7 @@ using core::PortableRandom;
 using io::formatNumber;
 using scenario::Scenario;
 using scenario::loadScenario;
+
 namespace {
 
 const std::string kWhipple = std::string(MOTOSTAB_SOURCE_DIR) + "/scenarios/whipple-benchmark.yaml";

@@ -18,6 +18,7 @@ using analysis::linearize;
 using scenario::Scenario;
 using scenario::loadScenario;
 using vehicle::VehicleModel;
+
 namespace {
 
 // Small roll- and steer-rate kicks from turns of the Whipple bicycle (rolling constraints) and of the

@@ -11,6 +11,7 @@ namespace motostab::studies {
 
 using analysis::ModeBranch;
 using core::PortableRandom;
+
 namespace {
 
 const std::vector<double> kSpeeds{4, 8, 12, 16, 17, 20, 23, 26, 30, 35};

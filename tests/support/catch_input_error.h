@@ -10,6 +10,7 @@ namespace motostab::test {
 
 using io::InputError;
 
+
 inline InputError catchInputError(const std::function<void()>& f) {
   try {
     f();

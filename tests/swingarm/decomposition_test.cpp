@@ -11,6 +11,7 @@ using motostab::swingarm::identification::calcReducedStiffness;
 using motostab::swingarm::identification::calcSeriesStiffness;
 using motostab::swingarm::identification::calcTwistDamping;
 
+
 namespace {
 
 using namespace motostab::swingarm::identification;

@@ -35,6 +35,7 @@ using motostab::swingarm::identification::writeFrfTestFiles;
 using motostab::swingarm::identification::writeStaticTestFiles;
 
 
+
 namespace {
 
 using namespace motostab::swingarm::identification;

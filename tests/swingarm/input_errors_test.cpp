@@ -18,10 +18,10 @@ using motostab::swingarm::identification::readHits;
 using motostab::swingarm::identification::readStaticReadings;
 using motostab::swingarm::identification::readStaticTest;
 
+
 namespace {
 
 using namespace motostab::swingarm::identification;
-using motostab::io::InputError;
 
 const char* kStaticHead =
     "test: static\nframe: \"x along the swingarm\"\nforce_point: {x: 0.55, z: 0.0}\n";

@@ -20,6 +20,7 @@ using motostab::swingarm::identification::readInertiaTest;
 using motostab::swingarm::identification::writeCogTestFiles;
 using motostab::swingarm::identification::writeInertiaTestFiles;
 
+
 namespace {
 
 using namespace motostab::swingarm::identification;

@@ -23,6 +23,7 @@ using motostab::swingarm::identification::simulateStaticReadings;
 using motostab::swingarm::identification::writeFrfTestFiles;
 using motostab::swingarm::identification::writeStaticTestFiles;
 
+
 namespace {
 
 using namespace motostab::swingarm::identification;

@@ -17,6 +17,7 @@ using motostab::swingarm::identification::identifyStatic;
 using motostab::swingarm::identification::simulateStaticReadings;
 
 
+
 namespace {
 
 using namespace motostab::swingarm::identification;

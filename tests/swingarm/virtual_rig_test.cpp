@@ -37,6 +37,7 @@ using motostab::swingarm::identification::writeStaticTestFiles;
 using motostab::swingarm::identification::writeSwingarmOutputs;
 
 
+
 namespace {
 
 using namespace motostab::swingarm::identification;

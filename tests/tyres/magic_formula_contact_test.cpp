@@ -39,6 +39,7 @@ using scenario::loadScenario;
 using vehicle::CoordinateIndices;
 using vehicle::Input;
 using vehicle::VehicleModel;
+
 namespace {
 
 const std::string kSample = std::string(MOTOSTAB_TEST_DATA_DIR) + "/reference/MF61-sample-tir/sample_MF61_ExternData.tir";

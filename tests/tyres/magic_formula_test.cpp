@@ -21,6 +21,7 @@ namespace motostab::tyres {
 
 using core::PortableRandom;
 using io::InputError;
+
 namespace {
 
 const std::string kSample = std::string(MOTOSTAB_TEST_DATA_DIR) + "/reference/MF61-sample-tir/sample_MF61_ExternData.tir";

@@ -20,6 +20,7 @@ using scenario::loadScenario;
 using vehicle::CoordinateIndices;
 using vehicle::Input;
 using vehicle::VehicleModel;
+
 namespace {
 
 const std::string kWhipple = std::string(MOTOSTAB_SOURCE_DIR) + "/scenarios/whipple-benchmark.yaml";

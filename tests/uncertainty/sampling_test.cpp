@@ -12,6 +12,7 @@ namespace motostab::uncertainty {
 
 using core::PortableRandom;
 using scenario::ParameterUncertainty;
+
 namespace {
 
 using D = ParameterUncertainty::Distribution;

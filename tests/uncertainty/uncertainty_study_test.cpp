@@ -23,6 +23,7 @@ using core::PortableRandom;
 using scenario::ParameterUncertainty;
 using scenario::loadScenario;
 using vehicle::VehicleModel;
+
 namespace {
 
 constexpr double kStart = 3.5, kStop = 7.0, kStep = 0.5;  // brackets the weave (4.29) and capsize (6.02) speeds

@@ -33,6 +33,7 @@ using scenario::Scenario;
 using scenario::loadScenario;
 using vehicle::VehicleModel;
 
+
 using cd = std::complex<double>;
 
 inline const std::string kWhipple = std::string(MOTOSTAB_SOURCE_DIR) + "/scenarios/whipple-benchmark.yaml";

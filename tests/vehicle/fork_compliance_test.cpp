@@ -18,6 +18,7 @@ using scenario::InertiaSpec;
 using scenario::Scenario;
 using scenario::loadScenario;
 
+
 namespace {
 
 using namespace motostab::testing;

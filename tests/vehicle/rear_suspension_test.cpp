@@ -18,6 +18,7 @@ using analysis::runSweep;
 using scenario::Scenario;
 using scenario::calcStaticWheelLoads;
 using scenario::loadScenario;
+
 namespace {
 
 const std::string kEnduro = std::string(MOTOSTAB_SOURCE_DIR) + "/scenarios/enduro.yaml";

@@ -16,6 +16,7 @@ using scenario::RiderLeanSpec;
 using scenario::Scenario;
 using scenario::loadScenario;
 
+
 namespace {
 
 using namespace motostab::testing;

@@ -23,6 +23,7 @@ using scenario::Scenario;
 using scenario::SteerControllerSpec;
 using scenario::loadScenario;
 
+
 namespace {
 
 using namespace motostab::testing;

@@ -17,6 +17,7 @@ using core::PortableRandom;
 using scenario::Scenario;
 using scenario::loadScenario;
 
+
 namespace {
 
 using namespace motostab::testing;

@@ -9,6 +9,7 @@ namespace motostab::vehicle {
 
 using analysis::StateFunction;
 using scenario::loadScenario;
+
 namespace {
 
 // Their coordinates: rear-wheel centre (x, y, z) with z up; heading theta; lean psi from the

@@ -26,6 +26,7 @@ using scenario::calcSwingarmFrame;
 using scenario::loadScenario;
 using vehicle::CoordinateIndices;
 using vehicle::VehicleModel;
+
 namespace {
 
 const std::string kEnduro = std::string(MOTOSTAB_SOURCE_DIR) + "/scenarios/enduro.yaml";
