@@ -4,7 +4,7 @@
 
 #include "analysis/linearize_detail.h"
 
-namespace motostab {
+namespace motostab::analysis {
 
 namespace {
 
@@ -140,4 +140,4 @@ std::vector<std::vector<int>> planMirrorGroups(const ColumnGrouping& g) {
 }
 
 }  // namespace detail
-}  // namespace motostab
+}  // namespace motostab::analysis

@@ -7,7 +7,13 @@
 
 #include "analysis/linearize_detail.h"
 
-namespace motostab {
+namespace motostab::analysis {
+
+using vehicle::CoordinateIndices;
+using vehicle::VehicleModel;
+using vehicle::kNumInputs;
+
+using vehicle::Input;
 
 int LinearModel::findState(const std::string& name) const {
   for (size_t i = 0; i < states.size(); ++i)
@@ -383,4 +389,4 @@ LinearModel linearizeInPlace(const VehicleModel& model, TrimResult& trim, const 
   return lin;
 }
 
-}  // namespace motostab
+}  // namespace motostab::analysis

@@ -16,7 +16,7 @@ using Direction = std::vector<std::pair<StateEntry, double>>;
 // What every stage of linearizeInPlace reads: the model, its state function, the trim state (perturbed
 // and restored in place) and the options.
 struct LinearizeContext {
-  const VehicleModel& model;
+  const vehicle::VehicleModel& model;
   const StateFunction fn;
   SimTK::State& s;
   const LinearizeOptions& opt;
@@ -24,17 +24,17 @@ struct LinearizeContext {
   const bool turn;  ///< a steady turn: heading-frame velocities, yaw cyclic (addHeadingFrameTerms)
   const std::vector<int> cyclic;
   double yawRate = 0, vx = 0, vy = 0, ax = 0, ay = 0;  ///< the trim's r, xdot, ydot, xddot, yddot
-  LinearizeContext(const VehicleModel& m, SimTK::State& state, const LinearizeOptions& o, bool isTurn = false)
+  LinearizeContext(const vehicle::VehicleModel& m, SimTK::State& state, const LinearizeOptions& o, bool isTurn = false)
       : model(m), fn(m), s(state), opt(o), nq(m.getNumQ()), nu(m.getNumU()), nz(m.getNumZ()), turn(isTurn),
         cyclic(makeCyclic(m, isTurn)) {
     if (!turn) return;
-    const CoordinateIndices& ix = m.getIndices();
+    const vehicle::CoordinateIndices& ix = m.getIndices();
     Eigen::VectorXd ydot;
     fn.calcYDot(s, ydot);
     yawRate = s.getU()[ix.yaw], vx = s.getU()[ix.x], vy = s.getU()[ix.y];
     ax = ydot[nq + ix.x], ay = ydot[nq + ix.y];
   }
-  static std::vector<int> makeCyclic(const VehicleModel& m, bool isTurn) {
+  static std::vector<int> makeCyclic(const vehicle::VehicleModel& m, bool isTurn) {
     std::vector<int> out = m.getCyclicQ();
     if (isTurn) out.push_back(m.getIndices().yaw);
     return out;

@@ -5,7 +5,10 @@
 
 #include "analysis/linearize_detail.h"
 
-namespace motostab {
+namespace motostab::analysis {
+
+using vehicle::Input;
+using vehicle::VehicleModel;
 namespace detail {
 namespace {
 
@@ -86,4 +89,4 @@ bool checkMirrorSymmetry(const VehicleModel& model, TrimResult& trim, const Line
   return true;
 }
 
-}  // namespace motostab
+}  // namespace motostab::analysis

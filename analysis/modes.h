@@ -7,7 +7,7 @@
 
 #include "analysis/linearize.h"
 
-namespace motostab {
+namespace motostab::analysis {
 
 /// Degree-of-freedom groups of an eigenvector, as shares of its squared magnitude (sum = 1).
 /// Lateral displacement is made an angle by dividing by the wheelbase (seed sec. 4, Fig. 12).
@@ -15,7 +15,7 @@ enum class DofGroup { Roll, Steer, Yaw, Lateral, Pitch, Bounce, Forward, Complia
 constexpr int kNumDofGroups = 10;
 using ModeContent = std::array<double, kNumDofGroups>;
 
-/// Compliance coordinates: swingarm_*, and the issue-10 extensions fork_bending, fork_torsion and
+/// Compliance coordinates: swingarm_*, and the model extensions fork_bending, fork_torsion and
 /// rider_lean. An oscillatory mode they dominate is labelled with the leading coordinate's name.
 bool isComplianceCoordinate(const std::string& coordinateName);
 
@@ -61,4 +61,4 @@ double calcMatchCost(double distance, double absA, double absB, double mac);
 /// Index of the eigenvalue of `b` that best continues eigenvalue ka of `a`.
 int findBestMatch(const LinearModel& a, int ka, const LinearModel& b);
 
-}  // namespace motostab
+}  // namespace motostab::analysis

@@ -6,7 +6,15 @@
 #include "analysis/trim_detail.h"
 #include "tyres/rolling_no_slip.h"
 
-namespace motostab {
+namespace motostab::analysis {
+
+using scenario::Scenario;
+using scenario::WheelSpec;
+using tyres::TorusContact;
+using tyres::calcTorusContact;
+using vehicle::CoordinateIndices;
+using vehicle::Input;
+using vehicle::VehicleModel;
 
 TurnFigures calcTurnFigures(const VehicleModel& model, const SimTK::State& s) {
   model.getSystem().realize(s, SimTK::Stage::Velocity);
@@ -186,4 +194,4 @@ TrimResult calcHandsFreeTrim(const VehicleModel& model, const std::vector<double
   return trim;
 }
 
-}  // namespace motostab
+}  // namespace motostab::analysis

@@ -1,6 +1,6 @@
 #include "analysis/sweep.h"
 
-#include "analysis/parallel.h"
+#include "core/parallel.h"
 
 #include <cmath>
 #include <functional>
@@ -12,7 +12,10 @@
 #include <optional>
 #include <stdexcept>
 
-namespace motostab {
+namespace motostab::analysis {
+
+using core::runWorkers;
+using vehicle::VehicleModel;
 
 std::vector<double> makeSpeedGrid(double start, double stop, double step) {
   std::vector<double> v;
@@ -377,4 +380,4 @@ std::vector<StableRange> calcStableSpeedRanges(const SweepResult& sweep) {
   return ranges;
 }
 
-}  // namespace motostab
+}  // namespace motostab::analysis

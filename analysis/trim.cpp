@@ -9,7 +9,17 @@
 
 #include "analysis/trim_detail.h"
 
-namespace motostab {
+namespace motostab::analysis {
+
+using vehicle::CoordinateIndices;
+using vehicle::Input;
+using vehicle::VehicleModel;
+using vehicle::kNumInputs;
+
+using scenario::Scenario;
+using scenario::WheelSpec;
+using tyres::TorusContact;
+using tyres::calcTorusContact;
 
 namespace {
 std::string trimMessage(double speed, double residual, int iterations, double roll, const std::string& detail) {
@@ -352,4 +362,4 @@ TrimResult restoreTrim(const VehicleModel& model, const TrimPoint& point) {
   return t;
 }
 
-}  // namespace motostab
+}  // namespace motostab::analysis

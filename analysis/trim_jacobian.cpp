@@ -1,7 +1,10 @@
 // The trim's Newton Jacobian read off a linear model's A and B (calcTrimJacobian).
 #include "analysis/linearize.h"
 
-namespace motostab {
+namespace motostab::analysis {
+
+using vehicle::VehicleModel;
+using vehicle::kNumInputs;
 
 Eigen::MatrixXd calcTrimJacobian(const VehicleModel& model, const LinearModel& lin, const Eigen::MatrixXd& previous,
                                  const TrimOptions& trimOptions) {
@@ -37,4 +40,4 @@ Eigen::MatrixXd calcTrimJacobian(const VehicleModel& model, const LinearModel& l
   return J;
 }
 
-}  // namespace motostab
+}  // namespace motostab::analysis

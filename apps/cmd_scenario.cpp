@@ -9,6 +9,24 @@
 #include "vehicle/vehicle_model.h"
 
 namespace motostab::cli {
+
+using io::writeFileAtomically;
+using scenario::ForkComplianceSpec;
+using scenario::InertiaRepair;
+using scenario::MassSummary;
+using scenario::Scenario;
+using scenario::SteerControllerSpec;
+using scenario::calcMassSummary;
+using scenario::calcNormalTrail;
+using scenario::calcStaticPivotMoment;
+using scenario::calcStaticWheelLoads;
+using scenario::calcSuspensionLever;
+using scenario::convertBicycleParametersToScenario;
+using scenario::formatBicycleParametersUncertainty;
+using scenario::loadScenario;
+using scenario::readBicycleParameterSigmas;
+using vehicle::VehicleModel;
+
 namespace {
 
 // The steer controller's law, schedule, delay and limit (vehicle/steer_controller.h).
@@ -27,7 +45,7 @@ void printSteerController(const SteerControllerSpec& c) {
   if (c.torqueLimit > 0) std::cout << "    torque limit        " << c.torqueLimit << " N m (time domain; linear models see the unsaturated law)\n";
 }
 
-// The issue-10 model extensions present, one line each (docs/scenario-format.md).
+// The model extensions present, one line each (docs/scenario-format.md).
 void printExtensions(const Scenario& s) {
   if (s.hasSteerDamper)
     std::cout << "  steer damper          " << s.steerDamper.damping << " N m s/rad, Coulomb " << s.steerDamper.coulomb

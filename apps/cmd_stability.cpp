@@ -8,11 +8,43 @@
 #include "io/input_error.h"
 #include "io/output_folder.h"
 #include "output/map_output.h"
-#include "output/study_report.h"
+#include "output/study_output.h"
 #include "output/sweep_output.h"
 #include "scenario/scenario_source.h"
 
 namespace motostab::cli {
+
+using analysis::LinearModel;
+using analysis::ModeBranch;
+using analysis::SweepOptions;
+using analysis::SweepResult;
+using analysis::TrimOptions;
+using analysis::TrimResult;
+using analysis::TurnMapOptions;
+using analysis::TurnMapResult;
+using analysis::calcTrim;
+using analysis::linearize;
+using analysis::runSweep;
+using analysis::runTurnMap;
+using analysis::trackModes;
+using io::InputError;
+using io::OutputFolder;
+using output::formatSweepTable;
+using output::formatTurnMapTable;
+using output::makeStudyReport;
+using output::writeLinearModel;
+using output::writeStudyOutputs;
+using output::writeSweepOutputs;
+using output::writeTurnMapOutputs;
+using scenario::Scenario;
+using scenario::ScenarioSource;
+using scenario::ParameterOverrides;
+using scenario::loadScenario;
+using studies::StudyOptions;
+using studies::StudyResult;
+using studies::runStudy;
+using vehicle::VehicleModel;
+
 
 namespace {
 

@@ -11,7 +11,7 @@
 #include "analysis/sweep.h"
 #include "diagnosis/diagnosis.h"
 #include "scenario/scenario.h"
-#include "scenario/yaml_map.h"
+#include "io/yaml_map.h"
 #include "vehicle/vehicle_model.h"
 
 namespace {
@@ -21,26 +21,26 @@ const std::string kData = std::string(MOTOSTAB_SOURCE_DIR) + "/examples/diagnosi
 
 double timeYardstick() {
   const auto t0 = std::chrono::steady_clock::now();
-  const motostab::VehicleModel model(motostab::loadScenario(kScenario));
-  benchmark::DoNotOptimize(motostab::runSweep(model, motostab::SweepOptions()));
+  const motostab::vehicle::VehicleModel model(motostab::scenario::loadScenario(kScenario));
+  benchmark::DoNotOptimize(motostab::analysis::runSweep(model, motostab::analysis::SweepOptions()));
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
 
 void BM_KooijmanDiagnosis(benchmark::State& state) {
-  const motostab::MeasuredData data = motostab::loadMeasuredData(kData);
-  motostab::DiagnosisOptions opt;
+  const motostab::diagnosis::MeasuredData data = motostab::diagnosis::loadMeasuredData(kData);
+  motostab::diagnosis::DiagnosisOptions opt;
   opt.threads = 2;
   opt.robustness = true;  // the reruns with each data source left out and at mid speeds
   double seconds = 0, ratio = 0, cpu = 0, reads = 0;
   for (auto _ : state) {
     const double yard = timeYardstick();
-    const long opened = motostab::getYamlFileOpenCount(kScenario);
+    const long opened = motostab::io::getYamlFileOpenCount(kScenario);
     const std::clock_t c0 = std::clock();
     const auto t0 = std::chrono::steady_clock::now();
-    benchmark::DoNotOptimize(motostab::runDiagnosis(kScenario, data, opt));
+    benchmark::DoNotOptimize(motostab::diagnosis::runDiagnosis(kScenario, data, opt));
     const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     cpu += static_cast<double>(std::clock() - c0) / CLOCKS_PER_SEC;
-    reads += static_cast<double>(motostab::getYamlFileOpenCount(kScenario) - opened);
+    reads += static_cast<double>(motostab::io::getYamlFileOpenCount(kScenario) - opened);
     seconds += s;
     ratio += s / yard;
   }

@@ -7,13 +7,15 @@
 
 #include "simulation/simulation.h"
 
+using motostab::simulation::SimulationOptions;
+
+
 namespace {
 
-using motostab::simulation::SimulationOptions;
 
 void runRealTimeFactor(benchmark::State& st, const std::string& scenarioFile, const std::vector<std::string>& sets,
                        double speed, const std::string& perturb, double duration) {
-  const motostab::Scenario scenario = motostab::loadScenario(std::string(MOTOSTAB_SOURCE_DIR) + scenarioFile, sets);
+  const motostab::scenario::Scenario scenario = motostab::scenario::loadScenario(std::string(MOTOSTAB_SOURCE_DIR) + scenarioFile, sets);
   SimulationOptions opt;
   opt.speed = speed;
   opt.duration = duration;

@@ -10,7 +10,7 @@
 
 #include "scenario/parameter_overrides.h"
 
-namespace motostab {
+namespace motostab::diagnosis {
 
 struct CandidateParameter {
   std::string name;         ///< JSON key: the scenario key (damping_Nms_per_rad) or "value" for parameter:*
@@ -29,7 +29,7 @@ struct CandidateParameter {
 
 struct Candidate {
   std::string name;                         ///< steer_damper, parameter:geometry.trail_m, ...
-  ParameterOverrides fixedOverrides;        ///< applied before the parameters' (switch the effect on)
+  scenario::ParameterOverrides fixedOverrides;       ///< applied before the parameters' (switch the effect on)
   std::vector<CandidateParameter> parameters;
 };
 
@@ -53,4 +53,4 @@ constexpr double kRiderMass_kg = 75;
 /// `patterns` is empty. An entry that matches nothing is an error (std::invalid_argument naming it).
 std::vector<Candidate> filterCandidates(const std::vector<Candidate>& all, const std::vector<std::string>& patterns);
 
-}  // namespace motostab
+}  // namespace motostab::diagnosis

@@ -6,7 +6,7 @@
 #include <mutex>
 #include <stdexcept>
 
-#include "analysis/parallel.h"
+#include "core/parallel.h"
 #include "diagnosis/controller_groups.h"
 #include "diagnosis/cross_validation.h"
 #include "diagnosis/fit_problem.h"
@@ -15,9 +15,17 @@
 #include "diagnosis/robustness.h"
 #include "scenario/scenario.h"
 #include "scenario/scenario_source.h"
-#include "scenario/yaml_map.h"
+#include "io/yaml_map.h"
 
-namespace motostab {
+namespace motostab::diagnosis {
+
+using core::runParallel;
+using io::InputError;
+using io::applyOverride;
+using io::loadYamlFile;
+using scenario::ParameterOverrides;
+using scenario::ScenarioSource;
+
 namespace {
 
 constexpr double kZ95 = 1.959963984540054;   // two-sided 95 % normal quantile
@@ -576,4 +584,4 @@ DiagnosisResult runDiagnosis(const std::string& scenarioFile, const MeasuredData
   return result;
 }
 
-}  // namespace motostab
+}  // namespace motostab::diagnosis

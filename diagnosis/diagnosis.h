@@ -26,14 +26,14 @@
 #include "diagnosis/measured_data.h"
 #include "diagnosis/prediction.h"
 
-namespace motostab {
+namespace motostab::diagnosis {
 
 struct DiagnosisOptions {
   std::vector<std::string> candidates;  ///< names or globs; empty: all
   int maxCauses = 3;
   int folds = 0;                         ///< 0: 5, or one per run for response-only data
   int threads = 1;
-  ParameterOverrides overrides;          ///< --set on the base scenario
+  scenario::ParameterOverrides overrides;  ///< --set on the base scenario
   /// Called as work proceeds: stage name, done, total.
   std::function<void(const std::string&, int, int)> progress;
   // Evidence needed to name a cause.
@@ -147,4 +147,4 @@ DiagnosisResult runDiagnosis(const std::string& scenarioFile, const MeasuredData
 /// The base scenario's YAML tree with `overrides` applied (what extended.yaml holds).
 YAML::Node makeScenarioTree(const std::string& scenarioFile, const std::vector<std::string>& overrides);
 
-}  // namespace motostab
+}  // namespace motostab::diagnosis

@@ -7,7 +7,9 @@
 #include "diagnosis/priors.h"
 #include "scenario/parameter_paths.h"
 
-namespace motostab {
+namespace motostab::diagnosis {
+
+using scenario::ParameterOverrides;
 
 int ModelSpec::size() const {
   int n = 0;
@@ -295,4 +297,4 @@ void FitProblem::updateNoise(const Eigen::VectorXd& e, int k) {
   }
 }
 
-}  // namespace motostab
+}  // namespace motostab::diagnosis

@@ -9,7 +9,7 @@
 #include "diagnosis/noise_model.h"
 #include "diagnosis/prediction.h"
 
-namespace motostab {
+namespace motostab::diagnosis {
 
 /// One scalar observation: the real or imaginary part of an eigenvalue row, or one response sample.
 struct Observation {
@@ -30,7 +30,7 @@ struct ModelSpec {
   std::vector<const CandidateParameter*> getParameters() const;
   Eigen::VectorXd getStart() const;
   /// The candidates' switches and parameter values at x, as typed changes of the scenario.
-  ParameterOverrides makeOverrides(const Eigen::VectorXd& x) const;
+  scenario::ParameterOverrides makeOverrides(const Eigen::VectorXd& x) const;
   double getValue(int i, const Eigen::VectorXd& x) const;  ///< key-unit value of parameter i
   /// Residuals of the parameters' Student-t priors (priors.h eq. 1), one per parameter with a prior.
   Eigen::VectorXd calcPriorResiduals(const Eigen::VectorXd& x) const;
@@ -100,4 +100,4 @@ class FitProblem {
   const MeasuredData& data_;
 };
 
-}  // namespace motostab
+}  // namespace motostab::diagnosis

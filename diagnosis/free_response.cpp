@@ -4,7 +4,11 @@
 #include <cmath>
 #include <unsupported/Eigen/MatrixFunctions>
 
-namespace motostab {
+namespace motostab::diagnosis {
+
+using analysis::LinearModel;
+using io::InputError;
+
 namespace {
 
 std::string getStateName(Quantity q) {
@@ -252,4 +256,4 @@ std::vector<double> getTraceSpeeds(const ResponseRun& run) {
   return {*lo, 0.5 * (*lo + *hi), *hi};
 }
 
-}  // namespace motostab
+}  // namespace motostab::diagnosis

@@ -22,7 +22,7 @@
 #include "diagnosis/measured_data.h"
 #include "diagnosis/noise_model.h"
 
-namespace motostab {
+namespace motostab::diagnosis {
 
 /// The fitted free response of one run.
 struct ResponseFit {
@@ -37,16 +37,16 @@ struct ResponseFit {
 /// (column unit, the noise's marginal sigma) weights the signals; `noise` per signal (optional): its
 /// AR noise, which prewhitens the fit (generalised least squares, noise_model.h). Throws InputError
 /// (at the run) if a signal's quantity is not a state of the model.
-ResponseFit fitFreeResponse(const LinearModel& lin, const ResponseRun& run, const std::vector<double>& sigma,
+ResponseFit fitFreeResponse(const analysis::LinearModel& lin, const ResponseRun& run, const std::vector<double>& sigma,
                             const std::vector<ArNoise>& noise = {});
 
 /// The same for a run with a speed trace (run.speeds): `models` are linear models (same states) at
 /// getTraceSpeeds(run), A interpolated between them along the trace (piecewise-frozen, see above).
-ResponseFit fitFreeResponse(const std::vector<LinearModel>& models, const ResponseRun& run,
+ResponseFit fitFreeResponse(const std::vector<analysis::LinearModel>& models, const ResponseRun& run,
                             const std::vector<double>& sigma, const std::vector<ArNoise>& noise = {});
 
 /// The speeds (m/s, sorted) whose linear models predict `run`: its speed without a trace (or with a
 /// trace of constant speed), else the lowest, middle and highest speed of the trace in the window.
 std::vector<double> getTraceSpeeds(const ResponseRun& run);
 
-}  // namespace motostab
+}  // namespace motostab::diagnosis

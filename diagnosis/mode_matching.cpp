@@ -5,7 +5,13 @@
 
 #include "io/input_error.h"
 
-namespace motostab {
+namespace motostab::diagnosis {
+
+using analysis::LinearModel;
+using analysis::ModeBranch;
+using analysis::SweepResult;
+using analysis::calcMatchCost;
+using io::InputError;
 
 ModeMatcher::ModeMatcher(const SweepResult& reference, const std::vector<MeasuredEigenvalue>& rows)
     : reference_(reference), rows_(rows) {}
@@ -90,4 +96,4 @@ std::complex<double> ModeMatcher::pick(const SweepResult& candidate, size_t k, c
   return {best.real(), std::abs(best.imag())};
 }
 
-}  // namespace motostab
+}  // namespace motostab::diagnosis

@@ -20,7 +20,7 @@
 #include "analysis/sweep.h"
 #include "diagnosis/measured_data.h"
 
-namespace motostab {
+namespace motostab::diagnosis {
 
 /// One labelled mode of the rows, followed through a candidate's sweep.
 struct ModeTrack {
@@ -31,21 +31,21 @@ struct ModeTrack {
 class ModeMatcher {
  public:
   /// `reference`: the base scenario's labelled sweep; `rows`: the measured eigenvalue rows.
-  ModeMatcher(const SweepResult& reference, const std::vector<MeasuredEigenvalue>& rows);
+  ModeMatcher(const analysis::SweepResult& reference, const std::vector<MeasuredEigenvalue>& rows);
   /// The rows' labelled modes in `candidate` (a sweep at the measured speeds), speed by speed.
-  std::vector<ModeTrack> track(const SweepResult& candidate) const;
+  std::vector<ModeTrack> track(const analysis::SweepResult& candidate) const;
   /// The row's eigenvalue (imag >= 0, 1/s) in `candidate` at speed index k: its mode's, or for an
   /// unlabelled row the eigenvalue nearest the measured one. InputError at the row when the
   /// candidate has no such mode there.
-  std::complex<double> pick(const SweepResult& candidate, size_t k, const MeasuredEigenvalue& row,
+  std::complex<double> pick(const analysis::SweepResult& candidate, size_t k, const MeasuredEigenvalue& row,
                             const std::vector<ModeTrack>& tracks) const;
 
  private:
-  Eigen::VectorXd calcCosts(const std::string& mode, const SweepResult& candidate, size_t k, int prevIndex) const;
-  std::vector<int> findLabelled(const SweepResult& candidate, const std::string& mode, size_t k) const;
+  Eigen::VectorXd calcCosts(const std::string& mode, const analysis::SweepResult& candidate, size_t k, int prevIndex) const;
+  std::vector<int> findLabelled(const analysis::SweepResult& candidate, const std::string& mode, size_t k) const;
 
-  const SweepResult& reference_;
+  const analysis::SweepResult& reference_;
   const std::vector<MeasuredEigenvalue>& rows_;
 };
 
-}  // namespace motostab
+}  // namespace motostab::diagnosis

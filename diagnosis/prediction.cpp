@@ -5,7 +5,18 @@
 
 #include "vehicle/vehicle_model.h"
 
-namespace motostab {
+namespace motostab::diagnosis {
+
+using analysis::LinearModel;
+using analysis::ModeBranch;
+using analysis::SweepOptions;
+using analysis::SweepResult;
+using analysis::runSweep;
+using scenario::ParameterOverrides;
+using scenario::Scenario;
+using scenario::ScenarioSource;
+using vehicle::VehicleModel;
+
 namespace {
 
 // Accuracy asked of the fast predictions' interpolation (chooseNodes), 1/s per (1 + |lambda| s).
@@ -241,4 +252,4 @@ Prediction Predictor::predict(const ParameterOverrides& changes, const std::vect
   return p;
 }
 
-}  // namespace motostab
+}  // namespace motostab::diagnosis

@@ -30,7 +30,7 @@
 #include "diagnosis/speed_nodes.h"
 #include "scenario/scenario_source.h"
 
-namespace motostab {
+namespace motostab::diagnosis {
 
 /// Everything a scenario predicts for a measurement set.
 struct Prediction {
@@ -46,23 +46,23 @@ class Predictor {
   /// Sweeps the base scenario (`baseChanges` applied) once for the mode labels. Data taken with
   /// several controller settings is predicted group by group (diagnosis/controller_groups.h), each
   /// group by a predictor of its own whose base changes end with the group's.
-  Predictor(std::shared_ptr<const ScenarioSource> source, ParameterOverrides baseChanges, const MeasuredData& data);
+  Predictor(std::shared_ptr<const scenario::ScenarioSource> source, scenario::ParameterOverrides baseChanges, const MeasuredData& data);
   /// The same, reading `scenarioFile` (once).
-  Predictor(const std::string& scenarioFile, ParameterOverrides baseChanges, const MeasuredData& data);
+  Predictor(const std::string& scenarioFile, scenario::ParameterOverrides baseChanges, const MeasuredData& data);
   /// Predictions with `changes` after the base changes; `sigma` per response run and signal.
   /// `noise` per run and signal (optional): AR noise prewhitening the response fits.
-  Prediction predict(const ParameterOverrides& changes, const std::vector<std::vector<double>>& sigma,
+  Prediction predict(const scenario::ParameterOverrides& changes, const std::vector<std::vector<double>>& sigma,
                      bool exact = true, const std::vector<std::vector<ArNoise>>& noise = {}) const;
   /// The sweep's chain at `speeds` (sorted, unique; m/s) for `changes` (after the base changes only:
   /// no controller setting of the data is added here): linear models with labelled modes.
-  SweepResult calcSweep(const ParameterOverrides& changes, const std::vector<double>& speeds) const;
+  analysis::SweepResult calcSweep(const scenario::ParameterOverrides& changes, const std::vector<double>& speeds) const;
   /// The linear models of calcSweep.
-  std::vector<LinearModel> calcLinearModels(const ParameterOverrides& changes, const std::vector<double>& speeds) const;
+  std::vector<analysis::LinearModel> calcLinearModels(const scenario::ParameterOverrides& changes, const std::vector<double>& speeds) const;
   /// The sorted, unique speeds predict() linearises at, m/s.
   const std::vector<double>& getSpeeds() const { return speeds_; }
-  const ScenarioSource& getSource() const { return *source_; }
-  const ParameterOverrides& getBaseChanges() const { return baseChanges_; }
-  const SweepResult& getReferenceSweep() const { return *reference_; }
+  const scenario::ScenarioSource& getSource() const { return *source_; }
+  const scenario::ParameterOverrides& getBaseChanges() const { return baseChanges_; }
+  const analysis::SweepResult& getReferenceSweep() const { return *reference_; }
   /// The Chebyshev points (m/s) of the fast predictions; empty when fits predict exactly.
   const std::vector<double>& getNodes() const { return nodes_; }
 
@@ -75,18 +75,18 @@ class Predictor {
   std::vector<double> collectSpeeds() const;
   void makeReferenceSweep();
   void chooseFastSpeeds();
-  Prediction predictParts(const ParameterOverrides& changes, const std::vector<std::vector<double>>& sigma,
+  Prediction predictParts(const scenario::ParameterOverrides& changes, const std::vector<std::vector<double>>& sigma,
                           bool exact, const std::vector<std::vector<ArNoise>>& noise) const;
-  std::vector<std::complex<double>> predictRows(const SweepResult& sweep, bool fast) const;
-  std::vector<std::complex<double>> predictInterpolated(const SweepResult& sweep) const;
+  std::vector<std::complex<double>> predictRows(const analysis::SweepResult& sweep, bool fast) const;
+  std::vector<std::complex<double>> predictInterpolated(const analysis::SweepResult& sweep) const;
   std::vector<double> chooseNodes(double lo, double hi, int labelled) const;
   bool isExactMode(const std::string& mode) const;
   std::vector<std::string> findBranchPointModes(double lo, double hi) const;
-  ResponseFit predictResponse(const SweepResult& sweep, size_t run, const std::vector<double>& sigma,
+  ResponseFit predictResponse(const analysis::SweepResult& sweep, size_t run, const std::vector<double>& sigma,
                               const std::vector<ArNoise>& noise) const;
 
-  std::shared_ptr<const ScenarioSource> source_;
-  ParameterOverrides baseChanges_;
+  std::shared_ptr<const scenario::ScenarioSource> source_;
+  scenario::ParameterOverrides baseChanges_;
   const MeasuredData& data_;
   std::vector<double> speeds_;
   std::vector<double> nodes_;       ///< Chebyshev points of the fast predictions (empty: none)
@@ -94,9 +94,9 @@ class Predictor {
   /// Labelled modes whose base branch turns between real and complex over the rows' speeds (a
   /// branch point no polynomial follows): the fast predictions take them at the rows' own speeds.
   std::vector<std::string> exactModes_;
-  std::shared_ptr<SweepResult> reference_;
+  std::shared_ptr<analysis::SweepResult> reference_;
   std::unique_ptr<ModeMatcher> matcher_;
   std::vector<std::shared_ptr<ControllerPart>> parts_;  ///< per controller setting (empty: one setting)
 };
 
-}  // namespace motostab
+}  // namespace motostab::diagnosis

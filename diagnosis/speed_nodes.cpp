@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-namespace motostab {
+namespace motostab::diagnosis {
 
 std::vector<double> getEvaluationSpeeds(const MeasuredEigenvalue& row) {
   if (!row.hasRange || row.speedMax - row.speedMin < 1e-9) return {row.speed};
@@ -41,4 +41,4 @@ size_t findSpeed(const std::vector<double>& speeds, double v) {
   return std::lower_bound(speeds.begin(), speeds.end(), v) - speeds.begin();
 }
 
-}  // namespace motostab
+}  // namespace motostab::diagnosis

@@ -7,7 +7,7 @@
 
 #include "diagnosis/measured_data.h"
 
-namespace motostab {
+namespace motostab::diagnosis {
 
 /// The speeds at which a row is evaluated, m/s: its speed, or for a speed range [a, b] the two
 /// Gauss-Legendre nodes m -/+ h/sqrt(3) (m, h: the range's middle and half width), whose mean of the
@@ -27,4 +27,4 @@ std::vector<double> makeSortedUnique(std::vector<double> v);
 /// Index of speed v in sorted `speeds` (the first not below v).
 size_t findSpeed(const std::vector<double>& speeds, double v);
 
-}  // namespace motostab
+}  // namespace motostab::diagnosis

@@ -11,6 +11,9 @@
 #include "response/matrix_pencil.h"
 
 namespace motostab::response {
+
+using io::formatNumber;
+
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;

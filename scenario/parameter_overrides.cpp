@@ -3,9 +3,16 @@
 #include <cstdio>
 
 #include "io/number.h"
-#include "scenario/yaml_map.h"
+#include "io/yaml_map.h"
 
-namespace motostab {
+namespace motostab::scenario {
+
+using io::ParsedOverride;
+using io::copyTree;
+using io::makeOverrideScalar;
+using io::parseFiniteNumber;
+using io::parseOverride;
+using io::setKeyPath;
 
 std::string formatShortest(double value) {
   char buf[40];
@@ -79,4 +86,4 @@ void ParameterOverrides::applyTo(YAML::Node& tree) const {
   }
 }
 
-}  // namespace motostab
+}  // namespace motostab::scenario

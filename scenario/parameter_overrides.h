@@ -12,7 +12,7 @@
 #include <variant>
 #include <vector>
 
-namespace motostab {
+namespace motostab::scenario {
 
 /// One change: the key path and its value.
 struct ParameterOverride {
@@ -61,4 +61,4 @@ class ParameterOverrides {
 /// The shortest decimal text (up to 17 significant digits) that reads back to exactly `value`.
 std::string formatShortest(double value);
 
-}  // namespace motostab
+}  // namespace motostab::scenario

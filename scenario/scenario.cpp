@@ -6,9 +6,13 @@
 #include "scenario/extension_specs.h"
 #include "scenario/parameter_paths.h"
 #include "scenario/scenario_source.h"
-#include "scenario/yaml_map.h"
+#include "io/yaml_map.h"
 
-namespace motostab {
+namespace motostab::scenario {
+
+using io::InputError;
+using io::YamlMap;
+
 namespace {
 
 InertiaSpec readInertia(YamlMap m) {
@@ -343,4 +347,4 @@ double calcStaticPivotMoment(const Scenario& s) {
   return xP * (rearLoad - s.rearWheel.mass * g) + (calcSwingarmCom(s)[0] - xP) * s.swingarm.body.mass * g;
 }
 
-}  // namespace motostab
+}  // namespace motostab::scenario

@@ -1,8 +1,12 @@
 #include "scenario/scenario_source.h"
 
-#include "scenario/yaml_map.h"
+#include "io/yaml_map.h"
 
-namespace motostab {
+namespace motostab::scenario {
+
+using io::InputError;
+using io::copyTree;
+using io::loadYamlFile;
 
 ScenarioSource::ScenarioSource(std::string file) : file_(std::move(file)), tree_(loadYamlFile(file_).getNode()) {}
 
@@ -26,4 +30,4 @@ Scenario ScenarioSource::load(const ParameterOverrides& changes) const {
   }
 }
 
-}  // namespace motostab
+}  // namespace motostab::scenario

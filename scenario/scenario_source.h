@@ -11,7 +11,7 @@
 #include "scenario/parameter_overrides.h"
 #include "scenario/scenario.h"
 
-namespace motostab {
+namespace motostab::scenario {
 
 class ScenarioSource {
  public:
@@ -31,4 +31,4 @@ class ScenarioSource {
   YAML::Node tree_;  ///< never modified after construction (only copied)
 };
 
-}  // namespace motostab
+}  // namespace motostab::scenario

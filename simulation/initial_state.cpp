@@ -8,6 +8,14 @@
 
 namespace motostab::simulation {
 
+using analysis::StateFunction;
+using analysis::TrimResult;
+using analysis::chooseDependentColumns;
+using io::InputError;
+using vehicle::CoordinateIndices;
+using vehicle::Input;
+using vehicle::VehicleModel;
+
 using SimTK::State;
 
 void checkPerturbations(const VehicleModel& model, const std::vector<Perturbation>& perturbations) {

@@ -9,8 +9,8 @@
 namespace motostab::simulation::detail {
 
 /// Rear wheel centre velocity along the heading (yaw) direction, m/s.
-inline double calcHeadingSpeed(const VehicleModel& model, const SimTK::State& s) {
-  const CoordinateIndices& ix = model.getIndices();
+inline double calcHeadingSpeed(const vehicle::VehicleModel& model, const SimTK::State& s) {
+  const vehicle::CoordinateIndices& ix = model.getIndices();
   const double yaw = s.getQ()[ix.yaw];
   return std::cos(yaw) * s.getU()[ix.x] + std::sin(yaw) * s.getU()[ix.y];
 }
@@ -20,7 +20,7 @@ inline double calcHeadingSpeed(const VehicleModel& model, const SimTK::State& s)
 // segment index), so no integrator step straddles a discontinuity.
 class PerturbationForce : public SimTK::Force::Custom::Implementation {
  public:
-  PerturbationForce(SimTK::GeneralForceSubsystem& forces, const VehicleModel& model, std::vector<Perturbation> pulses,
+  PerturbationForce(SimTK::GeneralForceSubsystem& forces, const vehicle::VehicleModel& model, std::vector<Perturbation> pulses,
                     std::vector<double> segmentStarts, bool speedControl, double kp, double ki, double targetSpeed)
       : forces_(forces), model_(model), pulses_(std::move(pulses)), segmentStarts_(std::move(segmentStarts)),
         speedControl_(speedControl), kp_(kp), ki_(ki), targetSpeed_(targetSpeed) {}
@@ -80,7 +80,7 @@ class PerturbationForce : public SimTK::Force::Custom::Implementation {
   }
 
   SimTK::GeneralForceSubsystem& forces_;
-  const VehicleModel& model_;  // complete by the time forces are evaluated
+  const vehicle::VehicleModel& model_;  // complete by the time forces are evaluated
   std::vector<Perturbation> pulses_;
   std::vector<double> segmentStarts_;
   bool speedControl_;

@@ -8,6 +8,10 @@
 
 namespace motostab::simulation::detail {
 
+using io::InputError;
+using vehicle::Input;
+using vehicle::VehicleModel;
+
 using SimTK::State;
 using SimTK::Vec3;
 

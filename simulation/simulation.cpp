@@ -13,6 +13,23 @@
 
 namespace motostab::simulation {
 
+using analysis::TrimResult;
+using analysis::calcTrim;
+using io::InputError;
+using io::extractColumn;
+using plugins::BuildContext;
+using plugins::PluginRegistry;
+using plugins::makeBuiltinRegistry;
+using scenario::Scenario;
+using scenario::calcMassSummary;
+using vehicle::ModelExtension;
+using vehicle::VehicleModel;
+
+using analysis::StateFunction;
+using analysis::chooseDependentColumns;
+using vehicle::CoordinateIndices;
+using vehicle::Input;
+
 using SimTK::State;
 using SimTK::Vec3;
 

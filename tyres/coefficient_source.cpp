@@ -5,7 +5,9 @@
 #include <string>
 #include <vector>
 
-namespace motostab {
+namespace motostab::tyres {
+
+using io::YamlMap;
 
 std::optional<double> CoefficientSource::find(const std::string& name) const {
   if (scaling_) {
@@ -100,4 +102,4 @@ void warnUnused(const CoefficientSource& source, const std::string& name, std::o
   out << "\n";
 }
 
-}  // namespace motostab
+}  // namespace motostab::tyres

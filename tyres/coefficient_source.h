@@ -7,10 +7,10 @@
 #include <string>
 #include <vector>
 
-#include "scenario/yaml_map.h"
+#include "io/yaml_map.h"
 #include "tyres/tir_file.h"
 
-namespace motostab {
+namespace motostab::tyres {
 
 /// Where coefficients come from: a .tir file or an inline `coefficients` map, with scaling factors
 /// (L...) overridden by a scenario's `scaling` map. Names are the .tir keys (PKY1, LMUY, ...).
@@ -45,10 +45,10 @@ class CoefficientSource {
 /// Coefficients of a .tir file, with scaling factors from `scaling` (may be null) taking precedence.
 std::unique_ptr<CoefficientSource> makeTirSource(const TirFile& file, const std::map<std::string, double>* scaling);
 /// Coefficients of an inline YAML map (each key must be read, unknown keys are errors at finish()).
-std::unique_ptr<CoefficientSource> makeYamlSource(YamlMap& coefficients, const std::map<std::string, double>* scaling);
+std::unique_ptr<CoefficientSource> makeYamlSource(io::YamlMap& coefficients, const std::map<std::string, double>* scaling);
 
 /// Writes one warning line to `out` naming the source's unused nonzero coefficients (listUnused), if any;
 /// `name` names the source (a file path).
 void warnUnused(const CoefficientSource& source, const std::string& name, std::ostream& out);
 
-}  // namespace motostab
+}  // namespace motostab::tyres

@@ -9,7 +9,7 @@
 
 #include "tyres/motorcycle_magic_formula.h"
 
-namespace motostab {
+namespace motostab::tyres {
 
 namespace {
 
@@ -358,4 +358,4 @@ std::unique_ptr<TyreForceLaw> loadTirForceLaw(const std::string& path, const std
   return law;
 }
 
-}  // namespace motostab
+}  // namespace motostab::tyres

@@ -18,7 +18,7 @@
 #include "tyres/coefficient_source.h"
 #include "tyres/tir_file.h"
 
-namespace motostab {
+namespace motostab::tyres {
 
 /// Operating point of a tyre (ISO-W signs, above).
 struct TyreSlip {
@@ -74,4 +74,4 @@ std::unique_ptr<TyreForceLaw> makeTyreForceLaw(MagicFormulaVariant v, const Coef
 /// nonzero coefficients are reported on std::cerr (warnUnused).
 std::unique_ptr<TyreForceLaw> loadTirForceLaw(const std::string& path, const std::map<std::string, double>* scaling = nullptr);
 
-}  // namespace motostab
+}  // namespace motostab::tyres

@@ -8,7 +8,12 @@
 
 #include "io/number.h"
 
-namespace motostab {
+namespace motostab::tyres {
+
+using io::InputError;
+using io::InputLocation;
+using io::parseFiniteNumber;
+
 
 namespace {
 
@@ -175,4 +180,4 @@ void TirFile::fail(const std::string& key, const std::string& message) const {
   throw InputError({source_, e ? e->line : 0, 0, upper(key)}, message);
 }
 
-}  // namespace motostab
+}  // namespace motostab::tyres

@@ -5,14 +5,29 @@
 #include <cmath>
 #include <limits>
 
-#include "analysis/parallel.h"
+#include "core/parallel.h"
 #include "analysis/sweep.h"
 #include "scenario/parameter_paths.h"
 #include "io/csv.h"
 #include "uncertainty/sampling.h"
 #include "vehicle/vehicle_model.h"
 
-namespace motostab {
+namespace motostab::uncertainty {
+
+using analysis::SweepOptions;
+using analysis::SweepResult;
+using analysis::makeSpeedGrid;
+using analysis::runSweep;
+using core::runParallel;
+using io::InputError;
+using io::formatNumber;
+using scenario::ParameterOverrides;
+using scenario::ParameterUncertainty;
+using scenario::Scenario;
+using scenario::ScenarioSource;
+using scenario::getScalarParameter;
+using vehicle::VehicleModel;
+
 namespace {
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
@@ -182,4 +197,4 @@ std::vector<TaskResult> runTasks(const UncertaintySetup& s, const std::vector<si
   return out;
 }
 
-}  // namespace motostab
+}  // namespace motostab::uncertainty

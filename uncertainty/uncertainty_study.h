@@ -26,7 +26,7 @@
 #include "scenario/scenario.h"
 #include "scenario/scenario_source.h"
 
-namespace motostab {
+namespace motostab::uncertainty {
 
 /// Critical speeds reported per sample: the first crossing of each mode in the speed range.
 constexpr std::array<const char*, 3> kUncertainModes{"weave", "capsize", "wobble"};
@@ -47,16 +47,16 @@ struct UncertaintyOptions {
 /// One uncertainty study: the scenario, its overrides, the uncertain parameters and their nominal values.
 struct UncertaintySetup {
   std::string scenarioFile;
-  std::shared_ptr<const ScenarioSource> source;  ///< the scenario file, read once for every sample
-  ParameterOverrides overrides;             ///< --set changes, applied before every sample's own
-  std::vector<ParameterUncertainty> params; ///< the scenario's uncertainty section (sigma >= 0)
+  std::shared_ptr<const scenario::ScenarioSource> source;  ///< the scenario file, read once for every sample
+  scenario::ParameterOverrides overrides;   ///< --set changes, applied before every sample's own
+  std::vector<scenario::ParameterUncertainty> params; ///< the scenario's uncertainty section (sigma >= 0)
   std::vector<double> nominal;              ///< nominal value of each parameter (its unit)
   UncertaintyOptions options;
 };
 
 /// Loads the scenario (with overrides), checks it builds, and reads the parameters' nominal values.
 /// InputError for a bad scenario or an empty uncertainty section.
-UncertaintySetup prepareUncertainty(const std::string& scenarioFile, const ParameterOverrides& overrides,
+UncertaintySetup prepareUncertainty(const std::string& scenarioFile, const scenario::ParameterOverrides& overrides,
                                     const UncertaintyOptions& options);
 
 enum class TaskKind { Nominal, Plus, Minus, Sample, SobolA, SobolB, SobolAB };
@@ -96,4 +96,4 @@ TaskResult runTask(const UncertaintySetup& setup, size_t t);
 std::vector<TaskResult> runTasks(const UncertaintySetup& setup, const std::vector<size_t>& indices, int threads,
                                  const std::function<void(size_t)>& progress = {});
 
-}  // namespace motostab
+}  // namespace motostab::uncertainty

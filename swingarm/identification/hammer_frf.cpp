@@ -9,7 +9,10 @@
 #include "swingarm/identification/frf_diagnosis.h"
 #include "swingarm/identification/yaml_input.h"
 
-namespace motostab::identification {
+namespace motostab::swingarm::identification {
+
+using io::InputError;
+using io::formatNumber;
 namespace {
 
 using cd = std::complex<double>;
@@ -274,4 +277,4 @@ FrfResult identifyFrf(const FrfTest& test, const std::vector<modal::ImpactRecord
   return res;
 }
 
-}  // namespace motostab::identification
+}  // namespace motostab::swingarm::identification

@@ -7,7 +7,12 @@
 #include "swingarm/identification/hammer_frf.h"
 #include "swingarm/identification/yaml_input.h"
 
-namespace motostab::identification {
+namespace motostab::swingarm::identification {
+
+using io::CsvTable;
+using io::InputError;
+using io::YamlMap;
+using io::readCsv;
 
 namespace {
 
@@ -99,4 +104,4 @@ std::vector<modal::ImpactRecord> readHits(const FrfTest& test) {
   return out;
 }
 
-}  // namespace motostab::identification
+}  // namespace motostab::swingarm::identification

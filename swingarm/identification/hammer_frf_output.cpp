@@ -11,7 +11,12 @@
 #include "swingarm/identification/axes_plot.h"
 #include "swingarm/identification/hammer_frf.h"
 
-namespace motostab::identification {
+namespace motostab::swingarm::identification {
+
+using io::CsvWriter;
+using io::gnuplotQuote;
+using io::renderGnuplot;
+using io::writeFileAtomically;
 namespace {
 
 using cd = std::complex<double>;
@@ -201,4 +206,4 @@ void writeFrfOutputs(const FrfTest& test, const FrfResult& r, const std::filesys
   plotModalAxes(test, r, dir);
 }
 
-}  // namespace motostab::identification
+}  // namespace motostab::swingarm::identification

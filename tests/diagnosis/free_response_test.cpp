@@ -8,12 +8,20 @@
 #include <cmath>
 
 #include "diagnosis/prediction.h"
-#include "io/portable_random.h"
+#include "core/portable_random.h"
+#include "scenario/parameter_overrides.h"
 #include "tests/support/temp_dir.h"
 
 #include <fstream>
 
-namespace motostab {
+namespace motostab::diagnosis {
+
+using analysis::LinearModel;
+using core::PortableRandom;
+using io::InputError;
+using scenario::formatShortest;
+using test_support::makeTempDir;
+
 namespace {
 
 const std::string kBenchmark = std::string(MOTOSTAB_SOURCE_DIR) + "/scenarios/whipple-benchmark.yaml";
@@ -134,4 +142,4 @@ TEST(FreeResponse, SpeedTraceFileIsInterpolatedAtTheSamples) {
 }
 
 }  // namespace
-}  // namespace motostab
+}  // namespace motostab::diagnosis

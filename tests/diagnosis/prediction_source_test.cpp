@@ -10,13 +10,23 @@
 #include <sstream>
 
 #include "diagnosis/diagnosis.h"
-#include "diagnosis/diagnosis_output.h"
 #include "diagnosis/prediction.h"
-#include "io/portable_random.h"
-#include "scenario/yaml_map.h"
+#include "core/portable_random.h"
+#include "io/yaml_map.h"
+#include "output/diagnosis_output.h"
+#include "scenario/scenario_source.h"
 #include "tests/support/temp_dir.h"
 
-namespace motostab {
+namespace motostab::diagnosis {
+
+using core::PortableRandom;
+using io::getYamlFileOpenCount;
+using output::writeDiagnosisOutputs;
+using scenario::ParameterOverrides;
+using scenario::Scenario;
+using scenario::ScenarioSource;
+using test_support::makeTempDir;
+
 namespace {
 
 const std::string kDir = MOTOSTAB_SOURCE_DIR;
@@ -148,4 +158,4 @@ TEST(PredictionSource, AWeaveSplitIntoTwoRealRootsIsPredictedByTheirMean) {
 }
 
 }  // namespace
-}  // namespace motostab
+}  // namespace motostab::diagnosis

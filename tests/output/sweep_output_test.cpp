@@ -10,14 +10,27 @@
 #include <string>
 #include <vector>
 
-#include "io/portable_random.h"
+#include "core/portable_random.h"
 #include "nlohmann/json.hpp"
 #include "output/sweep_output.h"
 #include "scenario/scenario.h"
 #include "tests/support/temp_dir.h"
 #include "tests/support/text_csv.h"
 
-namespace motostab {
+namespace motostab::output {
+
+using analysis::LinearModel;
+using analysis::ModeBranch;
+using analysis::SweepResult;
+using analysis::TrimOptions;
+using analysis::calcTrim;
+using analysis::linearize;
+using analysis::trackModes;
+using core::PortableRandom;
+using scenario::Scenario;
+using scenario::loadScenario;
+using vehicle::VehicleModel;
+
 namespace {
 
 using cd = std::complex<double>;
@@ -216,4 +229,4 @@ TEST(SweepOutput, LinearModelFilesFollowTheReadme) {
 }
 
 }  // namespace
-}  // namespace motostab
+}  // namespace motostab::output

@@ -10,11 +10,19 @@
 #include <fstream>
 #include <functional>
 
-#include "io/portable_random.h"
-#include "scenario/yaml_map.h"
+#include "core/portable_random.h"
+#include "io/yaml_map.h"
 #include "tests/support/temp_dir.h"
 
-namespace motostab {
+namespace motostab::scenario {
+
+using core::PortableRandom;
+using io::InputError;
+using io::copyTree;
+using io::getYamlFileOpenCount;
+using io::loadYamlFile;
+using test_support::makeTempDir;
+
 namespace {
 
 const std::string kScenario = std::string(MOTOSTAB_SOURCE_DIR) + "/scenarios/whipple-benchmark.yaml";
@@ -183,4 +191,4 @@ TEST(ScenarioSource, ReadsTheFileOnce) {
 }
 
 }  // namespace
-}  // namespace motostab
+}  // namespace motostab::scenario

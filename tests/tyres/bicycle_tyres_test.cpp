@@ -16,7 +16,21 @@
 #include "analysis/sweep.h"
 #include "tyres/relaxation_linear.h"
 
-namespace motostab {
+namespace motostab::tyres {
+
+using analysis::LinearModel;
+using analysis::LinearizeOptions;
+using analysis::SweepOptions;
+using analysis::SweepResult;
+using analysis::TrimOptions;
+using analysis::calcTrim;
+using analysis::linearize;
+using analysis::runSweep;
+using io::InputError;
+using scenario::Scenario;
+using scenario::loadScenario;
+using vehicle::VehicleModel;
+
 namespace {
 
 const std::string kTyres = std::string(MOTOSTAB_SOURCE_DIR) + "/scenarios/whipple-benchmark-tyres.yaml";
@@ -132,4 +146,4 @@ TEST(BicycleTyres, BadPresetInputNamesFileLineColumnAndKey) {
 }
 
 }  // namespace
-}  // namespace motostab
+}  // namespace motostab::tyres

@@ -2,11 +2,16 @@
 // variant is built from holds the factor drawn here to the bit (as text, "0.707107" lost 2.8e-7).
 #include <gtest/gtest.h>
 
-#include "analysis/study.h"
-#include "io/portable_random.h"
+#include "core/portable_random.h"
 #include "scenario/scenario_source.h"
+#include "studies/study.h"
 
-namespace motostab {
+namespace motostab::studies {
+
+using core::PortableRandom;
+using scenario::Scenario;
+using scenario::ScenarioSource;
+
 namespace {
 
 const std::string kEnduro = std::string(MOTOSTAB_SOURCE_DIR) + "/scenarios/enduro.yaml";
@@ -30,4 +35,4 @@ TEST(StudyOverrides, ScaleFactorsKeepFullPrecision) {
 }
 
 }  // namespace
-}  // namespace motostab
+}  // namespace motostab::studies

@@ -1,13 +1,13 @@
-// PortableRandom (io/portable_random.h): the engine against the value the C++ standard fixes, and the
+// PortableRandom (core/portable_random.h): the engine against the value the C++ standard fixes, and the
 // uniform and normal transforms against their moments.
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <cstdint>
 
-#include "io/portable_random.h"
+#include "core/portable_random.h"
 
-namespace motostab {
+namespace motostab::core {
 namespace {
 
 // C++17 [rand.predef]: the 10000th consecutive output of a default-constructed mt19937_64 (seed 5489)
@@ -58,4 +58,4 @@ TEST(PortableRandom, UniformAndNormalMoments) {
 }
 
 }  // namespace
-}  // namespace motostab
+}  // namespace motostab::core

@@ -7,15 +7,15 @@
 #include "diagnosis/diagnosis.h"
 #include "nlohmann/json.hpp"
 
-namespace motostab {
+namespace motostab::output {
 
 /// The diagnosis.json document.
-nlohmann::json makeDiagnosisJson(const DiagnosisResult& result);
+nlohmann::json makeDiagnosisJson(const diagnosis::DiagnosisResult& result);
 /// report.md: the data; what the model gets wrong; candidates; the cause and what it cannot be told
 /// apart from; the extension; the gain.
-std::string makeDiagnosisReport(const DiagnosisResult& result);
+std::string makeDiagnosisReport(const diagnosis::DiagnosisResult& result);
 /// Writes every output into the existing folder `dir` (each file atomically; the CLI passes an
 /// OutputFolder, io/output_folder.h, so the folder is replaced as a whole); plots need gnuplot.
-void writeDiagnosisOutputs(const std::filesystem::path& dir, const DiagnosisResult& result);
+void writeDiagnosisOutputs(const std::filesystem::path& dir, const diagnosis::DiagnosisResult& result);
 
-}  // namespace motostab
+}  // namespace motostab::output

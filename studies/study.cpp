@@ -1,4 +1,4 @@
-#include "analysis/study.h"
+#include "studies/study.h"
 
 #include <cmath>
 #include <future>
@@ -6,7 +6,24 @@
 
 #include "scenario/scenario_source.h"
 
-namespace motostab {
+namespace motostab::studies {
+
+using analysis::LinearModel;
+using analysis::LinearizeOptions;
+using analysis::ModeBranch;
+using analysis::Slot;
+using analysis::SweepOptions;
+using analysis::SweepResult;
+using analysis::TrimResult;
+using analysis::findBestMatch;
+using analysis::linearize;
+using analysis::restoreTrim;
+using analysis::runSweep;
+using analysis::updTrim;
+using scenario::ParameterOverrides;
+using scenario::Scenario;
+using scenario::ScenarioSource;
+using vehicle::VehicleModel;
 
 const ModeBranch* findBranch(const SweepResult& sweep, const std::string& label) {
   for (const auto& b : sweep.branches)
@@ -99,4 +116,4 @@ StudyResult runStudy(const std::string& file, const StudyOptions& opt) {
   return out;
 }
 
-}  // namespace motostab
+}  // namespace motostab::studies

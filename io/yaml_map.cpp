@@ -1,4 +1,4 @@
-#include "scenario/yaml_map.h"
+#include "io/yaml_map.h"
 
 #include <filesystem>
 #include <map>
@@ -8,19 +8,19 @@
 
 // yaml-cpp 0.7 has no public setter of a node's mark: YAML::as_if is a friend of YAML::Node, and
 // this specialisation for a motostab type uses that to reach the node's mark (copyTree).
-namespace motostab {
+namespace motostab::io {
 struct NodeMarkSetter {};
-}  // namespace motostab
+}  // namespace motostab::io
 
 template <>
-struct YAML::as_if<motostab::NodeMarkSetter, void> {
+struct YAML::as_if<motostab::io::NodeMarkSetter, void> {
   static void set(YAML::Node& node, const YAML::Mark& mark) {
     node.EnsureNodeExists();
     node.m_pNode->set_mark(mark);
   }
 };
 
-namespace motostab {
+namespace motostab::io {
 namespace {
 
 void setNodeMark(YAML::Node& node, const YAML::Mark& mark) { YAML::as_if<NodeMarkSetter, void>::set(node, mark); }
@@ -406,4 +406,4 @@ YAML::Node copyTree(const YAML::Node& node) {
   return out;
 }
 
-}  // namespace motostab
+}  // namespace motostab::io

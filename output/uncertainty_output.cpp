@@ -1,4 +1,4 @@
-#include "uncertainty/uncertainty_output.h"
+#include "output/uncertainty_output.h"
 
 #include <algorithm>
 #include <cmath>
@@ -9,7 +9,23 @@
 #include "io/csv.h"
 #include "io/plot.h"
 
-namespace motostab {
+namespace motostab::output {
+
+using io::CsvWriter;
+using io::formatNumber;
+using io::gnuplotQuote;
+using io::renderGnuplot;
+using io::writeFileAtomically;
+using uncertainty::ModeQuantiles;
+using uncertainty::SamplingMethod;
+using uncertainty::TaskKind;
+using uncertainty::TaskResult;
+using uncertainty::UncertaintySetup;
+using uncertainty::UncertaintySummary;
+using uncertainty::UncertaintyTask;
+using uncertainty::getTask;
+
+using uncertainty::kUncertainModes;
 namespace {
 
 nlohmann::json number(double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr); }
@@ -272,4 +288,4 @@ void writeUncertaintyOutputs(const std::filesystem::path& dir, const std::string
   }
 }
 
-}  // namespace motostab
+}  // namespace motostab::output

@@ -6,13 +6,24 @@
 #include <cmath>
 #include <filesystem>
 
-#include "io/portable_random.h"
+#include "core/portable_random.h"
 #include "tests/uncertainty/test_support.h"
-#include "uncertainty/uncertainty_output.h"
+#include "output/uncertainty_output.h"
 #include "uncertainty/uncertainty_study.h"
 #include "uncertainty/uncertainty_summary.h"
 
-namespace motostab {
+namespace motostab::output {
+
+using core::PortableRandom;
+using uncertainty::TaskResult;
+using uncertainty::UncertaintyOptions;
+using uncertainty::UncertaintySetup;
+using uncertainty::UncertaintySummary;
+using uncertainty::getTaskCount;
+using uncertainty::prepareUncertainty;
+using uncertainty::runTasks;
+using uncertainty::summarizeUncertainty;
+
 namespace {
 
 namespace fs = std::filesystem;
@@ -79,4 +90,4 @@ TEST(UncertaintyOutput, FewSamplesLeaveOutTheEmptySensitivityCharts) {
 }
 
 }  // namespace
-}  // namespace motostab
+}  // namespace motostab::output

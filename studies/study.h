@@ -8,12 +8,12 @@
 #include "analysis/sweep.h"
 #include "scenario/parameter_overrides.h"
 
-namespace motostab {
+namespace motostab::studies {
 
 struct StudyVariant {
   std::string name;                    ///< rigid, bending, torsion, twist
-  ParameterOverrides overrides;        ///< scenario changes that select it
-  SweepResult sweep;
+  scenario::ParameterOverrides overrides;  ///< scenario changes that select it
+  analysis::SweepResult sweep;
 };
 
 /// One component of a mode shape: amplitude normalised to the largest component, phase relative to steer.
@@ -30,13 +30,13 @@ struct ModeShape {
 };
 
 struct StudyOptions {
-  SweepOptions sweep;
+  analysis::SweepOptions sweep;
   std::vector<std::string> variants{"rigid", "bending", "torsion", "twist"};
   double stiffnessScale = 0.5;             ///< the seed's "doubled compliances" (Fig. 11)
   double dampingScale = 1.0 / std::sqrt(2.0);  ///< keeps the damping ratio (seed eq. 18)
   std::string shapeVariant = "torsion";
   std::vector<double> shapeSpeeds{10.0, 18.5, 30.0};
-  ParameterOverrides overrides;            ///< applied to every variant first
+  scenario::ParameterOverrides overrides;  ///< applied to every variant first
   int threads = 2;
 };
 
@@ -51,9 +51,9 @@ struct StudyResult {
 StudyResult runStudy(const std::string& scenarioFile, const StudyOptions& options);
 
 /// The weave shape of `model` at `speed`, continuing the weave of `sweep` (seed Fig. 12).
-ModeShape calcWeaveShape(const VehicleModel& model, const SweepResult& sweep, double speed, const SweepOptions& options);
+ModeShape calcWeaveShape(const vehicle::VehicleModel& model, const analysis::SweepResult& sweep, double speed, const analysis::SweepOptions& options);
 
 /// The branch with `label` and a non-negative imaginary part at the last speed (nullptr if none).
-const ModeBranch* findBranch(const SweepResult& sweep, const std::string& label);
+const analysis::ModeBranch* findBranch(const analysis::SweepResult& sweep, const std::string& label);
 
-}  // namespace motostab
+}  // namespace motostab::studies

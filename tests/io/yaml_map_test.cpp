@@ -1,4 +1,4 @@
-// The one strict YAML layer (scenario/yaml_map.h): duplicate keys, finite numbers, the relative-path
+// The one strict YAML layer (io/yaml_map.h): duplicate keys, finite numbers, the relative-path
 // rule, and errors located by file:line:column and key path.
 #include <gtest/gtest.h>
 
@@ -8,9 +8,9 @@
 #include <filesystem>
 #include <fstream>
 
-#include "scenario/yaml_map.h"
+#include "io/yaml_map.h"
 
-namespace motostab {
+namespace motostab::io {
 namespace {
 namespace fs = std::filesystem;
 
@@ -112,4 +112,4 @@ TEST(YamlMap, OverrideValuesAreCheckedYaml) {
 }
 
 }  // namespace
-}  // namespace motostab
+}  // namespace motostab::io

@@ -1,4 +1,4 @@
-#include "diagnosis/diagnosis_output.h"
+#include "output/diagnosis_output.h"
 
 #include <algorithm>
 #include <cmath>
@@ -8,7 +8,21 @@
 #include "io/csv.h"
 #include "io/plot.h"
 
-namespace motostab {
+namespace motostab::output {
+
+using diagnosis::Cause;
+using diagnosis::ComponentResidual;
+using diagnosis::DiagnosisResult;
+using diagnosis::FitSummary;
+using diagnosis::MeasuredData;
+using diagnosis::ParameterEstimate;
+using diagnosis::makeScenarioTree;
+using io::CsvWriter;
+using io::formatNumber;
+using io::gnuplotQuote;
+using io::renderGnuplot;
+using io::writeFileAtomically;
+
 namespace {
 
 using nlohmann::json;
@@ -116,9 +130,9 @@ json makeDiagnosisJson(const DiagnosisResult& r) {
   return j;
 }
 
-}  // namespace motostab
+}  // namespace motostab::output
 
-namespace motostab {
+namespace motostab::output {
 namespace {
 
 std::string fmt(double v, int digits = 4) { return formatNumber(v, digits); }
@@ -352,4 +366,4 @@ void writeDiagnosisOutputs(const std::filesystem::path& dir, const DiagnosisResu
   writeResponsePlots(dir, r);
 }
 
-}  // namespace motostab
+}  // namespace motostab::output

@@ -14,7 +14,7 @@
 
 #include "io/input_error.h"
 
-namespace motostab {
+namespace motostab::io {
 
 /// A YAML mapping read strictly (Drake-style): a missing key, a wrong type, or a key that
 /// finish() finds unused is an InputError naming file:line:column and the dotted key path.
@@ -127,4 +127,4 @@ YAML::Node makeOverrideScalar(const std::string& text);
 /// How many times loadYamlFile has opened `file` in this process (as named; for tests that count reads).
 long getYamlFileOpenCount(const std::string& file);
 
-}  // namespace motostab
+}  // namespace motostab::io

@@ -1,8 +1,8 @@
-// The writers of a diagnosis (diagnosis/diagnosis_output.h) on a result made up here: diagnosis.json's
+// The writers of a diagnosis (output/diagnosis_output.h) on a result made up here: diagnosis.json's
 // pinned keys hold the values handed in, residuals.csv's normalised residuals are (measured -
 // predicted) / sigma computed here, and report.md has its sections, including the contradiction and
 // robustness ones only when there is something to say.
-#include "diagnosis/diagnosis_output.h"
+#include "output/diagnosis_output.h"
 
 #include <gtest/gtest.h>
 #include <unistd.h>
@@ -11,9 +11,19 @@
 #include <fstream>
 #include <sstream>
 
-#include "io/portable_random.h"
+#include "core/portable_random.h"
 
-namespace motostab {
+namespace motostab::output {
+
+using core::PortableRandom;
+using diagnosis::Cause;
+using diagnosis::DiagnosisResult;
+using diagnosis::FitSummary;
+using diagnosis::MeasuredData;
+using diagnosis::MeasuredEigenvalue;
+using diagnosis::ParameterEstimate;
+using diagnosis::RobustnessRun;
+
 namespace {
 
 namespace fs = std::filesystem;
@@ -156,4 +166,4 @@ TEST(DiagnosisOutput, FilesAreWrittenWithTheirResiduals) {
 }
 
 }  // namespace
-}  // namespace motostab
+}  // namespace motostab::output

@@ -3,7 +3,7 @@
 #include <cstddef>
 #include <functional>
 
-namespace motostab {
+namespace motostab::core {
 
 /// Runs task(w) for w in [0, workers) on `workers` new threads and joins every one of them before
 /// returning, also when one throws (no worker outlives the data it uses). The first exception in
@@ -17,4 +17,4 @@ void runWorkers(size_t workers, const std::function<void(size_t)>& task,
 /// (tasks of unequal cost balance); the calling thread alone when one suffices.
 void runParallel(size_t count, int threads, const std::function<void(size_t)>& f);
 
-}  // namespace motostab
+}  // namespace motostab::core

@@ -5,9 +5,9 @@
 #include <stdexcept>
 #include <thread>
 
-#include "analysis/parallel.h"
+#include "core/parallel.h"
 
-namespace motostab {
+namespace motostab::core {
 namespace {
 
 // A failing worker does not cut the others short: runWorkers joins them all before rethrowing, so
@@ -60,4 +60,4 @@ TEST(Parallel, RunParallelVisitsEveryIndexOnce) {
 }
 
 }  // namespace
-}  // namespace motostab
+}  // namespace motostab::core

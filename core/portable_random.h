@@ -9,7 +9,7 @@
 #include <cstdint>
 #include <random>
 
-namespace motostab {
+namespace motostab::core {
 
 class PortableRandom {
  public:
@@ -44,4 +44,4 @@ class PortableRandom {
   bool hasSpare_ = false;
 };
 
-}  // namespace motostab
+}  // namespace motostab::core

@@ -1,4 +1,4 @@
-#include "analysis/parallel.h"
+#include "core/parallel.h"
 
 #include <algorithm>
 #include <atomic>
@@ -7,7 +7,7 @@
 #include <thread>
 #include <vector>
 
-namespace motostab {
+namespace motostab::core {
 
 void runWorkers(size_t workers, const std::function<void(size_t)>& task, const std::function<void()>& onFirstFailure) {
   std::mutex lock;
@@ -53,4 +53,4 @@ void runParallel(size_t count, int threads, const std::function<void(size_t)>& f
   });
 }
 
-}  // namespace motostab
+}  // namespace motostab::core
