@@ -45,6 +45,8 @@ struct DiagnosisOptions {
   /// A candidate meeting every criterion whose change of the residuals correlates with the named
   /// cause's above this is listed with it as indistinguishable (swingarm bending vs twist).
   double maxPredictionCorrelation = 0.95;
+  /// When no single candidate qualifies, search pairs of the best singles (diagnosis/pair_search.h).
+  bool pairSearch = true;
   /// Rerun the stepwise search on each variant of the data (diagnosis/robustness.h).
   bool robustness = false;
 };
@@ -80,6 +82,9 @@ struct FitSummary {
   /// Moves a measured parameter by more than kContradictionSigmas sigma (diagnosis/priors.h).
   bool contradictsMeasurement = false;
   Eigen::VectorXd x;                          ///< internal coordinates
+  NoiseState noise;                           ///< the model's own noise estimate (diagnosis/model_fit.h)
+  int numNoiseParameters = 0;                 ///< AR coefficients of that noise (counted in numParameters)
+  std::vector<std::string> members;           ///< a pair's two candidates (diagnosis/pair_search.h); else empty
 };
 
 struct ComponentResidual {   ///< residuals of one mode (eigenvalues) or signal (responses)
@@ -105,12 +110,24 @@ struct NoiseLevel {
 };
 
 /// The causes the stepwise search names on one variant of the data (diagnosis/robustness.h).
+/// How a rerun's first cause compares with the full data's (diagnosis/robustness.h).
+enum class RobustnessVerdict {
+  Same,               ///< the same first cause, its values consistent within their intervals
+  LostPower,          ///< names nothing where the full data named a cause: less data, not a contradiction
+  Indistinguishable,  ///< names a candidate the full data listed as indistinguishable from its cause
+  OtherCause,         ///< names another cause (or one where the full data named none): fragile
+  ValueDiffers,       ///< the same cause with a value outside the intervals of the full data's: fragile
+  Failed              ///< the search failed on this variant: no verdict
+};
+
+/// The causes the stepwise search names on one variant of the data (diagnosis/robustness.h).
 struct RobustnessRun {
   std::string leftOut;
   std::vector<std::string> causes;          ///< names, in the order named
   std::vector<FitSummary> fits;             ///< their fits (estimates before the final refit)
-  bool sameCauses = false;                  ///< the same causes as on all the data
+  RobustnessVerdict verdict = RobustnessVerdict::Same;
   std::string error;                        ///< the search failed on this variant (then causes is empty)
+  bool isFragile() const { return verdict == RobustnessVerdict::OtherCause || verdict == RobustnessVerdict::ValueDiffers; }
 };
 
 struct DiagnosisResult {
@@ -120,11 +137,12 @@ struct DiagnosisResult {
   FitSummary baseline, extended;               ///< the base model and the model with every cause
   std::vector<FitSummary> candidates;          ///< first step's, best (lowest BIC) first
   std::vector<Cause> causes;
+  std::vector<FitSummary> pairs;               ///< the pair search's fits, when it ran (diagnosis/pair_search.h)
   /// Candidates that met every criterion but "fit, but contradict the measurement" and were not
   /// named (diagnosis/priors.h), with the step they were found at.
   std::vector<FitSummary> contradicting;
   std::vector<RobustnessRun> robustness;      ///< empty unless DiagnosisOptions::robustness
-  /// Some variant names other causes (or fails): the causes are fragile.
+  /// Some variant names another first cause, or the same with an inconsistent value (robustness.h).
   bool isFragile() const;
   std::vector<ComponentResidual> residualsBefore, residualsAfter;
   std::vector<NoiseLevel> noise;
@@ -135,6 +153,9 @@ struct DiagnosisResult {
   std::vector<double> observed;                ///< per observation
   std::vector<std::string> observationComponent;
   std::vector<double> predictedBefore, predictedAfter;  ///< per observation
+  /// Per observation: the normalised residual the likelihood sees (a response sample's prewhitened one
+  /// over the innovation sigma; diagnosis/residual_summary.h), before and after.
+  std::vector<double> whitenedBefore, whitenedAfter;
   std::vector<double> observationSpeed;               ///< m/s
   std::vector<double> observationTime;                ///< s (responses), NaN for eigenvalues
   std::vector<int> observationRow, observationPart;   ///< eigenvalue row (-1: response) and part (0 real, 1 imag)

@@ -55,6 +55,13 @@ Eigen::VectorXd ModelSpec::calcPriorResiduals(const Eigen::VectorXd& x) const {
   return Eigen::Map<Eigen::VectorXd>(r.data(), static_cast<int>(r.size()));
 }
 
+int FitProblem::countNoiseParameters() const {
+  int k = 0;
+  for (size_t c = 0; c < components.size(); ++c)
+    if (!componentKnown[c] && seriesLength[c] > 0) k += componentAr[c].getOrder();
+  return k;
+}
+
 FitProblem::FitProblem(const Predictor& predictor, const MeasuredData& data, int folds)
     : predictor_(predictor), data_(data) {
   addEigenvalueObservations();

@@ -85,6 +85,11 @@ class FitProblem {
   /// component its sigma (RSS / n times n / (n - k)).
   void updateNoise(const Eigen::VectorXd& e, int k);
   const MeasuredData& getData() const { return data_; }
+  NoiseState getNoise() const { return {componentSigma, componentAr}; }
+  void setNoise(const NoiseState& n) { componentSigma = n.sigma, componentAr = n.ar; }
+  /// AR coefficients estimated from the data (sum of the orders of the estimated series): parameters
+  /// of the noise model that BIC counts, since models may choose different orders.
+  int countNoiseParameters() const;
 
  private:
   void addEigenvalueObservations();
