@@ -53,11 +53,16 @@ void judgeCandidate(const FitProblem& problem, const std::vector<const Candidate
   if (!(fit.pValue < opt.maxPValue)) fit.failed.push_back("likelihood-ratio p >= 0.01");
   judgeParameters(c, fit, model.size() - df, opt);
   fit.contradictsMeasurement = contradictsMeasurement(fit.parameters);
-  if (fit.failed.empty() || alwaysCv) crossValidate(problem, model, baseline.noise, fit);
+  if (!fit.failed.empty() && !alwaysCv) return;
+  // Both scored with the candidate's own noise: one metric for the two (the baseline's noise has
+  // absorbed the misfit the candidate explains and would whiten it away).
+  crossValidate(problem, model, fit.noise, fit);
+  FitSummary base = baseline;
+  crossValidate(problem, makeModel(causes, nullptr), fit.noise, base);
   if (fit.hasCv) {
     fit.foldsBetter = 0;
     for (size_t f = 0; f < fit.foldRms.size(); ++f)  // a failed fold never counts as better
-      fit.foldsBetter += !fit.foldFailed[f] && fit.foldRms[f] < baseline.foldRms[f];
+      fit.foldsBetter += !fit.foldFailed[f] && fit.foldRms[f] < base.foldRms[f];
     if (fit.foldsBetter < opt.minFoldShare * problem.numFolds - 1e-9) fit.failed.push_back("CV better in < 80 % of folds");
   }
 }

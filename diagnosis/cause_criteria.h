@@ -17,7 +17,8 @@ namespace motostab {
 extern const char* const kAtBoundFailure;
 
 /// Fills fit.deltaBic, pValue, contradictsMeasurement, failed (and the CV scores when the cheap criteria
-/// pass or `alwaysCv`). `baseline`: the step's model without the candidate, cross-validated; `causes`:
+/// pass or `alwaysCv`; the candidate and the baseline cross-validated with the candidate's own noise).
+/// `baseline`: the step's model without the candidate; `causes`:
 /// the causes named so far; `c`: the candidate.
 void judgeCandidate(const FitProblem& problem, const std::vector<const Candidate*>& causes, const Candidate& c,
                     const FitSummary& baseline, FitSummary& fit, const DiagnosisOptions& opt, bool alwaysCv);

@@ -86,7 +86,8 @@ class FitProblem {
   void updateNoise(const Eigen::VectorXd& e, int k);
   const MeasuredData& getData() const { return data_; }
   NoiseState getNoise() const { return {componentSigma, componentAr}; }
-  void setNoise(const NoiseState& n) { componentSigma = n.sigma, componentAr = n.ar; }
+  /// Takes `n` (one entry per component: throws std::logic_error otherwise).
+  void setNoise(const NoiseState& n);
   /// AR coefficients estimated from the data (sum of the orders of the estimated series): parameters
   /// of the noise model that BIC counts, since models may choose different orders.
   int countNoiseParameters() const;

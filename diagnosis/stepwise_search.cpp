@@ -67,10 +67,10 @@ bool conflicts(const Candidate& a, const Candidate& b) {
 
 void runStepwiseSearch(const FitProblem& problem, SearchState& state, const DiagnosisOptions& opt, DiagnosisResult& result,
                        bool candidateTable) {
+  if (state.noise.sigma.empty()) state.noise = problem.getNoise();  // white, sigma 1: the first fit estimates it
   for (int s = 0; s < opt.maxCauses && !state.pool.empty(); ++s) {
     const std::string stage = "step " + std::to_string(s + 1);
     fitStep(problem, state, opt, stage);
-    crossValidate(problem, makeModel(state.causes, nullptr), state.baseline.noise, state.baseline, opt.threads);
     runParallel(state.fits.size(), opt.threads, [&](size_t i) {
       judgeCandidate(problem, state.causes, *state.pool[i], state.baseline, state.fits[i], opt, s == 0 && candidateTable);
     });

@@ -54,7 +54,7 @@ Made makeResult(PortableRandom& rng, bool withRobustness) {
   const double c = rng.drawUniform(0.1, 1);
   Cause cause{makeFit("steer_damper", "damping_Nms_per_rad", c, 0.01, -30), {}};
   cause.fit.parameters[0].hasProfile = true, cause.fit.parameters[0].profileLow = c - 0.02, cause.fit.parameters[0].profileHigh = c + 0.02;
-  cause.indistinguishable.push_back(makeFit("steer_friction", "equivalent_damping_Nms_per_rad", c, 0.01, -30));
+  cause.indistinguishable.push_back(makeFit("fork_compliance", "stiffness_Nm_per_rad", 1000 * c, 10, -30));
   r.causes.push_back(cause);
   r.candidates = {cause.fit};
   FitSummary contra = makeFit("parameter:geometry.trail_m", "value", 0.09, 0.001, -20);
@@ -93,7 +93,7 @@ TEST(DiagnosisOutput, JsonHoldsTheCausesNoiseContradictionsAndRobustness) {
   EXPECT_EQ(j["causes"][0]["name"], "steer_damper");
   EXPECT_DOUBLE_EQ(j["causes"][0]["parameters"]["damping_Nms_per_rad"]["value"].get<double>(), m.result.causes[0].fit.parameters[0].value);
   EXPECT_EQ(j["causes"][0]["parameters"]["damping_Nms_per_rad"]["profile_interval_95"].size(), 2u);
-  EXPECT_EQ(j["causes"][0]["indistinguishable"][0]["name"], "steer_friction");
+  EXPECT_EQ(j["causes"][0]["indistinguishable"][0]["name"], "fork_compliance");
   EXPECT_EQ(j["contradicts_measurement"][0]["name"], "parameter:geometry.trail_m");
   EXPECT_DOUBLE_EQ(j["contradicts_measurement"][0]["parameters"]["value"]["change_in_sigmas"].get<double>(), 20);
   EXPECT_DOUBLE_EQ(j["noise"]["weave.imag"]["ar"][0].get<double>(), 0.9);
@@ -117,7 +117,7 @@ TEST(DiagnosisOutput, ReportHasItsSections) {
                               "## Fits, but contradicts the measurement", "## Robustness", "## The extension", "## The gain"})
     EXPECT_NE(report.find(section), std::string::npos) << section;
   EXPECT_NE(report.find("**Fragile**"), std::string::npos);
-  EXPECT_NE(report.find("steer_friction"), std::string::npos);  // the indistinguishable look-alike is named
+  EXPECT_NE(report.find("fork_compliance"), std::string::npos);  // the indistinguishable look-alike is named
   EXPECT_NE(report.find("20 sigma"), std::string::npos);
   m.result.robustness.clear();
   m.result.contradicting.clear();

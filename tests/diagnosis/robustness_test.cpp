@@ -67,7 +67,7 @@ TEST(Robustness, VerdictsFollowTheFirstCauseAndItsInterval) {
   PortableRandom rng(4242);
   for (int trial = 0; trial < 20; ++trial) {
     const double v = rng.drawUniform(0.1, 1), se = rng.drawUniform(0.01, 0.05);
-    Cause full{makeFit("steer_damper", v, se, true), {makeFit("steer_friction", v, se, false)}};
+    Cause full{makeFit("steer_damper", v, se, true), {makeFit("fork_compliance", v, se, false)}};
     const std::vector<Cause> causes{full};
     // The same cause within the interval (the variant's own interval overlapping): same.
     RobustnessRun same = makeRun({makeFit("steer_damper", v + rng.drawUniform(-3, 3) * se, se, false)});
@@ -83,7 +83,7 @@ TEST(Robustness, VerdictsFollowTheFirstCauseAndItsInterval) {
     EXPECT_EQ(none.verdict, RobustnessVerdict::LostPower);
     EXPECT_FALSE(none.isFragile());
     // The look-alike the full data listed: not fragile.
-    RobustnessRun alike = makeRun({makeFit("steer_friction", v, se, false)});
+    RobustnessRun alike = makeRun({makeFit("fork_compliance", v, se, false)});
     alike.verdict = judgeRobustness(causes, alike);
     EXPECT_EQ(alike.verdict, RobustnessVerdict::Indistinguishable);
     EXPECT_FALSE(alike.isFragile());
