@@ -20,11 +20,12 @@ std::vector<CandidateParameter> renameParameters(const Candidate& c) {
   return out;
 }
 
-// The singles to pair: the kPairPool largest deviance gains over the baseline.
-std::vector<int> choosePairPool(const FitSummary& baseline, const std::vector<FitSummary>& fits) {
+// The singles to pair: the kPairPool largest deviance gains over the baseline, whatever their sign (a
+// member whose effect the other cancels may gain nothing alone).
+std::vector<int> choosePairPool(const std::vector<FitSummary>& fits) {
   std::vector<int> order;
   for (size_t i = 0; i < fits.size(); ++i)
-    if (std::isfinite(fits[i].deviance) && fits[i].deviance < baseline.deviance) order.push_back(static_cast<int>(i));
+    if (std::isfinite(fits[i].deviance)) order.push_back(static_cast<int>(i));
   std::sort(order.begin(), order.end(), [&](int a, int b) { return fits[a].deviance < fits[b].deviance; });
   if (order.size() > static_cast<size_t>(kPairPool)) order.resize(kPairPool);
   return order;
@@ -54,7 +55,7 @@ PairSearch searchPairs(const FitProblem& problem, const std::vector<const Candid
                        const std::vector<const Candidate*>& pool, const FitSummary& baseline,
                        const std::vector<FitSummary>& fits, const DiagnosisOptions& opt) {
   PairSearch out;
-  const std::vector<int> top = choosePairPool(baseline, fits);
+  const std::vector<int> top = choosePairPool(fits);
   std::vector<std::pair<int, int>> members;
   for (size_t i = 0; i < top.size(); ++i)
     for (size_t j = i + 1; j < top.size(); ++j)
@@ -69,6 +70,9 @@ PairSearch searchPairs(const FitProblem& problem, const std::vector<const Candid
     const int na = static_cast<int>(pool[a]->parameters.size()), nb = static_cast<int>(pool[b]->parameters.size());
     Eigen::VectorXd x0(numCauses + na + nb);  // the causes' and both members' single estimates
     x0 << fits[a].x, fits[b].x.tail(nb);
+    for (auto [m, from] : {std::pair<int, int>{a, numCauses}, {b, numCauses + na}})
+      if (fits[m].atBound)  // no gradient at "off at infinity": from the candidate's own start instead
+        x0.segment(from, pool[m]->parameters.size()) = makeModel({}, pool[m]).getStart();
     FitSummary& f = out.fits[k];
     f = fitOrFail(problem, makeModel(causes, &out.candidates[k]), x0, out.candidates[k].name, baseline.noise);
     f.members = {pool[a]->name, pool[b]->name};

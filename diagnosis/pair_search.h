@@ -2,9 +2,11 @@
 // Pairs of candidates for effects that partly cancel (a compliant fork and a longer trail: each alone
 // moves the weave one way, together they fit), searched when no single candidate qualifies as a cause.
 // Bounded: the kPairPool single candidates with the largest deviance gain over the step's baseline
-// (finite fits with a positive gain) are paired with each other (at most kPairPool (kPairPool - 1) / 2 =
-// 15 pairs; pairs that conflict, the same switch or parameter, are skipped). Each pair is fitted as one
-// model from its members' single estimates and judged by cause_criteria.h's criteria against the
+// (finite fits, whatever the sign of their gain) are paired with each other (at most kPairPool (kPairPool - 1) / 2 =
+// 15 pairs; pairs that conflict, the same switch or parameter, are skipped). A member that gains
+// nothing alone can still be found when the pool is not full; one ranked below kPairPool by its single
+// gain is not (a greedy bound). Each pair is fitted as one model from its members' single estimates (a
+// member held at a bound alone starts from its candidate's start) and judged by cause_criteria.h's criteria against the
 // baseline (the likelihood ratio with as many degrees of freedom as both members' parameters, no
 // mixture); in addition each member must be needed: the pair's BIC below each member's single BIC and
 // its likelihood ratio against each member alone significant (p < maxPValue with the other member's

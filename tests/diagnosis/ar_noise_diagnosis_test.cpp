@@ -60,8 +60,8 @@ TEST(ArNoiseDiagnosis, NullRunsNameNothingAndReportANoiseSizedDeltaBic) {
 
 // A hidden steer damper (drawn per seed): named, and its 95 % profile interval covers the truth, in at
 // least 17 of 20 seeds, a seed where it is not named counting as not covered (P(at most 16 of 20 |
-// coverage 0.95) = 0.016). With two runs the cross-validation has two folds, and the damper must
-// predict both held-out runs better: at 400 samples that misses now and then (seeds print why).
+// coverage 0.95) = 0.016); named in at least 19 (20 of 20 when written, all 20 intervals covering).
+// Each run's AR estimate is printed: Burg's on fit residuals runs a little low near rho = 0.98.
 TEST(ArNoiseDiagnosis, HiddenDamperIsNamedAndItsIntervalCoversTheTruth) {
   PortableRandom rng(2511);
   int named = 0, covered = 0;
@@ -75,7 +75,7 @@ TEST(ArNoiseDiagnosis, HiddenDamperIsNamedAndItsIntervalCoversTheTruth) {
       for (const auto& f : r.candidates)
         if (f.name == "steer_damper")
           for (const auto& w : f.failed) why += w + "; ";
-      std::printf("seed %d rho %.3f: not named: %s\n", seed, rho, why.c_str());
+      ADD_FAILURE() << "seed " << seed << " rho " << rho << ": not named: " << why;
       continue;
     }
     ++named;
@@ -88,7 +88,7 @@ TEST(ArNoiseDiagnosis, HiddenDamperIsNamedAndItsIntervalCoversTheTruth) {
       std::printf("seed %d rho %.3f: %g not in [%g, %g]\n", seed, rho, c, e.profileLow, e.profileHigh);
   }
   std::printf("named %d of 20, interval covers the truth in %d of 20\n", named, covered);
-  EXPECT_GE(named, 17);
+  EXPECT_GE(named, 19);
   EXPECT_GE(covered, 17);
 }
 

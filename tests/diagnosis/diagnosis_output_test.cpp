@@ -93,7 +93,9 @@ TEST(DiagnosisOutput, JsonHoldsTheCausesNoiseContradictionsAndRobustness) {
   EXPECT_EQ(j["causes"][0]["name"], "steer_damper");
   EXPECT_DOUBLE_EQ(j["causes"][0]["parameters"]["damping_Nms_per_rad"]["value"].get<double>(), m.result.causes[0].fit.parameters[0].value);
   EXPECT_EQ(j["causes"][0]["parameters"]["damping_Nms_per_rad"]["profile_interval_95"].size(), 2u);
-  EXPECT_EQ(j["causes"][0]["indistinguishable"][0]["name"], "fork_compliance");
+  EXPECT_EQ(j["causes"][0]["indistinguishable"][0]["name"], "fork_compliance");  // named with its value
+  EXPECT_DOUBLE_EQ(j["causes"][0]["indistinguishable"][0]["parameters"]["stiffness_Nm_per_rad"]["value"].get<double>(),
+                   m.result.causes[0].indistinguishable[0].parameters[0].value);
   EXPECT_EQ(j["contradicts_measurement"][0]["name"], "parameter:geometry.trail_m");
   EXPECT_DOUBLE_EQ(j["contradicts_measurement"][0]["parameters"]["value"]["change_in_sigmas"].get<double>(), 20);
   EXPECT_DOUBLE_EQ(j["noise"]["weave.imag"]["ar"][0].get<double>(), 0.9);

@@ -127,7 +127,7 @@ TEST(Priors, FortySigmaWheelbaseErrorIsNotHidden) {
 // contradiction would name the inertia.
 TEST(Priors, HiddenDamperIsNotReplacedByAFiveSigmaInertiaChange) {
   PortableRandom rng(5050);
-  const double c = rng.drawUniform(0.08, 0.12), sigma = rng.drawUniform(0.07, 0.09);
+  const double c = rng.drawUniform(0.06, 0.08), sigma = rng.drawUniform(0.15, 0.18);
   const double izz = 2.8 + 5 * sigma;  // Meijaard et al. 2007 Table 1: I_Bzz = 2.8 kg m^2
   const fs::path dir = testing::makeHiddenDir("damper-scenario");
   testing::HiddenEffect h;
