@@ -5,19 +5,17 @@
 // Residuals r = (measured - predicted) / sigma: per eigenvalue row its real part and, for a complex
 // pair, its imaginary part; per response signal each sample. sigma is the row's stderr or the
 // signal's noise_std when given, else one per component (mode.real, mode.imag, run.column) estimated
-// at each step from the best candidate's fit (RSS / (n - k)), not the baseline's. chi2 = sum r^2 plus
-// the priors (Student-t, diagnosis/priors.h) of fitted scenario parameters; response signals whose
-// noise is estimated are prewhitened by their AR(p) noise (diagnosis/noise_model.h). Models are compared by their
-// deviance -2 ln L, in which the noise of each unestimated component is profiled out for that model
-// (n_c ln(RSS_c / n_c)): a candidate is never judged with the noise fitted to another model's
-// residuals, which with a few rows per component lets a flexible model trade misfit between
-// components. BIC = deviance + k ln n (Schwarz 1978), k = fitted parameters including the responses' initial
-// states, offsets and free gains. Likelihood ratio: deviance_base - deviance_cand against chi-square with as
-// many degrees of freedom as the candidate adds, halved (the 50:50 mixture of chi2_0 and chi2_1, Self
-// & Liang 1987) when "effect off" sits at a bound. Cross-validation: the measurement units
+// for each model from its own residuals, response signals as AR(p) noise that prewhitens them
+// (diagnosis/noise_model.h), fit and noise alternating (diagnosis/model_fit.h). chi2 = sum r^2 plus the
+// priors (Student-t, diagnosis/priors.h) of fitted scenario parameters. Models are compared by their
+// deviance -2 ln L with each unestimated component's noise profiled out (n_c ln(RSS_c / n_c)), each
+// at its own maximised likelihood. BIC = deviance + k ln n (Schwarz 1978), k = fitted parameters
+// including the responses' initial states, offsets, free gains and AR coefficients. Likelihood ratio,
+// criteria and look-alikes: diagnosis/cause_criteria.h; the search: diagnosis/stepwise_search.h and
+// diagnosis/pair_search.h; robustness: diagnosis/robustness.h. Cross-validation: the measurement units
 // (eigenvalue rows and response runs) sorted by speed and cut into K blocks; each block is predicted
 // from a fit to the others (every parameter refitted; a run's initial state, offsets and gains are
-// fitted on the run itself), for every candidate of the first step.
+// fitted on the run itself).
 #include <functional>
 #include <string>
 #include <vector>
@@ -45,6 +43,9 @@ struct DiagnosisOptions {
   /// A candidate meeting every criterion whose change of the residuals correlates with the named
   /// cause's above this is listed with it as indistinguishable (swingarm bending vs twist).
   double maxPredictionCorrelation = 0.95;
+  /// Cross-validate every first-step candidate for the report's table, also those failing a cheaper
+  /// criterion (false: only those meeting the others, as in later steps; the causes do not change).
+  bool candidateTableCv = true;
   /// When no single candidate qualifies, search pairs of the best singles (diagnosis/pair_search.h).
   bool pairSearch = true;
   /// Rerun the stepwise search on each variant of the data (diagnosis/robustness.h).

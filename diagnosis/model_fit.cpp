@@ -161,12 +161,13 @@ void crossValidate(const FitProblem& problem, const ModelSpec& model, const Nois
   const FitProblem scored = withNoise(problem, noise);
   std::vector<int> foldOf;
   for (const auto& o : scored.observations) foldOf.push_back(o.fold);
+  // A model without parameters predicts every fold as the full fit does: one prediction for all.
+  const Eigen::VectorXd full = scored.calcResiduals(scored.predict(model, s.x));
   const auto fitFold = [&](int f) {
-    const Eigen::VectorXd x = model.size() ? fitModel(scored, model, s.x, f, 6, -1, false).x : s.x;
-    return Eigen::VectorXd(scored.calcResiduals(scored.predict(model, x)));
+    if (model.size() == 0) return full;
+    return Eigen::VectorXd(scored.calcResiduals(scored.predict(model, fitModel(scored, model, s.x, f, 6, -1, false).x)));
   };
-  const FoldScores scores =
-      scoreFolds(scored.numFolds, foldOf, fitFold, scored.calcResiduals(scored.predict(model, s.x)), 100, threads);
+  const FoldScores scores = scoreFolds(scored.numFolds, foldOf, fitFold, full, 100, threads);
   s.foldRms = scores.rms;
   s.foldFailed = scores.failed;
   s.foldFailures.clear();

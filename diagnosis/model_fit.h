@@ -22,8 +22,11 @@
 
 namespace motostab {
 
-constexpr int kMaxNoiseIterations = 5;    ///< fits per model at most, each after a noise update
-constexpr double kNoiseTolerance = 0.01;  ///< NoiseState::calcChange below which the noise has converged
+constexpr int kMaxNoiseIterations = 4;    ///< fits per model at most, each after a noise update
+/// NoiseState::calcChange below which the noise has converged. The deviance profiles each estimated
+/// sigma out and is evaluated with the final noise, so a remaining change of the weights moves it only
+/// to second order.
+constexpr double kNoiseTolerance = 0.03;
 /// Fits stop when chi2 falls by less than this fraction of itself: a chi2 within about 1e-6 chi2 of
 /// its minimum (5e-4 for 500 observations) leaves a parameter within 0.03 standard errors of it.
 constexpr double kFitTolerance = 1e-6;

@@ -72,7 +72,7 @@ void runStepwiseSearch(const FitProblem& problem, SearchState& state, const Diag
     const std::string stage = "step " + std::to_string(s + 1);
     fitStep(problem, state, opt, stage);
     runParallel(state.fits.size(), opt.threads, [&](size_t i) {
-      judgeCandidate(problem, state.causes, *state.pool[i], state.baseline, state.fits[i], opt, s == 0 && candidateTable);
+      judgeCandidate(problem, state.causes, *state.pool[i], state.baseline, state.fits[i], opt, s == 0 && candidateTable && opt.candidateTableCv);
     });
     if (s == 0) {
       result.candidates = state.fits;
