@@ -68,6 +68,8 @@ void fitFinalModels(const FitProblem& problem, const SearchState& state, Diagnos
   const ModelSpec none, extended = makeModel(state.causes, nullptr);
   result.extended = fitFull(problem, extended, state.xCauses, "extended", &state.noise);
   result.baseline = fitFull(problem, none, Eigen::VectorXd(), "baseline", &result.extended.noise);
+  result.baseline.rms = calcRms(problem, none, result.baseline.x, result.extended.noise);  // one metric
+  result.extended.rms = calcRms(problem, extended, result.extended.x, result.extended.noise);
   crossValidate(problem, none, result.extended.noise, result.baseline);
   crossValidate(problem, extended, result.extended.noise, result.extended, threads);
   calcProfiles(withNoise(problem, result.extended.noise), extended, result.extended);

@@ -70,6 +70,8 @@ struct FitSummary {
   std::vector<ParameterEstimate> parameters;  ///< the candidate's own
   std::vector<ParameterEstimate> allParameters;  ///< causes' and candidate's
   Eigen::MatrixXd correlation;                ///< of all fitted parameters
+  /// rms: of the normalised data residuals, in the step baseline's noise (candidates) or the extended
+  /// model's (baseline and extended of the result), so that RMS values compared share one noise.
   double chi2 = 0, rms = 0, cvRms = 0, bic = 0, deltaBic = 0, pValue = 1;
   double deviance = 0;                        ///< -2 ln L, unknown noise profiled out (FitProblem::calcDeviance)
   std::vector<double> foldRms;                ///< per fold

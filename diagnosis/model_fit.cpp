@@ -177,6 +177,11 @@ void crossValidate(const FitProblem& problem, const ModelSpec& model, const Nois
   s.hasCv = true;
 }
 
+double calcRms(const FitProblem& problem, const ModelSpec& model, const Eigen::VectorXd& x, const NoiseState& noise) {
+  const FitProblem p = withNoise(problem, noise);
+  return std::sqrt(p.calcResiduals(p.predict(model, x)).squaredNorm() / static_cast<double>(p.observations.size()));
+}
+
 FitProblem withNoise(const FitProblem& problem, const NoiseState& noise) {
   FitProblem p = problem;
   p.setNoise(noise);

@@ -59,6 +59,10 @@ FitSummary fitOrFail(const FitProblem& problem, const ModelSpec& model, const Ei
 void crossValidate(const FitProblem& problem, const ModelSpec& model, const NoiseState& noise, FitSummary& s,
                    int threads = 1);
 
+/// RMS of the normalised (whitened) data residuals of `model` at x with `noise`: models compared by RMS
+/// must share one noise (each model's own sigma makes its own RMS about 1).
+double calcRms(const FitProblem& problem, const ModelSpec& model, const Eigen::VectorXd& x, const NoiseState& noise);
+
 /// A copy of `problem` carrying `noise`.
 FitProblem withNoise(const FitProblem& problem, const NoiseState& noise);
 

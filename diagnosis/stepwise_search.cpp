@@ -32,6 +32,8 @@ void fitStep(const FitProblem& problem, SearchState& state, const DiagnosisOptio
     const Candidate& c = *state.pool[i];
     const Eigen::VectorXd x0 = joinStart(state.baseline.x, c);
     state.fits[i] = fitOrFail(problem, makeModel(state.causes, &c), x0, c.name, state.baseline.noise);
+    if (std::isfinite(state.fits[i].chi2))  // the table's RMS in the baseline's noise: one metric for all
+      state.fits[i].rms = calcRms(problem, makeModel(state.causes, &c), state.fits[i].x, state.baseline.noise);
     std::lock_guard<std::mutex> lock(progressMutex);
     if (opt.progress) opt.progress(stage, ++done, static_cast<int>(state.pool.size()));
   });
