@@ -143,8 +143,9 @@ std::string makeDataSection(const DiagnosisResult& r) {
   const MeasuredData& d = *r.data;
   o << "## The data\n\n`" << d.file << "` (" << d.name << "): " << d.eigenvalues.size() << " eigenvalue rows, "
     << d.responses.size() << " response runs; " << r.numObservations << " scalar observations, " << r.numFolds
-    << " cross-validation folds.\n\nNoise (sigma per component; estimated ones from the best fit's residuals; a response "
-    << "signal's residuals as AR(p) noise, sigma its innovations', prewhitened in every fit):\n\n"
+    << " cross-validation folds.\n\nNoise (sigma per component; estimated ones are the extended model's, each "
+    << "model being scored with its own estimate; a response signal's residuals as AR(p) noise, sigma its "
+    << "innovations', prewhitened in every fit; the RMS values below are of the whitened residuals):\n\n"
     << "| component | sigma | source | AR coefficients | marginal sigma |\n|---|---|---|---|---|\n";
   for (const auto& n : r.noise) {
     std::string ar;
