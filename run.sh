@@ -1,11 +1,17 @@
 #!/usr/bin/env bash
 # Installs what is missing, builds the `motostab` program only (./test.sh builds the tests, benchmarks
 # and example plugins), and runs `motostab ARGS...`.
-# With no arguments it runs the main job: a stability sweep of the Whipple benchmark bicycle.
+# With no arguments it runs the main job: the swingarm study of Taraborrelli, Favaron and Doria ("The
+# effect of swingarm stiffness on motorcycle stability") on the supersport motorcycle: weave and wobble
+# with a rigid, bending, torsion and twist-compliant swingarm, at identified and halved stiffness, and
+# each finding of the paper's section 4 checked in ./supersport-study/report.md.
+# The Whipple benchmark sweep (Meijaard et al. 2007) is `./run.sh sweep scenarios/whipple-benchmark.yaml`.
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
 "$root/scripts/build.sh" motostab
 if [ $# -eq 0 ]; then
-  set -- sweep "$root/scenarios/whipple-benchmark.yaml"
+  "$root/build/apps/motostab" study "$root/scenarios/supersport.yaml" --out supersport-study
+  echo "Next: the Whipple benchmark bicycle's stability sweep, ./run.sh sweep scenarios/whipple-benchmark.yaml"
+  exit 0
 fi
 exec "$root/build/apps/motostab" "$@"

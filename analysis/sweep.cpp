@@ -328,4 +328,44 @@ void updateCriticalSpeeds(const VehicleModel& model, const SweepOptions& opt, Sw
   findCriticalSpeeds(model, opt, fixed, sweep, replicas);
 }
 
+namespace {
+
+bool isStableAt(const SweepResult& sweep, size_t k) {
+  for (const auto& b : sweep.branches)
+    if (b.label != "neutral" && !(b.eigenvalue[k].real() < 0)) return false;
+  return true;
+}
+
+// The critical speeds between two neighbouring grid speeds lo < hi (m/s), lo and hi excluded.
+std::vector<double> findCriticalSpeedsBetween(const SweepResult& sweep, double lo, double hi) {
+  std::vector<double> out;
+  for (const auto& c : sweep.criticalSpeeds)
+    if (c.speed > lo && c.speed < hi) out.push_back(c.speed);
+  return out;
+}
+
+}  // namespace
+
+std::vector<StableRange> calcStableSpeedRanges(const SweepResult& sweep) {
+  std::vector<StableRange> ranges;
+  const size_t n = sweep.speeds.size();
+  for (size_t i = 0; i < n; ++i) {
+    if (!isStableAt(sweep, i)) continue;
+    size_t j = i;
+    while (j + 1 < n && isStableAt(sweep, j + 1)) ++j;
+    StableRange r{sweep.speeds[i], sweep.speeds[j]};
+    if (i > 0) {
+      const auto below = findCriticalSpeedsBetween(sweep, sweep.speeds[i - 1], sweep.speeds[i]);
+      if (!below.empty()) r.start = *std::max_element(below.begin(), below.end());
+    }
+    if (j + 1 < n) {
+      const auto above = findCriticalSpeedsBetween(sweep, sweep.speeds[j], sweep.speeds[j + 1]);
+      if (!above.empty()) r.stop = *std::min_element(above.begin(), above.end());
+    }
+    ranges.push_back(r);
+    i = j;
+  }
+  return ranges;
+}
+
 }  // namespace motostab

@@ -70,6 +70,19 @@ SweepResult runSweep(const VehicleModel& model, const SweepOptions& options);
 /// `options` as the sweep was run with.
 void updateCriticalSpeeds(const VehicleModel& model, const SweepOptions& options, SweepResult& sweep);
 
+/// A stable speed range, m/s (closed).
+struct StableRange {
+  double start = 0, stop = 0;
+};
+
+/// The speed ranges where the vehicle is stable: every branch but the neutral ones has a negative
+/// real part (Meijaard et al. 2007, sec. 6: the weave-to-capsize range of the benchmark bicycle).
+/// Each run of stable grid speeds is widened to the critical speeds that bound it (the nearest one in
+/// the grid interval on either side; none there, e.g. a sweep end or a sign change of an unlabelled
+/// branch: the run's own end speed). A range narrower than the grid step that holds no grid speed is
+/// not found. Empty when no grid speed is stable.
+std::vector<StableRange> calcStableSpeedRanges(const SweepResult& sweep);
+
 /// Real part of the eigenvalue continuing `branch` from sweep speed index k, at speed v (1/s).
 double calcBranchRealPart(const VehicleModel& model, const SweepResult& sweep, const ModeBranch& branch, size_t k,
                           double v, const SweepOptions& options);

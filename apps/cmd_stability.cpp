@@ -1,4 +1,4 @@
-// motostab sweep | linearize: scenario -> model -> trim -> linearise -> modes -> outputs.
+// motostab sweep | linearize | study: scenario -> model -> trim -> linearise -> modes -> outputs.
 #include <cmath>
 #include <iostream>
 
@@ -22,9 +22,8 @@ void checkTurnSpeeds(double slowest, const std::string& key) {
                    "steady turns (--roll-deg) need speeds above 0 m/s: start the speed grid above 0, e.g. --speeds 1:40:1");
 }
 
-}  // namespace
-
-void registerStabilityCommands(CLI::App& app) {
+// motostab sweep: eigenvalues over speed, or a speed x roll map of steady turns.
+void registerSweepCommand(CLI::App& app) {
   struct SweepArgs {
     std::string scenario, speeds, out, roll;
     std::vector<std::string> overrides;
@@ -80,7 +79,10 @@ void registerStabilityCommands(CLI::App& app) {
               << formatSweepTable(result) << "Wrote " << out << "/{eigenvalues.csv, summary.json, root_locus.{png,svg,gp}, "
               << "real_part_vs_speed.{png,svg,gp}}\n";
   });
+}
 
+// motostab linearize: A, B and the eigenvectors at one speed.
+void registerLinearizeCommand(CLI::App& app) {
   struct LinArgs {
     std::string scenario, out;
     double speed = 0, rollDeg = NAN;
@@ -107,13 +109,18 @@ void registerStabilityCommands(CLI::App& app) {
     }
     const TrimResult trim = calcTrim(model, linArgs->speed, trimOptions);
     const LinearModel lm = linearize(model, trim);
-    writeLinearModel(folder.getPath(), lm);
+    std::vector<std::string> modes;  // each eigenvalue's mode, from its content at this one speed
+    for (const ModeBranch& b : trackModes({lm}, scenario.geometry.wheelbase)) modes.push_back(b.label);
+    writeLinearModel(folder.getPath(), lm, modes);
     folder.commit();
     std::cout << "Trim at " << linArgs->speed << " m/s: residual " << trim.residualNorm << " after " << trim.iterations
               << " iterations; " << lm.states.size() << " states. Wrote " << linArgs->out
               << "/{A.csv, B.csv, eigenvalues.csv, eigenvectors.csv, linear_model.json}\n";
   });
+}
 
+// motostab study: the seed paper's swingarm study.
+void registerStudyCommand(CLI::App& app) {
   struct StudyArgs {
     std::string scenario, speeds, out;
     std::vector<std::string> overrides;
@@ -166,6 +173,14 @@ void registerStabilityCommands(CLI::App& app) {
     std::cout << makeStudyReport(result, opt) << "\nWrote " << out
               << "/{report.md, study_modes.csv, weave_shapes.csv, fig09..fig12 (.gp/.png/.svg), nominal/, halved/}\n";
   });
+}
+
+}  // namespace
+
+void registerStabilityCommands(CLI::App& app) {
+  registerSweepCommand(app);
+  registerLinearizeCommand(app);
+  registerStudyCommand(app);
 }
 
 }  // namespace motostab::cli

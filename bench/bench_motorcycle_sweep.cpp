@@ -32,7 +32,7 @@ void BM_EnduroTwistSweep401(benchmark::State& st) {
   size_t states = 0;
   std::vector<double> realize, ratio;
   for (auto _ : st) {
-    // The yardstick, (2n+1) realizations to Acceleration per speed, timed just before each
+    // The yardstick, (2n+1) realizations to Acceleration per speed, timed just before each
     // sweep (the VM's speed drifts): ratio = sweep / yardstick, median over the iterations.
     st.PauseTiming();
     realize.push_back(motostab::bench::calcRealizeSeconds(model, trimmed, 3000));

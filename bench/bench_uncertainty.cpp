@@ -1,5 +1,5 @@
 // Speed figures: uncertainty studies (motostab uncertainty). Each study runs on 2 threads
-// (the "2 cores"); counters give the CPU time and the ratio of wall time to the sum of the
+// (a 2-core machine); counters give the CPU time and the ratio of wall time to the sum of the
 // serial sweeps' yardstick (one nominal sweep timed just before, times the sweeps, divided by 2).
 // The MPI case times `mpirun -n 1` and `-n 2` of the motostab binary, alternated, and reports the
 // speed-up as the median ratio.

@@ -5,6 +5,7 @@
 #include <limits>
 #include <map>
 #include <sstream>
+#include <stdexcept>
 
 #include "io/atomic_file.h"
 #include "io/csv.h"
@@ -22,8 +23,10 @@ double calcDampingRatio(std::complex<double> l) {
 namespace {
 
 const char* kPlottedModes[] = {"weave", "capsize", "castor", "wobble"};
+// Line colours of the plotted modes, in the order above.
+const char* kModeColours[] = {"#1f5fbf", "#c0392b", "#2e8b3e", "#8e44ad"};
 
-// Plots each labelled mode present in the sweep from eigenvalues.csv.
+// Plots each labelled mode present in the sweep from eigenvalues.csv as points.
 std::string plotModes(const SweepResult& sweep, const std::string& xcol, const std::string& ycol) {
   std::string cmd = "  plot ";
   bool first = true;
@@ -36,6 +39,93 @@ std::string plotModes(const SweepResult& sweep, const std::string& xcol, const s
     first = false;
   }
   return cmd + "\n";
+}
+
+std::string formatSpeed(double v, int decimals) {
+  std::ostringstream os;
+  if (decimals < 0)
+    os << std::setprecision(17) << v;
+  else
+    os << std::fixed << std::setprecision(decimals) << v;
+  return os.str();
+}
+
+// Shaded stable ranges, or a note that there is none (gnuplot objects and labels numbered from 1).
+std::string markStableRanges(const SweepResult& sweep, const std::vector<StableRange>& stable) {
+  std::ostringstream os;
+  os << "  # Stable speed ranges: every mode but the neutral ones has a negative real part.\n";
+  if (stable.empty())
+    os << "  set label 1 'no stable speed range in " << formatSpeed(sweep.speeds.front(), 1) << " - "
+       << formatSpeed(sweep.speeds.back(), 1) << " m/s' at graph 0.5, graph 0.05 center front\n";
+  for (size_t i = 0; i < stable.size(); ++i) {
+    const std::string a = formatSpeed(stable[i].start, -1), b = formatSpeed(stable[i].stop, -1);
+    os << "  set object " << i + 1 << " rect from " << a << ", graph 0 to " << b
+       << ", graph 1 behind fillcolor rgb '#d9efd9' fillstyle solid 1.0 noborder\n"
+       << "  set label " << i + 1 << " 'stable " << formatSpeed(stable[i].start, 3) << " - "
+       << formatSpeed(stable[i].stop, 3) << " m/s' at " << (stable[i].start + stable[i].stop) / 2
+       << ", graph 0.05 center front\n";
+  }
+  return os.str();
+}
+
+// A labelled vertical line at each critical speed (arrows and labels numbered after the ranges').
+std::string markCriticalSpeeds(const SweepResult& sweep, size_t firstTag) {
+  std::ostringstream os;
+  os << "  # Critical speeds: sign changes of a labelled mode's real part.\n";
+  for (size_t i = 0; i < sweep.criticalSpeeds.size(); ++i) {
+    const auto& c = sweep.criticalSpeeds[i];
+    const std::string v = formatSpeed(c.speed, -1);
+    os << "  set arrow " << firstTag + i << " from " << v << ", graph 0 to " << v
+       << ", graph 1 nohead front dashtype 3 linewidth 1.5 linecolor rgb '#303030'\n"
+       << "  set label " << firstTag + i << " '" << c.mode << " " << formatSpeed(c.speed, 3) << " m/s' at " << v
+       << ", graph 0.98 rotate by 90 right offset -0.9,0 front boxed\n";
+  }
+  return os.str();
+}
+
+// Meijaard et al. (2007), Fig. 3: real parts solid, imaginary parts (rad/s) dashed, one line per
+// tracked branch. eigenvalues.csv holds one row per branch and speed, speed-major, so `every N::B`
+// picks branch B's rows in speed order.
+std::string plotBranches(const SweepResult& sweep) {
+  const size_t n = sweep.branches.size();
+  std::string cmd = "  plot ";
+  bool first = true;
+  auto add = [&](const std::string& series) {
+    cmd += (first ? "" : ", \\\n       ") + series;
+    first = false;
+  };
+  for (size_t m = 0; m < std::size(kPlottedModes); ++m) {
+    const std::string colour = std::string("linecolor rgb '") + kModeColours[m] + "' linewidth 2";
+    bool titled = false, imagDrawn = false;
+    for (size_t b = 0; b < n; ++b) {
+      const ModeBranch& br = sweep.branches[b];
+      if (br.label != kPlottedModes[m]) continue;
+      const std::string rows = "'eigenvalues.csv' every " + std::to_string(n) + "::" + std::to_string(b);
+      add(rows + " using 1:3 with lines " + colour + " dashtype 1 " +
+          (titled ? "notitle" : "title '" + br.label + ", real part'"));
+      titled = true;
+      bool complex = false;  // one dashed line per complex pair, |imag| in rad/s where it is complex
+      for (const auto& l : br.eigenvalue) complex = complex || std::abs(l.imag()) > 1e-9;
+      if (!complex || imagDrawn) continue;
+      add(rows + " using 1:(abs($4) > 1e-9 ? abs($4) : NaN) with lines " + colour + " dashtype 2 title '" + br.label +
+          ", imaginary part'");
+      imagDrawn = true;
+    }
+  }
+  return first ? "  plot NaN notitle\n" : cmd + "\n";
+}
+
+std::string makeEigenvaluePlot(const std::string& name, const SweepResult& sweep) {
+  const std::vector<StableRange> stable = calcStableSpeedRanges(sweep);
+  return "  set datafile separator ','\n  set datafile columnheaders\n  set grid\n"
+         "  set key below\n  set style textbox opaque noborder\n"
+         "  set title " + gnuplotQuote("Eigenvalues against speed: " + name) + "\n"
+         "  set xlabel 'forward speed v (m/s)'\n"
+         "  set ylabel 'eigenvalue: real part (1/s, solid), imaginary part (rad/s, dashed)'\n"
+         "  set xzeroaxis linetype -1\n"
+         "  set xrange [" + formatSpeed(sweep.speeds.front(), -1) + ":" + formatSpeed(sweep.speeds.back(), -1) + "]\n" +
+         markStableRanges(sweep, stable) + markCriticalSpeeds(sweep, std::max<size_t>(stable.size(), 1) + 1) +
+         plotBranches(sweep);
 }
 
 }  // namespace
@@ -68,6 +158,9 @@ nlohmann::json makeSweepSummary(const std::string& name, const SweepResult& swee
     }
   }
   j["stable_grid_ranges_mps"] = ranges;
+  // The same ranges bounded by the critical speeds (calcStableSpeedRanges), as the plot shades them.
+  j["stable_speed_ranges_mps"] = nlohmann::json::array();
+  for (const StableRange& r : calcStableSpeedRanges(sweep)) j["stable_speed_ranges_mps"].push_back({r.start, r.stop});
   return j;
 }
 
@@ -89,10 +182,7 @@ void writeSweepOutputs(const std::filesystem::path& dir, const std::string& name
   renderGnuplot(dir, "root_locus",
                 common + "  set title " + gnuplotQuote("Root locus: " + name) +
                     "\n  set xlabel 'real part (1/s)'\n  set ylabel 'frequency (Hz)'\n" + plotModes(sweep, "3", "$5"));
-  renderGnuplot(dir, "real_part_vs_speed",
-                common + "  set title " + gnuplotQuote("Real part against speed: " + name) +
-                    "\n  set xlabel 'speed (m/s)'\n  set ylabel 'real part (1/s)'\n  set xzeroaxis lt -1\n" +
-                    plotModes(sweep, "1", "$3"));
+  renderGnuplot(dir, "real_part_vs_speed", makeEigenvaluePlot(name, sweep));
 }
 
 std::string formatSweepTable(const SweepResult& sweep, int rows) {
@@ -130,10 +220,18 @@ std::string formatSweepTable(const SweepResult& sweep, int rows) {
   for (const auto& c : sweep.criticalSpeeds)
     os << "  " << std::setw(8) << c.mode << " " << std::setprecision(10) << std::fixed << c.speed << " m/s ("
        << (c.stabilising ? "stabilising" : "destabilising") << ")\n";
+  const std::vector<StableRange> stable = calcStableSpeedRanges(sweep);
+  if (stable.empty())
+    os << "No stable speed range in " << formatSpeed(sweep.speeds.front(), 2) << " - " << formatSpeed(sweep.speeds.back(), 2)
+       << " m/s\n";
+  for (const StableRange& r : stable)
+    os << "Stable from " << formatSpeed(r.start, 4) << " to " << formatSpeed(r.stop, 4) << " m/s\n";
   return os.str();
 }
 
-void writeLinearModel(const std::filesystem::path& dir, const LinearModel& lin) {
+void writeLinearModel(const std::filesystem::path& dir, const LinearModel& lin, const std::vector<std::string>& modeLabels) {
+  if (modeLabels.size() != static_cast<size_t>(lin.eigenvalues.size()))
+    throw std::invalid_argument("writeLinearModel: one mode label per eigenvalue needed");
   std::vector<std::string> names;
   for (const auto& s : lin.states) names.push_back(s.name);
   auto matrixCsv = [&](const Eigen::MatrixXd& M, const std::vector<std::string>& cols) {
@@ -148,11 +246,11 @@ void writeLinearModel(const std::filesystem::path& dir, const LinearModel& lin) 
   };
   writeFileAtomically(dir / "A.csv", matrixCsv(lin.A, names));
   writeFileAtomically(dir / "B.csv", matrixCsv(lin.B, lin.inputNames));
-  CsvWriter ev({"index", "real", "imag", "frequency_hz", "damping_ratio"});
+  CsvWriter ev({"index", "mode", "real", "imag", "frequency_hz", "damping_ratio"});
   std::vector<std::string> vecHeader{"state"};
   for (int k = 0; k < lin.eigenvalues.size(); ++k) {
     const auto l = lin.eigenvalues[k];
-    ev.beginRow().add(std::to_string(k)).add(l.real()).add(l.imag()).add(calcFrequencyHz(l)).add(calcDampingRatio(l));
+    ev.beginRow().add(std::to_string(k)).add(modeLabels[k]).add(l.real()).add(l.imag()).add(calcFrequencyHz(l)).add(calcDampingRatio(l));
     vecHeader.push_back("re_" + std::to_string(k));
     vecHeader.push_back("im_" + std::to_string(k));
   }

@@ -1,6 +1,6 @@
-// Schema of the files `motostab sweep` and `motostab linearize` write (README, "Output files"):
+// Schema of the files `motostab sweep` and `motostab linearize` write (docs/commands.md, "Output files"):
 // eigenvalues.csv, summary.json, A.csv, B.csv, eigenvectors.csv, linear_model.json. Written from
-// random results drawn here, then read back and checked against the README's definitions
+// random results drawn here, then read back and checked against the definitions there
 // (frequency = imag/2pi, damping ratio = -real/|lambda|, seed eq. 27; 17 digits round-trip).
 #include <gtest/gtest.h>
 
@@ -13,6 +13,7 @@
 #include "io/portable_random.h"
 #include "nlohmann/json.hpp"
 #include "output/sweep_output.h"
+#include "scenario/scenario.h"
 #include "tests/support/temp_dir.h"
 #include "tests/support/text_csv.h"
 
@@ -47,7 +48,7 @@ SweepResult makeRandomSweep(PortableRandom& rng) {
   return s;
 }
 
-// Stable grid ranges as the README defines them: runs of grid speeds where every mode but the
+// Stable grid ranges as docs/commands.md defines them: runs of grid speeds where every mode but the
 // neutral one has a negative real part.
 std::vector<std::pair<double, double>> calcStableRanges(const SweepResult& s) {
   std::vector<std::pair<double, double>> out;
@@ -117,6 +118,33 @@ TEST(SweepOutput, EigenvaluesCsvAndSummaryJsonFollowTheReadme) {
   }
 }
 
+// `motostab linearize` labels each eigenvalue from its content at the one speed (trackModes of one
+// model): the Whipple bicycle at 5 m/s has Meijaard et al. (2007) Table 2's weave pair
+// -0.77534188219585 +/- 4.46486771378823i, capsize -0.32286642900409 and castor -14.07838969279820.
+TEST(SweepOutput, LinearModelEigenvaluesNameTheirModes) {
+  const Scenario scenario = loadScenario(std::string(MOTOSTAB_SOURCE_DIR) + "/scenarios/whipple-benchmark.yaml");
+  const VehicleModel model(scenario);
+  const LinearModel lin = linearize(model, calcTrim(model, 5.0, TrimOptions()));
+  std::vector<std::string> modes;
+  for (const ModeBranch& b : trackModes({lin}, scenario.geometry.wheelbase)) modes.push_back(b.label);
+  const auto dir = makeTempDir("linear_output_modes");
+  writeLinearModel(dir, lin, modes);
+  const TextCsv ev = readTextCsv(dir / "eigenvalues.csv");
+  const std::vector<std::pair<std::string, cd>> table2{{"weave", {-0.77534188219585, 4.46486771378823}},
+                                                       {"weave", {-0.77534188219585, -4.46486771378823}},
+                                                       {"capsize", {-0.32286642900409, 0}},
+                                                       {"castor", {-14.07838969279820, 0}}};
+  for (const auto& [mode, value] : table2) {
+    int found = 0;
+    for (const auto& r : ev.rows)
+      if (std::abs(cd(parseCell(r[2]), parseCell(r[3])) - value) < 1e-6) {
+        EXPECT_EQ(r[1], mode) << value;
+        ++found;
+      }
+    EXPECT_EQ(found, 1) << value;
+  }
+}
+
 TEST(SweepOutput, LinearModelFilesFollowTheReadme) {
   PortableRandom rng(77);
   LinearModel lin;
@@ -130,8 +158,11 @@ TEST(SweepOutput, LinearModelFilesFollowTheReadme) {
     for (int j = 0; j < m; ++j) lin.B(i, j) = rng.drawNormal();
     lin.eigenvalues[i] = i == 3 ? cd(0, 0) : cd(rng.drawNormal(), rng.drawNormal());
   }
+  std::vector<std::string> modes;
+  for (int k = 0; k < n; ++k) modes.push_back(std::vector<std::string>{"weave", "capsize", "castor", "other"}[rng.drawIndex(4)]);
   const auto dir = makeTempDir("linear_output");
-  writeLinearModel(dir, lin);
+  EXPECT_THROW(writeLinearModel(dir, lin, std::vector<std::string>(n - 1, "weave")), std::invalid_argument);
+  writeLinearModel(dir, lin, modes);
 
   auto expectMatrix = [&](const std::string& file, const Eigen::MatrixXd& M, const std::vector<std::string>& cols) {
     const TextCsv t = readTextCsv(dir / file);
@@ -150,13 +181,14 @@ TEST(SweepOutput, LinearModelFilesFollowTheReadme) {
   expectMatrix("B.csv", lin.B, lin.inputNames);
 
   const TextCsv ev = readTextCsv(dir / "eigenvalues.csv");
-  ASSERT_EQ(ev.header, (std::vector<std::string>{"index", "real", "imag", "frequency_hz", "damping_ratio"}));
+  ASSERT_EQ(ev.header, (std::vector<std::string>{"index", "mode", "real", "imag", "frequency_hz", "damping_ratio"}));
   ASSERT_EQ(ev.rows.size(), static_cast<size_t>(n));
   for (int k = 0; k < n; ++k) {
     EXPECT_EQ(ev.rows[k][0], std::to_string(k));
-    EXPECT_EQ(parseCell(ev.rows[k][1]), lin.eigenvalues[k].real());
-    EXPECT_EQ(parseCell(ev.rows[k][2]), lin.eigenvalues[k].imag());
-    expectFrequencyAndDamping(lin.eigenvalues[k], ev.rows[k][3], ev.rows[k][4]);
+    EXPECT_EQ(ev.rows[k][1], modes[k]);
+    EXPECT_EQ(parseCell(ev.rows[k][2]), lin.eigenvalues[k].real());
+    EXPECT_EQ(parseCell(ev.rows[k][3]), lin.eigenvalues[k].imag());
+    expectFrequencyAndDamping(lin.eigenvalues[k], ev.rows[k][4], ev.rows[k][5]);
   }
   const TextCsv vec = readTextCsv(dir / "eigenvectors.csv");
   ASSERT_EQ(vec.header.size(), static_cast<size_t>(1 + 2 * n));

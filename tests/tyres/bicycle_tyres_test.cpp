@@ -65,7 +65,7 @@ double findCritical(const SweepResult& r, const std::string& mode, bool stabilis
 // Tyre slip on the benchmark bicycle. Published effect: Bulsink, Doria, van de Belt, Koopman (2015),
 // "The effect of tyre and rider properties on the stability of a bicycle", Advances in Mechanical
 // Engineering 7(12): measured tyres make the weave less stable (its critical speed rises) and
-// stabilise the capsize mode, "mainly caused by the twisting torque". Here (printed, in the README):
+// stabilise the capsize mode, "mainly caused by the twisting torque". Here (printed, in docs/scenario-format.md):
 // weave 4.292 -> 5.21 m/s and no capsize instability up to 9 m/s; without the twisting torque the
 // shifts nearly vanish (weave 4.36 m/s, capsize 6.10 m/s).
 TEST(BicycleTyres, PresetShiftsWeaveAndCapsizeSpeedsAsPublished) {
