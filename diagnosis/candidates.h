@@ -29,7 +29,7 @@ struct CandidateParameter {
 
 struct Candidate {
   std::string name;                         ///< steer_damper, parameter:geometry.trail_m, ...
-  scenario::ParameterOverrides fixedOverrides;       ///< applied before the parameters' (switch the effect on)
+  scenario::ParameterOverrides fixedOverrides;  ///< applied before the parameters' (switch the effect on)
   std::vector<CandidateParameter> parameters;
 };
 

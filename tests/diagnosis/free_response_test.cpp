@@ -20,7 +20,6 @@ using analysis::LinearModel;
 using core::PortableRandom;
 using io::InputError;
 using scenario::formatShortest;
-using test_support::makeTempDir;
 
 namespace {
 

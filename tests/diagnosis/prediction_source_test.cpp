@@ -25,7 +25,6 @@ using output::writeDiagnosisOutputs;
 using scenario::ParameterOverrides;
 using scenario::Scenario;
 using scenario::ScenarioSource;
-using test_support::makeTempDir;
 
 namespace {
 

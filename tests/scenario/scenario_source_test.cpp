@@ -21,7 +21,6 @@ using io::InputError;
 using io::copyTree;
 using io::getYamlFileOpenCount;
 using io::loadYamlFile;
-using test_support::makeTempDir;
 
 namespace {
 
