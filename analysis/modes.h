@@ -15,7 +15,7 @@ enum class DofGroup { Roll, Steer, Yaw, Lateral, Pitch, Bounce, Forward, Complia
 constexpr int kNumDofGroups = 10;
 using ModeContent = std::array<double, kNumDofGroups>;
 
-/// Compliance coordinates: swingarm_*, and the issue-10 extensions fork_bending, fork_torsion and
+/// Compliance coordinates: swingarm_*, and the model extensions fork_bending, fork_torsion and
 /// rider_lean. An oscillatory mode they dominate is labelled with the leading coordinate's name.
 bool isComplianceCoordinate(const std::string& coordinateName);
 

@@ -45,7 +45,7 @@ void printSteerController(const SteerControllerSpec& c) {
   if (c.torqueLimit > 0) std::cout << "    torque limit        " << c.torqueLimit << " N m (time domain; linear models see the unsaturated law)\n";
 }
 
-// The issue-10 model extensions present, one line each (docs/scenario-format.md).
+// The model extensions present, one line each (docs/scenario-format.md).
 void printExtensions(const Scenario& s) {
   if (s.hasSteerDamper)
     std::cout << "  steer damper          " << s.steerDamper.damping << " N m s/rad, Coulomb " << s.steerDamper.coulomb

@@ -23,6 +23,7 @@ using diagnosis::MeasuredData;
 using diagnosis::MeasuredEigenvalue;
 using diagnosis::ParameterEstimate;
 using diagnosis::RobustnessRun;
+using diagnosis::RobustnessVerdict;
 
 namespace {
 

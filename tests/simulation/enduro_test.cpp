@@ -49,7 +49,7 @@ TEST(SimulationEnduro, SmallPerturbationFollowsMatrixExponential) {
       std::cout << "enduro torsion v = " << v << " m/s, " << name << ": max |nonlinear - linear| / max |linear| = "
                 << maxErr / maxRef << " (max |linear| " << maxRef << ", " << r.steps << " steps)\n";
       // The torsion angle is tiny (about 2e-7 rad): its error reaches the integrator's absolute floor, so it
-      // is held to 1e-3 relative; roll and steer to the 1e-4.
+      // is held to 1e-3 relative; roll and steer to 1e-4.
       EXPECT_LT(maxErr / maxRef, name == "swingarm_torsion" ? 1e-3 : 1e-4) << "v = " << v << ", " << name;
     }
   }

@@ -71,7 +71,7 @@ struct DrawnRig {
   bool torsionWeak = false;
 };
 
-// A rig whose weaker mode still meets the detectability criterion (peak >= 1 % of the largest in
+// A rig whose weaker mode still meets the detectability criterion (peak >= 1 % of the largest in
 // some channel, with a 1.5x margin for leakage and window smearing); redrawn otherwise.
 DrawnRig drawRig(Draw& d) {
   for (;;) {
