@@ -24,7 +24,7 @@ case "$mode" in
     export MOTOSTAB_BUILD_DIR=build-tsan MOTOSTAB_CMAKE_ARGS="-DMOTOSTAB_BUILD_BENCH=OFF -DMOTOSTAB_EIGEN_CHECKS=ON"
     export MOTOSTAB_CXX_FLAGS="-fsanitize=thread -fno-omit-frame-pointer"
     export TSAN_OPTIONS="${TSAN_OPTIONS:-halt_on_error=1:second_deadlock_stack=1}"
-    "$root/scripts/build.sh" test_analysis test_apps test_plugins test_uncertainty test_diagnosis motostab
+    "$root/scripts/build.sh" test_core test_analysis test_apps test_plugins test_uncertainty test_diagnosis motostab
     cd "$root/build-tsan"
     # Everything that runs worker threads: runParallel, threaded sweeps (library, CLI --threads, and
     # the sweep workers' plugin and model-extension replicas, the diagnosis thread pool).

@@ -1,11 +1,19 @@
+// Linearisation about a trim: constraint tangent space, differenced A and B, state removal, eigensystem.
 #include "analysis/linearize.h"
 
 #include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <cmath>
-#include <limits>
 
-namespace motostab {
+#include "analysis/linearize_detail.h"
+
+namespace motostab::analysis {
+
+using vehicle::CoordinateIndices;
+using vehicle::VehicleModel;
+using vehicle::kNumInputs;
+
+using vehicle::Input;
 
 int LinearModel::findState(const std::string& name) const {
   for (size_t i = 0; i < states.size(); ++i)
@@ -47,118 +55,7 @@ std::vector<int> withPriority(const std::vector<int>& first, int n) {
   return out;
 }
 
-// Column indices with coordinates first, then rates, then auxiliary states (only those with
-// mirror sign `side`, if given).
-std::vector<int> orderBySlot(const std::vector<Slot>& slots, const std::vector<int>& mirror, int side = 0) {
-  std::vector<int> order;
-  for (Slot slot : {Slot::Q, Slot::U, Slot::Z})
-    for (size_t j = 0; j < slots.size(); ++j)
-      if (slots[j] == slot && (side == 0 || mirror[j] == side)) order.push_back(static_cast<int>(j));
-  return order;
-}
-
-// Greedy grouping (Curtis, Powell & Reid 1974) of the columns in `order`: each joins the first group
-// whose rows it does not touch. Singletons included.
-std::vector<std::vector<int>> colourColumns(const Eigen::Matrix<bool, Eigen::Dynamic, Eigen::Dynamic>& pattern,
-                                            const std::vector<int>& order) {
-  const Eigen::Index n = pattern.rows();
-  std::vector<std::vector<int>> groups;
-  std::vector<Eigen::Matrix<bool, Eigen::Dynamic, 1>> rows;  // union of the rows each group touches
-  for (int j : order) {
-    size_t k = 0;
-    while (k < groups.size() && (rows[k].array() && pattern.col(j).array()).any()) ++k;
-    if (k == groups.size()) groups.emplace_back(), rows.emplace_back(Eigen::Matrix<bool, Eigen::Dynamic, 1>::Constant(n, false));
-    groups[k].push_back(j);
-    rows[k] = rows[k].array() || pattern.col(j).array();
-  }
-  return groups;
-}
-
-// The pattern's connected block holding roll as mirror signs (-1 in it, +1 elsewhere); empty without
-// roll or when the block is everything.
-std::vector<int> proposeMirror(const ColumnGrouping& g) {
-  const int n = static_cast<int>(g.states.size());
-  const auto roll = std::find(g.states.begin(), g.states.end(), "roll");
-  if (roll == g.states.end()) return {};
-  std::vector<int> sign(n, 1), stack{static_cast<int>(roll - g.states.begin())};
-  sign[stack.back()] = -1;
-  int count = 1;
-  while (!stack.empty()) {
-    const int i = stack.back();
-    stack.pop_back();
-    for (int j = 0; j < n; ++j)
-      if (sign[j] == 1 && (g.pattern(i, j) || g.pattern(j, i))) sign[j] = -1, ++count, stack.push_back(j);
-  }
-  return count == n ? std::vector<int>{} : sign;
-}
-
 }  // namespace
-
-Eigen::MatrixXd calcTrimJacobian(const VehicleModel& model, const LinearModel& lin, const Eigen::MatrixXd& previous,
-                                 const TrimOptions& trimOptions) {
-  const SimTK::State& s = model.getDefaultState();
-  const bool hasB = lin.B.cols() == kNumInputs;
-  if (s.getNQErr() + s.getNUErr() > 0) return {};
-  std::vector<int> rows;  // residual rows: every udot, then every zdot
-  for (const auto* names : {&model.getUNames(), &model.getZNames()})
-    for (const auto& name : *names) {
-      rows.push_back(lin.findState(name));
-      if (rows.back() < 0) return {};
-    }
-  if (trimOptions.isTurn() != lin.headingFrame) return {};
-  const auto unknowns = getTrimUnknowns(model, trimOptions);
-  // A turn at a fixed speed has the speed equation as its last row, copied from `previous`.
-  const bool speedRow = trimOptions.isTurn() && trimOptions.condition == TurnCondition::Speed;
-  const Eigen::Index nr = static_cast<Eigen::Index>(rows.size()), nx = static_cast<Eigen::Index>(unknowns.size());
-  const bool previousFits = previous.rows() == nr + (speedRow ? 1 : 0) && previous.cols() == nx;
-  if ((!hasB || speedRow) && !previousFits) return {};
-  Eigen::MatrixXd J = Eigen::MatrixXd::Zero(nr + (speedRow ? 1 : 0), nx);
-  if (speedRow) J.row(nr) = previous.row(nr);
-  for (size_t j = 0; j < unknowns.size(); ++j) {
-    const StateEntry& e = unknowns[j];
-    if (e.slot == Slot::Input) {
-      for (size_t i = 0; i < rows.size(); ++i) J(i, j) = hasB ? lin.B(rows[i], e.index) : previous(i, j);
-      continue;
-    }
-    const auto& names = e.slot == Slot::Q ? model.getQNames() : e.slot == Slot::U ? model.getUNames() : model.getZNames();
-    const int c = lin.findState(names[e.index]);
-    if (c >= 0)
-      for (size_t i = 0; i < rows.size(); ++i) J(i, j) = lin.A(rows[i], c);
-  }
-  return J;
-}
-
-ColumnGrouping calcColumnGrouping(const std::vector<const LinearModel*>& samples, double tolerance) {
-  ColumnGrouping g;
-  if (samples.empty()) return g;
-  const LinearModel& first = *samples.front();
-  const int n = static_cast<int>(first.states.size()), nr = static_cast<int>(first.removedRows.size());
-  for (const LinearModel* m : samples) {
-    if (static_cast<int>(m->states.size()) != n || m->A.rows() != n || static_cast<int>(m->removedRows.size()) != nr)
-      return {};
-    for (int i = 0; i < n; ++i)
-      if (m->states[i].name != first.states[i].name) return {};
-    for (int k = 0; k < nr; ++k)
-      if (m->removedRows[k].first != first.removedRows[k].first || m->removedRows[k].second.size() != n) return {};
-  }
-  for (const auto& st : first.states) g.states.push_back(st.name);
-  for (const auto& r : first.removedRows) g.removedStates.push_back(r.first);
-  g.pattern.setConstant(n + nr, n, false);
-  g.rowScale.assign(n + nr, 0.0);
-  for (const LinearModel* m : samples)
-    for (int i = 0; i < n + nr; ++i) {
-      const Eigen::RowVectorXd row = i < n ? Eigen::RowVectorXd(m->A.row(i)) : m->removedRows[i - n].second;
-      const double rowMax = row.cwiseAbs().maxCoeff();
-      g.rowScale[i] = std::max(g.rowScale[i], rowMax);
-      for (int j = 0; j < n; ++j) g.pattern(i, j) = g.pattern(i, j) || std::abs(row[j]) > tolerance * rowMax;
-    }
-  g.mirror = proposeMirror(g);
-  for (const auto& st : first.states) g.slots.push_back(st.entry.slot);
-  const std::vector<std::vector<int>> groups = colourColumns(g.pattern, orderBySlot(g.slots, {}));
-  for (auto& grp : groups)
-    if (grp.size() > 1) g.groups.push_back(grp);
-  return g;
-}
 
 LinearModel linearize(const VehicleModel& model, const TrimResult& trim, const LinearizeOptions& opt) {
   TrimResult work;
@@ -169,49 +66,8 @@ LinearModel linearize(const VehicleModel& model, const TrimResult& trim, const L
   return linearizeInPlace(model, work, opt);
 }
 
+namespace detail {
 namespace {
-
-using Direction = std::vector<std::pair<StateEntry, double>>;
-
-// What every stage of linearizeInPlace reads: the model, its state function, the trim state (perturbed
-// and restored in place) and the options.
-struct LinearizeContext {
-  const VehicleModel& model;
-  const StateFunction fn;
-  SimTK::State& s;
-  const LinearizeOptions& opt;
-  const int nq, nu, nz;
-  const bool turn;  ///< a steady turn: heading-frame velocities, yaw cyclic (addHeadingFrameTerms)
-  const std::vector<int> cyclic;
-  double yawRate = 0, vx = 0, vy = 0, ax = 0, ay = 0;  ///< the trim's r, xdot, ydot, xddot, yddot
-  LinearizeContext(const VehicleModel& m, SimTK::State& state, const LinearizeOptions& o, bool isTurn = false)
-      : model(m), fn(m), s(state), opt(o), nq(m.getNumQ()), nu(m.getNumU()), nz(m.getNumZ()), turn(isTurn),
-        cyclic(makeCyclic(m, isTurn)) {
-    if (!turn) return;
-    const CoordinateIndices& ix = m.getIndices();
-    Eigen::VectorXd ydot;
-    fn.calcYDot(s, ydot);
-    yawRate = s.getU()[ix.yaw], vx = s.getU()[ix.x], vy = s.getU()[ix.y];
-    ax = ydot[nq + ix.x], ay = ydot[nq + ix.y];
-  }
-  static std::vector<int> makeCyclic(const VehicleModel& m, bool isTurn) {
-    std::vector<int> out = m.getCyclicQ();
-    if (isTurn) out.push_back(m.getIndices().yaw);
-    return out;
-  }
-  double stepFor(const StateEntry& e) const { return opt.step * std::max(1.0, std::abs(fn.get(s, e))); }
-  bool isCyclicQ(const StateEntry& e) const {
-    return e.slot == Slot::Q && std::find(cyclic.begin(), cyclic.end(), e.index) != cyclic.end();
-  }
-  // Row of a q, u or z in ydot.
-  int rowOf(const StateEntry& e) const { return e.slot == Slot::Q ? e.index : e.slot == Slot::U ? nq + e.index : nq + nu + e.index; }
-};
-
-// The constraint Jacobian G = d[qerr; uerr]/d[q; u] at the trim, and the count of its position rows.
-struct ConstraintJacobian {
-  Eigen::MatrixXd G;
-  int m = 0, mp = 0;
-};
 
 ConstraintJacobian calcConstraintJacobian(const LinearizeContext& c) {
   const int nq = c.nq, nu = c.nu;
@@ -245,12 +101,6 @@ ConstraintJacobian calcConstraintJacobian(const LinearizeContext& c) {
   return out;
 }
 
-// The tangent space of the constraints: dependent q and u, and the solve for their increments.
-struct TangentSpace {
-  std::vector<int> depQ, depU, depCols;  ///< depCols: q index, or nq + u index
-  Eigen::PartialPivLU<Eigen::MatrixXd> GdepLU;
-};
-
 TangentSpace chooseTangentSpace(const LinearizeContext& c, const ConstraintJacobian& cj) {
   // Dependent coordinates: heights and pitch first, then the rates that the contact fixes.
   const CoordinateIndices& ix = c.model.getIndices();
@@ -269,17 +119,6 @@ TangentSpace chooseTangentSpace(const LinearizeContext& c, const ConstraintJacob
   for (size_t k = 0; k < t.depCols.size(); ++k) Gdep.col(k) = cj.G.col(t.depCols[k]);
   if (m > 0) t.GdepLU = Gdep.partialPivLu();
   return t;
-}
-
-// Independent states in model order: q, u, z.
-std::vector<LinearState> listIndependentStates(const LinearizeContext& c, const TangentSpace& t) {
-  std::vector<LinearState> states;
-  for (int i = 0; i < c.nq; ++i)
-    if (std::find(t.depQ.begin(), t.depQ.end(), i) == t.depQ.end()) states.push_back({c.model.getQNames()[i], {Slot::Q, i}});
-  for (int i = 0; i < c.nu; ++i)
-    if (std::find(t.depU.begin(), t.depU.end(), i) == t.depU.end()) states.push_back({c.model.getUNames()[i], {Slot::U, i}});
-  for (int i = 0; i < c.nz; ++i) states.push_back({c.model.getZNames()[i], {Slot::Z, i}});
-  return states;
 }
 
 // The perturbation along independent state `e` scaled by `scale`, with the dependent coordinates
@@ -331,48 +170,17 @@ void differentiate(const LinearizeContext& c, SimTK::State& s, const Direction& 
   addHeadingFrameTerms(c, dir, col);
 }
 
-// Grouping pattern row (states, then removed states) -> lin.states index (-1 where lin lacks the
-// state); the first g.states.size() entries are the columns'.
-std::vector<int> mapGroupingStates(const ColumnGrouping& g, const LinearModel& lin) {
-  std::vector<int> out;
-  for (const auto* names : {&g.states, &g.removedStates})
-    for (const auto& name : *names) out.push_back(lin.findState(name));
-  return out;
-}
+}  // namespace
 
-// Mirror sign of pattern row r: the state's, or for a removed state's row that of the columns it
-// touches (-1 if any is lateral).
-int getRowSign(const ColumnGrouping& g, size_t r) {
-  if (r < g.mirror.size()) return g.mirror[r];
-  for (size_t j = 0; j < g.mirror.size(); ++j)
-    if (g.pattern(static_cast<Eigen::Index>(r), static_cast<Eigen::Index>(j)) && g.mirror[j] == -1) return -1;
-  return 1;
-}
-
-bool isLateralGroup(const ColumnGrouping& g, const std::vector<int>& group) {
-  if (g.mirror.empty()) return false;
-  return std::all_of(group.begin(), group.end(), [&](int j) { return g.mirror[j] == -1; });
-}
-
-// A trim symmetric to 1e-9 of the difference steps: every lateral state, the steer and the roll torque
-// below that (the mirror identity is then off by at most that fraction of a column).
-bool isTrimSymmetric(const LinearizeContext& c, const ColumnGrouping& g, const LinearModel& lin,
-                     const std::vector<int>& linearIndexOf) {
-  for (size_t r = 0; r < g.states.size(); ++r) {
-    const StateEntry& e = lin.states[linearIndexOf[r]].entry;
-    if (g.mirror[r] == -1 && std::abs(c.fn.get(c.s, e)) > 1e-9 * c.stepFor(e)) return false;
-  }
-  for (Input in : {Input::SteerTorque, Input::RollTorque})
-    if (std::abs(c.model.getInput(c.s, in)) > 1e-9 * c.opt.step) return false;
-  return true;
-}
-
-// Mirror signs of the rows of ydot: getRowSign on the pattern's rows, +1 on the others.
-Eigen::VectorXd calcRowMirror(const LinearizeContext& c, const ColumnGrouping& g, const LinearModel& lin,
-                              const std::vector<int>& linearIndexOf) {
-  Eigen::VectorXd sign = Eigen::VectorXd::Ones(c.nq + c.nu + c.nz);
-  for (size_t r = 0; r < linearIndexOf.size(); ++r) sign[c.rowOf(lin.states[linearIndexOf[r]].entry)] = getRowSign(g, r);
-  return sign;
+// Independent states in model order: q, u, z.
+std::vector<LinearState> listIndependentStates(const LinearizeContext& c, const TangentSpace& t) {
+  std::vector<LinearState> states;
+  for (int i = 0; i < c.nq; ++i)
+    if (std::find(t.depQ.begin(), t.depQ.end(), i) == t.depQ.end()) states.push_back({c.model.getQNames()[i], {Slot::Q, i}});
+  for (int i = 0; i < c.nu; ++i)
+    if (std::find(t.depU.begin(), t.depU.end(), i) == t.depU.end()) states.push_back({c.model.getUNames()[i], {Slot::U, i}});
+  for (int i = 0; i < c.nz; ++i) states.push_back({c.model.getZNames()[i], {Slot::Z, i}});
+  return states;
 }
 
 // The group's direction with each column's step (rad, m, rad/s, m/s).
@@ -385,6 +193,8 @@ Direction makeGroupDirection(const LinearizeContext& c, const ConstraintJacobian
   }
   return dir;
 }
+
+namespace {
 
 // Columns of A evaluated together (opt.grouping); marks them in `done`. Lateral groups at a symmetric
 // trim take one evaluation (checkMirrorSymmetry): (f(y0 + d) - f(y0 - d)) / 2 with f(y0 - d) = S f(y0 + d).
@@ -559,90 +369,10 @@ void solveEigen(LinearModel& lin) {
 }
 
 }  // namespace
-
-namespace {
-
-// Relative cost of one evaluation, by the lowest stage the group's perturbation invalidates (q:
-// Position, u: Velocity, z: Dynamics; measured 12.5, 7.2 and 4.3 us on the enduro at 20 m/s, 17.2,
-// 8.3 and 5.5 us with the four issue-10 extensions).
-double calcEvaluationCost(const ColumnGrouping& g, const std::vector<int>& group) {
-  double c = 0;
-  for (int j : group) c = std::max(c, g.slots[j] == Slot::Q ? 2.0 : g.slots[j] == Slot::U ? 1.0 : 0.6);
-  return c;
-}
-
-// Groups for one-evaluation lateral columns: lateral and in-plane columns grouped apart, then a lateral
-// group a (one evaluation alone) merged with an in-plane group b (two) where that saves
-// c(a) + 2 c(b) - 2 max(c(a), c(b)), largest savings first.
-std::vector<std::vector<int>> planMirrorGroups(const ColumnGrouping& g) {
-  const auto lateral = colourColumns(g.pattern, orderBySlot(g.slots, g.mirror, -1));
-  const auto inPlane = colourColumns(g.pattern, orderBySlot(g.slots, g.mirror, 1));
-  struct Merge {
-    double saving;
-    size_t a, b;
-  };
-  std::vector<Merge> merges;
-  for (size_t a = 0; a < lateral.size(); ++a)
-    for (size_t b = 0; b < inPlane.size(); ++b) {
-      const double ca = calcEvaluationCost(g, lateral[a]), cb = calcEvaluationCost(g, inPlane[b]);
-      if (const double s = ca + 2 * cb - 2 * std::max(ca, cb); s > 0) merges.push_back({s, a, b});
-    }
-  std::stable_sort(merges.begin(), merges.end(), [](const Merge& x, const Merge& y) { return x.saving > y.saving; });
-  std::vector<bool> usedA(lateral.size(), false), usedB(inPlane.size(), false);
-  std::vector<std::vector<int>> out;
-  for (const Merge& m : merges) {
-    if (usedA[m.a] || usedB[m.b]) continue;
-    usedA[m.a] = usedB[m.b] = true;
-    out.push_back(lateral[m.a]);
-    out.back().insert(out.back().end(), inPlane[m.b].begin(), inPlane[m.b].end());
-  }
-  for (size_t a = 0; a < lateral.size(); ++a)
-    if (!usedA[a]) out.push_back(lateral[a]);
-  for (size_t b = 0; b < inPlane.size(); ++b)
-    if (!usedB[b]) out.push_back(inPlane[b]);
-  return out;
-}
-
-}  // namespace
-
-bool checkMirrorSymmetry(const VehicleModel& model, TrimResult& trim, const LinearizeOptions& opt,
-                         ColumnGrouping& g, double tolerance, double* defect) {
-  if (defect) *defect = INFINITY;
-  g.useMirror = false;
-  if (g.mirror.empty() || trim.state.getNQErr() + trim.state.getNUErr() > 0) return false;
-  const LinearizeContext c(model, trim.state, opt);
-  const ConstraintJacobian cj;  // no constraints: the tangent space is every state
-  const TangentSpace tangent;
-  LinearModel lin;
-  lin.states = listIndependentStates(c, tangent);
-  const std::vector<int> idx = mapGroupingStates(g, lin);
-  if (std::find(idx.begin(), idx.end(), -1) != idx.end() || !isTrimSymmetric(c, g, lin, idx)) return false;
-  const Eigen::VectorXd rowMirror = calcRowMirror(c, g, lin, idx);
-  auto yDot = [&](const SimTK::State& st, Eigen::VectorXd& out) { c.fn.calcYDot(st, out); };
-  const std::vector<std::vector<int>> groups = planMirrorGroups(g);
-  double worst = 0;
-  Eigen::VectorXd fp, fm;
-  for (const auto& group : groups) {
-    if (!isLateralGroup(g, group)) continue;
-    const Direction dir = makeGroupDirection(c, cj, tangent, lin, idx, group);
-    c.fn.calcDisplaced(c.s, dir, 1.0, yDot, fp);
-    c.fn.calcDisplaced(c.s, dir, -1.0, yDot, fm);
-    double h = INFINITY;  // the defect in units of A: divided by the smallest step of the group
-    for (int j : group) h = std::min(h, c.stepFor(lin.states[idx[j]].entry));
-    for (size_t r = 0; r < idx.size(); ++r) {
-      const int row = c.rowOf(lin.states[idx[r]].entry);
-      const double d = std::abs(fm[row] - rowMirror[row] * fp[row]) / (2 * h);
-      worst = std::max(worst, d == 0 ? 0.0 : d / std::max(g.rowScale[r], std::numeric_limits<double>::min()));
-    }
-  }
-  if (defect) *defect = worst;
-  if (!(worst <= tolerance)) return false;
-  g.groups = groups;
-  g.useMirror = true;
-  return true;
-}
+}  // namespace detail
 
 LinearModel linearizeInPlace(const VehicleModel& model, TrimResult& trim, const LinearizeOptions& opt) {
+  using namespace detail;
   const LinearizeContext c(model, trim.state, opt, trim.turn);
   const ConstraintJacobian cj = calcConstraintJacobian(c);
   const TangentSpace tangent = chooseTangentSpace(c, cj);
@@ -659,4 +389,4 @@ LinearModel linearizeInPlace(const VehicleModel& model, TrimResult& trim, const 
   return lin;
 }
 
-}  // namespace motostab
+}  // namespace motostab::analysis

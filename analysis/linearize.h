@@ -6,7 +6,7 @@
 
 #include "analysis/trim.h"
 
-namespace motostab {
+namespace motostab::analysis {
 
 /// Columns of A evaluated together (Curtis, Powell & Reid, IMA J. Appl. Math. 13 (1974) 117):
 /// columns whose possibly nonzero rows do not overlap share one pair of evaluations. On a
@@ -90,7 +90,7 @@ std::vector<int> chooseDependentColumns(const Eigen::MatrixXd& G, const std::vec
 /// Empty when neither holds (then the trim differentiates).
 /// About a turn (`trimOptions`, lin in the heading frame) the rows of the heading-frame velocities are
 /// the turn residual's, and the speed equation's row (TurnCondition::Speed) is copied from `previous`.
-Eigen::MatrixXd calcTrimJacobian(const VehicleModel& model, const LinearModel& lin, const Eigen::MatrixXd& previous = {},
+Eigen::MatrixXd calcTrimJacobian(const vehicle::VehicleModel& model, const LinearModel& lin, const Eigen::MatrixXd& previous = {},
                                  const TrimOptions& trimOptions = {});
 
 /// The union sparsity pattern of `samples` (linear models with the same states; an entry counts if
@@ -112,13 +112,13 @@ ColumnGrouping calcColumnGrouping(const std::vector<const LinearModel*>& samples
 /// group; `trim` is restored. `defect`, if given, receives the worst ratio (infinite when the check
 /// does not apply: constraints, no proposed mirror, or a trim whose lateral states or steer and
 /// roll torques exceed 1e-9 of the difference step).
-bool checkMirrorSymmetry(const VehicleModel& model, TrimResult& trim, const LinearizeOptions& options,
+bool checkMirrorSymmetry(const vehicle::VehicleModel& model, TrimResult& trim, const LinearizeOptions& options,
                          ColumnGrouping& grouping, double tolerance = 1e-8, double* defect = nullptr);
 
 /// Linearises `model` about `trim` (seed eq. 26) and computes eigenvalues and eigenvectors.
-LinearModel linearize(const VehicleModel& model, const TrimResult& trim, const LinearizeOptions& options = {});
+LinearModel linearize(const vehicle::VehicleModel& model, const TrimResult& trim, const LinearizeOptions& options = {});
 /// linearize without copying the State: perturbs `trim.state` and, on return, has put every value
 /// back exactly (only its realization cache is spent).
-LinearModel linearizeInPlace(const VehicleModel& model, TrimResult& trim, const LinearizeOptions& options = {});
+LinearModel linearizeInPlace(const vehicle::VehicleModel& model, TrimResult& trim, const LinearizeOptions& options = {});
 
-}  // namespace motostab
+}  // namespace motostab::analysis

@@ -1,13 +1,16 @@
 #include "analysis/modes.h"
 
-#include "analysis/parallel.h"
+#include "core/parallel.h"
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
 #include <map>
 
-namespace motostab {
+namespace motostab::analysis {
+
+using core::runParallel;
+
 
 bool isComplianceCoordinate(const std::string& name) {
   auto starts = [&](const char* p) { return name.rfind(p, 0) == 0; };
@@ -338,4 +341,4 @@ std::vector<ModeBranch> trackModes(const std::vector<LinearModel>& models, doubl
   return branches;
 }
 
-}  // namespace motostab
+}  // namespace motostab::analysis

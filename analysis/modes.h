@@ -7,7 +7,7 @@
 
 #include "analysis/linearize.h"
 
-namespace motostab {
+namespace motostab::analysis {
 
 /// Degree-of-freedom groups of an eigenvector, as shares of its squared magnitude (sum = 1).
 /// Lateral displacement is made an angle by dividing by the wheelbase (seed sec. 4, Fig. 12).
@@ -61,4 +61,4 @@ double calcMatchCost(double distance, double absA, double absB, double mac);
 /// Index of the eigenvalue of `b` that best continues eigenvalue ka of `a`.
 int findBestMatch(const LinearModel& a, int ka, const LinearModel& b);
 
-}  // namespace motostab
+}  // namespace motostab::analysis

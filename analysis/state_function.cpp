@@ -1,6 +1,9 @@
 #include "analysis/state_function.h"
 
-namespace motostab {
+namespace motostab::analysis {
+
+using vehicle::Input;
+
 
 void StateFunction::calcYDot(const SimTK::State& s, Eigen::VectorXd& ydot) const {
   model_.getSystem().realize(s, SimTK::Stage::Acceleration);
@@ -75,4 +78,4 @@ void StateFunction::calcDirectionalDerivative(
   }
 }
 
-}  // namespace motostab
+}  // namespace motostab::analysis

@@ -6,7 +6,7 @@
 
 #include "vehicle/vehicle_model.h"
 
-namespace motostab {
+namespace motostab::analysis {
 
 /// Which slot of the state a perturbation targets.
 enum class Slot { Q, U, Z, Input };
@@ -21,7 +21,7 @@ struct StateEntry {
 /// than two realizes).
 class StateFunction {
  public:
-  explicit StateFunction(const VehicleModel& model) : model_(model) {}
+  explicit StateFunction(const vehicle::VehicleModel& model) : model_(model) {}
 
   /// ydot = [qdot; udot; zdot] (realizes to Acceleration).
   void calcYDot(const SimTK::State& s, Eigen::VectorXd& ydot) const;
@@ -45,10 +45,10 @@ class StateFunction {
                      const std::function<void(const SimTK::State&, Eigen::VectorXd&)>& fn,
                      Eigen::VectorXd& out) const;
 
-  const VehicleModel& getModel() const { return model_; }
+  const vehicle::VehicleModel& getModel() const { return model_; }
 
  private:
-  const VehicleModel& model_;
+  const vehicle::VehicleModel& model_;
 };
 
-}  // namespace motostab
+}  // namespace motostab::analysis

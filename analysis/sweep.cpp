@@ -1,6 +1,6 @@
 #include "analysis/sweep.h"
 
-#include "analysis/parallel.h"
+#include "core/parallel.h"
 
 #include <cmath>
 #include <functional>
@@ -11,7 +11,10 @@
 #include <mutex>
 #include <optional>
 
-namespace motostab {
+namespace motostab::analysis {
+
+using core::runWorkers;
+using vehicle::VehicleModel;
 
 std::vector<double> makeSpeedGrid(double start, double stop, double step) {
   std::vector<double> v;
@@ -368,4 +371,4 @@ std::vector<StableRange> calcStableSpeedRanges(const SweepResult& sweep) {
   return ranges;
 }
 
-}  // namespace motostab
+}  // namespace motostab::analysis

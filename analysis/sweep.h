@@ -6,7 +6,7 @@
 
 #include "analysis/modes.h"
 
-namespace motostab {
+namespace motostab::analysis {
 
 struct SweepOptions {
   /// Sweeps use second-order differences (step 3e-6) at half the cost of the fourth-order default:
@@ -64,11 +64,11 @@ std::vector<double> makeSpeedGrid(double start, double stop, double step);
 
 /// Trims and linearises at every speed (each trim warm-started from the previous one), tracks and
 /// labels modes, and brackets every sign change of a labelled mode's real part to the tolerance.
-SweepResult runSweep(const VehicleModel& model, const SweepOptions& options);
+SweepResult runSweep(const vehicle::VehicleModel& model, const SweepOptions& options);
 
 /// Recomputes sweep.criticalSpeeds from the branches' current labels (e.g. after trackModesAcrossRoll);
 /// `options` as the sweep was run with.
-void updateCriticalSpeeds(const VehicleModel& model, const SweepOptions& options, SweepResult& sweep);
+void updateCriticalSpeeds(const vehicle::VehicleModel& model, const SweepOptions& options, SweepResult& sweep);
 
 /// A stable speed range, m/s (closed).
 struct StableRange {
@@ -84,7 +84,7 @@ struct StableRange {
 std::vector<StableRange> calcStableSpeedRanges(const SweepResult& sweep);
 
 /// Real part of the eigenvalue continuing `branch` from sweep speed index k, at speed v (1/s).
-double calcBranchRealPart(const VehicleModel& model, const SweepResult& sweep, const ModeBranch& branch, size_t k,
+double calcBranchRealPart(const vehicle::VehicleModel& model, const SweepResult& sweep, const ModeBranch& branch, size_t k,
                           double v, const SweepOptions& options);
 
-}  // namespace motostab
+}  // namespace motostab::analysis

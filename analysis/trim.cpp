@@ -1,12 +1,25 @@
+// Trims: Newton's method (straight running, or a turn at a fixed roll), the entry points and trim points.
 #include "analysis/trim.h"
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <sstream>
+#include <vector>
 
-#include "tyres/rolling_no_slip.h"
+#include "analysis/trim_detail.h"
 
-namespace motostab {
+namespace motostab::analysis {
+
+using vehicle::CoordinateIndices;
+using vehicle::Input;
+using vehicle::VehicleModel;
+using vehicle::kNumInputs;
+
+using scenario::Scenario;
+using scenario::WheelSpec;
+using tyres::TorusContact;
+using tyres::calcTorusContact;
 
 namespace {
 std::string trimMessage(double speed, double residual, int iterations, double roll, const std::string& detail) {
@@ -21,24 +34,6 @@ std::string trimMessage(double speed, double residual, int iterations, double ro
 
 TrimError::TrimError(double v, double r, int it, double phi, const std::string& detail)
     : std::runtime_error(trimMessage(v, r, it, phi, detail)), speed(v), residual(r), roll(phi) {}
-
-TurnFigures calcTurnFigures(const VehicleModel& model, const SimTK::State& s) {
-  model.getSystem().realize(s, SimTK::Stage::Velocity);
-  const Scenario& sc = model.getScenario();
-  const SimTK::MobilizedBody& wheel = model.getRearWheel();
-  const SimTK::MobilizedBody& frame = model.getRearFrame();
-  const TorusContact contact = calcTorusContact(wheel.getBodyRotation(s), wheel.getBodyAngularVelocity(s),
-                                                sc.rearWheel.radius, sc.rearWheel.crownRadius);
-  const SimTK::Vec3 p_GP = wheel.getBodyOriginLocation(s) + contact.r_CP_G;
-  const SimTK::Vec3 p_GO = frame.getBodyOriginLocation(s);
-  const SimTK::Vec3 v_GP = frame.getBodyOriginVelocity(s) + frame.getBodyAngularVelocity(s) % (p_GP - p_GO);
-  TurnFigures f;
-  f.speed = std::hypot(v_GP[0], v_GP[1]);
-  f.yawRate = s.getU()[model.getIndices().yaw];
-  f.pathRadius = f.yawRate == 0 ? INFINITY : f.speed / std::abs(f.yawRate);
-  f.lateralAcceleration = f.speed * f.yawRate;
-  return f;
-}
 
 std::vector<StateEntry> getTrimUnknowns(const VehicleModel& model) {
   std::vector<StateEntry> out;
@@ -70,6 +65,9 @@ std::vector<StateEntry> getTrimUnknowns(const VehicleModel& model, const TrimOpt
 }
 
 namespace {
+
+using detail::continueTurn;
+using detail::solveTrim;
 
 // The residual of the trim `opt` asks for at `speed` (trim.h): [udot; zdot; qerr; uerr], in a turn with
 // the centripetal terms of the rear wheel centre's acceleration and, fixing the speed, V_P - V.
@@ -114,8 +112,6 @@ void setFixedPart(const VehicleModel& model, const TrimOptions& opt, double spee
   if (opt.condition == TurnCondition::SteerTorque) model.setInput(s, Input::SteerTorque, opt.steerTorque);
 }
 
-void solveTrim(const VehicleModel& model, double speed, const TrimOptions& opt, TrimResult& res, bool warm);
-
 // A cold start begins at the design pose, where force-based tyres carry no load: every tyre force
 // and its derivative vanish, and a tyre with forces at zero slip (Magic Formula shifts) couples the
 // height to lateral rows whose own columns are zero, so the first full Newton step is unbounded.
@@ -152,105 +148,142 @@ void settleHeightAndPitch(const StateFunction& fn, const VehicleModel& model, Si
   }
 }
 
-// Heights (m) of the lowest points of both tyres' toroids (calcTorusContact), state realized to Position.
-Eigen::Vector2d calcContactHeights(const VehicleModel& model, const SimTK::State& s) {
-  model.getSystem().realize(s, SimTK::Stage::Position);
-  Eigen::Vector2d z;
-  int k = 0;
-  for (const auto* w : {&model.getRearWheel(), &model.getFrontWheel()}) {
-    const WheelSpec& spec = k == 0 ? model.getScenario().rearWheel : model.getScenario().frontWheel;
-    const SimTK::Transform& X_GW = w->getBodyTransform(s);
-    z[k++] = X_GW.p()[2] + calcTorusContact(X_GW.R(), SimTK::Vec3(0), spec.radius, spec.crownRadius).r_CP_G[2];
-  }
-  return z;
+// The warm start's speed, unknowns and secant data, kept before a solve overwrites them.
+struct WarmStart {
+  double speed, secantStart;
+  Eigen::VectorXd unknowns, slope, curvature;
+};
+
+WarmStart recordWarmStart(const StateFunction& fn, const std::vector<StateEntry>& unknowns, const TrimResult& res) {
+  const int n = static_cast<int>(unknowns.size());
+  WarmStart w;
+  w.speed = res.speed;
+  w.unknowns.resize(n);
+  for (int j = 0; j < n; ++j) w.unknowns[j] = fn.get(res.state, unknowns[j]);
+  w.slope = res.unknownsPerSpeed, w.curvature = res.unknownsCurvature;
+  w.secantStart = res.secantStartSpeed;
+  return w;
 }
 
-// Moves height and pitch so that both tyres' lowest points are back at `target` (m): a roll step
-// otherwise lifts stiff tyres off the ground, where the residual has no gradient. Geometry only,
-// whatever the contact model; a few Newton steps with differenced 2 x 2 Jacobians.
-void restoreContactHeights(const VehicleModel& model, const Eigen::Vector2d& target, SimTK::State& s) {
-  const CoordinateIndices& ix = model.getIndices();
-  const int unknowns[2] = {ix.height, ix.pitch};
-  for (int it = 0; it < 4; ++it) {
-    const Eigen::Vector2d e = calcContactHeights(model, s) - target;
-    if (e.lpNorm<Eigen::Infinity>() < 1e-13) return;
-    Eigen::Matrix2d J;
-    for (int j = 0; j < 2; ++j) {
-      const double h = 1e-7, q0 = s.getQ()[unknowns[j]];
-      s.updQ()[unknowns[j]] = q0 + h;
-      J.col(j) = (calcContactHeights(model, s) - target - e) / h;
-      s.updQ()[unknowns[j]] = q0;
-    }
-    const Eigen::Vector2d dq = J.fullPivLu().solve(-e);
-    if (!dq.allFinite()) return;
-    for (int j = 0; j < 2; ++j) s.updQ()[unknowns[j]] += dq[j];
+// Predictor: Newton interpolation through the last trims (residual O(dv^3) with three, O(dv^2)
+// with two), instead of the warm start itself (O(dv)). Nothing without a secant slope.
+void predictUnknowns(const StateFunction& fn, const std::vector<StateEntry>& unknowns, const WarmStart& w, double speed,
+                     SimTK::State& s) {
+  const int n = static_cast<int>(unknowns.size());
+  if (w.slope.size() != n) return;
+  const bool quadratic = w.curvature.size() == n;
+  for (int j = 0; j < n; ++j) {
+    double x = w.unknowns[j] + w.slope[j] * (speed - w.speed);
+    if (quadratic) x += w.curvature[j] * (speed - w.speed) * (speed - w.secantStart);
+    fn.set(s, unknowns[j], x);
   }
 }
 
-// A turn from `res` (a trim at another roll, or straight running: roll 0) to opt.roll, in roll steps of
-// at most opt.rollStep at `speed`, each started from the last two by linear extrapolation (a failed step
-// is retried from the last roll reached with half the step, at most four times); then the turn with
-// opt's condition.
-void continueTurn(const VehicleModel& model, double speed, const TrimOptions& opt, TrimResult& res) {
-  const StateFunction fn(model);
-  const CoordinateIndices& ix = model.getIndices();
-  const double from = res.turn ? res.roll : 0.0;
-  if (!res.turn) {  // straight running as a turn of radius infinity, heading along x
-    SimTK::State& s = res.state;
-    const double v = s.getU()[ix.x];
-    s.updQ()[ix.yaw] = 0;
-    s.updU()[ix.y] = 0;
-    s.updU()[ix.yaw] = 0;
-    res.speed = v;
-  }
-  TrimOptions step = opt;
-  step.condition = TurnCondition::Speed;
-  const double full = opt.roll - from;
-  const int n = std::max(1, static_cast<int>(std::ceil(std::abs(full) / opt.rollStep - 1e-9)));
-  const auto unknowns = getTrimUnknowns(model, step);
-  const bool fromStraight = !res.turn;
-  double h = full / n, done = 0, lastStep = 0;  // rad: the step, the roll stepped so far, the last step
-  int halvings = 0, steps = 0;
-  Eigen::VectorXd last, beforeLast;  // unknowns at the last two rolls reached
-  SimTK::State saved;
-  while (steps == 0 || std::abs(full - done) > 1e-15) {  // at least one trim as a turn (roll 0 too)
-    const double next = std::abs(full - done) <= std::abs(h) * (1 + 1e-9) ? full : done + h;
-    step.roll = from + next;
-    SimTK::State& s = res.state;
-    saved = s;
-    const Eigen::Vector2d contactHeights = calcContactHeights(model, s);
-    s.updQ()[ix.roll] = step.roll;
-    if (beforeLast.size() > 0) {  // linear extrapolation from the last two rolls
-      for (size_t j = 0; j < unknowns.size(); ++j)
-        fn.set(s, unknowns[j], last[j] + (last[j] - beforeLast[j]) * (next - done) / lastStep);
-    } else if (steps == 0 && fromStraight) {  // the point-mass turn: tan(roll) = -r V / g, steer ~ w r / V
-      const double r = -model.getScenario().gravity * std::tan(step.roll) / std::max(speed, 0.5);
-      s.updU()[ix.yaw] = r;
-      s.updQ()[ix.steer] += model.getScenario().geometry.wheelbase * r / std::max(speed, 0.5);
+// The secant slope (and, with the warm start's own slope, the curvature) of the unknowns over speed
+// from the warm start `w` to the trim in `res`, for the next predictor.
+void updateSecant(const StateFunction& fn, const std::vector<StateEntry>& unknowns, const WarmStart& w, double speed,
+                  TrimResult& res) {
+  const int n = static_cast<int>(unknowns.size());
+  res.unknownsPerSpeed.resize(n);
+  for (int j = 0; j < n; ++j) res.unknownsPerSpeed[j] = (fn.get(res.state, unknowns[j]) - w.unknowns[j]) / (speed - w.speed);
+  res.secantStartSpeed = w.speed;
+  if (w.slope.size() == n && std::abs(speed - w.secantStart) > 1e-12)
+    res.unknownsCurvature = (res.unknownsPerSpeed - w.slope) / (speed - w.secantStart);
+}
+
+// Damped Newton iteration on the trim unknowns at `speed` from res.state. The Jacobian is kept across
+// steps (and across trims through TrimResult::jacobian), factored only when it changes, and
+// differentiated again when convergence slows or a step finds no descent.
+class TrimNewton {
+ public:
+  TrimNewton(const StateFunction& fn, const std::vector<StateEntry>& unknowns, const TrimOptions& opt, double speed,
+             TrimResult& res)
+      : fn_(fn), unknowns_(unknowns), opt_(opt), speed_(speed), res_(res), s_(res.state),
+        n_(static_cast<int>(unknowns.size())),
+        residual_([this](const SimTK::State& st, Eigen::VectorXd& out) { calcResidual(fn_, opt_, speed_, st, out); }) {}
+
+  // The starting residual, and the warm start's Jacobian (moved along its speed derivative from
+  // `oldSpeed`) when its shape fits.
+  void begin(double oldSpeed) {
+    residual_(s_, r_);
+    if (res_.jacobian.cols() == n_ && res_.jacobian.rows() == r_.size()) {
+      J_.swap(res_.jacobian);
+      if (res_.jacobianPerSpeed.rows() == J_.rows() && res_.jacobianPerSpeed.cols() == n_)
+        J_ += res_.jacobianPerSpeed * (speed_ - oldSpeed);
     }
-    restoreContactHeights(model, contactHeights, s);
-    res.unknownsPerSpeed.resize(0), res.unknownsCurvature.resize(0);
-    try {
-      solveTrim(model, speed, step, res, true);
-    } catch (const TrimError& e) {
-      s = saved;  // back to the last roll reached, with half the step
-      if (++halvings > 4) {
-        std::ostringstream os;
-        os << "stepping the roll from " << from * 180 / M_PI << " deg: failed at " << step.roll * 180 / M_PI
-           << " deg with the step halved 4 times";
-        throw TrimError(speed, e.residual, res.iterations, opt.roll, os.str());
+    res_.jacobianPerSpeed.resize(0, 0);
+  }
+
+  // Steps until the residual's infinity norm is at most opt.tolerance or opt.maxIterations are spent;
+  // stores the iterations, the norm and the Jacobian in res; TrimError if it did not converge.
+  void iterate() {
+    int it = 0;
+    double norm = r_.lpNorm<Eigen::Infinity>();
+    std::vector<double> x0(n_);
+    Eigen::VectorXd rTrial;
+    while (norm > opt_.tolerance && it < opt_.maxIterations) {
+      ++it;
+      if (J_.size() == 0 || refresh_) computeJacobian();
+      refresh_ = false;
+      if (!factored_) decomposition_.compute(J_), factored_ = true;
+      const Eigen::VectorXd dx = decomposition_.solve(-r_);
+      for (int j = 0; j < n_; ++j) x0[j] = fn_.get(s_, unknowns_[j]);
+      double step = 1.0, trialNorm = INFINITY;
+      for (int ls = 0; ls < 30; ++ls, step *= 0.5) {
+        for (int j = 0; j < n_; ++j) fn_.set(s_, unknowns_[j], x0[j] + step * dx[j]);
+        residual_(s_, rTrial);
+        trialNorm = rTrial.lpNorm<Eigen::Infinity>();
+        if (std::isfinite(trialNorm) && trialNorm < (1 - 1e-4 * step) * norm) break;
       }
-      h /= 2;
-      res.jacobian.resize(0, 0);
-      continue;
+      if (!(trialNorm < norm)) {
+        for (int j = 0; j < n_; ++j) fn_.set(s_, unknowns_[j], x0[j]);
+        residual_(s_, r_);
+        if (jacobianIsCurrent_) break;  // no descent even with a fresh Jacobian
+        computeJacobian();
+        continue;
+      }
+      // A Jacobian that no longer gives fast convergence is refreshed before the next step, if any.
+      refresh_ = trialNorm > 0.25 * norm;
+      jacobianIsCurrent_ = false;
+      r_ = rTrial;
+      norm = trialNorm;
     }
-    beforeLast.swap(last);
-    last.resize(unknowns.size());
-    for (size_t j = 0; j < unknowns.size(); ++j) last[j] = fn.get(s, unknowns[j]);
-    lastStep = next - done, done = next, ++steps;
+    res_.iterations = it;
+    res_.residualNorm = norm;
+    if (J_.size() == 0 && norm <= opt_.tolerance) computeJacobian();
+    res_.jacobian.swap(J_);
+    if (!(norm <= opt_.tolerance)) throw TrimError(speed_, norm, it, opt_.roll);
   }
-  if (opt.condition != TurnCondition::Speed) solveTrim(model, speed, opt, res, true);
-}
+
+ private:
+  // Central differences of the residual along each unknown at the current iterate.
+  void computeJacobian() {
+    J_.resize(r_.size(), n_);
+    for (int j = 0; j < n_; ++j) {
+      const double h = opt_.jacobianStep * std::max(1.0, std::abs(fn_.get(s_, unknowns_[j])));
+      fn_.calcDirectionalDerivative(s_, {{unknowns_[j], 1.0}}, h, 2, residual_, col_);
+      J_.col(j) = col_;
+    }
+    jacobianIsCurrent_ = true;
+    factored_ = false;
+    ++res_.jacobianEvaluations;
+  }
+
+  const StateFunction& fn_;
+  const std::vector<StateEntry>& unknowns_;
+  const TrimOptions& opt_;
+  const double speed_;
+  TrimResult& res_;
+  SimTK::State& s_;
+  const int n_;
+  const std::function<void(const SimTK::State&, Eigen::VectorXd&)> residual_;
+  Eigen::VectorXd r_, col_;
+  Eigen::MatrixXd J_;
+  Eigen::CompleteOrthogonalDecomposition<Eigen::MatrixXd> decomposition_;
+  bool jacobianIsCurrent_ = false;  // computed at the current iterate
+  bool factored_ = false;           // decomposition_ holds J_
+  bool refresh_ = false;            // slow convergence: differentiate again before the next step
+};
 
 // A trim at `speed` from `res`: straight running, a turn at the warm start's roll, or a continuation
 // in roll (continueTurn) otherwise.
@@ -282,162 +315,30 @@ void updTrim(const VehicleModel& model, double speed, const TrimOptions& opt, Tr
   solveAny(model, speed, opt, trim, true);
 }
 
-namespace {
+namespace detail {
 
 // Newton's method from `res` (a warm start when `warm`, else the default state) to the trim at `speed`.
 void solveTrim(const VehicleModel& model, double speed, const TrimOptions& opt, TrimResult& res, bool warm) {
   const StateFunction fn(model);
   const auto unknowns = getTrimUnknowns(model, opt);
-  const int n = static_cast<int>(unknowns.size());
   SimTK::State& s = res.state;
-  const double oldSpeed = res.speed;
-  Eigen::VectorXd oldUnknowns(n);
-  for (int j = 0; j < n; ++j) oldUnknowns[j] = fn.get(s, unknowns[j]);
-  const Eigen::VectorXd oldSlope = res.unknownsPerSpeed, oldCurvature = res.unknownsCurvature;
-  const double oldSecantStart = res.secantStartSpeed;
+  const WarmStart old = recordWarmStart(fn, unknowns, res);
   res.speed = speed;
   res.turn = opt.isTurn();
   res.roll = opt.roll;
   res.iterations = res.jacobianEvaluations = 0;
   res.unknownsPerSpeed.resize(0), res.unknownsCurvature.resize(0);
-  setFixedPart(model, opt, speed, warm ? oldSpeed : 0.0, s);
-  // Predictor: Newton interpolation through the last trims (residual O(dv^3) with three, O(dv^2)
-  // with two), instead of the warm start itself (O(dv)).
-  if (warm && oldSlope.size() == n) {
-    const bool quadratic = oldCurvature.size() == n;
-    for (int j = 0; j < n; ++j) {
-      double x = oldUnknowns[j] + oldSlope[j] * (speed - oldSpeed);
-      if (quadratic) x += oldCurvature[j] * (speed - oldSpeed) * (speed - oldSecantStart);
-      fn.set(s, unknowns[j], x);
-    }
-  }
-  auto residual = [&](const SimTK::State& st, Eigen::VectorXd& out) { calcResidual(fn, opt, speed, st, out); };
-
+  setFixedPart(model, opt, speed, warm ? old.speed : 0.0, s);
+  if (warm) predictUnknowns(fn, unknowns, old, speed, s);
   if (!warm) settleHeightAndPitch(fn, model, s, opt.jacobianStep);
-  Eigen::VectorXd r, rTrial, col;
-  residual(s, r);
-  Eigen::MatrixXd J;
-  bool jacobianIsCurrent = false;  // computed at the current iterate
-  Eigen::CompleteOrthogonalDecomposition<Eigen::MatrixXd> decomposition;
-  bool factored = false;           // decomposition holds J
-  bool refresh = false;            // slow convergence: differentiate again before the next step
-  if (res.jacobian.cols() == n && res.jacobian.rows() == r.size()) {
-    J.swap(res.jacobian);
-    if (res.jacobianPerSpeed.rows() == J.rows() && res.jacobianPerSpeed.cols() == n)
-      J += res.jacobianPerSpeed * (speed - oldSpeed);
-  }
-  res.jacobianPerSpeed.resize(0, 0);
-  auto computeJacobian = [&]() {
-    J.resize(r.size(), n);
-    for (int j = 0; j < n; ++j) {
-      const double h = opt.jacobianStep * std::max(1.0, std::abs(fn.get(s, unknowns[j])));
-      fn.calcDirectionalDerivative(s, {{unknowns[j], 1.0}}, h, 2,
-                                   residual, col);
-      J.col(j) = col;
-    }
-    jacobianIsCurrent = true;
-    factored = false;
-    ++res.jacobianEvaluations;
-  };
-
-  int it = 0;
-  double norm = r.lpNorm<Eigen::Infinity>();
-  std::vector<double> x0(n);
-  while (norm > opt.tolerance && it < opt.maxIterations) {
-    ++it;
-    if (J.size() == 0 || refresh) computeJacobian();
-    refresh = false;
-    if (!factored) decomposition.compute(J), factored = true;
-    const Eigen::VectorXd dx = decomposition.solve(-r);
-    for (int j = 0; j < n; ++j) x0[j] = fn.get(s, unknowns[j]);
-    double step = 1.0, trialNorm = INFINITY;
-    for (int ls = 0; ls < 30; ++ls, step *= 0.5) {
-      for (int j = 0; j < n; ++j) fn.set(s, unknowns[j], x0[j] + step * dx[j]);
-      residual(s, rTrial);
-      trialNorm = rTrial.lpNorm<Eigen::Infinity>();
-      if (std::isfinite(trialNorm) && trialNorm < (1 - 1e-4 * step) * norm) break;
-    }
-    if (!(trialNorm < norm)) {
-      for (int j = 0; j < n; ++j) fn.set(s, unknowns[j], x0[j]);
-      residual(s, r);
-      if (jacobianIsCurrent) break;  // no descent even with a fresh Jacobian
-      computeJacobian();
-      continue;
-    }
-    // A Jacobian that no longer gives fast convergence is refreshed before the next step, if any.
-    refresh = trialNorm > 0.25 * norm;
-    jacobianIsCurrent = false;
-    r = rTrial;
-    norm = trialNorm;
-  }
-  res.iterations = it;
-  res.residualNorm = norm;
-  if (J.size() == 0 && norm <= opt.tolerance) computeJacobian();
-  res.jacobian.swap(J);
-  if (!(norm <= opt.tolerance)) throw TrimError(speed, norm, it, opt.roll);
+  TrimNewton newton(fn, unknowns, opt, speed, res);
+  newton.begin(old.speed);
+  newton.iterate();
   if (res.turn && opt.condition != TurnCondition::Speed) res.speed = calcTurnFigures(model, s).speed;
-  if (warm && std::abs(speed - oldSpeed) > 1e-12) {
-    res.unknownsPerSpeed.resize(n);
-    for (int j = 0; j < n; ++j) res.unknownsPerSpeed[j] = (fn.get(s, unknowns[j]) - oldUnknowns[j]) / (speed - oldSpeed);
-    res.secantStartSpeed = oldSpeed;
-    if (oldSlope.size() == n && std::abs(speed - oldSecantStart) > 1e-12)
-      res.unknownsCurvature = (res.unknownsPerSpeed - oldSlope) / (speed - oldSecantStart);
-  }
+  if (warm && std::abs(speed - old.speed) > 1e-12) updateSecant(fn, unknowns, old, speed, res);
 }
 
-}  // namespace
-
-NoTurnError::NoTurnError(double phi, double lo, double hi, double tLo, double tHi)
-    : std::runtime_error([&] {
-        std::ostringstream os;
-        os << "no hands-free turn at roll " << phi * 180 / M_PI << " deg between " << lo << " and " << hi
-           << " m/s: the steer torque of steady turns is " << tLo << " N m at " << lo << " m/s and " << tHi
-           << " N m at " << hi << " m/s, without a sign change";
-        return os.str();
-      }()),
-      roll(phi), low(lo), high(hi) {}
-
-TrimResult calcHandsFreeTrim(const VehicleModel& model, const std::vector<double>& speeds, const TrimOptions& opt,
-                             double preferredSpeed) {
-  TrimOptions fixedSpeed = opt;
-  fixedSpeed.condition = TurnCondition::Speed;
-  std::vector<TrimPoint> scan;  // descending speeds
-  TrimResult work;
-  for (auto v = speeds.rbegin(); v != speeds.rend(); ++v) {
-    try {
-      if (scan.empty()) work = calcTrim(model, *v, fixedSpeed);
-      else updTrim(model, *v, fixedSpeed, work);
-    } catch (const TrimError&) {
-      if (scan.empty()) throw;
-      break;  // too slow for this roll: the scan ends here
-    }
-    scan.push_back(makeTrimPoint(model, work));
-  }
-  const int torque = static_cast<int>(Input::SteerTorque);
-  int best = -1;
-  double bestSpeed = NAN;
-  for (size_t k = 0; k + 1 < scan.size(); ++k) {
-    const double t0 = scan[k].inputs[torque] - opt.steerTorque, t1 = scan[k + 1].inputs[torque] - opt.steerTorque;
-    if (t0 * t1 > 0 || t0 == t1) continue;
-    const double v = scan[k].speed + (scan[k + 1].speed - scan[k].speed) * t0 / (t0 - t1);
-    const bool better = best < 0 || (std::isnan(preferredSpeed) ? v < bestSpeed
-                                                                 : std::abs(v - preferredSpeed) < std::abs(bestSpeed - preferredSpeed));
-    if (better) best = static_cast<int>(k), bestSpeed = v;
-  }
-  if (best < 0)
-    throw NoTurnError(opt.roll, scan.back().speed, scan.front().speed, scan.back().inputs[torque], scan.front().inputs[torque]);
-  TrimPoint start = scan[best];  // the bracket's turns interpolated to the estimated speed
-  const double w = (bestSpeed - scan[best].speed) / (scan[best + 1].speed - scan[best].speed);
-  start.y += w * (scan[best + 1].y - scan[best].y);
-  start.inputs += w * (scan[best + 1].inputs - scan[best].inputs);
-  start.speed = bestSpeed;
-  TrimResult trim = restoreTrim(model, start);
-  trim.unknownsPerSpeed.resize(0), trim.unknownsCurvature.resize(0), trim.jacobian.resize(0, 0);
-  TrimOptions handsFree = opt;
-  handsFree.condition = TurnCondition::SteerTorque;
-  updTrim(model, bestSpeed, handsFree, trim);
-  return trim;
-}
+}  // namespace detail
 
 TrimPoint makeTrimPoint(const VehicleModel& model, const TrimResult& trim) {
   TrimPoint p;
@@ -461,4 +362,4 @@ TrimResult restoreTrim(const VehicleModel& model, const TrimPoint& point) {
   return t;
 }
 
-}  // namespace motostab
+}  // namespace motostab::analysis

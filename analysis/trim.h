@@ -17,7 +17,7 @@
 
 #include "analysis/state_function.h"
 
-namespace motostab {
+namespace motostab::analysis {
 
 /// What fixes a steady turn besides its roll angle.
 enum class TurnCondition {
@@ -89,9 +89,9 @@ class TrimError : public std::runtime_error {
 
 /// The trim unknowns of straight running: the non-cyclic q (yaw, roll, pitch, height, steer,
 /// compliance...), the wheel spin rates, every z, and the steer and drive torques.
-std::vector<StateEntry> getTrimUnknowns(const VehicleModel& model);
+std::vector<StateEntry> getTrimUnknowns(const vehicle::VehicleModel& model);
 /// The unknowns of the trim `options` ask for (straight running, or a turn: see the header comment).
-std::vector<StateEntry> getTrimUnknowns(const VehicleModel& model, const TrimOptions& options);
+std::vector<StateEntry> getTrimUnknowns(const vehicle::VehicleModel& model, const TrimOptions& options);
 
 /// Steady-turn figures of a state (realizes to Velocity). The rear contact point P is the lowest
 /// point of the rear tyre's toroid (calcTorusContact); its velocity is that of the rear-frame point
@@ -102,20 +102,20 @@ struct TurnFigures {
   double pathRadius = INFINITY;      ///< |v_P| / |r|, m (infinite when r = 0)
   double lateralAcceleration = 0;    ///< |v_P| r, m/s^2 (> 0 towards the left)
 };
-TurnFigures calcTurnFigures(const VehicleModel& model, const SimTK::State& state);
+TurnFigures calcTurnFigures(const vehicle::VehicleModel& model, const SimTK::State& state);
 
 /// Trims `model` at `speed` (m/s; with TurnCondition::Steer or ::SteerTorque the starting guess of
 /// the speed). A turn without a warm start at the same roll starts from straight running at `speed`
 /// and steps the roll up (options.rollStep) at that speed. `warmStart` (a trim at a nearby speed) speeds it up: its unknowns,
 /// extrapolated along its secant slope (and curvature), start the iteration, and its Jacobian is
 /// reused, extrapolated with jacobianPerSpeed when that is set. Throws TrimError on failure.
-TrimResult calcTrim(const VehicleModel& model, double speed, const TrimOptions& options = {},
+TrimResult calcTrim(const vehicle::VehicleModel& model, double speed, const TrimOptions& options = {},
                     const TrimResult* warmStart = nullptr);
 
 /// calcTrim in place, without copying a State: `trim` (a trim at a nearby speed) is the warm start
 /// and becomes the trim at `speed` (m/s). Throws TrimError on failure; `trim` then holds the last
 /// iterate and the Jacobian it used, without the predictor data (slopes, curvature).
-void updTrim(const VehicleModel& model, double speed, const TrimOptions& options, TrimResult& trim);
+void updTrim(const vehicle::VehicleModel& model, double speed, const TrimOptions& options, TrimResult& trim);
 
 /// No hands-free turn was found: the steer torque of the fixed-speed turns kept its sign over the speeds.
 class NoTurnError : public std::runtime_error {
@@ -129,12 +129,12 @@ class NoTurnError : public std::runtime_error {
 /// that fails) bracket a sign change of the steer torque, and TurnCondition::SteerTorque solves the
 /// turn from the bracket's linear interpolation. With several, the one nearest `preferredSpeed` (m/s;
 /// NaN: the lowest). Throws NoTurnError when none is bracketed, TrimError when the final trim fails.
-TrimResult calcHandsFreeTrim(const VehicleModel& model, const std::vector<double>& speeds, const TrimOptions& options,
+TrimResult calcHandsFreeTrim(const vehicle::VehicleModel& model, const std::vector<double>& speeds, const TrimOptions& options,
                              double preferredSpeed = NAN);
 
 /// The trim's summary, y and inputs.
-TrimPoint makeTrimPoint(const VehicleModel& model, const TrimResult& trim);
+TrimPoint makeTrimPoint(const vehicle::VehicleModel& model, const TrimResult& trim);
 /// A TrimResult with `point`'s values in a copy of the model's default state.
-TrimResult restoreTrim(const VehicleModel& model, const TrimPoint& point);
+TrimResult restoreTrim(const vehicle::VehicleModel& model, const TrimPoint& point);
 
-}  // namespace motostab
+}  // namespace motostab::analysis

@@ -4,7 +4,10 @@
 #include <cmath>
 #include <stdexcept>
 
-namespace motostab {
+namespace motostab::analysis {
+
+using vehicle::VehicleModel;
+
 
 TurnMapResult runTurnMap(const VehicleModel& model, const TurnMapOptions& opt) {
   if (opt.rolls.empty()) throw std::invalid_argument("runTurnMap: no roll angle");
@@ -77,4 +80,4 @@ void trackModesAcrossRoll(TurnMapResult& map) {
   for (size_t j = ref; j-- > 0;) copyLabels(map.sweeps[j + 1], map.sweeps[j]);
 }
 
-}  // namespace motostab
+}  // namespace motostab::analysis

@@ -5,7 +5,7 @@
 
 #include "analysis/sweep.h"
 
-namespace motostab {
+namespace motostab::analysis {
 
 struct TurnMapOptions {
   SweepOptions sweep;          ///< speeds (all > 0), trim, linearisation, threads; trim.roll is set per roll
@@ -24,7 +24,7 @@ struct TurnMapResult {
 
 /// Runs the sweep of every roll angle (each starting from straight running, stepped up in roll at its
 /// first speed), tracks the modes across roll, then brackets each sweep's critical speeds.
-TurnMapResult runTurnMap(const VehicleModel& model, const TurnMapOptions& options);
+TurnMapResult runTurnMap(const vehicle::VehicleModel& model, const TurnMapOptions& options);
 
 /// Mode identity across roll: starting from the roll angle nearest upright, whose labels come from the
 /// modes' content (labelBranches), each neighbouring roll's branches are matched to the branches of
@@ -32,4 +32,4 @@ TurnMapResult runTurnMap(const VehicleModel& model, const TurnMapOptions& option
 /// eigenvalue distance), cheapest pairs first, and take their labels. The order of the branches is kept.
 void trackModesAcrossRoll(TurnMapResult& map);
 
-}  // namespace motostab
+}  // namespace motostab::analysis

@@ -7,12 +7,26 @@
 
 #include "apps/commands.h"
 #include "diagnosis/diagnosis.h"
-#include "diagnosis/diagnosis_output.h"
+#include "output/diagnosis_output.h"
 #include "io/csv.h"
 #include "io/output_folder.h"
 #include "scenario/scenario.h"
 
 namespace motostab::cli {
+
+using diagnosis::DiagnosisOptions;
+using diagnosis::DiagnosisResult;
+using diagnosis::MeasuredData;
+using diagnosis::loadMeasuredData;
+using diagnosis::runDiagnosis;
+using io::InputError;
+using io::OutputFolder;
+using io::splitFields;
+using output::makeDiagnosisReport;
+using output::writeDiagnosisOutputs;
+using scenario::Scenario;
+using scenario::loadScenario;
+
 namespace {
 
 // A one-line progress bar on stderr (only when stderr is a terminal).

@@ -6,9 +6,13 @@
 #include "apps/commands.h"
 #include "io/output_folder.h"
 #include "response/modes_json.h"
+#include "output/response_output.h"
 #include "response/response_csv.h"
 
 namespace motostab::cli {
+
+using io::OutputFolder;
+
 namespace {
 
 struct ResponseArgs {
@@ -33,7 +37,7 @@ void runResponseIdentify(ResponseArgs args) {
                        : std::filesystem::path(args.out);
   std::cout << response::formatModesTable(result, record.signalColumns);
   OutputFolder folder(out);
-  response::writeResponseReport(folder.getPath(), record, result);
+  output::writeResponseReport(folder.getPath(), record, result);
   folder.commit();
   std::cout << "wrote " << (out / "modes.json").string() << " and " << (out / "response_fit.png").string() << "\n";
 }

@@ -19,9 +19,14 @@
 #include "swingarm/identification/virtual_rig.h"
 
 namespace motostab::cli {
+
+using io::InputError;
+using io::OutputFolder;
+using io::writeFileAtomically;
+
 namespace {
 
-namespace id = motostab::identification;
+namespace id = motostab::swingarm::identification;
 
 struct Args {
   std::string first, second, out;

@@ -9,6 +9,24 @@
 #include "vehicle/vehicle_model.h"
 
 namespace motostab::cli {
+
+using io::writeFileAtomically;
+using scenario::ForkComplianceSpec;
+using scenario::InertiaRepair;
+using scenario::MassSummary;
+using scenario::Scenario;
+using scenario::SteerControllerSpec;
+using scenario::calcMassSummary;
+using scenario::calcNormalTrail;
+using scenario::calcStaticPivotMoment;
+using scenario::calcStaticWheelLoads;
+using scenario::calcSuspensionLever;
+using scenario::convertBicycleParametersToScenario;
+using scenario::formatBicycleParametersUncertainty;
+using scenario::loadScenario;
+using scenario::readBicycleParameterSigmas;
+using vehicle::VehicleModel;
+
 namespace {
 
 // The steer controller's law, schedule, delay and limit (vehicle/steer_controller.h).

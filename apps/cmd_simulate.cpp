@@ -12,9 +12,18 @@
 #include "io/input_error.h"
 #include "io/output_folder.h"
 #include "response/modes_json.h"
-#include "simulation/simulation_output.h"
+#include "apps/simulate_identify.h"
+#include "output/simulation_output.h"
 
 namespace motostab::cli {
+
+using io::InputError;
+using io::OutputFolder;
+using output::writeResponsePlot;
+using output::writeTimeseries;
+using scenario::Scenario;
+using scenario::loadScenario;
+
 namespace {
 
 struct SimulateArgs {
@@ -91,7 +100,7 @@ void runSimulate(SimulateArgs a) {
   if (a.identify) {
     const double t0 = simulation::getFreeResponseStart(o.perturbations);
     const std::vector<std::string> signals{"roll_rate", "steer_rate"};
-    const auto modes = simulation::writeSimulatedModes(out, result, t0, describeSettings(a), signals);
+    const auto modes = writeSimulatedModes(out, result, t0, describeSettings(a), signals);
     std::cout << response::formatModesTable(modes, signals) << "Wrote " << (target / "modes.json").string() << "\n";
   }
   folder.commit();  // also after a fall or a failure: the samples up to it are the run's outputs

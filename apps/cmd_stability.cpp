@@ -1,4 +1,4 @@
-// motostab sweep | linearize: scenario -> model -> trim -> linearise -> modes -> outputs.
+// motostab sweep | linearize | study: scenario -> model -> trim -> linearise -> modes -> outputs.
 #include <cmath>
 #include <iostream>
 
@@ -8,10 +8,40 @@
 #include "io/input_error.h"
 #include "io/output_folder.h"
 #include "output/map_output.h"
-#include "output/study_report.h"
+#include "output/study_output.h"
 #include "output/sweep_output.h"
 
 namespace motostab::cli {
+
+using analysis::LinearModel;
+using analysis::ModeBranch;
+using analysis::SweepOptions;
+using analysis::SweepResult;
+using analysis::TrimOptions;
+using analysis::TrimResult;
+using analysis::TurnMapOptions;
+using analysis::TurnMapResult;
+using analysis::calcTrim;
+using analysis::linearize;
+using analysis::runSweep;
+using analysis::runTurnMap;
+using analysis::trackModes;
+using io::InputError;
+using io::OutputFolder;
+using output::formatSweepTable;
+using output::formatTurnMapTable;
+using output::makeStudyReport;
+using output::writeLinearModel;
+using output::writeStudyOutputs;
+using output::writeSweepOutputs;
+using output::writeTurnMapOutputs;
+using scenario::Scenario;
+using scenario::loadScenario;
+using studies::StudyOptions;
+using studies::StudyResult;
+using studies::runStudy;
+using vehicle::VehicleModel;
+
 
 namespace {
 
@@ -22,9 +52,8 @@ void checkTurnSpeeds(double slowest, const std::string& key) {
                    "steady turns (--roll-deg) need speeds above 0 m/s: start the speed grid above 0, e.g. --speeds 1:40:1");
 }
 
-}  // namespace
-
-void registerStabilityCommands(CLI::App& app) {
+// motostab sweep: eigenvalues over speed, or a speed x roll map of steady turns.
+void registerSweepCommand(CLI::App& app) {
   struct SweepArgs {
     std::string scenario, speeds, out, roll;
     std::vector<std::string> overrides;
@@ -80,7 +109,10 @@ void registerStabilityCommands(CLI::App& app) {
               << formatSweepTable(result) << "Wrote " << out << "/{eigenvalues.csv, summary.json, root_locus.{png,svg,gp}, "
               << "real_part_vs_speed.{png,svg,gp}}\n";
   });
+}
 
+// motostab linearize: A, B and the eigenvectors at one speed.
+void registerLinearizeCommand(CLI::App& app) {
   struct LinArgs {
     std::string scenario, out;
     double speed = 0, rollDeg = NAN;
@@ -115,7 +147,10 @@ void registerStabilityCommands(CLI::App& app) {
               << " iterations; " << lm.states.size() << " states. Wrote " << linArgs->out
               << "/{A.csv, B.csv, eigenvalues.csv, eigenvectors.csv, linear_model.json}\n";
   });
+}
 
+// motostab study: the seed paper's swingarm study.
+void registerStudyCommand(CLI::App& app) {
   struct StudyArgs {
     std::string scenario, speeds, out;
     std::vector<std::string> overrides;
@@ -168,6 +203,14 @@ void registerStabilityCommands(CLI::App& app) {
     std::cout << makeStudyReport(result, opt) << "\nWrote " << out
               << "/{report.md, study_modes.csv, weave_shapes.csv, fig09..fig12 (.gp/.png/.svg), nominal/, halved/}\n";
   });
+}
+
+}  // namespace
+
+void registerStabilityCommands(CLI::App& app) {
+  registerSweepCommand(app);
+  registerLinearizeCommand(app);
+  registerStudyCommand(app);
 }
 
 }  // namespace motostab::cli

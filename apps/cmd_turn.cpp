@@ -11,6 +11,21 @@
 
 namespace motostab::cli {
 
+using analysis::NoTurnError;
+using analysis::TrimOptions;
+using analysis::TrimResult;
+using analysis::calcHandsFreeTrim;
+using analysis::calcTrim;
+using analysis::makeSpeedGrid;
+using io::InputError;
+using io::OutputFolder;
+using output::formatTrimTable;
+using output::writeTrimJson;
+using scenario::Scenario;
+using scenario::loadScenario;
+using vehicle::VehicleModel;
+
+
 void registerTurnCommands(CLI::App& app) {
   struct TrimArgs {
     std::string scenario, out, speeds;

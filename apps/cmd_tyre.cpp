@@ -16,6 +16,19 @@
 #include "tyres/magic_formula.h"
 
 namespace motostab::cli {
+
+using io::InputError;
+using io::OutputFolder;
+using io::formatNumber;
+using io::parseFiniteNumber;
+using output::TyreCurvePoint;
+using output::writeTyreCurve;
+using tyres::MagicFormulaVariant;
+using tyres::TirFile;
+using tyres::makeTirSource;
+using tyres::makeTyreForceLaw;
+using tyres::warnUnused;
+
 namespace {
 
 struct TyreArgs {

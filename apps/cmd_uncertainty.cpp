@@ -14,9 +14,29 @@
 #include "io/input_error.h"
 #include "io/output_folder.h"
 #include "uncertainty/distributed.h"
-#include "uncertainty/uncertainty_output.h"
+#include "output/uncertainty_output.h"
 
 namespace motostab::cli {
+
+using io::InputError;
+using io::OutputFolder;
+using output::makeUncertaintyReport;
+using output::writeUncertaintyOutputs;
+using scenario::Scenario;
+using scenario::loadScenario;
+using uncertainty::DistributedSession;
+using uncertainty::SamplingMethod;
+using uncertainty::UncertaintyOptions;
+using uncertainty::UncertaintySetup;
+using uncertainty::UncertaintySummary;
+using uncertainty::gatherResults;
+using uncertainty::getModeValueCount;
+using uncertainty::getRankTasks;
+using uncertainty::getTaskCount;
+using uncertainty::prepareUncertainty;
+using uncertainty::runTasks;
+using uncertainty::summarizeUncertainty;
+
 namespace {
 
 struct UncertaintyArgs {

@@ -11,6 +11,10 @@
 
 namespace motostab::cli {
 
+using io::InputError;
+using io::parseFiniteNumber;
+
+
 void parseSpeedRange(const std::string& text, double& start, double& stop, double& step) {
   std::vector<std::optional<double>> v;
   std::stringstream ss(text);

@@ -24,10 +24,10 @@ int main(int argc, char** argv) {
   } catch (const CLI::ParseError& e) {
     // --help and --version exit 0; every parse or validation error is bad input: 2, not CLI11's code.
     return app.exit(e) == 0 ? 0 : 2;
-  } catch (const motostab::InputError& e) {
+  } catch (const motostab::io::InputError& e) {
     std::cerr << "motostab: input error: " << e.what() << "\n";
     return 2;
-  } catch (const motostab::ResultError& e) {
+  } catch (const motostab::io::ResultError& e) {
     std::cerr << "motostab: no result: " << e.what() << "\n";
     return 3;
   } catch (const std::exception& e) {

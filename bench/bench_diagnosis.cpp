@@ -17,21 +17,21 @@ const std::string kData = std::string(MOTOSTAB_SOURCE_DIR) + "/examples/diagnosi
 
 double timeYardstick() {
   const auto t0 = std::chrono::steady_clock::now();
-  const motostab::VehicleModel model(motostab::loadScenario(kScenario));
-  benchmark::DoNotOptimize(motostab::runSweep(model, motostab::SweepOptions()));
+  const motostab::vehicle::VehicleModel model(motostab::scenario::loadScenario(kScenario));
+  benchmark::DoNotOptimize(motostab::analysis::runSweep(model, motostab::analysis::SweepOptions()));
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
 
 void BM_KooijmanDiagnosis(benchmark::State& state) {
-  const motostab::MeasuredData data = motostab::loadMeasuredData(kData);
-  motostab::DiagnosisOptions opt;
+  const motostab::diagnosis::MeasuredData data = motostab::diagnosis::loadMeasuredData(kData);
+  motostab::diagnosis::DiagnosisOptions opt;
   opt.threads = 2;
   opt.robustness = true;  // the reruns with each data source left out and at mid speeds
   double seconds = 0, ratio = 0;
   for (auto _ : state) {
     const double yard = timeYardstick();
     const auto t0 = std::chrono::steady_clock::now();
-    benchmark::DoNotOptimize(motostab::runDiagnosis(kScenario, data, opt));
+    benchmark::DoNotOptimize(motostab::diagnosis::runDiagnosis(kScenario, data, opt));
     const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     seconds += s;
     ratio += s / yard;

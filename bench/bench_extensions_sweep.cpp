@@ -26,11 +26,11 @@ using motostab::bench::timeSweep401;
 
 // Arg 0: all four extensions; arg k = 1..4: extension k alone (kExtensions[k - 1]).
 void BM_EnduroExtensionsSweep401(benchmark::State& st) {
-  const motostab::VehicleModel plain(motostab::loadScenario(kEnduro));
+  const motostab::vehicle::VehicleModel plain(motostab::scenario::loadScenario(kEnduro));
   const int which = static_cast<int>(st.range(0));
   const std::vector<std::string> overrides =
       which == 0 ? kExtensions : std::vector<std::string>{kExtensions[static_cast<size_t>(which - 1)]};
-  const motostab::VehicleModel extended(motostab::loadScenario(kEnduro, overrides));
+  const motostab::vehicle::VehicleModel extended(motostab::scenario::loadScenario(kEnduro, overrides));
   std::vector<double> ratios, plainMs, extendedMs;
   size_t nPlain = 0, nExtended = 0;
   for (auto _ : st) {

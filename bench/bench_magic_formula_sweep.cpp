@@ -15,9 +15,9 @@
 
 #include "bench/sweep_timing.h"
 #include "analysis/linearize.h"
-#include "io/portable_random.h"
+#include "core/portable_random.h"
 #include "scenario/scenario.h"
-#include "scenario/yaml_map.h"
+#include "io/yaml_map.h"
 #include "tyres/magic_formula.h"
 
 namespace {
@@ -60,8 +60,8 @@ using motostab::bench::median;
 using motostab::bench::timeSweep401;
 
 void BM_EnduroMagicFormulaSweep401(benchmark::State& st) {
-  const motostab::VehicleModel linear(motostab::loadScenario(kEnduro));
-  const motostab::VehicleModel mf(motostab::loadScenario(kEnduro, makeOverrides(static_cast<int>(st.range(0)))));
+  const motostab::vehicle::VehicleModel linear(motostab::scenario::loadScenario(kEnduro));
+  const motostab::vehicle::VehicleModel mf(motostab::scenario::loadScenario(kEnduro, makeOverrides(static_cast<int>(st.range(0)))));
   const bool mirror = st.range(1) != 0;
   std::vector<double> ratios, linearMs, mfMs;
   size_t nLinear = 0, nMf = 0;
@@ -76,14 +76,14 @@ void BM_EnduroMagicFormulaSweep401(benchmark::State& st) {
   st.counters["n_mf"] = static_cast<double>(nMf);
   // Why a sweep costs what it costs (one untimed sweep each): Newton iterations and trim Jacobians
   // summed over the speeds, and the column groups of A at 20 m/s (each group is one or two evaluations).
-  for (const auto& [name, model] : {std::pair<const char*, const motostab::VehicleModel*>{"linear", &linear}, {"mf", &mf}}) {
-    motostab::SweepOptions opt;
+  for (const auto& [name, model] : {std::pair<const char*, const motostab::vehicle::VehicleModel*>{"linear", &linear}, {"mf", &mf}}) {
+    motostab::analysis::SweepOptions opt;
     opt.start = 0, opt.stop = 40, opt.step = 0.1;
     opt.mirrorLateralColumns = mirror;
-    const auto r = motostab::runSweep(*model, opt);
+    const auto r = motostab::analysis::runSweep(*model, opt);
     double iterations = 0, jacobians = 0;
     for (const auto& t : r.trims) iterations += t.iterations, jacobians += t.jacobianEvaluations;
-    const auto grouping = motostab::calcColumnGrouping({&r.models[199], &r.models[200]});
+    const auto grouping = motostab::analysis::calcColumnGrouping({&r.models[199], &r.models[200]});
     st.counters[std::string("trim_iter_") + name] = iterations;
     st.counters[std::string("trim_jac_") + name] = jacobians;
     st.counters[std::string("groups_") + name] = static_cast<double>(grouping.groups.size());
@@ -96,18 +96,18 @@ BENCHMARK(BM_EnduroMagicFormulaSweep401)
     ->UseRealTime();
 
 void BM_TyreEvaluation(benchmark::State& st) {
-  std::unique_ptr<motostab::TyreForceLaw> law;
+  std::unique_ptr<motostab::tyres::TyreForceLaw> law;
   double Fz = 3000;
   if (st.range(0) == 0) {
     YAML::Node front = YAML::LoadFile(kSupersportMf)["contact"]["front"]["coefficients"];
-    motostab::YamlMap m(front, kSupersportMf, "contact.front.coefficients");
-    law = motostab::makeTyreForceLaw(motostab::MagicFormulaVariant::Motorcycle, *motostab::makeYamlSource(m, nullptr));
+    motostab::io::YamlMap m(front, kSupersportMf, "contact.front.coefficients");
+    law = motostab::tyres::makeTyreForceLaw(motostab::tyres::MagicFormulaVariant::Motorcycle, *motostab::tyres::makeYamlSource(m, nullptr));
     Fz = 1100;
   } else {
-    law = motostab::loadTirForceLaw(kSampleTir);
+    law = motostab::tyres::loadTirForceLaw(kSampleTir);
   }
-  motostab::PortableRandom rng(5);
-  std::vector<motostab::TyreSlip> slips(256);
+  motostab::core::PortableRandom rng(5);
+  std::vector<motostab::tyres::TyreSlip> slips(256);
   for (auto& s : slips) s = {Fz * rng.drawUniform(0.5, 1.5), rng.drawUniform(-0.02, 0.02), rng.drawUniform(-0.05, 0.05),
                             rng.drawUniform(-0.1, 0.1), 20};
   size_t i = 0;

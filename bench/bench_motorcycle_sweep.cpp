@@ -24,21 +24,21 @@ double median(std::vector<double> v) {
 }
 
 void BM_EnduroTwistSweep401(benchmark::State& st) {
-  const motostab::VehicleModel model(motostab::loadScenario(kEnduro, {"swingarm.compliance=twist"}));
-  motostab::SweepOptions opt;
+  const motostab::vehicle::VehicleModel model(motostab::scenario::loadScenario(kEnduro, {"swingarm.compliance=twist"}));
+  motostab::analysis::SweepOptions opt;
   opt.start = 0, opt.stop = 40, opt.step = 0.1;
   opt.threads = static_cast<int>(st.range(0));
-  const SimTK::State trimmed = motostab::calcTrim(model, 20.0).state;
+  const SimTK::State trimmed = motostab::analysis::calcTrim(model, 20.0).state;
   size_t states = 0;
   std::vector<double> realize, ratio;
   for (auto _ : st) {
-    // The yardstick, (2n+1) realizations to Acceleration per speed, timed just before each
+    // The yardstick, (2n+1) realizations to Acceleration per speed, timed just before each
     // sweep (the VM's speed drifts): ratio = sweep / yardstick, median over the iterations.
     st.PauseTiming();
     realize.push_back(motostab::bench::calcRealizeSeconds(model, trimmed, 3000));
     st.ResumeTiming();
     const auto t0 = std::chrono::steady_clock::now();
-    auto r = motostab::runSweep(model, opt);
+    auto r = motostab::analysis::runSweep(model, opt);
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     states = r.models.back().A.rows();
     ratio.push_back(seconds / (401 * (2 * states + 1) * realize.back()));
@@ -57,13 +57,13 @@ BENCHMARK(BM_EnduroTwistSweep401)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)
 // each, nothing shared) on two threads of this process against the same two one after the other
 // (counter machine_speedup, median of the ratios); fraction = median of speedup / machine_speedup.
 void BM_EnduroTwistSweepSpeedup(benchmark::State& st) {
-  const motostab::VehicleModel model(motostab::loadScenario(kEnduro, {"swingarm.compliance=twist"}));
-  const std::unique_ptr<motostab::VehicleModel> replica = model.makeReplica();
-  auto sweep = [](const motostab::VehicleModel& m, int threads) {
-    motostab::SweepOptions opt;
+  const motostab::vehicle::VehicleModel model(motostab::scenario::loadScenario(kEnduro, {"swingarm.compliance=twist"}));
+  const std::unique_ptr<motostab::vehicle::VehicleModel> replica = model.makeReplica();
+  auto sweep = [](const motostab::vehicle::VehicleModel& m, int threads) {
+    motostab::analysis::SweepOptions opt;
     opt.start = 0, opt.stop = 40, opt.step = 0.1;
     opt.threads = threads;
-    auto r = motostab::runSweep(m, opt);
+    auto r = motostab::analysis::runSweep(m, opt);
     benchmark::DoNotOptimize(r.criticalSpeeds.data());
   };
   auto seconds = [](const std::function<void()>& f) {
@@ -92,8 +92,8 @@ void BM_EnduroTwistSweepSpeedup(benchmark::State& st) {
 BENCHMARK(BM_EnduroTwistSweepSpeedup)->Unit(benchmark::kMillisecond)->Iterations(15)->UseRealTime();
 
 void BM_EnduroTwistRealize(benchmark::State& st) {
-  const motostab::VehicleModel model(motostab::loadScenario(kEnduro, {"swingarm.compliance=twist"}));
-  motostab::bench::runRealizeLoop(st, model, motostab::calcTrim(model, 20.0).state, motostab::Slot::Q, model.getIndices().roll);
+  const motostab::vehicle::VehicleModel model(motostab::scenario::loadScenario(kEnduro, {"swingarm.compliance=twist"}));
+  motostab::bench::runRealizeLoop(st, model, motostab::analysis::calcTrim(model, 20.0).state, motostab::analysis::Slot::Q, model.getIndices().roll);
 }
 BENCHMARK(BM_EnduroTwistRealize)->Unit(benchmark::kMicrosecond);
 

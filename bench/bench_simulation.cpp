@@ -1,19 +1,21 @@
 // Speed figures: real-time factor (simulated seconds per wall second, counter "rtf") of
 // `motostab simulate` runs at the default accuracy (1e-6, auto integrator, PI speed control, 0.01 s
 // samples; auto picks ROS34PW2 for the enduro, RungeKuttaMerson for the constrained Whipple). The
-// issue's figure is the enduro torsion model at 20 m/s; Whipple at 5 m/s for comparison.
+// headline figure is the enduro torsion model at 20 m/s; Whipple at 5 m/s for comparison.
 // Wall time counts the integration and sampling only (SimulationResult::wallSeconds), not the trim.
 #include <benchmark/benchmark.h>
 
 #include "simulation/simulation.h"
 
+using motostab::simulation::SimulationOptions;
+
+
 namespace {
 
-using motostab::simulation::SimulationOptions;
 
 void runRealTimeFactor(benchmark::State& st, const std::string& scenarioFile, const std::vector<std::string>& sets,
                        double speed, const std::string& perturb, double duration) {
-  const motostab::Scenario scenario = motostab::loadScenario(std::string(MOTOSTAB_SOURCE_DIR) + scenarioFile, sets);
+  const motostab::scenario::Scenario scenario = motostab::scenario::loadScenario(std::string(MOTOSTAB_SOURCE_DIR) + scenarioFile, sets);
   SimulationOptions opt;
   opt.speed = speed;
   opt.duration = duration;

@@ -41,33 +41,33 @@ double median(std::vector<double> v) {
   return v[v.size() / 2];
 }
 
-motostab::SweepOptions makeSpeeds() {
-  motostab::SweepOptions opt;
+motostab::analysis::SweepOptions makeSpeeds() {
+  motostab::analysis::SweepOptions opt;
   opt.start = 10, opt.stop = 50, opt.step = 1;
   return opt;
 }
 
-Times timeUpright(const motostab::VehicleModel& model) {
+Times timeUpright(const motostab::vehicle::VehicleModel& model) {
   return measure([&] {
     for (int k = 0; k < 10; ++k) {
-      auto r = motostab::runSweep(model, makeSpeeds());
+      auto r = motostab::analysis::runSweep(model, makeSpeeds());
       benchmark::DoNotOptimize(r.criticalSpeeds.data());
     }
   });
 }
 
-Times timeMap(const motostab::VehicleModel& model) {
-  motostab::TurnMapOptions opt;
+Times timeMap(const motostab::vehicle::VehicleModel& model) {
+  motostab::analysis::TurnMapOptions opt;
   opt.sweep = makeSpeeds();
   for (int k = 0; k < 10; ++k) opt.rolls.push_back(k * 5 * M_PI / 180);
   return measure([&] {
-    auto r = motostab::runTurnMap(model, opt);
+    auto r = motostab::analysis::runTurnMap(model, opt);
     benchmark::DoNotOptimize(r.sweeps.data());
   });
 }
 
 void BM_EnduroTurnMap41x10(benchmark::State& st) {
-  const motostab::VehicleModel model(motostab::loadScenario(kEnduro));
+  const motostab::vehicle::VehicleModel model(motostab::scenario::loadScenario(kEnduro));
   std::vector<double> ratios, wallRatios, uprightMs, mapMs;
   for (auto _ : st) {
     const Times a = timeUpright(model), b = timeMap(model);

@@ -1,5 +1,5 @@
 // Speed figures: uncertainty studies (motostab uncertainty). Each study runs on 2 threads
-// (the "2 cores"); counters give the CPU time and the ratio of wall time to the sum of the
+// (a 2-core machine); counters give the CPU time and the ratio of wall time to the sum of the
 // serial sweeps' yardstick (one nominal sweep timed just before, times the sweeps, divided by 2).
 // The MPI case times `mpirun -n 1` and `-n 2` of the motostab binary, alternated, and reports the
 // speed-up as the median ratio.
@@ -46,20 +46,20 @@ double calcCpuSeconds() { return static_cast<double>(std::clock()) / CLOCKS_PER_
 
 void runStudy(benchmark::State& st, const std::string& file, const std::vector<std::string>& overrides, size_t samples,
               double start, double stop, double step) {
-  motostab::UncertaintyOptions o;
+  motostab::uncertainty::UncertaintyOptions o;
   o.samples = samples, o.start = start, o.stop = stop, o.step = step;
-  const auto setup = motostab::prepareUncertainty(file, overrides, o);
-  std::vector<size_t> all(motostab::getTaskCount(setup));
+  const auto setup = motostab::uncertainty::prepareUncertainty(file, overrides, o);
+  std::vector<size_t> all(motostab::uncertainty::getTaskCount(setup));
   for (size_t t = 0; t < all.size(); ++t) all[t] = t;
   for (auto _ : st) {
     st.PauseTiming();
     const auto t0 = Clock::now();  // yardstick: one serial nominal sweep
-    motostab::runTask(setup, 0);
+    motostab::uncertainty::runTask(setup, 0);
     const double yard = std::chrono::duration<double>(Clock::now() - t0).count() * all.size() / 2;
     const double cpu0 = calcCpuSeconds();
     st.ResumeTiming();
     const auto w0 = Clock::now();
-    auto r = motostab::runTasks(setup, all, 2);
+    auto r = motostab::uncertainty::runTasks(setup, all, 2);
     const double wall = std::chrono::duration<double>(Clock::now() - w0).count();
     benchmark::DoNotOptimize(r.data());
     st.counters["cpu_s"] = calcCpuSeconds() - cpu0;

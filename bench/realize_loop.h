@@ -8,6 +8,12 @@
 
 namespace motostab::bench {
 
+using analysis::Slot;
+using analysis::StateEntry;
+using analysis::StateFunction;
+using vehicle::VehicleModel;
+
+
 inline void runRealizeLoop(benchmark::State& st, const VehicleModel& model, SimTK::State s, Slot slot, int index) {
   const StateFunction fn(model);
   const double base = fn.get(s, {slot, index});

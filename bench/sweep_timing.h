@@ -11,6 +11,11 @@
 
 namespace motostab::bench {
 
+using analysis::SweepOptions;
+using analysis::runSweep;
+using vehicle::VehicleModel;
+
+
 inline double median(std::vector<double> v) {
   std::sort(v.begin(), v.end());
   return v[v.size() / 2];

@@ -9,7 +9,14 @@
 #include "io/csv.h"
 #include "scenario/parameter_paths.h"
 
-namespace motostab {
+namespace motostab::diagnosis {
+
+using io::formatNumber;
+using scenario::ParameterKind;
+using scenario::ScalarParameter;
+using scenario::getDefaultSigma;
+using scenario::listScalarParameters;
+
 namespace {
 
 double getScalar(const YAML::Node& tree, const char* section, const char* key, double fallback) {
@@ -234,4 +241,4 @@ std::vector<Candidate> filterCandidates(const std::vector<Candidate>& all, const
   return out;
 }
 
-}  // namespace motostab
+}  // namespace motostab::diagnosis

@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-namespace motostab {
+namespace motostab::diagnosis {
 
 struct CandidateParameter {
   std::string name;         ///< JSON key: the scenario key (damping_Nms_per_rad) or "value" for parameter:*
@@ -51,4 +51,4 @@ constexpr double kRiderMass_kg = 75;
 /// `patterns` is empty. An entry that matches nothing is an error (std::invalid_argument naming it).
 std::vector<Candidate> filterCandidates(const std::vector<Candidate>& all, const std::vector<std::string>& patterns);
 
-}  // namespace motostab
+}  // namespace motostab::diagnosis

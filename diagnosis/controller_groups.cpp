@@ -2,7 +2,7 @@
 
 #include <algorithm>
 
-namespace motostab {
+namespace motostab::diagnosis {
 
 std::vector<ControllerGroup> splitByController(const MeasuredData& data) {
   std::vector<ControllerGroup> groups;
@@ -47,4 +47,4 @@ std::vector<std::string> getControllerPaths(const MeasuredData& data) {
   return paths;
 }
 
-}  // namespace motostab
+}  // namespace motostab::diagnosis

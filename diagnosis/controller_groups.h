@@ -10,7 +10,7 @@
 
 #include "diagnosis/measured_data.h"
 
-namespace motostab {
+namespace motostab::diagnosis {
 
 /// The rows and runs of one controller setting, as a MeasuredData of their own (no controller).
 struct ControllerGroup {
@@ -26,4 +26,4 @@ std::vector<ControllerGroup> splitByController(const MeasuredData& data);
 /// sorted and unique: a `parameter:` candidate on one of them would override every group's setting.
 std::vector<std::string> getControllerPaths(const MeasuredData& data);
 
-}  // namespace motostab
+}  // namespace motostab::diagnosis

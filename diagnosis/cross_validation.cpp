@@ -4,9 +4,12 @@
 #include <cmath>
 #include <exception>
 
-#include "analysis/parallel.h"
+#include "core/parallel.h"
 
-namespace motostab {
+namespace motostab::diagnosis {
+
+using core::runParallel;
+
 namespace {
 
 // Sum of squares of r over the observations of fold f, and their count.
@@ -58,4 +61,4 @@ FoldScores scoreFolds(int numFolds, const std::vector<int>& foldOf, const std::f
   return s;
 }
 
-}  // namespace motostab
+}  // namespace motostab::diagnosis

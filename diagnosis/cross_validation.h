@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-namespace motostab {
+namespace motostab::diagnosis {
 
 struct FoldScores {
   std::vector<double> rms;           ///< held-out RMS per fold (normalised residuals)
@@ -27,4 +27,4 @@ struct FoldScores {
 FoldScores scoreFolds(int numFolds, const std::vector<int>& foldOf, const std::function<Eigen::VectorXd(int)>& fitFold,
                       const Eigen::VectorXd& fullFit, double divergence = 100, int threads = 1);
 
-}  // namespace motostab
+}  // namespace motostab::diagnosis

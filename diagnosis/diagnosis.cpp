@@ -6,7 +6,7 @@
 #include <mutex>
 #include <stdexcept>
 
-#include "analysis/parallel.h"
+#include "core/parallel.h"
 #include "diagnosis/controller_groups.h"
 #include "diagnosis/cross_validation.h"
 #include "diagnosis/fit_problem.h"
@@ -14,9 +14,16 @@
 #include "diagnosis/priors.h"
 #include "diagnosis/robustness.h"
 #include "scenario/scenario.h"
-#include "scenario/yaml_map.h"
+#include "io/yaml_map.h"
 
-namespace motostab {
+namespace motostab::diagnosis {
+
+using core::runParallel;
+using io::InputError;
+using io::applyOverride;
+using io::loadYamlFile;
+using scenario::loadScenario;
+
 namespace {
 
 constexpr double kZ95 = 1.959963984540054;   // two-sided 95 % normal quantile
@@ -574,4 +581,4 @@ DiagnosisResult runDiagnosis(const std::string& scenarioFile, const MeasuredData
   return result;
 }
 
-}  // namespace motostab
+}  // namespace motostab::diagnosis

@@ -26,7 +26,7 @@
 #include "diagnosis/measured_data.h"
 #include "diagnosis/prediction.h"
 
-namespace motostab {
+namespace motostab::diagnosis {
 
 struct DiagnosisOptions {
   std::vector<std::string> candidates;  ///< names or globs; empty: all
@@ -147,4 +147,4 @@ DiagnosisResult runDiagnosis(const std::string& scenarioFile, const MeasuredData
 /// The base scenario's YAML tree with `overrides` applied (what extended.yaml holds).
 YAML::Node makeScenarioTree(const std::string& scenarioFile, const std::vector<std::string>& overrides);
 
-}  // namespace motostab
+}  // namespace motostab::diagnosis

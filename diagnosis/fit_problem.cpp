@@ -7,7 +7,10 @@
 #include "diagnosis/priors.h"
 #include "scenario/parameter_paths.h"
 
-namespace motostab {
+namespace motostab::diagnosis {
+
+using scenario::formatOverride;
+
 
 int ModelSpec::size() const {
   int n = 0;
@@ -295,4 +298,4 @@ void FitProblem::updateNoise(const Eigen::VectorXd& e, int k) {
   }
 }
 
-}  // namespace motostab
+}  // namespace motostab::diagnosis

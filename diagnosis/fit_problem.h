@@ -9,7 +9,7 @@
 #include "diagnosis/noise_model.h"
 #include "diagnosis/prediction.h"
 
-namespace motostab {
+namespace motostab::diagnosis {
 
 /// One scalar observation: the real or imaginary part of an eigenvalue row, or one response sample.
 struct Observation {
@@ -99,4 +99,4 @@ class FitProblem {
   const MeasuredData& data_;
 };
 
-}  // namespace motostab
+}  // namespace motostab::diagnosis

@@ -5,7 +5,7 @@
 #include <cmath>
 #include <limits>
 
-namespace motostab {
+namespace motostab::diagnosis {
 namespace {
 
 Eigen::MatrixXd calcJacobian(const LeastSquaresProblem& p, const Eigen::VectorXd& x, const Eigen::VectorXd& r,
@@ -169,4 +169,4 @@ double calcChiSquareSurvival(double x, int df) {
   return std::exp(-z + a * std::log(z) - calcLogGamma(a)) * h;
 }
 
-}  // namespace motostab
+}  // namespace motostab::diagnosis

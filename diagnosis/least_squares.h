@@ -6,7 +6,7 @@
 #include <functional>
 #include <string>
 
-namespace motostab {
+namespace motostab::diagnosis {
 
 struct LeastSquaresProblem {
   /// Weighted residuals (dimensionless) at parameters x; throws to reject x (treated as a failed step).
@@ -44,4 +44,4 @@ LeastSquaresResult solveBoundedLeastSquares(const LeastSquaresProblem& problem, 
 /// Upper tail Q(df/2, x/2) of the chi-square distribution with df degrees of freedom at x.
 double calcChiSquareSurvival(double x, int df);
 
-}  // namespace motostab
+}  // namespace motostab::diagnosis

@@ -8,9 +8,19 @@
 #include "io/csv.h"
 #include "scenario/extension_specs.h"
 #include "scenario/parameter_paths.h"
-#include "scenario/yaml_map.h"
+#include "io/yaml_map.h"
 
-namespace motostab {
+namespace motostab::diagnosis {
+
+using io::CsvTable;
+using io::InputError;
+using io::YamlMap;
+using io::formatNumber;
+using io::loadYamlFile;
+using io::readCsv;
+using scenario::formatOverride;
+using scenario::getSteerControllerScalarKeys;
+
 namespace {
 
 namespace fs = std::filesystem;
@@ -270,4 +280,4 @@ MeasuredData loadMeasuredData(const std::string& path) {
   return data;
 }
 
-}  // namespace motostab
+}  // namespace motostab::diagnosis

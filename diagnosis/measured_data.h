@@ -7,7 +7,7 @@
 
 #include "io/input_error.h"
 
-namespace motostab {
+namespace motostab::diagnosis {
 
 /// One measured eigenvalue (one complex pair with imag >= 0, or a real eigenvalue with imag = 0).
 struct MeasuredEigenvalue {
@@ -17,7 +17,7 @@ struct MeasuredEigenvalue {
   std::string mode;            ///< motostab label (weave, capsize, ...) or empty: the nearest eigenvalue
   double real = 0, imag = 0;   ///< 1/s, rad/s
   double realStderr = 0, imagStderr = 0;  ///< 0: unknown (estimated from the best fit's residuals)
-  InputLocation where;         ///< file and line of the row
+  io::InputLocation where;         ///< file and line of the row
   /// `steer_controller.*` overrides in force for this row (its file's `controller:` mapping, then its
   /// `steer_controller.<key>` columns); empty: the scenario's own controller.
   std::vector<std::string> controller;
@@ -44,7 +44,7 @@ struct ResponseRun {
   double speed = 0;       ///< m/s (given, or the mean of the speed column in the window)
   std::vector<double> time;  ///< s, samples in the window
   std::vector<ResponseSignal> signals;
-  InputLocation where;    ///< the run's entry in the YAML file
+  io::InputLocation where;    ///< the run's entry in the YAML file
   std::vector<std::string> controller;  ///< `steer_controller.*` overrides of its `controller:` mapping
 };
 
@@ -65,4 +65,4 @@ MeasuredData loadMeasuredData(const std::string& path);
 /// Mode labels accepted in eigenvalue files (those analysis/modes.h assigns).
 const std::vector<std::string>& getModeLabels();
 
-}  // namespace motostab
+}  // namespace motostab::diagnosis

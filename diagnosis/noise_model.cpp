@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-namespace motostab {
+namespace motostab::diagnosis {
 namespace {
 
 // phi_{m,1..m} of every order m = 0..p from the reflection coefficients (Durbin-Levinson).
@@ -78,4 +78,4 @@ void whitenSeries(const ArNoise& ar, const double* in, double* out, int n) {
   }
 }
 
-}  // namespace motostab
+}  // namespace motostab::diagnosis

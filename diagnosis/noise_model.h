@@ -17,7 +17,7 @@
 // n (1 - rho) / (1 + rho) independent samples would.
 #include <vector>
 
-namespace motostab {
+namespace motostab::diagnosis {
 
 /// Highest AR order tried.
 constexpr int kMaxArOrder = 8;
@@ -41,4 +41,4 @@ ArNoise fitArNoise(const double* e, int n, double* innovationVariance = nullptr,
 /// Whitens `in` (n samples) into `out` (eq. 1's w_t; out may not alias in). Unit of in.
 void whitenSeries(const ArNoise& ar, const double* in, double* out, int n);
 
-}  // namespace motostab
+}  // namespace motostab::diagnosis

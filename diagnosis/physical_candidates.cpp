@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-namespace motostab {
+namespace motostab::diagnosis {
 namespace {
 
 // A wheel's scalar key, or `fallback` when absent or no number (the scenario loader reports those).
@@ -47,4 +47,4 @@ void addPhysicalCandidates(const YAML::Node& tree, std::vector<Candidate>& out) 
   out.insert(out.end(), added.begin(), added.end());
 }
 
-}  // namespace motostab
+}  // namespace motostab::diagnosis

@@ -16,7 +16,7 @@
 
 #include "diagnosis/candidates.h"
 
-namespace motostab {
+namespace motostab::diagnosis {
 
 /// Crown radius tyre_crown starts from without a tyre width, m: half a 30 mm bicycle tyre.
 constexpr double kDefaultCrownRadius_m = 0.015;
@@ -24,4 +24,4 @@ constexpr double kDefaultCrownRadius_m = 0.015;
 /// Appends tyre_crown and steer_friction where the scenario admits them.
 void addPhysicalCandidates(const YAML::Node& scenarioTree, std::vector<Candidate>& out);
 
-}  // namespace motostab
+}  // namespace motostab::diagnosis

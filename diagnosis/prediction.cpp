@@ -7,7 +7,25 @@
 #include "scenario/scenario.h"
 #include "vehicle/vehicle_model.h"
 
-namespace motostab {
+namespace motostab::diagnosis {
+
+using analysis::LinearModel;
+using analysis::ModeBranch;
+using analysis::SweepOptions;
+using analysis::SweepResult;
+using analysis::TrimResult;
+using analysis::calcColumnGrouping;
+using analysis::calcMatchCost;
+using analysis::calcTrim;
+using analysis::linearizeInPlace;
+using analysis::runSweep;
+using analysis::trackModes;
+using analysis::updTrim;
+using io::InputError;
+using scenario::Scenario;
+using scenario::loadScenario;
+using vehicle::VehicleModel;
+
 namespace {
 
 std::string getStateName(Quantity q) {
@@ -497,4 +515,4 @@ Prediction Predictor::predict(const std::vector<std::string>& overrides,
   return p;
 }
 
-}  // namespace motostab
+}  // namespace motostab::diagnosis

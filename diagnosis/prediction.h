@@ -36,7 +36,7 @@
 #include "diagnosis/measured_data.h"
 #include "diagnosis/noise_model.h"
 
-namespace motostab {
+namespace motostab::diagnosis {
 
 /// The fitted free response of one run.
 struct ResponseFit {
@@ -58,7 +58,7 @@ struct Prediction {
 /// (column unit, the noise's marginal sigma) weights the signals; `noise` per signal (optional): its
 /// AR noise, which prewhitens the fit (generalised least squares, noise_model.h). Throws InputError
 /// (at the run) if a signal's quantity is not a state of the model.
-ResponseFit fitFreeResponse(const LinearModel& lin, const ResponseRun& run, const std::vector<double>& sigma,
+ResponseFit fitFreeResponse(const analysis::LinearModel& lin, const ResponseRun& run, const std::vector<double>& sigma,
                             const std::vector<ArNoise>& noise = {});
 
 /// Predicts measured data for a scenario file with overrides. Thread-safe: predict() builds its own
@@ -75,12 +75,12 @@ class Predictor {
                      bool exact = true, const std::vector<std::vector<ArNoise>>& noise = {}) const;
   /// Linear models at `speeds` (sorted, unique; m/s) for `overrides` (after the base overrides only:
   /// no controller setting of the data is added here).
-  std::vector<LinearModel> calcLinearModels(const std::vector<std::string>& overrides, const std::vector<double>& speeds) const;
+  std::vector<analysis::LinearModel> calcLinearModels(const std::vector<std::string>& overrides, const std::vector<double>& speeds) const;
   /// The sorted, unique speeds predict() linearises at, m/s.
   const std::vector<double>& getSpeeds() const { return speeds_; }
   const std::string& getScenarioFile() const { return scenarioFile_; }
   const std::vector<std::string>& getBaseOverrides() const { return baseOverrides_; }
-  const SweepResult& getReferenceSweep() const { return *reference_; }
+  const analysis::SweepResult& getReferenceSweep() const { return *reference_; }
   /// The Chebyshev points (m/s) of the fast predictions; empty when fits predict exactly.
   const std::vector<double>& getNodes() const { return nodes_; }
 
@@ -91,7 +91,7 @@ class Predictor {
   };
   Prediction predictParts(const std::vector<std::string>& overrides, const std::vector<std::vector<double>>& sigma,
                           bool exact, const std::vector<std::vector<ArNoise>>& noise) const;
-  std::vector<std::complex<double>> predictInterpolated(const std::vector<LinearModel>& models,
+  std::vector<std::complex<double>> predictInterpolated(const std::vector<analysis::LinearModel>& models,
                                                         const std::vector<double>& speeds) const;
   struct ModeTrack {
     std::string mode;
@@ -100,10 +100,10 @@ class Predictor {
   std::vector<double> chooseNodes(double lo, double hi, int labelled) const;
   bool isExactMode(const std::string& mode) const;
   std::vector<std::string> findBranchPointModes(double lo, double hi) const;
-  Eigen::VectorXd calcModeCosts(const std::string& mode, const LinearModel& lin, const LinearModel* prev,
+  Eigen::VectorXd calcModeCosts(const std::string& mode, const analysis::LinearModel& lin, const analysis::LinearModel* prev,
                                 int prevIndex) const;
-  std::vector<ModeTrack> trackModes(const std::vector<LinearModel>& models) const;
-  std::complex<double> pickEigenvalue(const std::vector<LinearModel>& models, size_t k, const MeasuredEigenvalue& row,
+  std::vector<ModeTrack> trackModes(const std::vector<analysis::LinearModel>& models) const;
+  std::complex<double> pickEigenvalue(const std::vector<analysis::LinearModel>& models, size_t k, const MeasuredEigenvalue& row,
                                       const std::vector<ModeTrack>& tracks) const;
 
   std::string scenarioFile_;
@@ -115,11 +115,11 @@ class Predictor {
   /// Labelled modes whose base branch turns between real and complex over the rows' speeds (a
   /// branch point no polynomial follows): the fast predictions take them at the rows' own speeds.
   std::vector<std::string> exactModes_;
-  std::shared_ptr<SweepResult> reference_;
+  std::shared_ptr<analysis::SweepResult> reference_;
   std::vector<std::shared_ptr<ControllerPart>> parts_;  ///< per controller setting (empty: one setting)
 };
 
 /// The speeds at which a row is evaluated (one, or two Gauss-Legendre nodes of its range), m/s.
 std::vector<double> getEvaluationSpeeds(const MeasuredEigenvalue& row);
 
-}  // namespace motostab
+}  // namespace motostab::diagnosis

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-namespace motostab {
+namespace motostab::diagnosis {
 
 double calcPriorResidual(double value, double mean, double sigma) {
   const double z = (value - mean) / sigma;
@@ -29,4 +29,4 @@ int pickCause(const std::vector<FitSummary>& fits, double baselineBic, std::vect
   return named;
 }
 
-}  // namespace motostab
+}  // namespace motostab::diagnosis

@@ -23,7 +23,7 @@
 
 #include "diagnosis/diagnosis.h"
 
-namespace motostab {
+namespace motostab::diagnosis {
 
 constexpr double kPriorNu = 4;              ///< Student-t degrees of freedom of every prior
 constexpr double kContradictionSigmas = 3;  ///< a named change beyond this many sigma of a measured value contradicts it
@@ -42,4 +42,4 @@ bool isOverwhelming(double contradicting, double alternative);
 /// that met every criterion and were not named.
 int pickCause(const std::vector<FitSummary>& fits, double baselineBic, std::vector<int>* contradicting);
 
-}  // namespace motostab
+}  // namespace motostab::diagnosis

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <filesystem>
 
-namespace motostab {
+namespace motostab::diagnosis {
 
 std::vector<DataVariant> makeRobustnessVariants(const MeasuredData& data) {
   std::vector<DataVariant> out;
@@ -29,4 +29,4 @@ std::vector<DataVariant> makeRobustnessVariants(const MeasuredData& data) {
   return out;
 }
 
-}  // namespace motostab
+}  // namespace motostab::diagnosis

@@ -11,7 +11,7 @@
 
 #include "diagnosis/measured_data.h"
 
-namespace motostab {
+namespace motostab::diagnosis {
 
 /// One preparation of the data: a description ("eigenvalues: <file>", "response run 1: <file>",
 /// "speed ranges -> mid speeds") and the data without that source.
@@ -23,4 +23,4 @@ struct DataVariant {
 /// The variants of `data` the robustness reruns diagnose.
 std::vector<DataVariant> makeRobustnessVariants(const MeasuredData& data);
 
-}  // namespace motostab
+}  // namespace motostab::diagnosis

@@ -4,7 +4,7 @@
 #include <random>
 #include <stdexcept>
 
-namespace motostab {
+namespace motostab::io {
 
 std::string makeTemporarySibling(const std::filesystem::path& path) {
   static thread_local std::mt19937_64 rng{std::random_device{}()};
@@ -33,4 +33,4 @@ void writeFileAtomically(const std::filesystem::path& path, const std::string& c
   }
 }
 
-}  // namespace motostab
+}  // namespace motostab::io

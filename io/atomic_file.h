@@ -3,7 +3,7 @@
 #include <filesystem>
 #include <string>
 
-namespace motostab {
+namespace motostab::io {
 
 /// Writes `content` to `path` through a temporary file in the same folder and a rename, so a reader
 /// never sees a partial file. Creates missing parent folders. Throws std::runtime_error on failure.
@@ -12,4 +12,4 @@ void writeFileAtomically(const std::filesystem::path& path, const std::string& c
 /// A fresh hidden temporary path beside `path` (same folder, so a rename is atomic).
 std::string makeTemporarySibling(const std::filesystem::path& path);
 
-}  // namespace motostab
+}  // namespace motostab::io

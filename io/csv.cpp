@@ -8,7 +8,7 @@
 #include "io/input_error.h"
 #include "io/number.h"
 
-namespace motostab {
+namespace motostab::io {
 namespace {
 
 std::string trim(const std::string& s) {
@@ -122,4 +122,4 @@ CsvWriter& CsvWriter::add(const std::string& cell) {
 
 CsvWriter& CsvWriter::add(double value) { return add(formatNumber(value)); }
 
-}  // namespace motostab
+}  // namespace motostab::io

@@ -4,7 +4,7 @@
 #include <string>
 #include <vector>
 
-namespace motostab {
+namespace motostab::io {
 
 /// A numeric table read from a CSV file with a header row. Lines starting with '#' and blank
 /// lines are comments.
@@ -54,4 +54,4 @@ class CsvWriter {
   bool firstCell_ = true;
 };
 
-}  // namespace motostab
+}  // namespace motostab::io

@@ -1,6 +1,6 @@
 #include "io/input_error.h"
 
-namespace motostab {
+namespace motostab::io {
 
 std::string InputLocation::describe() const {
   std::string s = file.empty() ? std::string("<input>") : file;
@@ -15,4 +15,4 @@ std::string InputLocation::describe() const {
 InputError::InputError(const InputLocation& where, const std::string& what)
     : std::runtime_error(where.describe() + ": " + what), where_(where), reason_(what) {}
 
-}  // namespace motostab
+}  // namespace motostab::io

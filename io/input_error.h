@@ -3,7 +3,7 @@
 #include <stdexcept>
 #include <string>
 
-namespace motostab {
+namespace motostab::io {
 
 /// Where a value came from: file, 1-based line and column, and the dotted key path ("rear_frame.mass_kg").
 struct InputLocation {
@@ -27,4 +27,4 @@ class InputError : public std::runtime_error {
   std::string reason_;
 };
 
-}  // namespace motostab
+}  // namespace motostab::io

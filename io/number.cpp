@@ -4,7 +4,7 @@
 #include <cstdlib>
 #include <string>
 
-namespace motostab {
+namespace motostab::io {
 
 std::optional<double> parseFiniteNumber(std::string_view text) {
   const auto first = text.find_first_not_of(" \t\r\n");
@@ -19,4 +19,4 @@ std::optional<double> parseFiniteNumber(std::string_view text) {
   return v;
 }
 
-}  // namespace motostab
+}  // namespace motostab::io

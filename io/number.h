@@ -5,9 +5,9 @@
 #include <optional>
 #include <string_view>
 
-namespace motostab {
+namespace motostab::io {
 
 /// The finite number `text` spells, or nothing (empty, trailing characters, nan, inf, 1e999, hex).
 std::optional<double> parseFiniteNumber(std::string_view text);
 
-}  // namespace motostab
+}  // namespace motostab::io

@@ -12,7 +12,7 @@
 
 #include "io/input_error.h"
 
-namespace motostab {
+namespace motostab::io {
 namespace fs = std::filesystem;
 
 namespace {
@@ -101,4 +101,4 @@ void OutputFolder::commit() {
   committed_ = true;
 }
 
-}  // namespace motostab
+}  // namespace motostab::io

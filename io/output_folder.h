@@ -16,7 +16,7 @@
 // backup left by a kill between the two renames of the fallback.
 #include <filesystem>
 
-namespace motostab {
+namespace motostab::io {
 
 class OutputFolder {
  public:
@@ -41,4 +41,4 @@ class OutputFolder {
   bool committed_ = false;
 };
 
-}  // namespace motostab
+}  // namespace motostab::io

@@ -5,7 +5,7 @@
 
 #include "io/atomic_file.h"
 
-namespace motostab {
+namespace motostab::io {
 
 std::string gnuplotQuote(const std::string& text) {
   std::string out = "'";
@@ -45,4 +45,4 @@ void renderGnuplot(const std::filesystem::path& dir, const std::string& name, co
   std::filesystem::remove(dir / (stem + ".log"));
 }
 
-}  // namespace motostab
+}  // namespace motostab::io

@@ -3,7 +3,7 @@
 #include <filesystem>
 #include <string>
 
-namespace motostab {
+namespace motostab::io {
 
 /// Writes DIR/NAME.gp and renders DIR/NAME.png and DIR/NAME.svg by running gnuplot in DIR.
 /// `body` holds the gnuplot commands after the terminal and output are set (data files are named
@@ -14,4 +14,4 @@ void renderGnuplot(const std::filesystem::path& dir, const std::string& name, co
 /// Quotes a string for use inside a gnuplot single-quoted literal.
 std::string gnuplotQuote(const std::string& text);
 
-}  // namespace motostab
+}  // namespace motostab::io

@@ -4,7 +4,7 @@
 #include <stdexcept>
 #include <string>
 
-namespace motostab {
+namespace motostab::io {
 
 /// Valid input, no result: the message says what was tried and what to set (exit code 3).
 class ResultError : public std::runtime_error {
@@ -12,4 +12,4 @@ class ResultError : public std::runtime_error {
   explicit ResultError(const std::string& what) : std::runtime_error(what) {}
 };
 
-}  // namespace motostab
+}  // namespace motostab::io

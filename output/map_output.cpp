@@ -10,7 +10,15 @@
 #include "io/plot.h"
 #include "output/sweep_output.h"
 
-namespace motostab {
+namespace motostab::output {
+
+using analysis::SweepResult;
+using analysis::TurnMapResult;
+using io::CsvWriter;
+using io::gnuplotQuote;
+using io::renderGnuplot;
+using io::writeFileAtomically;
+
 
 namespace {
 
@@ -156,4 +164,4 @@ std::string formatTurnMapTable(const TurnMapResult& map) {
   return os.str();
 }
 
-}  // namespace motostab
+}  // namespace motostab::output

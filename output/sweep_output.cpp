@@ -11,7 +11,18 @@
 #include "io/csv.h"
 #include "io/plot.h"
 
-namespace motostab {
+namespace motostab::output {
+
+using analysis::LinearModel;
+using analysis::ModeBranch;
+using analysis::StableRange;
+using analysis::SweepResult;
+using analysis::calcStableSpeedRanges;
+using io::CsvWriter;
+using io::gnuplotQuote;
+using io::renderGnuplot;
+using io::writeFileAtomically;
+
 
 double calcFrequencyHz(std::complex<double> l) { return l.imag() / (2 * M_PI); }
 
@@ -283,4 +294,4 @@ void writeLinearModel(const std::filesystem::path& dir, const LinearModel& lin, 
   writeFileAtomically(dir / "linear_model.json", j.dump(2) + "\n");
 }
 
-}  // namespace motostab
+}  // namespace motostab::output

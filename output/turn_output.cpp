@@ -6,7 +6,16 @@
 
 #include "io/atomic_file.h"
 
-namespace motostab {
+namespace motostab::output {
+
+using analysis::TrimResult;
+using analysis::TurnFigures;
+using analysis::calcTurnFigures;
+using io::writeFileAtomically;
+using vehicle::CoordinateIndices;
+using vehicle::Input;
+using vehicle::VehicleModel;
+
 
 nlohmann::json makeTrimJson(const VehicleModel& model, const TrimResult& trim) {
   const CoordinateIndices& ix = model.getIndices();
@@ -59,4 +68,4 @@ std::string formatTrimTable(const VehicleModel& model, const TrimResult& trim) {
   return os.str();
 }
 
-}  // namespace motostab
+}  // namespace motostab::output

@@ -6,19 +6,19 @@
 #include "analysis/trim.h"
 #include "nlohmann/json.hpp"
 
-namespace motostab {
+namespace motostab::output {
 
 /// The trim's pinned keys: speed_mps (rear contact point's speed along its path = path_radius_m x
 /// |yaw_rate_radps|), roll_rad, steer_rad, pitch_rad (rear frame, > 0 nose down), steer_torque_Nm,
 /// drive_torque_Nm, yaw_rate_radps (> 0 left), path_radius_m (rear contact point; null when straight),
 /// lateral_acceleration_mps2 (speed x yaw rate, > 0 left), residual, iterations, and `tyres`: the
 /// contact model's outputs by name (forces, slip and camber angles), empty for rolling constraints.
-nlohmann::json makeTrimJson(const VehicleModel& model, const TrimResult& trim);
+nlohmann::json makeTrimJson(const vehicle::VehicleModel& model, const analysis::TrimResult& trim);
 
 /// DIR/trim.json (makeTrimJson), written atomically.
-void writeTrimJson(const std::filesystem::path& dir, const VehicleModel& model, const TrimResult& trim);
+void writeTrimJson(const std::filesystem::path& dir, const vehicle::VehicleModel& model, const analysis::TrimResult& trim);
 
 /// A short table of the trim for the terminal (degrees where readable).
-std::string formatTrimTable(const VehicleModel& model, const TrimResult& trim);
+std::string formatTrimTable(const vehicle::VehicleModel& model, const analysis::TrimResult& trim);
 
-}  // namespace motostab
+}  // namespace motostab::output

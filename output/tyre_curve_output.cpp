@@ -4,7 +4,13 @@
 #include "io/csv.h"
 #include "io/plot.h"
 
-namespace motostab {
+namespace motostab::output {
+
+using io::CsvWriter;
+using io::gnuplotQuote;
+using io::renderGnuplot;
+using io::writeFileAtomically;
+
 
 const std::vector<std::string>& getTyreCurveColumns() {
   static const std::vector<std::string> columns{"fz_N",  "slip_angle_rad", "camber_rad", "slip_ratio", "fx_N",
@@ -28,4 +34,4 @@ void writeTyreCurve(const std::filesystem::path& dir, const std::string& title, 
                     "\n  set ylabel 'Mz (N m)'\n  plot 'forces.csv' skip 1 using ($2*180/pi):7 with lines lw 2\n");
 }
 
-}  // namespace motostab
+}  // namespace motostab::output

@@ -6,12 +6,12 @@
 
 #include "tyres/magic_formula.h"
 
-namespace motostab {
+namespace motostab::output {
 
 /// One operating point and the forces there (ISO-W signs, tyres/magic_formula.h).
 struct TyreCurvePoint {
-  TyreSlip slip;
-  TyreForces forces;
+  tyres::TyreSlip slip;
+  tyres::TyreForces forces;
 };
 
 /// Pinned CSV columns of forces.csv (17 significant digits).
@@ -21,4 +21,4 @@ const std::vector<std::string>& getTyreCurveColumns();
 /// my_Nm) and DIR/{fy,mz}_vs_slip.{png,svg,gp} (slip angle in degrees). `title` names the tyre.
 void writeTyreCurve(const std::filesystem::path& dir, const std::string& title, const std::vector<TyreCurvePoint>& points);
 
-}  // namespace motostab
+}  // namespace motostab::output

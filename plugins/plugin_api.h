@@ -12,13 +12,13 @@
 
 #include "Simbody.h"
 
-#include "scenario/yaml_map.h"
+#include "io/yaml_map.h"
 
 /// Version of this interface. A library built against another version is refused at load; bump it
 /// whenever a type in this header changes layout or meaning.
-#define MOTOSTAB_PLUGIN_API_VERSION 2
+#define MOTOSTAB_PLUGIN_API_VERSION 3
 
-namespace motostab {
+namespace motostab::plugins {
 
 /// One wheel as a contact model sees it. The wheel body's origin is the wheel centre and its
 /// spin axis is the body y axis.
@@ -56,7 +56,7 @@ class ContactModel {
 };
 
 /// Makes a contact model from its scenario parameters (the `contact` mapping; `model` is consumed).
-using ContactModelFactory = std::function<std::unique_ptr<ContactModel>(YamlMap& params)>;
+using ContactModelFactory = std::function<std::unique_ptr<ContactModel>(io::YamlMap& params)>;
 
 /// Where a swingarm model is attached: the body it hangs from (the rear frame, or the massless
 /// suspension link turning about the pivot when the scenario has a rear suspension), the swingarm
@@ -87,7 +87,7 @@ class SwingarmModel {
 
 /// Makes a swingarm model from the scenario's `swingarm` mapping (pivot, mass properties and
 /// `compliance` are consumed by the loader; the plugin reads its own keys).
-using SwingarmModelFactory = std::function<std::unique_ptr<SwingarmModel>(YamlMap& params)>;
+using SwingarmModelFactory = std::function<std::unique_ptr<SwingarmModel>(io::YamlMap& params)>;
 
 /// What a plugin's entry point registers into: factories by name. Names are unique across all
 /// plugins (built-in and loaded); a duplicate is reported when the registration is committed.
@@ -98,15 +98,10 @@ class PluginRegistrar {
   virtual void addSwingarmModel(const std::string& name, SwingarmModelFactory factory) = 0;
 };
 
-/// A revolute joint about axis n_C (unit, child-body frame) through point p_C (child frame), with
-/// q = 0 at the design pose, where the child body frame sits at X_PC0 in the parent body frame.
-SimTK::MobilizedBody::Pin addPinAtDesignPose(SimTK::MobilizedBody& parent, const SimTK::Transform& X_PC0,
-                                             const SimTK::Body& body, const SimTK::Vec3& p_C, const SimTK::Vec3& n_C);
-
-}  // namespace motostab
+}  // namespace motostab::plugins
 
 /// Entry point a plugin library defines: MOTOSTAB_PLUGIN_ENTRY { registry.addContactModel(...); }.
 /// It also exports the API version the library was built against, checked before registration.
 #define MOTOSTAB_PLUGIN_ENTRY                                                          \
   extern "C" int motostab_plugin_api_version() { return MOTOSTAB_PLUGIN_API_VERSION; } \
-  extern "C" void motostab_register_plugins(motostab::PluginRegistrar& registry)
+  extern "C" void motostab_register_plugins(motostab::plugins::PluginRegistrar& registry)

@@ -6,7 +6,15 @@
 #include <mutex>
 #include <stdexcept>
 
-namespace motostab {
+namespace motostab::plugins {
+
+using io::InputError;
+using io::InputLocation;
+using io::YamlMap;
+using scenario::PluginSpec;
+using scenario::SwingarmSpec;
+using scenario::getSwingarmLoaderKeys;
+
 
 namespace {
 template <class Map>
@@ -124,12 +132,6 @@ std::unique_ptr<ContactModel> PluginRegistry::createContactModel(const PluginSpe
   return model;
 }
 
-SimTK::MobilizedBody::Pin addPinAtDesignPose(SimTK::MobilizedBody& parent, const SimTK::Transform& X_PC0,
-                                             const SimTK::Body& body, const SimTK::Vec3& p_C, const SimTK::Vec3& n_C) {
-  const SimTK::Transform X_CM(SimTK::Rotation(SimTK::UnitVec3(n_C), SimTK::ZAxis), p_C);
-  return SimTK::MobilizedBody::Pin(parent, X_PC0 * X_CM, body, X_CM);
-}
-
 void PluginRegistry::loadLibrary(const std::string& path, const InputLocation& where) {
   const std::string file = resolveLibraryPath(path, where);
   for (const auto& l : libraries_)
@@ -147,4 +149,4 @@ void PluginRegistry::loadLibrary(const std::string& path, const InputLocation& w
   *this = std::move(staged);
 }
 
-}  // namespace motostab
+}  // namespace motostab::plugins

@@ -10,7 +10,7 @@
 #include "plugins/plugin_api.h"
 #include "scenario/scenario.h"
 
-namespace motostab {
+namespace motostab::plugins {
 
 /// Plugins registered by name. Names are unique across built-in and loaded plugins. A registry is a
 /// value: copying it copies the factories (sweep workers build their models from a copy).
@@ -19,12 +19,12 @@ class PluginRegistry : public PluginRegistrar {
   /// Registers a contact model; a duplicate name throws std::runtime_error.
   void addContactModel(const std::string& name, ContactModelFactory factory) override;
   /// Creates the contact model a scenario names; an unknown name is an InputError at spec.path.model.
-  std::unique_ptr<ContactModel> createContactModel(const PluginSpec& spec) const;
+  std::unique_ptr<ContactModel> createContactModel(const scenario::PluginSpec& spec) const;
   std::vector<std::string> getContactModelNames() const;
   /// Registers a swingarm compliance model; a duplicate name throws std::runtime_error.
   void addSwingarmModel(const std::string& name, SwingarmModelFactory factory) override;
   /// Creates the model named by `swingarm.compliance`; unknown names are InputErrors there.
-  std::unique_ptr<SwingarmModel> createSwingarmModel(const SwingarmSpec& spec) const;
+  std::unique_ptr<SwingarmModel> createSwingarmModel(const scenario::SwingarmSpec& spec) const;
   std::vector<std::string> getSwingarmModelNames() const;
 
   /// Adds the plugins of the library at `path` (absolute, or relative to the working directory;
@@ -33,7 +33,7 @@ class PluginRegistry : public PluginRegistrar {
   /// already added to this registry is skipped. Its API version must equal
   /// MOTOSTAB_PLUGIN_API_VERSION. Registration is all-or-nothing: on any failure (entry point
   /// throws, duplicate name) no name of the library is added. Failures are InputErrors at `where`.
-  void loadLibrary(const std::string& path, const InputLocation& where);
+  void loadLibrary(const std::string& path, const io::InputLocation& where);
   /// Canonical paths of the libraries added to this registry, in load order.
   const std::vector<std::string>& getLibraries() const { return libraries_; }
 
@@ -44,4 +44,4 @@ class PluginRegistry : public PluginRegistrar {
   std::vector<std::string> libraries_;
 };
 
-}  // namespace motostab
+}  // namespace motostab::plugins

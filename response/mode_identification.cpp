@@ -11,6 +11,9 @@
 #include "response/matrix_pencil.h"
 
 namespace motostab::response {
+
+using io::formatNumber;
+
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
@@ -147,44 +150,157 @@ void setModes(const ExponentialFit& best, const Eigen::VectorXd& scale, double s
   for (auto& r : ranked) result.modes.push_back(std::move(r.second));
 }
 
-}  // namespace
+// The samples of the window: times tau from its first sample (s) and the signals scaled by their
+// standard deviations, so that all signals weigh alike.
+struct WindowSamples {
+  Eigen::VectorXd tau;
+  Eigen::MatrixXd y;      ///< one column per signal, scaled
+  Eigen::VectorXd scale;  ///< each signal's standard deviation in the window (signal units)
+};
 
-IdentificationResult identifyModes(const std::vector<double>& time, const std::vector<std::vector<double>>& signals,
-                                   const IdentificationOptions& options) {
-  checkInput(time, signals, options);
-
+// The window's samples; its first and last times and sample count go into `result`. Throws
+// std::invalid_argument when the window has too few samples for `maxOrder` or a constant signal.
+WindowSamples selectWindow(const std::vector<double>& time, const std::vector<std::vector<double>>& signals,
+                           const IdentificationOptions& options, int maxOrder, IdentificationResult& result) {
   std::vector<int> index;
   for (size_t i = 0; i < time.size(); ++i)
     if (time[i] >= options.windowStart && time[i] <= options.windowEnd) index.push_back(static_cast<int>(i));
   const int n = static_cast<int>(index.size());
   const int k = static_cast<int>(signals.size());
-  const int maxOrder = options.fixedOrder > 0 ? options.fixedOrder : options.maxOrder;
   const int needed = std::max(12, 3 * (maxOrder + 2));
   if (n < needed)
     throw std::invalid_argument("window has " + std::to_string(n) + " samples; order " + std::to_string(maxOrder) +
                                 " needs at least " + std::to_string(needed) + " (lower the maximum order)");
 
-  IdentificationResult result;
   result.referenceTime = time[index.front()];
   result.windowStart = time[index.front()];
   result.windowEnd = time[index.back()];
   result.sampleCount = n;
-  Eigen::VectorXd tau(n);
-  Eigen::MatrixXd y(n, k);
+  WindowSamples w;
+  Eigen::VectorXd& tau = w.tau;
+  Eigen::MatrixXd& y = w.y;
+  tau.resize(n);
+  y.resize(n, k);
   for (int i = 0; i < n; ++i) {
     tau(i) = time[index[i]] - result.referenceTime;
     for (int s = 0; s < k; ++s) y(i, s) = signals[s][index[i]];
   }
-  // Each signal is scaled by its standard deviation so that all signals weigh alike.
-  Eigen::VectorXd scale(k);
+  Eigen::VectorXd& scale = w.scale;
+  scale.resize(k);
   for (int s = 0; s < k; ++s) {
     const double mean = y.col(s).mean();
     scale(s) = std::sqrt((y.col(s).array() - mean).square().sum() / n);
     if (!(scale(s) > 0)) throw std::invalid_argument("signal " + std::to_string(s) + " is constant in the window");
     y.col(s) /= scale(s);
   }
-  const double span = tau(n - 1);
-  const Eigen::MatrixXd uniform = makeUniformSamples(tau, y, options, result.resampled, result.pencilStep);
+  return w;
+}
+
+// The candidates of one pencil size: its poles without offset or, if an offset is allowed, the offset
+// with one pole fewer (the real pole nearest z = 1 taken as the offset); each polished. Of the two, the
+// offset is kept unless the fit without it is kOffsetPreference times better (it then has a real mode).
+std::vector<ExponentialFit> fitPencilSize(const PencilDecomposition& pencil, int size, const WindowSamples& w,
+                                          const IdentificationOptions& options, int maxOrder, double pencilStep) {
+  const Eigen::VectorXd& tau = w.tau;
+  const Eigen::MatrixXd& y = w.y;
+  const double span = tau(tau.size() - 1), maxOmega = kPi / pencilStep;
+  const auto all = toContinuousPoles(calcPencilPoles(pencil, size), pencilStep, span);
+  std::vector<std::pair<std::vector<ContinuousPole>, bool>> variants{{all, false}};
+  if (options.fitOffset) {
+    auto poles = all;
+    if (removeOffsetPole(poles)) variants.emplace_back(poles, true);
+  }
+  std::vector<ExponentialFit> sizeFits;
+  for (const auto& [poles, offset] : variants) {
+    if (poles.empty() || getOrder(poles) > maxOrder) continue;
+    ExponentialFit fit = calcLinearFit(poles, offset, tau, y);
+    if (options.polish) fit = polishPoles(fit, tau, y, maxOmega, kCandidateIterations);
+    if (std::isfinite(fit.residualSumSquares)) sizeFits.push_back(std::move(fit));
+  }
+  // An allowed offset is preferred: the fit without it must be 10x better (it then has a real mode).
+  if (sizeFits.size() == 2) {
+    const bool keepOffset = sizeFits[0].residualSumSquares * kOffsetPreference > sizeFits[1].residualSumSquares;
+    sizeFits.erase(sizeFits.begin() + (keepOffset ? 0 : 1));
+  }
+  return sizeFits;
+}
+
+// The candidate's figures: order, singular-value ratio at its pencil size, R^2 and BIC over `samplesTotal`
+// scaled samples of `signalCount` signals.
+OrderCandidate makeCandidate(const ExponentialFit& fit, int size, const Eigen::VectorXd& sv, int signalCount,
+                             double samplesTotal, const IdentificationOptions& options) {
+  int params = getBasisSize(fit.poles, fit.offset) * signalCount;
+  for (const auto& p : fit.poles) params += p.omega > 0 ? 2 : 1;
+  const double rss = std::max(fit.residualSumSquares, 1e-28 * samplesTotal);
+  OrderCandidate c;
+  c.order = getOrder(fit.poles);
+  c.offset = fit.offset;
+  c.pencilSize = size;
+  c.singularValueRatio = size < sv.size() ? sv(size) / sv(size - 1) : 0.0;
+  c.atGap = c.singularValueRatio < options.gapRatio;
+  c.rSquared = 1 - fit.residualSumSquares / samplesTotal;
+  c.criterion = samplesTotal * std::log(rss / samplesTotal) + params * std::log(samplesTotal);
+  return c;
+}
+
+// Candidates: for every pencil size P, the P poles without offset or, if an offset is allowed, the offset
+// with P-1 poles (fitPencilSize). Both have P components, as many as the leading singular values. Each is
+// scored by BIC; the candidates go into result.candidates, their fits (same order) are returned.
+std::vector<ExponentialFit> fitCandidates(const PencilDecomposition& pencil, const WindowSamples& w,
+                                          const IdentificationOptions& options, int maxOrder,
+                                          IdentificationResult& result) {
+  const int extra = options.fitOffset ? 1 : 0;
+  const double samplesTotal = static_cast<double>(w.y.rows()) * w.y.cols();
+  std::vector<ExponentialFit> fits;
+  for (int size = 1; size <= maxOrder + extra; ++size)
+    for (auto& fit : fitPencilSize(pencil, size, w, options, maxOrder, result.pencilStep)) {
+      result.candidates.push_back(
+          makeCandidate(fit, size, pencil.singularValues, static_cast<int>(w.y.cols()), samplesTotal, options));
+      fits.push_back(std::move(fit));
+    }
+  return fits;
+}
+
+// Selection: the lowest BIC among sizes at a singular-value gap (all sizes if there is none), or among
+// candidates of the fixed order; -1 if none qualifies.
+int chooseCandidate(const std::vector<OrderCandidate>& candidates, const IdentificationOptions& options) {
+  const bool anyGap =
+      std::any_of(candidates.begin(), candidates.end(), [](const OrderCandidate& c) { return c.atGap; });
+  int chosen = -1;
+  double bestCriterion = std::numeric_limits<double>::infinity();
+  for (size_t i = 0; i < candidates.size(); ++i) {
+    const auto& c = candidates[i];
+    if (options.fixedOrder > 0 ? c.order != options.fixedOrder : anyGap && !c.atGap) continue;
+    if (c.criterion < bestCriterion) {
+      bestCriterion = c.criterion;
+      chosen = static_cast<int>(i);
+    }
+  }
+  return chosen;
+}
+
+// R^2 of the chosen fit over all signals and each signal's RMS residual (signal units and scaled).
+void setResiduals(const ExponentialFit& best, const WindowSamples& w, IdentificationResult& result) {
+  const int n = static_cast<int>(w.y.rows()), k = static_cast<int>(w.y.cols());
+  const double samplesTotal = static_cast<double>(n) * k;
+  const Eigen::MatrixXd residual = w.y - calcBasis(best.poles, best.offset, w.tau) * best.coefficients;
+  result.rSquared = 1 - residual.squaredNorm() / samplesTotal;
+  for (int s = 0; s < k; ++s) {
+    const double rms = std::sqrt(residual.col(s).squaredNorm() / n);
+    result.rmsResidual.push_back(rms * w.scale(s));
+    result.normalisedRmsResidual.push_back(rms);
+  }
+}
+
+}  // namespace
+
+IdentificationResult identifyModes(const std::vector<double>& time, const std::vector<std::vector<double>>& signals,
+                                   const IdentificationOptions& options) {
+  checkInput(time, signals, options);
+  const int maxOrder = options.fixedOrder > 0 ? options.fixedOrder : options.maxOrder;
+  IdentificationResult result;
+  const WindowSamples w = selectWindow(time, signals, options, maxOrder, result);
+  const Eigen::MatrixXd uniform = makeUniformSamples(w.tau, w.y, options, result.resampled, result.pencilStep);
   const int extra = options.fitOffset ? 1 : 0;
   const int pencilParameter = static_cast<int>(uniform.rows()) / 3;
   if (pencilParameter < maxOrder + extra + 1)
@@ -193,73 +309,15 @@ IdentificationResult identifyModes(const std::vector<double>& time, const std::v
   for (int i = 0; i < std::min<int>(static_cast<int>(pencil.singularValues.size()), 2 * (maxOrder + extra) + 2); ++i)
     result.singularValues.push_back(pencil.singularValues(i));
 
-  // Candidates: for every pencil size P, the P poles without offset or, if an offset is allowed, the offset
-  // with P-1 poles (the real pole nearest z = 1 taken as the offset; kept unless the fit without offset is
-  // kOffsetPreference times better). Both have P components, as many as the leading singular values. Each is
-  // polished and scored by BIC. Selection: the lowest BIC among sizes at a singular-value gap (all sizes if
-  // there is none), or among candidates of the fixed order.
-  const double maxOmega = kPi / result.pencilStep;
-  const double samplesTotal = static_cast<double>(n) * k;
-  const auto& sv = pencil.singularValues;
-  std::vector<ExponentialFit> fits;
-  for (int size = 1; size <= maxOrder + extra; ++size) {
-    const auto all = toContinuousPoles(calcPencilPoles(pencil, size), result.pencilStep, span);
-    std::vector<std::pair<std::vector<ContinuousPole>, bool>> variants{{all, false}};
-    if (options.fitOffset) {
-      auto poles = all;
-      if (removeOffsetPole(poles)) variants.emplace_back(poles, true);
-    }
-    std::vector<ExponentialFit> sizeFits;
-    for (const auto& [poles, offset] : variants) {
-      if (poles.empty() || getOrder(poles) > maxOrder) continue;
-      ExponentialFit fit = calcLinearFit(poles, offset, tau, y);
-      if (options.polish) fit = polishPoles(fit, tau, y, maxOmega, kCandidateIterations);
-      if (std::isfinite(fit.residualSumSquares)) sizeFits.push_back(std::move(fit));
-    }
-    // An allowed offset is preferred: the fit without it must be 10x better (it then has a real mode).
-    if (sizeFits.size() == 2) {
-      const bool keepOffset = sizeFits[0].residualSumSquares * kOffsetPreference > sizeFits[1].residualSumSquares;
-      sizeFits.erase(sizeFits.begin() + (keepOffset ? 0 : 1));
-    }
-    for (auto& fit : sizeFits) {
-      int params = getBasisSize(fit.poles, fit.offset) * k;
-      for (const auto& p : fit.poles) params += p.omega > 0 ? 2 : 1;
-      const double rss = std::max(fit.residualSumSquares, 1e-28 * samplesTotal);
-      OrderCandidate c;
-      c.order = getOrder(fit.poles);
-      c.offset = fit.offset;
-      c.pencilSize = size;
-      c.singularValueRatio = size < sv.size() ? sv(size) / sv(size - 1) : 0.0;
-      c.atGap = c.singularValueRatio < options.gapRatio;
-      c.rSquared = 1 - fit.residualSumSquares / samplesTotal;
-      c.criterion = samplesTotal * std::log(rss / samplesTotal) + params * std::log(samplesTotal);
-      result.candidates.push_back(c);
-      fits.push_back(std::move(fit));
-    }
-  }
-  const bool anyGap = std::any_of(result.candidates.begin(), result.candidates.end(),
-                                  [](const OrderCandidate& c) { return c.atGap; });
-  int chosen = -1;
-  double bestCriterion = std::numeric_limits<double>::infinity();
-  for (size_t i = 0; i < fits.size(); ++i) {
-    const auto& c = result.candidates[i];
-    if (options.fixedOrder > 0 ? c.order != options.fixedOrder : anyGap && !c.atGap) continue;
-    if (c.criterion < bestCriterion) {
-      bestCriterion = c.criterion;
-      chosen = static_cast<int>(i);
-    }
-  }
+  // Candidates of every pencil size scored by BIC; the chosen one is polished to convergence.
+  const std::vector<ExponentialFit> fits = fitCandidates(pencil, w, options, maxOrder, result);
+  const int chosen = chooseCandidate(result.candidates, options);
   if (chosen < 0) throw std::invalid_argument("no model could be fitted to the window");
-  const ExponentialFit best = options.polish ? polishPoles(fits[chosen], tau, y, maxOmega) : fits[chosen];
+  const double maxOmega = kPi / result.pencilStep;
+  const ExponentialFit best = options.polish ? polishPoles(fits[chosen], w.tau, w.y, maxOmega) : fits[chosen];
 
-  setModes(best, scale, span, result);
-  const Eigen::MatrixXd residual = y - calcBasis(best.poles, best.offset, tau) * best.coefficients;
-  result.rSquared = 1 - residual.squaredNorm() / samplesTotal;
-  for (int s = 0; s < k; ++s) {
-    const double rms = std::sqrt(residual.col(s).squaredNorm() / n);
-    result.rmsResidual.push_back(rms * scale(s));
-    result.normalisedRmsResidual.push_back(rms);
-  }
+  setModes(best, w.scale, w.tau(w.tau.size() - 1), result);
+  setResiduals(best, w, result);
   return result;
 }
 

@@ -1,6 +1,6 @@
 #pragma once
-// Mode identification of CSV records and its outputs (modes.json, fit plot): the work behind
-// `motostab identify response`, reusable by `motostab simulate --identify`.
+// Mode identification of CSV records: the work behind `motostab identify response`, reusable by
+// `motostab simulate --identify`. Their outputs (modes.json, fit plot) are written by output/response_output.h.
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -38,12 +38,5 @@ ResponseRecord readResponseRecord(const CsvIdentificationRequest& request);
 /// Reads the CSV and identifies its modes. Bad input (including a window outside the data) is an InputError
 /// naming the file and the columns.
 IdentificationResult identifyModesFromCsv(const CsvIdentificationRequest& request, ResponseRecord* record = nullptr);
-
-/// Writes DIR/modes.json (makeModesJson() plus `extra` merged in), DIR/response_data.csv,
-/// DIR/response_fit.csv (the model on a dense grid over the window) and the plot DIR/response_fit.{gp,png,svg}
-/// (one panel per signal, record and fitted model). Throws std::runtime_error if gnuplot fails (modes.json
-/// is written first).
-void writeResponseReport(const std::filesystem::path& dir, const ResponseRecord& record,
-                         const IdentificationResult& result, const nlohmann::json& extra = nlohmann::json::object());
 
 }  // namespace motostab::response

@@ -12,7 +12,12 @@
 #include "io/input_error.h"
 #include "io/number.h"
 
-namespace motostab {
+namespace motostab::scenario {
+
+using io::InputError;
+using io::formatNumber;
+using io::parseFiniteNumber;
+
 
 std::map<std::string, double> readBicycleParameters(const std::string& file) {
   std::ifstream in(file);
@@ -199,4 +204,4 @@ std::string convertBicycleParametersToScenario(const std::string& file, const st
   return y.str();
 }
 
-}  // namespace motostab
+}  // namespace motostab::scenario

@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-namespace motostab {
+namespace motostab::scenario {
 
 /// Reads `name = value+/-sigma` lines (several comma-separated repeats are averaged).
 /// A malformed line is an InputError naming file and line.
@@ -50,4 +50,4 @@ std::string convertBicycleParametersToScenario(const std::string& file, const st
 /// `text` as a double-quoted YAML scalar (backslash, quote and control characters escaped).
 std::string quoteYamlString(const std::string& text);
 
-}  // namespace motostab
+}  // namespace motostab::scenario

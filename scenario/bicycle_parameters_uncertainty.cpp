@@ -7,7 +7,10 @@
 #include "io/csv.h"
 #include "scenario/bicycle_parameters.h"
 
-namespace motostab {
+namespace motostab::scenario {
+
+using io::formatNumber;
+
 
 std::map<std::string, double> readBicycleParameterSigmas(const std::string& file) {
   readBicycleParameters(file);  // the same checks and errors as the values
@@ -71,4 +74,4 @@ std::string formatBicycleParametersUncertainty(const std::map<std::string, doubl
   return body.empty() ? "" : "# Standard deviations from the file's +/- values (docs/uncertainty.md).\nuncertainty:\n" + body;
 }
 
-}  // namespace motostab
+}  // namespace motostab::scenario

@@ -4,7 +4,7 @@
 #include <map>
 #include <string>
 
-namespace motostab {
+namespace motostab::scenario {
 
 /// Standard deviation of each parameter that states one (`name = value+/-sigma`), in the file's
 /// units (lam in rad). Several comma-separated repeats are averaged by readBicycleParameters, so
@@ -20,4 +20,4 @@ std::pair<std::string, double> getScenarioPathOfBicycleParameter(const std::stri
 /// scenario key, in the scenario's units; empty if there is none.
 std::string formatBicycleParametersUncertainty(const std::map<std::string, double>& sigmas);
 
-}  // namespace motostab
+}  // namespace motostab::scenario

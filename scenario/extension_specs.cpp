@@ -4,7 +4,11 @@
 
 #include "io/number.h"
 
-namespace motostab {
+namespace motostab::scenario {
+
+using io::YamlMap;
+using io::parseFiniteNumber;
+
 namespace {
 
 // Fails at `key` unless the remainder of `whole` without `part` is a valid body.
@@ -147,4 +151,4 @@ void readExtensions(YamlMap& root, Scenario& s) {
   }
 }
 
-}  // namespace motostab
+}  // namespace motostab::scenario

@@ -6,9 +6,13 @@
 #include <cstdio>
 
 #include "io/input_error.h"
-#include "scenario/yaml_map.h"
+#include "io/yaml_map.h"
 
-namespace motostab {
+namespace motostab::scenario {
+
+using io::InputError;
+using io::findKeyPath;
+
 namespace {
 
 bool endsWith(const std::string& s, const std::string& tail) {
@@ -112,4 +116,4 @@ double getDefaultSigma(const ScalarParameter& p) {
   }
 }
 
-}  // namespace motostab
+}  // namespace motostab::scenario

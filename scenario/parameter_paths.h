@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-namespace motostab {
+namespace motostab::scenario {
 
 /// What a parameter measures, from its key's unit suffix (_m, _kg, _kgm2, _deg).
 enum class ParameterKind { Length, Mass, Inertia, Angle, Other };
@@ -46,4 +46,4 @@ std::string formatOverride(const std::string& path, double value);
 /// quantities, 1 degree for angles.
 double getDefaultSigma(const ScalarParameter& parameter);
 
-}  // namespace motostab
+}  // namespace motostab::scenario

@@ -5,9 +5,15 @@
 
 #include "scenario/extension_specs.h"
 #include "scenario/parameter_paths.h"
-#include "scenario/yaml_map.h"
+#include "io/yaml_map.h"
 
-namespace motostab {
+namespace motostab::scenario {
+
+using io::InputError;
+using io::YamlMap;
+using io::applyOverride;
+using io::loadYamlFile;
+
 namespace {
 
 InertiaSpec readInertia(YamlMap m) {
@@ -344,4 +350,4 @@ double calcStaticPivotMoment(const Scenario& s) {
   return xP * (rearLoad - s.rearWheel.mass * g) + (calcSwingarmCom(s)[0] - xP) * s.swingarm.body.mass * g;
 }
 
-}  // namespace motostab
+}  // namespace motostab::scenario

@@ -10,7 +10,7 @@
 
 #include "io/input_error.h"
 
-namespace motostab {
+namespace motostab::scenario {
 
 using Vec3d = std::array<double, 3>;
 
@@ -144,7 +144,7 @@ struct ParameterUncertainty {
   std::string path;
   double sigma = 0;
   Distribution distribution = Distribution::Normal;
-  InputLocation where;  ///< where the scenario states it
+  io::InputLocation where;  ///< where the scenario states it
 };
 
 struct Scenario {
@@ -181,7 +181,7 @@ Scenario loadScenario(const std::string& file, const std::vector<std::string>& o
 
 /// Rethrows `error`, naming the override that set the value it is about ("(value from --set
 /// a.b=...)") when one did: for errors found after loading, e.g. by a plugin reading its section.
-[[noreturn]] void rethrowNamingOverride(const InputError& error, const std::vector<std::string>& overrides);
+[[noreturn]] void rethrowNamingOverride(const io::InputError& error, const std::vector<std::string>& overrides);
 
 /// Checks an inertia tensor: symmetric positive definite and principal moments satisfying the
 /// triangle inequality. Returns an empty string if valid, else the reason.
@@ -230,4 +230,4 @@ double calcSuspensionLever(const Scenario& scenario);
 /// suspension spring carries its negative (needs hasSwingarm).
 double calcStaticPivotMoment(const Scenario& scenario);
 
-}  // namespace motostab
+}  // namespace motostab::scenario

@@ -1,5 +1,6 @@
 #include "simulation/perturbation.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <sstream>
@@ -9,6 +10,11 @@
 #include "io/number.h"
 
 namespace motostab::simulation {
+
+using io::InputError;
+using io::parseFiniteNumber;
+using io::splitFields;
+
 
 namespace {
 
@@ -100,6 +106,13 @@ Perturbation parsePerturbation(const std::string& spec) {
     fail(spec, "unknown perturbation kind '" + kind + "'");
   }
   return p;
+}
+
+double getFreeResponseStart(const std::vector<Perturbation>& perturbations) {
+  double t = 0;
+  for (const auto& p : perturbations)
+    if (p.isPulse()) t = std::max(t, p.start + p.duration);
+  return t;
 }
 
 }  // namespace motostab::simulation

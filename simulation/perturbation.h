@@ -45,4 +45,7 @@ Perturbation parsePerturbation(const std::string& spec);
 /// The syntax summary used in help texts and error messages.
 std::string getPerturbationSyntax();
 
+/// Time (s) from which the response is free: the end of the last force pulse, 0 without pulses.
+double getFreeResponseStart(const std::vector<Perturbation>& perturbations);
+
 }  // namespace motostab::simulation

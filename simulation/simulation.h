@@ -23,7 +23,7 @@ SpeedControl parseSpeedControl(const std::string& name);  ///< "none" or "pi"; I
 /// once contact plugins expose them. Units are the channel's own.
 struct OutputChannel {
   std::string name;
-  std::function<double(const VehicleModel& model, const SimTK::State& state)> calc;
+  std::function<double(const vehicle::VehicleModel& model, const SimTK::State& state)> calc;
 };
 
 struct SimulationOptions {
@@ -42,7 +42,7 @@ struct SimulationOptions {
   bool projectEveryStep = false;     ///< project onto the constraints after every step
   double maxStep = 0;                ///< largest internal step, s; 0: integrator default (ROS34PW2 0.05 s, Simbody none)
   double fallRollLimit = M_PI / 3;   ///< |roll| beyond this ends the run as a fall, rad (60 deg)
-  TrimOptions trim;
+  analysis::TrimOptions trim;
   /// Extra columns appended after the standard ones, in this order.
   std::vector<OutputChannel> extraOutputs;
   /// Called after every output sample with the simulated time (s); for progress bars.
@@ -80,20 +80,20 @@ struct SimulationResult {
 
 /// Throws InputError for perturbations `model` cannot take (e.g. road-step on rolling_no_slip,
 /// which needs a force-based tyre model).
-void checkPerturbations(const VehicleModel& model, const std::vector<Perturbation>& perturbations);
+void checkPerturbations(const vehicle::VehicleModel& model, const std::vector<Perturbation>& perturbations);
 
 /// Trims `scenario` at options.speed, applies the initial rate offsets (dependent rates re-solved
 /// from the velocity constraints, the named rates, the other independent rates and forward speed
 /// kept), and integrates for options.duration. Bad options are InputErrors; a trim failure throws
 /// TrimError; a fall or an integration failure ends the run with the samples so far.
-SimulationResult runSimulation(const Scenario& scenario, const SimulationOptions& options);
+SimulationResult runSimulation(const scenario::Scenario& scenario, const SimulationOptions& options);
 /// Same, loading plugins into `registry` (from makeBuiltinRegistry() by default).
-SimulationResult runSimulation(const Scenario& scenario, PluginRegistry& registry, const SimulationOptions& options);
+SimulationResult runSimulation(const scenario::Scenario& scenario, plugins::PluginRegistry& registry, const SimulationOptions& options);
 
 /// Sets the initial rate offsets of `perturbations` on `state` (rad/s added to roll_rate or
 /// steer_rate) and re-solves the velocity constraints for the dependent rates, keeping the
 /// perturbed rates, roll_rate, steer_rate and the forward speed vx. Throws std::runtime_error if the
 /// constraints cannot be solved.
-void applyInitialRates(const VehicleModel& model, SimTK::State& state, const std::vector<Perturbation>& perturbations);
+void applyInitialRates(const vehicle::VehicleModel& model, SimTK::State& state, const std::vector<Perturbation>& perturbations);
 
 }  // namespace motostab::simulation

@@ -8,6 +8,9 @@
 
 namespace motostab::simulation {
 
+using io::InputError;
+
+
 std::string toLowerCase(std::string s) {
   std::transform(s.begin(), s.end(), s.begin(), [](unsigned char c) { return std::tolower(c); });
   return s;

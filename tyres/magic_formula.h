@@ -1,6 +1,6 @@
 #pragma once
 // Magic Formula steady-state tyre force laws: the common interface (TyreForceLaw), where their
-// coefficients come from (a .tir file or inline scenario values), and MF 6.1/6.2 (Pacejka 2012,
+// coefficients come from (tyres/coefficient_source.h), and MF 6.1/6.2 (Pacejka 2012,
 // "Tire and Vehicle Dynamics", 3rd ed., sec. 4.3.2, eqs. 4.E1-4.E78, without turn slip). The
 // motorcycle variant is in tyres/motorcycle_magic_formula.h. docs/tyres.md lists every equation.
 //
@@ -12,14 +12,13 @@
 #include <map>
 #include <memory>
 #include <optional>
-#include <ostream>
 #include <string>
 #include <vector>
 
-#include "scenario/yaml_map.h"
+#include "tyres/coefficient_source.h"
 #include "tyres/tir_file.h"
 
-namespace motostab {
+namespace motostab::tyres {
 
 /// Operating point of a tyre (ISO-W signs, above).
 struct TyreSlip {
@@ -59,41 +58,6 @@ class TyreForceLaw {
   virtual double getCrownRadius() const { return std::numeric_limits<double>::quiet_NaN(); }
 };
 
-/// Where coefficients come from: a .tir file or an inline `coefficients` map, with scaling factors
-/// (L...) overridden by a scenario's `scaling` map. Names are the .tir keys (PKY1, LMUY, ...).
-class CoefficientSource {
- public:
-  /// `scaling` (may be null): scaling factors that take precedence over the source's own values.
-  explicit CoefficientSource(const std::map<std::string, double>* scaling = nullptr) : scaling_(scaling) {}
-  virtual ~CoefficientSource() = default;
-  /// The value of `name`: from `scaling` if it is there, else the source's own.
-  std::optional<double> find(const std::string& name) const;
-  [[noreturn]] virtual void fail(const std::string& name, const std::string& message) const = 0;
-  /// A coefficient the equations need: missing is an InputError naming it.
-  double get(const std::string& name) const;
-  /// A scaling factor: 1 unless given.
-  double getScaling(const std::string& name) const;
-  /// An optional value.
-  double get(const std::string& name, double fallback) const;
-  /// A text value (e.g. TYRESIDE), or nothing; sources without text values return nothing.
-  virtual std::optional<std::string> findText(const std::string&) const { return std::nullopt; }
-  /// The source's nonzero coefficients that no equation has read so far ("KEY (line N)"), scaling
-  /// factors only when they differ from 1; sources that reject unread keys themselves return none.
-  virtual std::vector<std::string> listUnused() const { return {}; }
-
- protected:
-  /// The source's own value of `name`, or nothing.
-  virtual std::optional<double> findOwn(const std::string& name) const = 0;
-
- private:
-  const std::map<std::string, double>* scaling_;
-};
-
-/// Coefficients of a .tir file, with scaling factors from `scaling` (may be null) taking precedence.
-std::unique_ptr<CoefficientSource> makeTirSource(const TirFile& file, const std::map<std::string, double>* scaling);
-/// Coefficients of an inline YAML map (each key must be read, unknown keys are errors at finish()).
-std::unique_ptr<CoefficientSource> makeYamlSource(YamlMap& coefficients, const std::map<std::string, double>* scaling);
-
 /// The Magic Formula variants.
 enum class MagicFormulaVariant { MF61, MF62, Motorcycle };
 /// "mf61", "mf62", "motorcycle"; nothing for other names.
@@ -106,12 +70,8 @@ const std::vector<std::string>& getScalingNames(MagicFormulaVariant v);
 std::unique_ptr<TyreForceLaw> makeTyreForceLaw(MagicFormulaVariant v, const CoefficientSource& source,
                                                std::optional<double> pressure = std::nullopt);
 
-/// Writes one warning line to `out` naming the source's unused nonzero coefficients (listUnused), if any;
-/// `name` names the source (a file path).
-void warnUnused(const CoefficientSource& source, const std::string& name, std::ostream& out);
-
 /// The force law of a .tir file (variant from its FITTYP), with optional scaling overrides; unused
 /// nonzero coefficients are reported on std::cerr (warnUnused).
 std::unique_ptr<TyreForceLaw> loadTirForceLaw(const std::string& path, const std::map<std::string, double>* scaling = nullptr);
 
-}  // namespace motostab
+}  // namespace motostab::tyres

@@ -10,7 +10,16 @@
 #include "tyres/magic_formula.h"
 #include "tyres/tyre_contact.h"
 
-namespace motostab {
+namespace motostab::tyres {
+
+using io::InputError;
+using io::InputLocation;
+using io::YamlMap;
+using plugins::BuildContext;
+using plugins::ContactModel;
+using plugins::PluginRegistrar;
+using plugins::WheelSite;
+
 
 namespace {
 
@@ -165,4 +174,4 @@ void registerMagicFormula(PluginRegistrar& registry) {
   });
 }
 
-}  // namespace motostab
+}  // namespace motostab::tyres

@@ -29,9 +29,9 @@
 //   pressure_Pa                                    default INFLPRES, else NOMPRES (MF 6.x)
 #include "plugins/plugin_api.h"
 
-namespace motostab {
+namespace motostab::tyres {
 
 /// Registers `magic_formula`.
-void registerMagicFormula(PluginRegistrar& registry);
+void registerMagicFormula(plugins::PluginRegistrar& registry);
 
-}  // namespace motostab
+}  // namespace motostab::tyres

@@ -3,7 +3,7 @@
 #include <cmath>
 #include <limits>
 
-namespace motostab {
+namespace motostab::tyres {
 
 namespace {
 
@@ -151,4 +151,4 @@ std::unique_ptr<TyreForceLaw> makeMotorcycleMagicFormula(const CoefficientSource
   return std::make_unique<MotorcycleMagicFormula>(c);
 }
 
-}  // namespace motostab
+}  // namespace motostab::tyres

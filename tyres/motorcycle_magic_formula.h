@@ -35,7 +35,7 @@
 
 #include "tyres/magic_formula.h"
 
-namespace motostab {
+namespace motostab::tyres {
 
 /// The scaling factors the motorcycle equations use (LFZO, LMUX, LKX, LMUY, LKY, LKYC, LTR, LRES).
 const std::vector<std::string>& getMotorcycleScalingNames();
@@ -44,4 +44,4 @@ const std::vector<std::string>& getMotorcycleScalingNames();
 /// optionally all of RELAX_C1-3) from `source`. Without RELAX_C1-3 calcRelaxationLength returns NaN.
 std::unique_ptr<TyreForceLaw> makeMotorcycleMagicFormula(const CoefficientSource& source);
 
-}  // namespace motostab
+}  // namespace motostab::tyres

@@ -6,7 +6,14 @@
 
 #include "tyres/tyre_contact.h"
 
-namespace motostab {
+namespace motostab::tyres {
+
+using io::YamlMap;
+using plugins::BuildContext;
+using plugins::ContactModel;
+using plugins::PluginRegistrar;
+using plugins::WheelSite;
+
 
 namespace {
 
@@ -103,4 +110,4 @@ void registerRelaxationLinear(PluginRegistrar& registry) {
   });
 }
 
-}  // namespace motostab
+}  // namespace motostab::tyres

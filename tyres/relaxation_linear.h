@@ -14,7 +14,7 @@
 #include "plugins/plugin_api.h"
 #include "tyres/tyre_contact.h"
 
-namespace motostab {
+namespace motostab::tyres {
 
 /// Per-tyre parameters (per unit load where stated).
 struct LinearTyreParameters {
@@ -36,6 +36,6 @@ std::vector<std::string> getRelaxationLinearPresetNames();
 
 /// Registers `relaxation_linear` (parameters under `front` and `rear`, or `preset: NAME` with
 /// optional `front`/`rear` maps whose keys override the preset's values).
-void registerRelaxationLinear(PluginRegistrar& registry);
+void registerRelaxationLinear(plugins::PluginRegistrar& registry);
 
-}  // namespace motostab
+}  // namespace motostab::tyres

@@ -2,7 +2,14 @@
 
 #include "Simbody.h"
 
-namespace motostab {
+namespace motostab::tyres {
+
+using io::YamlMap;
+using plugins::BuildContext;
+using plugins::ContactModel;
+using plugins::PluginRegistrar;
+using plugins::WheelSite;
+
 
 using SimTK::Array_;
 using SimTK::ConstrainedBodyIndex;
@@ -123,4 +130,4 @@ void registerRollingNoSlip(PluginRegistrar& registry) {
   registry.addContactModel("rolling_no_slip", [](YamlMap&) { return std::make_unique<RollingNoSlip>(); });
 }
 
-}  // namespace motostab
+}  // namespace motostab::tyres

@@ -3,7 +3,7 @@
 // Whipple bicycle's contact, Meijaard et al. 2007, sec. 2). Crown radius 0 is the knife edge.
 #include "plugins/plugin_api.h"
 
-namespace motostab {
+namespace motostab::tyres {
 
 /// Contact geometry of a torus on the ground plane z = 0 (seed: toroidal tyre kinematics).
 /// With a = spin axis in ground, n = +z: d = -(n - (n.a)a)/|n - (n.a)a| points from the centre to
@@ -18,6 +18,6 @@ struct TorusContact {
 TorusContact calcTorusContact(const SimTK::Rotation& R_GW, const SimTK::Vec3& w_GW_G, double R, double rho);
 
 /// Registers `rolling_no_slip` (no parameters).
-void registerRollingNoSlip(PluginRegistrar& registry);
+void registerRollingNoSlip(plugins::PluginRegistrar& registry);
 
-}  // namespace motostab
+}  // namespace motostab::tyres

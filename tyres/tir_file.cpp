@@ -8,7 +8,12 @@
 
 #include "io/number.h"
 
-namespace motostab {
+namespace motostab::tyres {
+
+using io::InputError;
+using io::InputLocation;
+using io::parseFiniteNumber;
+
 
 namespace {
 
@@ -49,6 +54,47 @@ struct Parser {
   std::string source;
   InputLocation at(int line, const std::string& key = "") const { return {source, line, 0, key}; }
 };
+
+// The value of `key` at `line`: a 'quoted' string, or a finite number (kept as text too).
+TirEntry parseEntry(const Parser& p, int line, const std::string& section, const std::string& key,
+                    const std::string& value) {
+  TirEntry e;
+  e.section = section;
+  e.line = line;
+  if (value.size() >= 2 && value.front() == '\'' && value.back() == '\'' &&
+      value.find('\'', 1) == value.size() - 1) {
+    e.text = value.substr(1, value.size() - 2);
+  } else if (const auto number = parseFiniteNumber(value)) {
+    e.text = value;
+    e.isNumber = true;
+    e.number = *number;
+  } else {
+    throw InputError(p.at(line, key), "malformed value '" + value + "' (expected a finite number or a 'quoted' string)");
+  }
+  return e;
+}
+
+// Units: the equations take SI values; nothing is converted. Each [UNITS] entry but PRESSURE (Pa when
+// absent) must be given, and in SI.
+void checkUnits(const Parser& p, const std::map<std::string, TirEntry>& units) {
+  const std::pair<const char*, std::vector<std::string>> si[] = {{"LENGTH", {"METER", "METRE", "M"}},
+                                                               {"FORCE", {"NEWTON", "N"}},
+                                                               {"ANGLE", {"RADIANS", "RADIAN", "RAD"}},
+                                                               {"MASS", {"KG", "KILOGRAM"}},
+                                                               {"TIME", {"SECOND", "SEC", "S"}},
+                                                               {"PRESSURE", {"PASCAL", "PA", "N/M2", "N/M^2"}}};
+  for (const auto& [name, allowed] : si) {
+    const auto it = units.find(name);
+    if (it == units.end()) {
+      if (std::string(name) == "PRESSURE") continue;  // optional: Pa when absent
+      throw InputError(p.at(0, name), std::string("[UNITS] ") + name + " missing (the units must be stated; SI only)");
+    }
+    const std::string u = upper(it->second.text);
+    if (std::find(allowed.begin(), allowed.end(), u) == allowed.end())
+      throw InputError(p.at(it->second.line, name), "unit '" + it->second.text + "' is not supported (SI only: " +
+                                                         allowed.front() + ")");
+  }
+}
 
 }  // namespace
 
@@ -93,19 +139,7 @@ TirFile TirFile::parse(const std::string& text, const std::string& source) {
     if (key.empty() || key.find_first_of(" \t'") != std::string::npos)
       throw InputError(p.at(line), "malformed key '" + trim(t.substr(0, eq)) + "'");
     inTable = false;
-    TirEntry e;
-    e.section = section;
-    e.line = line;
-    if (value.size() >= 2 && value.front() == '\'' && value.back() == '\'' &&
-        value.find('\'', 1) == value.size() - 1) {
-      e.text = value.substr(1, value.size() - 2);
-    } else if (const auto number = parseFiniteNumber(value)) {
-      e.text = value;
-      e.isNumber = true;
-      e.number = *number;
-    } else {
-      throw InputError(p.at(line, key), "malformed value '" + value + "' (expected a finite number or a 'quoted' string)");
-    }
+    const TirEntry e = parseEntry(p, line, section, key, value);
     if (!seenInSection.emplace(key, line).second)
       throw InputError(p.at(line, key), "given twice in [" + section + "] (first at line " +
                                             std::to_string(seenInSection[key]) + ")");
@@ -119,24 +153,7 @@ TirFile TirFile::parse(const std::string& text, const std::string& source) {
       throw InputError(p.at(line, key), "also given in [" + it->second.section + "] at line " +
                                             std::to_string(it->second.line) + ": ambiguous");
   }
-  // Units: the equations take SI values; nothing is converted.
-  const std::pair<const char*, std::vector<std::string>> units[] = {{"LENGTH", {"METER", "METRE", "M"}},
-                                                                    {"FORCE", {"NEWTON", "N"}},
-                                                                    {"ANGLE", {"RADIANS", "RADIAN", "RAD"}},
-                                                                    {"MASS", {"KG", "KILOGRAM"}},
-                                                                    {"TIME", {"SECOND", "SEC", "S"}},
-                                                                    {"PRESSURE", {"PASCAL", "PA", "N/M2", "N/M^2"}}};
-  for (const auto& [name, allowed] : units) {
-    const auto it = f.units_.find(name);
-    if (it == f.units_.end()) {
-      if (std::string(name) == "PRESSURE") continue;  // optional: Pa when absent
-      throw InputError(p.at(0, name), std::string("[UNITS] ") + name + " missing (the units must be stated; SI only)");
-    }
-    const std::string u = upper(it->second.text);
-    if (std::find(allowed.begin(), allowed.end(), u) == allowed.end())
-      throw InputError(p.at(it->second.line, name), "unit '" + it->second.text + "' is not supported (SI only: " +
-                                                         allowed.front() + ")");
-  }
+  checkUnits(p, f.units_);
   const TirEntry* fit = f.find("FITTYP");
   if (!fit) throw InputError(p.at(0, "FITTYP"), "missing [MODEL] FITTYP (61 or 62 expected)");
   if (!fit->isNumber || (fit->number != 61 && fit->number != 62))
@@ -163,4 +180,4 @@ void TirFile::fail(const std::string& key, const std::string& message) const {
   throw InputError({source_, e ? e->line : 0, 0, upper(key)}, message);
 }
 
-}  // namespace motostab
+}  // namespace motostab::tyres

@@ -12,7 +12,7 @@
 
 #include "io/input_error.h"
 
-namespace motostab {
+namespace motostab::tyres {
 
 /// One `KEY = VALUE` of a .tir file.
 struct TirEntry {
@@ -50,4 +50,4 @@ class TirFile {
   std::map<std::string, TirEntry> units_;    ///< [UNITS] entries
 };
 
-}  // namespace motostab
+}  // namespace motostab::tyres

@@ -5,7 +5,11 @@
 
 #include "tyres/rolling_no_slip.h"
 
-namespace motostab {
+namespace motostab::tyres {
+
+using plugins::BuildContext;
+using plugins::WheelSite;
+
 
 using SimTK::SpatialVec;
 using SimTK::State;
@@ -130,4 +134,4 @@ std::vector<std::string> TyreContactModel::getStateNames(const WheelSite& w) con
   return {(w.name == "front_wheel" ? std::string("front") : std::string("rear")) + "_tyre_lagged_slip"};
 }
 
-}  // namespace motostab
+}  // namespace motostab::tyres

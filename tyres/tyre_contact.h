@@ -23,7 +23,7 @@
 
 #include "plugins/plugin_api.h"
 
-namespace motostab {
+namespace motostab::tyres {
 
 /// Slip regularisation speed v_eps (m/s): keeps slips finite at standstill.
 constexpr double kSlipSpeedFloor = 0.1;
@@ -68,7 +68,7 @@ struct TyreContactForces {
 /// law a plugin defines in calcTyreForces.
 class TyreForceElement : public SimTK::Force::Custom::Implementation {
  public:
-  TyreForceElement(SimTK::GeneralForceSubsystem& forces, const WheelSite& w, const RadialLaw& radial, bool lagged);
+  TyreForceElement(SimTK::GeneralForceSubsystem& forces, const plugins::WheelSite& w, const RadialLaw& radial, bool lagged);
 
   /// Everything a state realized to Velocity gives: kinematics, forces, and the lagged slip's rate.
   struct Quantities {
@@ -106,24 +106,24 @@ class TyreForceElement : public SimTK::Force::Custom::Implementation {
 /// The ContactModel side shared by the tyre plugins: one force element per wheel, its z state's
 /// name, the road step, and the outputs front_tyre_Fx_N ... (extended by Mx, My when
 /// `reportsMoments`).
-class TyreContactModel : public ContactModel {
+class TyreContactModel : public plugins::ContactModel {
  public:
   explicit TyreContactModel(bool reportsMoments) : reportsMoments_(reportsMoments) {}
-  void addWheel(BuildContext& ctx, const WheelSite& w) override;
-  std::vector<std::string> getOutputNames(const WheelSite& w) const override;
-  std::vector<double> calcOutputs(const SimTK::State& s, const WheelSite& w) const override;
-  bool applyLateralRoadStep(SimTK::State& s, const WheelSite& w, double offset) const override;
-  std::vector<std::string> getStateNames(const WheelSite& w) const override;
+  void addWheel(plugins::BuildContext& ctx, const plugins::WheelSite& w) override;
+  std::vector<std::string> getOutputNames(const plugins::WheelSite& w) const override;
+  std::vector<double> calcOutputs(const SimTK::State& s, const plugins::WheelSite& w) const override;
+  bool applyLateralRoadStep(SimTK::State& s, const plugins::WheelSite& w, double offset) const override;
+  std::vector<std::string> getStateNames(const plugins::WheelSite& w) const override;
 
  protected:
   /// A new force element for a wheel (the subsystem takes ownership).
-  virtual TyreForceElement* makeForceElement(BuildContext& ctx, const WheelSite& w) const = 0;
+  virtual TyreForceElement* makeForceElement(plugins::BuildContext& ctx, const plugins::WheelSite& w) const = 0;
   /// Whether the wheel's tyre relaxes (has a lagged-slip state).
-  virtual bool isLagged(const WheelSite& w) const = 0;
+  virtual bool isLagged(const plugins::WheelSite& w) const = 0;
 
  private:
   bool reportsMoments_;
   std::map<std::string, const TyreForceElement*> forces_;
 };
 
-}  // namespace motostab
+}  // namespace motostab::tyres

@@ -9,7 +9,7 @@
 #include <mpi.h>
 #endif
 
-namespace motostab {
+namespace motostab::uncertainty {
 
 bool isLaunchedByMpi() {
   for (const char* v : {"OMPI_COMM_WORLD_SIZE", "PMIX_RANK", "PMI_RANK", "PMI_SIZE"})
@@ -140,4 +140,4 @@ int reduceMax(const DistributedSession& session, int value) {
   return value;
 }
 
-}  // namespace motostab
+}  // namespace motostab::uncertainty

@@ -11,7 +11,7 @@
 
 #include "uncertainty/uncertainty_study.h"
 
-namespace motostab {
+namespace motostab::uncertainty {
 
 /// An MPI session for the lifetime of the object, or a single process.
 class DistributedSession {
@@ -50,4 +50,4 @@ std::vector<TaskResult> gatherResults(const DistributedSession& session, const s
 /// The maximum over ranks of a flag (1 when some rank failed), so that all ranks agree.
 int reduceMax(const DistributedSession& session, int value);
 
-}  // namespace motostab
+}  // namespace motostab::uncertainty

@@ -2,7 +2,10 @@
 
 #include <cmath>
 
-namespace motostab {
+namespace motostab::uncertainty {
+
+using scenario::ParameterUncertainty;
+
 
 uint64_t mixSplit64(uint64_t x) {
   x += 0x9e3779b97f4a7c15ULL;
@@ -62,4 +65,4 @@ std::vector<double> drawParameters(uint64_t seed, uint64_t stream, uint64_t atte
   return x;
 }
 
-}  // namespace motostab
+}  // namespace motostab::uncertainty

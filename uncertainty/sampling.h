@@ -15,7 +15,7 @@
 
 #include "scenario/scenario.h"
 
-namespace motostab {
+namespace motostab::uncertainty {
 
 /// SplitMix64 finaliser of x (a bijection of 64-bit words).
 uint64_t mixSplit64(uint64_t x);
@@ -28,13 +28,13 @@ double drawStandardNormal(uint64_t seed, uint64_t a, uint64_t b, uint64_t c);
 
 /// The value of one uncertain parameter with nominal `mu`, given a standard normal z and a uniform u
 /// in (0, 1) drawn for it (the distribution uses the one it needs; see the header comment).
-double transformDeviate(const ParameterUncertainty& p, double mu, double z, double u);
+double transformDeviate(const scenario::ParameterUncertainty& p, double mu, double z, double u);
 
 /// Parameter values of draw `stream` (a sample index, or a row of a Sobol design) at attempt
 /// `attempt` (0 first; redraws of unphysical samples count up), for the parameters `params` with
 /// nominal values `nominal`. Each parameter's deviates are keyed by a hash of its path, not its
 /// position: adding, removing or reordering other parameters leaves its values unchanged.
 std::vector<double> drawParameters(uint64_t seed, uint64_t stream, uint64_t attempt,
-                                   const std::vector<ParameterUncertainty>& params, const std::vector<double>& nominal);
+                                   const std::vector<scenario::ParameterUncertainty>& params, const std::vector<double>& nominal);
 
-}  // namespace motostab
+}  // namespace motostab::uncertainty

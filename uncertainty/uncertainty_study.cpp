@@ -5,15 +5,32 @@
 #include <cmath>
 #include <limits>
 
-#include "analysis/parallel.h"
+#include "core/parallel.h"
 #include "analysis/sweep.h"
 #include "scenario/parameter_paths.h"
-#include "scenario/yaml_map.h"
+#include "io/yaml_map.h"
 #include "io/csv.h"
 #include "uncertainty/sampling.h"
 #include "vehicle/vehicle_model.h"
 
-namespace motostab {
+namespace motostab::uncertainty {
+
+using analysis::SweepOptions;
+using analysis::SweepResult;
+using analysis::makeSpeedGrid;
+using analysis::runSweep;
+using core::runParallel;
+using io::InputError;
+using io::applyOverride;
+using io::formatNumber;
+using io::loadYamlFile;
+using scenario::ParameterUncertainty;
+using scenario::Scenario;
+using scenario::formatOverride;
+using scenario::getScalarParameter;
+using scenario::loadScenario;
+using vehicle::VehicleModel;
+
 namespace {
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
@@ -183,4 +200,4 @@ std::vector<TaskResult> runTasks(const UncertaintySetup& s, const std::vector<si
   return out;
 }
 
-}  // namespace motostab
+}  // namespace motostab::uncertainty

@@ -24,7 +24,7 @@
 
 #include "scenario/scenario.h"
 
-namespace motostab {
+namespace motostab::uncertainty {
 
 /// Critical speeds reported per sample: the first crossing of each mode in the speed range.
 constexpr std::array<const char*, 3> kUncertainModes{"weave", "capsize", "wobble"};
@@ -46,7 +46,7 @@ struct UncertaintyOptions {
 struct UncertaintySetup {
   std::string scenarioFile;
   std::vector<std::string> overrides;       ///< --set assignments, applied before every sample's own
-  std::vector<ParameterUncertainty> params; ///< the scenario's uncertainty section (sigma >= 0)
+  std::vector<scenario::ParameterUncertainty> params; ///< the scenario's uncertainty section (sigma >= 0)
   std::vector<double> nominal;              ///< nominal value of each parameter (its unit)
   UncertaintyOptions options;
 };
@@ -93,4 +93,4 @@ TaskResult runTask(const UncertaintySetup& setup, size_t t);
 std::vector<TaskResult> runTasks(const UncertaintySetup& setup, const std::vector<size_t>& indices, int threads,
                                  const std::function<void(size_t)>& progress = {});
 
-}  // namespace motostab
+}  // namespace motostab::uncertainty

@@ -7,7 +7,10 @@
 
 #include "analysis/sweep.h"
 
-namespace motostab {
+namespace motostab::uncertainty {
+
+using analysis::makeSpeedGrid;
+
 namespace {
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
@@ -183,4 +186,4 @@ std::vector<double> calcStandardisedRegression(const std::vector<std::vector<dou
   return src;
 }
 
-}  // namespace motostab
+}  // namespace motostab::uncertainty

@@ -7,7 +7,7 @@
 
 #include "uncertainty/uncertainty_study.h"
 
-namespace motostab {
+namespace motostab::uncertainty {
 
 /// Statistics of one critical speed over the successful samples that have it (m/s).
 struct CriticalSpeedStats {
@@ -52,4 +52,4 @@ std::vector<double> calcStandardisedRegression(const std::vector<std::vector<dou
 /// The summary of all task results (indexed by task).
 UncertaintySummary summarizeUncertainty(const UncertaintySetup& setup, const std::vector<TaskResult>& results);
 
-}  // namespace motostab
+}  // namespace motostab::uncertainty

@@ -1,6 +1,10 @@
 #include "vehicle/aerodynamics.h"
 
-namespace motostab {
+namespace motostab::vehicle {
+
+using plugins::BuildContext;
+using scenario::AerodynamicsSpec;
+
 namespace {
 
 class AerodynamicDrag : public SimTK::Force::Custom::Implementation {
@@ -27,4 +31,4 @@ void addAerodynamicDrag(BuildContext& ctx, const SimTK::MobilizedBody& rearFrame
   SimTK::Force::Custom(ctx.forces, new AerodynamicDrag(rearFrame, 0.5 * spec.airDensity * spec.dragArea, p_RC));
 }
 
-}  // namespace motostab
+}  // namespace motostab::vehicle

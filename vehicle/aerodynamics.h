@@ -3,11 +3,11 @@
 #include "plugins/plugin_api.h"
 #include "scenario/scenario.h"
 
-namespace motostab {
+namespace motostab::vehicle {
 
 /// Adds F = -1/2 rho CdA |v| v, v the ground velocity of the centre of pressure p_RC (rear-frame
 /// body coordinates, m), applied at that point (N).
-void addAerodynamicDrag(BuildContext& context, const SimTK::MobilizedBody& rearFrame, const AerodynamicsSpec& spec,
+void addAerodynamicDrag(plugins::BuildContext& context, const SimTK::MobilizedBody& rearFrame, const scenario::AerodynamicsSpec& spec,
                         const SimTK::Vec3& p_RC);
 
-}  // namespace motostab
+}  // namespace motostab::vehicle

@@ -1,6 +1,9 @@
 #include "vehicle/body_builder.h"
 
-namespace motostab {
+namespace motostab::vehicle {
+
+using scenario::BodySpec;
+
 
 SimTK::Body::Rigid makeBody(const BodySpec& b, const SimTK::Vec3& origin_D) {
   const SimTK::Vec3 com_B = toVec3(b.com) - origin_D;
@@ -9,4 +12,4 @@ SimTK::Body::Rigid makeBody(const BodySpec& b, const SimTK::Vec3& origin_D) {
   return SimTK::Body::Rigid(SimTK::MassProperties(b.mass, com_B, I_com.shiftFromMassCenter(-com_B, b.mass)));
 }
 
-}  // namespace motostab
+}  // namespace motostab::vehicle

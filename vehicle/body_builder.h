@@ -3,11 +3,11 @@
 #include "plugins/plugin_api.h"
 #include "scenario/scenario.h"
 
-namespace motostab {
+namespace motostab::vehicle {
 
-inline SimTK::Vec3 toVec3(const Vec3d& v) { return SimTK::Vec3(v[0], v[1], v[2]); }
+inline SimTK::Vec3 toVec3(const scenario::Vec3d& v) { return SimTK::Vec3(v[0], v[1], v[2]); }
 
 /// Rigid body with its origin at `origin_D` (design frame, m), axes parallel to the design frame.
-SimTK::Body::Rigid makeBody(const BodySpec& body, const SimTK::Vec3& origin_D);
+SimTK::Body::Rigid makeBody(const scenario::BodySpec& body, const SimTK::Vec3& origin_D);
 
-}  // namespace motostab
+}  // namespace motostab::vehicle

@@ -2,10 +2,18 @@
 
 #include <cmath>
 
+#include "multibody/pin_joint.h"
 #include "plugins/pin_spring_damper.h"
 #include "vehicle/body_builder.h"
 
-namespace motostab {
+namespace motostab::vehicle {
+
+using multibody::addPinAtDesignPose;
+using plugins::BuildContext;
+using plugins::addPinSpringDamper;
+using scenario::ForkComplianceSpec;
+using scenario::Scenario;
+
 
 SimTK::Vec3 calcForkHingePoint(const Scenario& s) {
   const double lambda = s.geometry.steerAxisTilt, d = s.forkCompliance.axisDistance;
@@ -39,4 +47,4 @@ ForkAssembly addForkCompliance(BuildContext& ctx, SimTK::MobilizedBody& frontFra
   return out;
 }
 
-}  // namespace motostab
+}  // namespace motostab::vehicle

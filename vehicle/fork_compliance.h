@@ -21,7 +21,7 @@
 #include "plugins/plugin_api.h"
 #include "scenario/scenario.h"
 
-namespace motostab {
+namespace motostab::vehicle {
 
 /// The body that carries the front wheel and the named compliance mobilizers.
 struct ForkAssembly {
@@ -30,11 +30,11 @@ struct ForkAssembly {
 };
 
 /// Adds carrier (and torsion link) to `frontFrame`, whose body origin is the front hub at p_DF (D, m).
-ForkAssembly addForkCompliance(BuildContext& context, SimTK::MobilizedBody& frontFrame, const SimTK::Vec3& p_DF,
-                               const Scenario& scenario);
+ForkAssembly addForkCompliance(plugins::BuildContext& context, SimTK::MobilizedBody& frontFrame, const SimTK::Vec3& p_DF,
+                               const scenario::Scenario& scenario);
 
 /// The bending hinge point P in the design frame (m) and the unit bending axis n_b.
-SimTK::Vec3 calcForkHingePoint(const Scenario& scenario);
-SimTK::Vec3 calcForkBendingAxis(const Scenario& scenario);
+SimTK::Vec3 calcForkHingePoint(const scenario::Scenario& scenario);
+SimTK::Vec3 calcForkBendingAxis(const scenario::Scenario& scenario);
 
-}  // namespace motostab
+}  // namespace motostab::vehicle

@@ -1,9 +1,16 @@
 #include "vehicle/rider_lean.h"
 
+#include "multibody/pin_joint.h"
 #include "plugins/pin_spring_damper.h"
 #include "vehicle/body_builder.h"
 
-namespace motostab {
+namespace motostab::vehicle {
+
+using multibody::addPinAtDesignPose;
+using plugins::BuildContext;
+using plugins::addPinSpringDamper;
+using scenario::RiderLeanSpec;
+
 
 SimTK::MobilizedBody::Pin addRiderLean(BuildContext& ctx, SimTK::MobilizedBody& rearFrame, const SimTK::Vec3& p_DR,
                                        const RiderLeanSpec& spec) {
@@ -14,4 +21,4 @@ SimTK::MobilizedBody::Pin addRiderLean(BuildContext& ctx, SimTK::MobilizedBody& 
   return upper;
 }
 
-}  // namespace motostab
+}  // namespace motostab::vehicle

@@ -12,11 +12,11 @@
 #include "plugins/plugin_api.h"
 #include "scenario/scenario.h"
 
-namespace motostab {
+namespace motostab::vehicle {
 
 /// Adds the upper body to `rearFrame`, whose body origin is at p_DR (design frame, m). Returns its
 /// one-DOF mobilizer (q = 0 upright).
-SimTK::MobilizedBody::Pin addRiderLean(BuildContext& context, SimTK::MobilizedBody& rearFrame, const SimTK::Vec3& p_DR,
-                                       const RiderLeanSpec& spec);
+SimTK::MobilizedBody::Pin addRiderLean(plugins::BuildContext& context, SimTK::MobilizedBody& rearFrame, const SimTK::Vec3& p_DR,
+                                       const scenario::RiderLeanSpec& spec);
 
-}  // namespace motostab
+}  // namespace motostab::vehicle

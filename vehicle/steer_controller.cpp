@@ -3,7 +3,11 @@
 #include <algorithm>
 #include <cmath>
 
-namespace motostab {
+namespace motostab::vehicle {
+
+using plugins::BuildContext;
+using scenario::SteerControllerSpec;
+
 namespace {
 
 using SimTK::MobilizerQIndex;
@@ -100,4 +104,4 @@ std::shared_ptr<const SteerController> addSteerController(BuildContext& ctx, con
   return c;
 }
 
-}  // namespace motostab
+}  // namespace motostab::vehicle

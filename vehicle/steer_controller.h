@@ -33,7 +33,7 @@
 #include "plugins/plugin_api.h"
 #include "scenario/scenario.h"
 
-namespace motostab {
+namespace motostab::vehicle {
 
 /// The states the controller reads: roll (rad), roll rate (rad/s), steer (rad), steer rate (rad/s),
 /// forward speed v (m/s).
@@ -42,19 +42,19 @@ struct SteerControllerInputs {
 };
 
 /// The schedule factor f(v) (dimensionless; m/s for `below_mps`), as above.
-double calcScheduleFactor(const SteerControllerSpec& spec, double speed);
+double calcScheduleFactor(const scenario::SteerControllerSpec& spec, double speed);
 
 /// The undelayed, unsaturated law u (N m), as above.
-double calcSteerControllerCommand(const SteerControllerSpec& spec, const SteerControllerInputs& x);
+double calcSteerControllerCommand(const scenario::SteerControllerSpec& spec, const SteerControllerInputs& x);
 
 /// The applied torque T = clamp(y, -L, L) (N m) for the (delayed) command y.
-double calcSaturatedTorque(const SteerControllerSpec& spec, double command);
+double calcSaturatedTorque(const scenario::SteerControllerSpec& spec, double command);
 
 /// The controller element of one model: reads the states, writes the delay state's derivative.
 class SteerController {
  public:
   SteerController(SimTK::GeneralForceSubsystem& forces, const SimTK::MobilizedBody& rearFrame,
-                  const SimTK::MobilizedBody& frontFrame, const SteerControllerSpec& spec);
+                  const SimTK::MobilizedBody& frontFrame, const scenario::SteerControllerSpec& spec);
   /// Allocates the delay state (if any); called from the force element's realizeTopology.
   void allocateState(SimTK::State& state) const;
   /// Names of the z states allocated: {"steer_controller_delay"} (N m) with a delay, else none.
@@ -65,21 +65,21 @@ class SteerController {
   double calcTorque(const SimTK::State& state) const;
   /// Applies T to the steer mobility and writes z' (delay); state realized to Velocity.
   void apply(const SimTK::State& state, SimTK::Vector& mobilityForces) const;
-  const SteerControllerSpec& getSpec() const { return spec_; }
+  const scenario::SteerControllerSpec& getSpec() const { return spec_; }
 
  private:
   double calcDelayedCommand(const SimTK::State& state, double command) const;
 
   SimTK::GeneralForceSubsystem& forces_;
   SimTK::MobilizedBody rear_, front_;
-  SteerControllerSpec spec_;
+  scenario::SteerControllerSpec spec_;
   mutable SimTK::ZIndex zIndex_;
 };
 
 /// Adds the controller between `rearFrame` (the model's 6-DOF Bushing: q = yaw, roll, pitch,
 /// height, x, y; u = their rates) and `frontFrame` (the steer Pin) as a Force::Custom element.
-std::shared_ptr<const SteerController> addSteerController(BuildContext& context, const SimTK::MobilizedBody& rearFrame,
+std::shared_ptr<const SteerController> addSteerController(plugins::BuildContext& context, const SimTK::MobilizedBody& rearFrame,
                                                           const SimTK::MobilizedBody& frontFrame,
-                                                          const SteerControllerSpec& spec);
+                                                          const scenario::SteerControllerSpec& spec);
 
-}  // namespace motostab
+}  // namespace motostab::vehicle

@@ -2,7 +2,11 @@
 
 #include <cmath>
 
-namespace motostab {
+namespace motostab::vehicle {
+
+using plugins::BuildContext;
+using scenario::SteerDamperSpec;
+
 namespace {
 
 class SteerDamper : public SimTK::Force::Custom::Implementation {
@@ -32,4 +36,4 @@ void addSteerDamper(BuildContext& ctx, const SimTK::MobilizedBody& frontFrame, c
   SimTK::Force::Custom(ctx.forces, new SteerDamper(frontFrame, spec));
 }
 
-}  // namespace motostab
+}  // namespace motostab::vehicle

@@ -13,12 +13,12 @@
 #include "plugins/plugin_api.h"
 #include "scenario/scenario.h"
 
-namespace motostab {
+namespace motostab::vehicle {
 
 /// Adds the damper to the steer mobilizer of `frontFrame` (a one-DOF Pin whose u is the steer rate).
-void addSteerDamper(BuildContext& context, const SimTK::MobilizedBody& frontFrame, const SteerDamperSpec& spec);
+void addSteerDamper(plugins::BuildContext& context, const SimTK::MobilizedBody& frontFrame, const scenario::SteerDamperSpec& spec);
 
 /// The damper torque T (N m) at steer rate `steerRate` (rad/s), as above.
-double calcSteerDamperTorque(const SteerDamperSpec& spec, double steerRate);
+double calcSteerDamperTorque(const scenario::SteerDamperSpec& spec, double steerRate);
 
-}  // namespace motostab
+}  // namespace motostab::vehicle

@@ -1,10 +1,8 @@
 #include "vehicle/vehicle_model.h"
 
+#include "multibody/pin_joint.h"
+#include "plugins/builtin.h"
 #include "plugins/pin_spring_damper.h"
-#include "swingarm/compliance/swingarm_compliance.h"
-#include "tyres/magic_formula_contact.h"
-#include "tyres/relaxation_linear.h"
-#include "tyres/rolling_no_slip.h"
 #include "vehicle/aerodynamics.h"
 #include "vehicle/body_builder.h"
 #include "vehicle/fork_compliance.h"
@@ -12,22 +10,35 @@
 #include "vehicle/steer_controller.h"
 #include "vehicle/steer_damper.h"
 
-namespace motostab {
+namespace motostab::vehicle {
+
+using io::InputError;
+using multibody::addPinAtDesignPose;
+using plugins::BuildContext;
+using plugins::PluginRegistry;
+using plugins::SwingarmAssembly;
+using plugins::SwingarmModel;
+using plugins::SwingarmSite;
+using plugins::WheelSite;
+using plugins::addPinSpringDamper;
+using plugins::makeBuiltinRegistry;
+using scenario::BodySpec;
+using scenario::Scenario;
+using scenario::SuspensionSpec;
+using scenario::SwingarmFrame;
+using scenario::WheelSpec;
+using scenario::calcBodyRemainder;
+using scenario::calcStaticPivotMoment;
+using scenario::calcStaticWheelLoads;
+using scenario::calcSwingarmFrame;
+using scenario::rethrowNamingOverride;
+
 
 using SimTK::MobilizedBody;
 using SimTK::Rotation;
 using SimTK::Transform;
 using SimTK::UnitVec3;
 using SimTK::Vec3;
-
-PluginRegistry makeBuiltinRegistry() {
-  PluginRegistry registry;
-  registerRollingNoSlip(registry);
-  registerRelaxationLinear(registry);
-  registerMagicFormula(registry);
-  registerSwingarmModels(registry);
-  return registry;
-}
 
 namespace {
 
@@ -286,4 +297,4 @@ double VehicleModel::getInput(const SimTK::State& state, Input which) const {
   return 0;
 }
 
-}  // namespace motostab
+}  // namespace motostab::vehicle

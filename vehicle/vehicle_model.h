@@ -17,10 +17,10 @@
 #include <vector>
 
 #include "Simbody.h"
-#include "plugins/plugin_registry.h"
+#include "plugins/builtin.h"
 #include "scenario/scenario.h"
 
-namespace motostab {
+namespace motostab::vehicle {
 
 /// Generalized coordinates with a role in trim and linearisation (indices into q; u alike).
 struct CoordinateIndices {
@@ -35,23 +35,20 @@ struct CoordinateIndices {
 enum class Input { SteerTorque = 0, DriveTorque = 1, RollTorque = 2 };
 constexpr int kNumInputs = 3;
 
-/// The registry with every built-in plugin registered (tyres/, swingarm/).
-PluginRegistry makeBuiltinRegistry();
-
 class VehicleModel;
 class SteerController;
 
 /// Adds elements (perturbation forces, controllers) to a model while it is assembled, after the
 /// bodies and contacts and before Simbody's topology is realized. Returns the names of any z
 /// states it allocates, in allocation order.
-using ModelExtension = std::function<std::vector<std::string>(BuildContext& context, const VehicleModel& model)>;
+using ModelExtension = std::function<std::vector<std::string>(plugins::BuildContext& context, const VehicleModel& model)>;
 
 class VehicleModel {
  public:
   /// Builds the Simbody system; loads the scenario's plugin libraries into `registry` first.
-  VehicleModel(const Scenario& scenario, PluginRegistry& registry, const std::vector<ModelExtension>& extensions = {});
+  VehicleModel(const scenario::Scenario& scenario, plugins::PluginRegistry& registry, const std::vector<ModelExtension>& extensions = {});
   /// Same, with the built-in registry.
-  explicit VehicleModel(const Scenario& scenario);
+  explicit VehicleModel(const scenario::Scenario& scenario);
   /// A new, independent model built like this one: same scenario, a copy of the plugin registry it
   /// was built with (loaded libraries included) and the same extensions, called again. For worker
   /// threads, which must not share Simbody caches.
@@ -59,7 +56,7 @@ class VehicleModel {
   VehicleModel(const VehicleModel&) = delete;
   VehicleModel& operator=(const VehicleModel&) = delete;
 
-  const Scenario& getScenario() const { return scenario_; }
+  const scenario::Scenario& getScenario() const { return scenario_; }
   const SimTK::MultibodySystem& getSystem() const { return system_; }
   const SimTK::SimbodyMatterSubsystem& getMatter() const { return matter_; }
   /// A state at the design pose (upright, at rest), realized to Instance.
@@ -104,24 +101,24 @@ class VehicleModel {
   const SimTK::MobilizedBody& getFrontWheel() const { return frontWheel_; }
 
  private:
-  void build(PluginRegistry& registry, const std::vector<ModelExtension>& extensions);
+  void build(plugins::PluginRegistry& registry, const std::vector<ModelExtension>& extensions);
 
-  Scenario scenario_;
-  PluginRegistry registry_;                 ///< as used by build(), for replicas
+  scenario::Scenario scenario_;
+  plugins::PluginRegistry registry_;                 ///< as used by build(), for replicas
   std::vector<ModelExtension> extensions_;  ///< as used by build(), for replicas
   SimTK::MultibodySystem system_;
   SimTK::SimbodyMatterSubsystem matter_;
   SimTK::GeneralForceSubsystem forces_;
   SimTK::MobilizedBody rearFrame_, frontFrame_, rearWheel_, frontWheel_;
   SimTK::Force::DiscreteForces inputs_;
-  std::vector<std::unique_ptr<ContactModel>> contacts_;
-  std::unique_ptr<SwingarmModel> swingarm_;
+  std::vector<std::unique_ptr<plugins::ContactModel>> contacts_;
+  std::unique_ptr<plugins::SwingarmModel> swingarm_;
   std::shared_ptr<const SteerController> steerController_;
-  std::vector<WheelSite> wheelSites_;
+  std::vector<plugins::WheelSite> wheelSites_;
   SimTK::State defaultState_;
   int nq_ = 0;
   CoordinateIndices idx_;
   std::vector<std::string> qNames_, uNames_, zNames_;
 };
 
-}  // namespace motostab
+}  // namespace motostab::vehicle

@@ -2,5 +2,5 @@
 #include "plugins/plugin_api.h"
 
 MOTOSTAB_PLUGIN_ENTRY {
-  registry.addContactModel("rolling_no_slip", [](motostab::YamlMap&) -> std::unique_ptr<motostab::ContactModel> { return nullptr; });
+  registry.addContactModel("rolling_no_slip", [](motostab::io::YamlMap&) -> std::unique_ptr<motostab::plugins::ContactModel> { return nullptr; });
 }

@@ -3,7 +3,7 @@
 #include "plugins/plugin_api.h"
 
 MOTOSTAB_PLUGIN_ENTRY {
-  auto none = [](motostab::YamlMap&) -> std::unique_ptr<motostab::ContactModel> { return nullptr; };
+  auto none = [](motostab::io::YamlMap&) -> std::unique_ptr<motostab::plugins::ContactModel> { return nullptr; };
   registry.addContactModel("example_partial_first", none);
   registry.addContactModel("rolling_no_slip", none);
 }

@@ -21,10 +21,10 @@ class VerticalSpring : public SimTK::Force::Custom::Implementation {
   double radius_, k_;
 };
 
-class VerticalSpringContact : public motostab::ContactModel {
+class VerticalSpringContact : public motostab::plugins::ContactModel {
  public:
   explicit VerticalSpringContact(double k) : k_(k) {}
-  void addWheel(motostab::BuildContext& ctx, const motostab::WheelSite& w) override {
+  void addWheel(motostab::plugins::BuildContext& ctx, const motostab::plugins::WheelSite& w) override {
     SimTK::Force::Custom(ctx.forces, new VerticalSpring(w.wheel, w.radius, k_));
   }
 
@@ -43,7 +43,7 @@ extern "C" int motostab_example_entry_calls() { return entryCalls; }
 
 MOTOSTAB_PLUGIN_ENTRY {
   ++entryCalls;
-  registry.addContactModel("example_vertical_spring", [](motostab::YamlMap& params) -> std::unique_ptr<motostab::ContactModel> {
+  registry.addContactModel("example_vertical_spring", [](motostab::io::YamlMap& params) -> std::unique_ptr<motostab::plugins::ContactModel> {
     return std::make_unique<VerticalSpringContact>(params.getPositive("stiffness_N_per_m"));
   });
 }

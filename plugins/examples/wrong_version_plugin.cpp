@@ -3,8 +3,8 @@
 #include "plugins/plugin_api.h"
 
 extern "C" int motostab_plugin_api_version() { return MOTOSTAB_PLUGIN_API_VERSION + 1; }
-extern "C" void motostab_register_plugins(motostab::PluginRegistrar& registry) {
-  registry.addContactModel("example_wrong_version", [](motostab::YamlMap&) -> std::unique_ptr<motostab::ContactModel> {
+extern "C" void motostab_register_plugins(motostab::plugins::PluginRegistrar& registry) {
+  registry.addContactModel("example_wrong_version", [](motostab::io::YamlMap&) -> std::unique_ptr<motostab::plugins::ContactModel> {
     return nullptr;
   });
 }

@@ -3,9 +3,22 @@
 #include <algorithm>
 #include <filesystem>
 
+#include "multibody/pin_joint.h"
 #include "plugins/pin_spring_damper.h"
 
-namespace motostab {
+namespace motostab::swingarm {
+
+using io::YamlMap;
+using io::loadYamlFile;
+using multibody::addPinAtDesignPose;
+using plugins::BuildContext;
+using plugins::PluginRegistrar;
+using plugins::SwingarmAssembly;
+using plugins::SwingarmModel;
+using plugins::SwingarmModelFactory;
+using plugins::SwingarmSite;
+using plugins::addPinSpringDamper;
+
 
 using SimTK::MobilizedBody;
 using SimTK::Transform;
@@ -157,4 +170,4 @@ void registerSwingarmModels(PluginRegistrar& registry) {
   registry.addSwingarmModel("bending+torsion", makeFactory({"bending", "torsion"}));
 }
 
-}  // namespace motostab
+}  // namespace motostab::swingarm

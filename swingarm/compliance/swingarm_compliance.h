@@ -3,7 +3,7 @@
 // and damping about an identified axis, `bending`, `torsion`, `twist`, or `bending+torsion` in series.
 #include "plugins/plugin_api.h"
 
-namespace motostab {
+namespace motostab::swingarm {
 
 /// A lumped compliance axis in the swingarm frame S with its stiffness and damping.
 struct ComplianceAxis {
@@ -19,6 +19,6 @@ struct ComplianceAxis {
 ComplianceAxis makeAxisFromArm(const SimTK::Vec3& p_SH, double arm, double beta, double stiffness, double damping);
 
 /// Registers rigid, bending, torsion, twist and bending+torsion.
-void registerSwingarmModels(PluginRegistrar& registry);
+void registerSwingarmModels(plugins::PluginRegistrar& registry);
 
-}  // namespace motostab
+}  // namespace motostab::swingarm

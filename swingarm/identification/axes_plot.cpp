@@ -7,7 +7,13 @@
 #include "io/csv.h"
 #include "io/plot.h"
 
-namespace motostab::identification {
+namespace motostab::swingarm::identification {
+
+using io::formatNumber;
+using io::gnuplotQuote;
+using io::renderGnuplot;
+using io::writeFileAtomically;
+
 
 void writeAxesPlot(const std::filesystem::path& dir, const std::string& name, const std::string& title,
                    const std::vector<PlotMarker>& sensors, const PlatePoint& forcePoint,
@@ -60,4 +66,4 @@ void writeAxesPlot(const std::filesystem::path& dir, const std::string& name, co
   renderGnuplot(dir, name, gp.str());
 }
 
-}  // namespace motostab::identification
+}  // namespace motostab::swingarm::identification

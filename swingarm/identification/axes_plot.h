@@ -7,7 +7,7 @@
 
 #include "swingarm/identification/plate_motion.h"
 
-namespace motostab::identification {
+namespace motostab::swingarm::identification {
 
 /// A named sensor position on the plate.
 struct PlotMarker {
@@ -28,4 +28,4 @@ void writeAxesPlot(const std::filesystem::path& dir, const std::string& name, co
                    const std::vector<PlotMarker>& sensors, const PlatePoint& forcePoint,
                    const std::vector<PlotAxis>& axes);
 
-}  // namespace motostab::identification
+}  // namespace motostab::swingarm::identification

@@ -9,7 +9,11 @@
 #include "io/csv.h"
 #include "swingarm/identification/axes_plot.h"
 
-namespace motostab::identification {
+namespace motostab::swingarm::identification {
+
+using io::formatNumber;
+using io::writeFileAtomically;
+
 namespace {
 constexpr double kDeg = M_PI / 180;
 }
@@ -150,4 +154,4 @@ void writeSwingarmOutputs(const SwingarmIdentification& id, const StaticTest& st
                  {t[2], id.torsion.point, id.torsion.direction}});
 }
 
-}  // namespace motostab::identification
+}  // namespace motostab::swingarm::identification

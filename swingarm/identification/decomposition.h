@@ -7,7 +7,7 @@
 #include "swingarm/identification/hammer_frf.h"
 #include "swingarm/identification/static_laser.h"
 
-namespace motostab::identification {
+namespace motostab::swingarm::identification {
 
 /// Bending and torsion stiffness from seed eq. 7 and 10, Nm/rad. Unknowns u_b = a_b/k_b, u_t = a_t/k_t:
 ///   a_b u_b + a_t u_t = a_tw^2 / k_tw                        (eq. 7)
@@ -66,4 +66,4 @@ std::string formatSwingarmYaml(const SwingarmIdentification& id, const std::stri
 void writeSwingarmOutputs(const SwingarmIdentification& id, const StaticTest& stat, const FrfTest& frf,
                           const std::filesystem::path& dir);
 
-}  // namespace motostab::identification
+}  // namespace motostab::swingarm::identification

@@ -8,7 +8,11 @@
 #include "io/csv.h"
 #include "io/result_error.h"
 
-namespace motostab::identification {
+namespace motostab::swingarm::identification {
+
+using io::ResultError;
+using io::formatNumber;
+
 namespace {
 
 std::string fmt(double v, int digits = 6) { return formatNumber(v, digits); }
@@ -159,4 +163,4 @@ void requireBendingAndTorsion(const FrfResult& r) {
   throw ResultError(s + "\n  Tried: " + describeFrfAttempt(r));
 }
 
-}  // namespace motostab::identification
+}  // namespace motostab::swingarm::identification

@@ -7,7 +7,7 @@
 
 #include "swingarm/identification/hammer_frf.h"
 
-namespace motostab::identification {
+namespace motostab::swingarm::identification {
 
 /// Fills result.diagnostics: each indicator peak (>= 1 % of the largest, coherence > 0.99) with no
 /// stable mode, and, with >= 3 channels, a missing bending or torsion mode: which one, why (the modes
@@ -31,4 +31,4 @@ void requireModes(const FrfResult& result);
 /// Throws ResultError (exit 3) with the diagnostics if the bending or torsion mode is missing.
 void requireBendingAndTorsion(const FrfResult& result);
 
-}  // namespace motostab::identification
+}  // namespace motostab::swingarm::identification

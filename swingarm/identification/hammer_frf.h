@@ -12,7 +12,7 @@
 #include "modal/spectra.h"
 #include "swingarm/identification/plate_motion.h"
 
-namespace motostab::identification {
+namespace motostab::swingarm::identification {
 
 /// An accelerometer on the plate measuring along y.
 struct FrfChannel {
@@ -97,4 +97,4 @@ FrfResult identifyFrf(const FrfTest& test, const std::vector<modal::ImpactRecord
 /// frf_magnitude_phase, coherence, stabilisation and modal_axes (png + svg).
 void writeFrfOutputs(const FrfTest& test, const FrfResult& result, const std::filesystem::path& dir);
 
-}  // namespace motostab::identification
+}  // namespace motostab::swingarm::identification

@@ -12,7 +12,16 @@
 #include "swingarm/identification/plate_motion.h"
 #include "swingarm/identification/yaml_input.h"
 
-namespace motostab::identification {
+namespace motostab::swingarm::identification {
+
+using io::CsvTable;
+using io::CsvWriter;
+using io::InputError;
+using io::YamlMap;
+using io::readCsv;
+using io::renderGnuplot;
+using io::writeFileAtomically;
+
 namespace {
 
 struct MeanStat {
@@ -271,4 +280,4 @@ void writeInertiaOutputs(const InertiaTest& t, const InertiaResult& r, const std
                 "plot 'inertia_setups.csv' using 1:5:6 with yerrorbars pt 7 title 'measured', '' using 1:7 with points pt 4 ps 2 title 'n^T I n'\n");
 }
 
-}  // namespace motostab::identification
+}  // namespace motostab::swingarm::identification

@@ -8,7 +8,7 @@
 
 #include <Eigen/Dense>
 
-namespace motostab::identification {
+namespace motostab::swingarm::identification {
 
 /// A load cell under the tilting platform at (x, y) on the platform surface (z = 0), m.
 struct LoadCell {
@@ -90,4 +90,4 @@ InertiaResult identifyInertia(const InertiaTest& test);
 /// Writes DIR/inertia.json and the plot DIR/inertia_setups.png/.svg.
 void writeInertiaOutputs(const InertiaTest& test, const InertiaResult& result, const std::filesystem::path& dir);
 
-}  // namespace motostab::identification
+}  // namespace motostab::swingarm::identification

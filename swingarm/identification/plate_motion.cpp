@@ -3,7 +3,7 @@
 #include <cmath>
 #include <stdexcept>
 
-namespace motostab::identification {
+namespace motostab::swingarm::identification {
 
 std::string checkPlaneGeometry(const std::vector<PlatePoint>& points) {
   if (points.size() < 3)
@@ -75,4 +75,4 @@ double wrapDegrees(double a) {
   return a;
 }
 
-}  // namespace motostab::identification
+}  // namespace motostab::swingarm::identification

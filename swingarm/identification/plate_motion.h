@@ -7,7 +7,7 @@
 
 #include <Eigen/Dense>
 
-namespace motostab::identification {
+namespace motostab::swingarm::identification {
 
 /// A point of the plate plane: x along the swingarm, z up, m.
 struct PlatePoint {
@@ -51,4 +51,4 @@ Eigen::MatrixXd propagateCovariance(const std::function<Eigen::VectorXd(const Ei
 /// Wraps an angle difference to (-180, 180] deg.
 double wrapDegrees(double angle);
 
-}  // namespace motostab::identification
+}  // namespace motostab::swingarm::identification

@@ -11,7 +11,14 @@
 #include "swingarm/identification/axes_plot.h"
 #include "swingarm/identification/yaml_input.h"
 
-namespace motostab::identification {
+namespace motostab::swingarm::identification {
+
+using io::CsvTable;
+using io::InputError;
+using io::YamlMap;
+using io::readCsv;
+using io::writeFileAtomically;
+
 
 StaticTest readStaticTest(const std::filesystem::path& file) {
   YamlMap root = openTestFile(file, "static");
@@ -164,4 +171,4 @@ void writeStaticOutputs(const StaticTest& test, const StaticResult& r, const std
   writeAxesPlot(dir, "static_axis", title, sensors, test.forcePoint, {{"static twist axis", r.axis.point, r.axis.direction}});
 }
 
-}  // namespace motostab::identification
+}  // namespace motostab::swingarm::identification

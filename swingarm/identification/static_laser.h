@@ -9,7 +9,7 @@
 
 #include "swingarm/identification/plate_motion.h"
 
-namespace motostab::identification {
+namespace motostab::swingarm::identification {
 
 /// A laser sensor on the plate, measuring y displacement (CSV column "<name>_m").
 struct PlateSensor {
@@ -76,4 +76,4 @@ StaticResult identifyStatic(const StaticTest& test, const StaticReadings& readin
 /// axis_direction, their *_stderr, and details) and the plot DIR/static_axis.png/.svg.
 void writeStaticOutputs(const StaticTest& test, const StaticResult& result, const std::filesystem::path& dir);
 
-}  // namespace motostab::identification
+}  // namespace motostab::swingarm::identification

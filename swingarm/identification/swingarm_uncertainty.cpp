@@ -5,7 +5,10 @@
 
 #include "io/csv.h"
 
-namespace motostab::identification {
+namespace motostab::swingarm::identification {
+
+using io::formatNumber;
+
 
 std::string formatSwingarmUncertainty(const SwingarmIdentification& id) {
   std::ostringstream y;
@@ -24,4 +27,4 @@ std::string formatSwingarmUncertainty(const SwingarmIdentification& id) {
   return y.str();
 }
 
-}  // namespace motostab::identification
+}  // namespace motostab::swingarm::identification

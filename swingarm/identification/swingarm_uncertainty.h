@@ -7,10 +7,10 @@
 
 #include "swingarm/identification/decomposition.h"
 
-namespace motostab::identification {
+namespace motostab::swingarm::identification {
 
 /// YAML text "uncertainty:\n  swingarm.bending.stiffness_Nm_per_rad: s\n ..." of every finite,
 /// positive standard error of the three lumped models (units of the keys: m, deg, Nm/rad, Nms/rad).
 std::string formatSwingarmUncertainty(const SwingarmIdentification& id);
 
-}  // namespace motostab::identification
+}  // namespace motostab::swingarm::identification

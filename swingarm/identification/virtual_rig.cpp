@@ -7,9 +7,14 @@
 
 #include "io/atomic_file.h"
 #include "io/csv.h"
-#include "io/portable_random.h"
+#include "core/portable_random.h"
 
-namespace motostab::identification {
+namespace motostab::swingarm::identification {
+
+using core::PortableRandom;
+using io::formatNumber;
+using io::writeFileAtomically;
+
 namespace {
 
 constexpr double kDeg = M_PI / 180;
@@ -252,4 +257,4 @@ void writeInertiaTestFiles(const std::filesystem::path& dir, const VirtualPart& 
   writeFileAtomically(dir / "inertia.yaml", y.str());
 }
 
-}  // namespace motostab::identification
+}  // namespace motostab::swingarm::identification

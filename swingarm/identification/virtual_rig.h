@@ -13,7 +13,7 @@
 #include "swingarm/identification/mass_properties.h"
 #include "swingarm/identification/static_laser.h"
 
-namespace motostab::identification {
+namespace motostab::swingarm::identification {
 
 /// Truth of the virtual swingarm (defaults resemble seed Table 2, swingarm 1).
 struct VirtualSwingarm {
@@ -80,4 +80,4 @@ void writeCogTestFiles(const std::filesystem::path& dir, const VirtualPart& part
 void writeInertiaTestFiles(const std::filesystem::path& dir, const VirtualPart& part, double periodNoise,
                            std::uint64_t seed);
 
-}  // namespace motostab::identification
+}  // namespace motostab::swingarm::identification

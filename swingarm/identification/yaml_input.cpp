@@ -1,6 +1,10 @@
 #include "swingarm/identification/yaml_input.h"
 
-namespace motostab::identification {
+namespace motostab::swingarm::identification {
+
+using io::YamlMap;
+using io::loadYamlFile;
+
 
 YamlMap openTestFile(const std::filesystem::path& file, const std::string& kind) {
   YamlMap root = loadYamlFile(file.string());
@@ -16,4 +20,4 @@ PlatePoint readForcePoint(YamlMap& root) {
   return p;
 }
 
-}  // namespace motostab::identification
+}  // namespace motostab::swingarm::identification

@@ -1,19 +1,19 @@
 #pragma once
 // Test descriptions (static, frf, cog, inertia) are read with the project's one strict YAML layer
-// (scenario/yaml_map.h): unknown or duplicate keys, missing keys and bad values are InputErrors
+// (io/yaml_map.h): unknown or duplicate keys, missing keys and bad values are InputErrors
 // naming the file, line, column and key path; file names are relative to the test file.
 #include <filesystem>
 #include <string>
 
-#include "scenario/yaml_map.h"
+#include "io/yaml_map.h"
 #include "swingarm/identification/plate_motion.h"
 
-namespace motostab::identification {
+namespace motostab::swingarm::identification {
 
 /// Loads a test description and checks its `test: <kind>` key (consumed).
-YamlMap openTestFile(const std::filesystem::path& file, const std::string& kind);
+io::YamlMap openTestFile(const std::filesystem::path& file, const std::string& kind);
 
 /// The required `force_point: {x, z}` of a static or hammer test (m; consumed).
-PlatePoint readForcePoint(YamlMap& root);
+PlatePoint readForcePoint(io::YamlMap& root);
 
-}  // namespace motostab::identification
+}  // namespace motostab::swingarm::identification

@@ -3,7 +3,12 @@
 #include "analysis/linearize.h"
 #include "scenario/scenario.h"
 
-namespace motostab {
+namespace motostab::analysis {
+
+using scenario::loadScenario;
+using vehicle::Input;
+using vehicle::VehicleModel;
+
 namespace {
 
 // Linearising in place perturbs the trim's own State and puts every value back: the same A as the
@@ -24,4 +29,4 @@ TEST(Linearize, InPlaceEqualsCopyAndRestoresTheState) {
 }
 
 }  // namespace
-}  // namespace motostab
+}  // namespace motostab::analysis

@@ -6,7 +6,11 @@
 #include "analysis/sweep.h"
 #include "scenario/scenario.h"
 
-namespace motostab {
+namespace motostab::analysis {
+
+using scenario::loadScenario;
+using vehicle::VehicleModel;
+
 namespace {
 
 SweepResult sweepEnduro() {
@@ -95,4 +99,4 @@ TEST(Modes, NonFiniteEigenvalueIsNamed) {
 }
 
 }  // namespace
-}  // namespace motostab
+}  // namespace motostab::analysis

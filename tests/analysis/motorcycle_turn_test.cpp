@@ -9,7 +9,13 @@
 #include "analysis/trim.h"
 #include "scenario/scenario.h"
 
-namespace motostab {
+namespace motostab::analysis {
+
+using scenario::loadScenario;
+using vehicle::CoordinateIndices;
+using vehicle::Input;
+using vehicle::VehicleModel;
+
 namespace {
 
 const std::string kScenarios = std::string(MOTOSTAB_SOURCE_DIR) + "/scenarios/";
@@ -109,4 +115,4 @@ TEST(MotorcycleTurn, TurnsWorkWithEveryModelExtension) {
 }
 
 }  // namespace
-}  // namespace motostab
+}  // namespace motostab::analysis

@@ -15,7 +15,14 @@
 #include "io/atomic_file.h"
 #include "scenario/bicycle_parameters.h"
 
-namespace motostab {
+namespace motostab::analysis {
+
+using io::writeFileAtomically;
+using scenario::convertBicycleParametersToScenario;
+using scenario::loadScenario;
+using scenario::readBicycleParameters;
+using vehicle::VehicleModel;
+
 namespace {
 
 const std::string kBicycles = std::string(MOTOSTAB_TEST_DATA_DIR) + "/measured-data/BicycleParameters/data/bicycles/";
@@ -113,4 +120,4 @@ TEST(RepairedInertia, EigenvaluesEqualMeijaardFormulasOnTheFileValues) {
 }
 
 }  // namespace
-}  // namespace motostab
+}  // namespace motostab::analysis

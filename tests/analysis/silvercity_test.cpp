@@ -11,7 +11,13 @@
 #include "io/atomic_file.h"
 #include "scenario/bicycle_parameters.h"
 
-namespace motostab {
+namespace motostab::analysis {
+
+using io::writeFileAtomically;
+using scenario::convertBicycleParametersToScenario;
+using scenario::loadScenario;
+using vehicle::VehicleModel;
+
 namespace {
 
 const std::string kScenarios = std::string(MOTOSTAB_SOURCE_DIR) + "/scenarios/";
@@ -59,4 +65,4 @@ TEST(Silvercity, ImportedSilverMatchesHandWrittenScenario) {
 }
 
 }  // namespace
-}  // namespace motostab
+}  // namespace motostab::analysis

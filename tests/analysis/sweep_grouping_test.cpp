@@ -8,7 +8,11 @@
 
 #include "analysis/sweep.h"
 
-namespace motostab {
+namespace motostab::analysis {
+
+using scenario::loadScenario;
+using vehicle::VehicleModel;
+
 namespace {
 
 LinearModel makePatternModel(const Eigen::MatrixXd& A, const std::vector<Slot>& slots) {
@@ -121,4 +125,4 @@ TEST(ColumnGrouping, RemovedRowsMatchColumnByColumn) {
 }
 
 }  // namespace
-}  // namespace motostab
+}  // namespace motostab::analysis

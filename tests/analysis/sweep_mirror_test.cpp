@@ -8,11 +8,22 @@
 #include <Eigen/Eigenvalues>
 #include <sstream>
 
-#include "io/portable_random.h"
+#include "core/portable_random.h"
 #include "analysis/sweep.h"
+#include "plugins/builtin.h"
 #include "tests/uncertainty/test_support.h"
 
-namespace motostab {
+namespace motostab::analysis {
+
+using core::PortableRandom;
+using plugins::BuildContext;
+using plugins::PluginRegistry;
+using plugins::makeBuiltinRegistry;
+using scenario::Scenario;
+using scenario::loadScenario;
+using vehicle::ModelExtension;
+using vehicle::VehicleModel;
+
 namespace {
 
 const std::string kEnduro = std::string(MOTOSTAB_SOURCE_DIR) + "/scenarios/enduro.yaml";
@@ -215,9 +226,9 @@ TEST(MirrorSymmetry, NotProposedForATiltedAxisNorUsedWithConstraints) {
 }
 
 }  // namespace
-}  // namespace motostab
+}  // namespace motostab::analysis
 
-namespace motostab {
+namespace motostab::analysis {
 namespace {
 
 // Every bundled vehicle without constraints, mirrored or not: the same eigenvalues to the difference
@@ -247,4 +258,4 @@ TEST(MirrorSymmetry, BundledScenariosMatchCentralDifferences) {
 }
 
 }  // namespace
-}  // namespace motostab
+}  // namespace motostab::analysis

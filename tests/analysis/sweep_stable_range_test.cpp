@@ -8,9 +8,11 @@
 #include <complex>
 
 #include "analysis/sweep.h"
-#include "io/portable_random.h"
+#include "core/portable_random.h"
 
-namespace motostab {
+namespace motostab::analysis {
+
+using core::PortableRandom;
 namespace {
 
 using cd = std::complex<double>;
@@ -92,4 +94,4 @@ TEST(SweepStableRange, AnUnstableUnlabelledModeLeavesNoStableRange) {
 }
 
 }  // namespace
-}  // namespace motostab
+}  // namespace motostab::analysis

@@ -6,7 +6,15 @@
 #include "scenario/scenario.h"
 #include "tyres/rolling_no_slip.h"
 
-namespace motostab {
+namespace motostab::analysis {
+
+using scenario::loadScenario;
+using tyres::calcTorusContact;
+using vehicle::CoordinateIndices;
+using vehicle::Input;
+using vehicle::VehicleModel;
+using vehicle::kNumInputs;
+
 namespace {
 
 const std::string kScenario = std::string(MOTOSTAB_SOURCE_DIR) + "/scenarios/whipple-benchmark.yaml";
@@ -98,9 +106,9 @@ TEST(Trim, TrimPointRestoresTheTrimmedState) {
 }
 
 }  // namespace
-}  // namespace motostab
+}  // namespace motostab::analysis
 
-namespace motostab {
+namespace motostab::analysis {
 namespace {
 
 // Splitting the speeds between workers changes only the trims' warm starts.
@@ -165,4 +173,4 @@ TEST(Sweep, ParallelSweepReportsATrimFailure) {
 }
 
 }  // namespace
-}  // namespace motostab
+}  // namespace motostab::analysis

@@ -6,10 +6,15 @@
 #include <cmath>
 
 #include "analysis/linearize.h"
-#include "io/portable_random.h"
+#include "core/portable_random.h"
 #include "scenario/scenario.h"
 
-namespace motostab {
+namespace motostab::analysis {
+
+using core::PortableRandom;
+using scenario::loadScenario;
+using vehicle::VehicleModel;
+
 namespace {
 
 const std::string kScenarios = std::string(MOTOSTAB_SOURCE_DIR) + "/scenarios/";
@@ -71,4 +76,4 @@ TEST(LinearizeTurn, YawColumnVanishesInTheHeadingFrame) {
 }
 
 }  // namespace
-}  // namespace motostab
+}  // namespace motostab::analysis

@@ -6,7 +6,11 @@
 #include "analysis/turn_map.h"
 #include "scenario/scenario.h"
 
-namespace motostab {
+namespace motostab::analysis {
+
+using scenario::loadScenario;
+using vehicle::VehicleModel;
+
 namespace {
 
 // Nearby roll angles have nearby eigenvalues: at 2 and 4 deg, at every speed, the eigenvalue nearest to
@@ -48,4 +52,4 @@ TEST(TurnMap, LabelsFollowTheModesAcrossRoll) {
 }
 
 }  // namespace
-}  // namespace motostab
+}  // namespace motostab::analysis

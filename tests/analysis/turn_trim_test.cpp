@@ -10,11 +10,20 @@
 
 #include "analysis/linearize.h"
 #include "analysis/trim.h"
-#include "io/portable_random.h"
+#include "core/portable_random.h"
 #include "scenario/scenario.h"
 #include "tyres/rolling_no_slip.h"
 
-namespace motostab {
+namespace motostab::analysis {
+
+using core::PortableRandom;
+using scenario::WheelSpec;
+using scenario::loadScenario;
+using tyres::calcTorusContact;
+using vehicle::CoordinateIndices;
+using vehicle::Input;
+using vehicle::VehicleModel;
+
 namespace {
 
 const std::string kWhipple = std::string(MOTOSTAB_SOURCE_DIR) + "/scenarios/whipple-benchmark.yaml";
@@ -225,4 +234,4 @@ TEST(TurnTrim, FailureNamesSpeedAndRoll) {
 }
 
 }  // namespace
-}  // namespace motostab
+}  // namespace motostab::analysis

@@ -14,7 +14,12 @@
 #include "analysis/sweep.h"
 #include "scenario/scenario.h"
 
-namespace motostab {
+namespace motostab::analysis {
+
+using scenario::loadScenario;
+using vehicle::Input;
+using vehicle::VehicleModel;
+
 namespace {
 
 using cd = std::complex<double>;
@@ -176,4 +181,4 @@ TEST_F(WhippleBenchmark, LinearEquationsReproduceMC1K0K2) {
 }
 
 }  // namespace
-}  // namespace motostab
+}  // namespace motostab::analysis

@@ -89,7 +89,7 @@ TEST(CliCommands, SweepWritesParseableOutputsMatchingTable2) {
   for (const char* plot : {"root_locus.gp", "real_part_vs_speed.gp"}) EXPECT_TRUE(fs::exists(dir / "out" / plot)) << plot;
 }
 
-// One and two worker threads give the same eigenvalues (to the trim tolerance, README "Speed").
+// One and two worker threads give the same eigenvalues (to the trim tolerance, docs/methods.md "Sweeps").
 TEST(CliThreads, SweepOnTwoThreadsMatchesOne) {
   const auto dir = makeTempDir("cli_threads");
   for (const char* n : {"1", "2"}) {

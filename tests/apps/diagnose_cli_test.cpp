@@ -8,7 +8,7 @@
 
 #include "tests/apps/run_motostab.h"
 
-namespace motostab {
+namespace motostab::cli {
 namespace {
 
 namespace fs = std::filesystem;
@@ -92,4 +92,4 @@ TEST(DiagnoseCli, FailedRunLeavesExistingFolderWhole) {
 }
 
 }  // namespace
-}  // namespace motostab
+}  // namespace motostab::cli

@@ -9,7 +9,7 @@
 #include "tests/support/temp_dir.h"
 #include "tests/apps/run_motostab.h"
 
-namespace motostab {
+namespace motostab::cli {
 namespace {
 
 const std::string kWhipple = std::string(MOTOSTAB_SOURCE_DIR) + "/scenarios/whipple-benchmark.yaml";
@@ -127,4 +127,4 @@ TEST(CliInput, BadSteerControllerNamesFileLineColumn) {
 }
 
 }  // namespace
-}  // namespace motostab
+}  // namespace motostab::cli

@@ -14,7 +14,7 @@
 #include "tests/apps/run_motostab.h"
 #include "tests/support/temp_dir.h"
 
-namespace motostab {
+namespace motostab::cli {
 namespace {
 
 const std::string kScenarios = std::string(MOTOSTAB_SOURCE_DIR) + "/scenarios/";
@@ -193,4 +193,4 @@ TEST(TurnCli, LinearizeAboutATurnWritesTheHeadingFrameModel) {
 }
 
 }  // namespace
-}  // namespace motostab
+}  // namespace motostab::cli

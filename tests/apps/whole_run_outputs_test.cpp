@@ -13,7 +13,7 @@
 #include "tests/support/temp_dir.h"
 #include "tests/apps/run_motostab.h"
 
-namespace motostab {
+namespace motostab::cli {
 namespace {
 namespace fs = std::filesystem;
 
@@ -99,4 +99,4 @@ TEST(WholeRunOutputs, FailedRunKeepsOldOutputs) {
 }
 
 }  // namespace
-}  // namespace motostab
+}  // namespace motostab::cli

@@ -8,10 +8,15 @@
 #include <cmath>
 #include <cstdio>
 
-#include "io/portable_random.h"
+#include "core/portable_random.h"
 #include "run_hidden.h"
 
-namespace motostab {
+namespace motostab::diagnosis {
+
+using core::PortableRandom;
+using io::formatNumber;
+
+
 namespace {
 
 const std::string kBenchmark = std::string(MOTOSTAB_SOURCE_DIR) + "/scenarios/whipple-benchmark.yaml";
@@ -84,4 +89,4 @@ TEST(ArNoiseDiagnosis, HiddenDamperIsNamedAndItsIntervalCoversTheTruth) {
 }
 
 }  // namespace
-}  // namespace motostab
+}  // namespace motostab::diagnosis

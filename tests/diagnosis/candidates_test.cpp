@@ -9,7 +9,11 @@
 #include "diagnosis/diagnosis.h"
 #include "scenario/scenario.h"
 
-namespace motostab {
+namespace motostab::diagnosis {
+
+using scenario::Scenario;
+using scenario::loadScenario;
+
 namespace {
 
 const std::string kDir = MOTOSTAB_SOURCE_DIR;
@@ -71,4 +75,4 @@ TEST(Candidates, AnExistingRiderLeanHasItsStiffnessAndDampingAsParameters) {
 }
 
 }  // namespace
-}  // namespace motostab
+}  // namespace motostab::diagnosis

@@ -10,10 +10,16 @@
 
 #include "diagnosis/diagnosis.h"
 #include "hidden_effect.h"
-#include "io/portable_random.h"
+#include "core/portable_random.h"
 #include "scenario/parameter_paths.h"
 
-namespace motostab {
+namespace motostab::diagnosis {
+
+using core::PortableRandom;
+using io::formatNumber;
+using scenario::formatOverride;
+
+
 namespace {
 
 namespace fs = std::filesystem;
@@ -61,4 +67,4 @@ TEST(ControllerDiagnosis, EffectiveGainFromThreeGainSettings) {
 }
 
 }  // namespace
-}  // namespace motostab
+}  // namespace motostab::diagnosis

@@ -14,13 +14,26 @@
 #include "diagnosis/candidates.h"
 #include "diagnosis/prediction.h"
 #include "io/csv.h"
-#include "io/portable_random.h"
+#include "core/portable_random.h"
 #include "scenario/bicycle_parameters.h"
 #include "scenario/bicycle_parameters_uncertainty.h"
 #include "scenario/parameter_paths.h"
 #include "vehicle/vehicle_model.h"
 
-namespace motostab {
+namespace motostab::diagnosis {
+
+using analysis::calcTrim;
+using analysis::linearize;
+using core::PortableRandom;
+using io::InputError;
+using scenario::Scenario;
+using scenario::convertBicycleParametersToScenario;
+using scenario::formatBicycleParametersUncertainty;
+using scenario::formatOverride;
+using scenario::loadScenario;
+using scenario::readBicycleParameterSigmas;
+using vehicle::VehicleModel;
+
 namespace {
 
 namespace fs = std::filesystem;
@@ -180,4 +193,4 @@ TEST(ControllerGroups, BalanceAssistExample) {
 }
 
 }  // namespace
-}  // namespace motostab
+}  // namespace motostab::diagnosis

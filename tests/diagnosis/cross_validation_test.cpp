@@ -7,10 +7,13 @@
 #include <cmath>
 #include <stdexcept>
 
-#include "io/portable_random.h"
+#include "core/portable_random.h"
 #include "diagnosis/cross_validation.h"
 
-namespace motostab {
+namespace motostab::diagnosis {
+
+using core::PortableRandom;
+
 namespace {
 
 TEST(CrossValidation, FailedAndDivergingFoldsAreMarkedAndDoNotPoisonTheScore) {
@@ -48,4 +51,4 @@ TEST(CrossValidation, FailedAndDivergingFoldsAreMarkedAndDoNotPoisonTheScore) {
 }
 
 }  // namespace
-}  // namespace motostab
+}  // namespace motostab::diagnosis

@@ -9,11 +9,15 @@
 #include <fstream>
 #include <sstream>
 
-#include "io/portable_random.h"
+#include "core/portable_random.h"
 #include "diagnosis/diagnosis.h"
 #include "io/csv.h"
 
-namespace motostab {
+namespace motostab::diagnosis {
+
+using core::PortableRandom;
+using io::formatNumber;
+
 namespace {
 
 namespace fs = std::filesystem;
@@ -48,4 +52,4 @@ TEST(DiagnosisPrior, UncertaintySectionSetsTheSigma) {
 }
 
 }  // namespace
-}  // namespace motostab
+}  // namespace motostab::diagnosis

@@ -9,7 +9,10 @@
 #include "diagnosis/diagnosis.h"
 #include "hidden_effect.h"
 
-namespace motostab {
+namespace motostab::diagnosis {
+
+using io::formatNumber;
+
 namespace {
 
 namespace fs = std::filesystem;
@@ -43,4 +46,4 @@ TEST(DiagnosisThreads, TwoThreadsGiveTheOneThreadResult) {
 }
 
 }  // namespace
-}  // namespace motostab
+}  // namespace motostab::diagnosis

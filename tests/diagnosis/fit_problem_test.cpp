@@ -11,7 +11,7 @@
 #include "diagnosis/prediction.h"
 #include "hidden_effect.h"
 
-namespace motostab {
+namespace motostab::diagnosis {
 namespace {
 
 const std::string kBenchmark = std::string(MOTOSTAB_SOURCE_DIR) + "/scenarios/whipple-benchmark.yaml";
@@ -68,4 +68,4 @@ TEST(FitProblem, PartsWithFewRowsShareTheirModesNoise) {
 }
 
 }  // namespace
-}  // namespace motostab
+}  // namespace motostab::diagnosis

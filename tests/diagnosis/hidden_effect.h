@@ -11,13 +11,27 @@
 #include <string>
 #include <vector>
 
-#include "io/portable_random.h"
+#include "core/portable_random.h"
 #include "analysis/sweep.h"
 #include "io/csv.h"
 #include "scenario/scenario.h"
 #include "vehicle/vehicle_model.h"
 
 namespace motostab::testing {
+
+using analysis::LinearModel;
+using analysis::SweepOptions;
+using analysis::SweepResult;
+using analysis::TrimResult;
+using analysis::calcTrim;
+using analysis::linearize;
+using analysis::runSweep;
+using core::PortableRandom;
+using io::formatNumber;
+using scenario::Scenario;
+using scenario::loadScenario;
+using vehicle::VehicleModel;
+
 
 /// Portable draws: uniform in [0, 1) from the top 53 bits, normal by Box-Muller.
 struct Draw {

@@ -8,10 +8,13 @@
 #include <filesystem>
 
 #include "diagnosis/diagnosis.h"
-#include "diagnosis/diagnosis_output.h"
+#include "output/diagnosis_output.h"
 #include "run_hidden.h"
 
-namespace motostab {
+namespace motostab::diagnosis {
+
+using io::formatNumber;
+
 namespace {
 
 namespace fs = std::filesystem;
@@ -162,4 +165,4 @@ TEST(HiddenEffect, NullDataNamesNothing) {
 }
 
 }  // namespace
-}  // namespace motostab
+}  // namespace motostab::diagnosis

@@ -1,12 +1,15 @@
 // Bounded Levenberg-Marquardt and the chi-square tail against independent calculations.
-#include "io/portable_random.h"
+#include "core/portable_random.h"
 #include "diagnosis/least_squares.h"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 
-namespace motostab {
+namespace motostab::diagnosis {
+
+using core::PortableRandom;
+
 namespace {
 
 // y = a exp(-b t) + noise: the fit must return a and b near the truth, with the standard errors of
@@ -64,4 +67,4 @@ TEST(LeastSquares, ChiSquareSurvival) {
 }
 
 }  // namespace
-}  // namespace motostab
+}  // namespace motostab::diagnosis

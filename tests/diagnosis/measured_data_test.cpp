@@ -6,7 +6,10 @@
 #include <filesystem>
 #include <fstream>
 
-namespace motostab {
+namespace motostab::diagnosis {
+
+using io::InputError;
+
 namespace {
 
 namespace fs = std::filesystem;
@@ -81,4 +84,4 @@ TEST_F(MeasuredDataTest, BadYamlNamesKeyAndLine) {
 }
 
 }  // namespace
-}  // namespace motostab
+}  // namespace motostab::diagnosis

@@ -10,9 +10,12 @@
 #include <Eigen/Dense>
 #include <cmath>
 
-#include "io/portable_random.h"
+#include "core/portable_random.h"
 
-namespace motostab {
+namespace motostab::diagnosis {
+
+using core::PortableRandom;
+
 namespace {
 
 TEST(NoiseModel, BurgRecoversAnAr1Coefficient) {
@@ -79,4 +82,4 @@ TEST(NoiseModel, WhiteningIsTheExactAr2Likelihood) {
 }
 
 }  // namespace
-}  // namespace motostab
+}  // namespace motostab::diagnosis

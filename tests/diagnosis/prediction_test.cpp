@@ -13,7 +13,22 @@
 #include "scenario/bicycle_parameters.h"
 #include "hidden_effect.h"
 
-namespace motostab {
+namespace motostab::diagnosis {
+
+using analysis::LinearModel;
+using analysis::SweepOptions;
+using analysis::SweepResult;
+using analysis::TrimResult;
+using analysis::calcTrim;
+using analysis::linearize;
+using analysis::runSweep;
+using io::formatNumber;
+using io::writeFileAtomically;
+using scenario::convertBicycleParametersToScenario;
+using scenario::loadScenario;
+using vehicle::VehicleModel;
+
+
 namespace {
 
 namespace fs = std::filesystem;
@@ -206,4 +221,4 @@ TEST(Prediction, SweepOfTheExtendedTreeReproducesPredictions) {
 }
 
 }  // namespace
-}  // namespace motostab
+}  // namespace motostab::diagnosis

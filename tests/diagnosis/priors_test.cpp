@@ -11,10 +11,15 @@
 #include <fstream>
 #include <sstream>
 
-#include "io/portable_random.h"
+#include "core/portable_random.h"
 #include "run_hidden.h"
 
-namespace motostab {
+namespace motostab::diagnosis {
+
+using core::PortableRandom;
+using io::formatNumber;
+
+
 namespace {
 
 namespace fs = std::filesystem;
@@ -116,4 +121,4 @@ TEST(Priors, HiddenDamperIsNotReplacedByAManySigmaInertiaChange) {
 }
 
 }  // namespace
-}  // namespace motostab
+}  // namespace motostab::diagnosis

@@ -3,7 +3,7 @@
 
 #include <gtest/gtest.h>
 
-namespace motostab {
+namespace motostab::diagnosis {
 namespace {
 
 MeasuredEigenvalue makeRow(const std::string& file, double lo, double hi) {
@@ -44,4 +44,4 @@ TEST(Robustness, NoVariantThatLeavesNothingOrChangesNothing) {
 }
 
 }  // namespace
-}  // namespace motostab
+}  // namespace motostab::diagnosis

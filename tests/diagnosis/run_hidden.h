@@ -11,6 +11,15 @@
 
 namespace motostab::testing {
 
+using diagnosis::DiagnosisOptions;
+using diagnosis::DiagnosisResult;
+using diagnosis::MeasuredData;
+using diagnosis::loadMeasuredData;
+using diagnosis::runDiagnosis;
+using io::splitFields;
+
+
+
 inline std::filesystem::path makeHiddenDir(const std::string& name) {
   return std::filesystem::temp_directory_path() / ("motostab-hidden-" + std::to_string(::getpid()) + "-" + name);
 }

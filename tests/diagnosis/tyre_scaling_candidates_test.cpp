@@ -9,7 +9,15 @@
 #include "diagnosis/diagnosis.h"
 #include "scenario/parameter_paths.h"
 
-namespace motostab {
+namespace motostab::diagnosis {
+
+using analysis::LinearModel;
+using analysis::calcTrim;
+using analysis::linearize;
+using scenario::formatOverride;
+using scenario::loadScenario;
+using vehicle::VehicleModel;
+
 namespace {
 
 const std::string kDir = MOTOSTAB_SOURCE_DIR;
@@ -46,4 +54,4 @@ TEST(TyreScalingCandidates, MagicFormulaScalingFactorsAreParameters) {
 }
 
 }  // namespace
-}  // namespace motostab
+}  // namespace motostab::diagnosis

@@ -9,7 +9,7 @@
 
 #include "run_hidden.h"
 
-namespace motostab {
+namespace motostab::diagnosis {
 namespace {
 
 const std::string kDir = MOTOSTAB_SOURCE_DIR;
@@ -47,4 +47,4 @@ TEST(WideNull, Enduro) {
 }
 
 }  // namespace
-}  // namespace motostab
+}  // namespace motostab::diagnosis

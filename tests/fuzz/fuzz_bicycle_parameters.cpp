@@ -8,9 +8,9 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   const auto dir = motostab::fuzz::resetScratchDir();
   const auto file = motostab::fuzz::writeScratchFile(dir, "BikeBenchmark.txt", std::string(reinterpret_cast<const char*>(data), size));
   motostab::fuzz::expectInputErrorOnly([&] {
-    const std::string yaml = motostab::convertBicycleParametersToScenario(file.string(), "fuzz");
+    const std::string yaml = motostab::scenario::convertBicycleParametersToScenario(file.string(), "fuzz");
     const auto scenario = motostab::fuzz::writeScratchFile(dir, "converted.yaml", yaml);
-    motostab::loadScenario(scenario.string());
+    motostab::scenario::loadScenario(scenario.string());
   });
   return 0;
 }

@@ -6,7 +6,7 @@
 #include "swingarm/identification/static_laser.h"
 #include "tests/fuzz/fuzz_support.h"
 
-namespace id = motostab::identification;
+namespace id = motostab::swingarm::identification;
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   const auto files = motostab::fuzz::splitFiles(data, size);

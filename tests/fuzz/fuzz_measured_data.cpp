@@ -9,6 +9,6 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   if (files.empty()) return 0;
   const auto dir = motostab::fuzz::resetScratchDir();
   for (const auto& [name, content] : files) motostab::fuzz::writeScratchFile(dir, name, content);
-  motostab::fuzz::expectInputErrorOnly([&] { motostab::loadMeasuredData((dir / files.front().first).string()); });
+  motostab::fuzz::expectInputErrorOnly([&] { motostab::diagnosis::loadMeasuredData((dir / files.front().first).string()); });
   return 0;
 }

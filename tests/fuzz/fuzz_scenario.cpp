@@ -6,8 +6,8 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   const auto dir = motostab::fuzz::resetScratchDir();
   const auto file = motostab::fuzz::writeScratchFile(dir, "scenario.yaml", std::string(reinterpret_cast<const char*>(data), size));
   motostab::fuzz::expectInputErrorOnly([&] {
-    const motostab::Scenario s = motostab::loadScenario(file.string());
-    motostab::calcMassSummary(s);
+    const motostab::scenario::Scenario s = motostab::scenario::loadScenario(file.string());
+    motostab::scenario::calcMassSummary(s);
   });
   return 0;
 }

@@ -78,7 +78,7 @@ template <class F>
 void expectInputErrorOnly(F&& read) {
   try {
     read();
-  } catch (const motostab::InputError&) {
+  } catch (const motostab::io::InputError&) {
   } catch (const std::exception& e) {
     std::fprintf(stderr, "fuzz finding: exception other than InputError: %s\n", e.what());
     std::abort();

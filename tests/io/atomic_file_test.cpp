@@ -10,7 +10,7 @@
 TEST(AtomicFile, WritesWholeContentAndLeavesNoTemporary) {
   const auto dir = makeTempDir("atomic_test");
   std::filesystem::remove_all(dir);
-  motostab::writeFileAtomically(dir / "a.txt", "hello\n");
+  motostab::io::writeFileAtomically(dir / "a.txt", "hello\n");
   std::ifstream in(dir / "a.txt");
   std::stringstream ss;
   ss << in.rdbuf();
@@ -23,10 +23,10 @@ TEST(AtomicFile, WritesWholeContentAndLeavesNoTemporary) {
 TEST(AtomicFile, FailureLeavesOldFileIntact) {
   const auto dir = makeTempDir("atomic_test2");
   std::filesystem::remove_all(dir);
-  motostab::writeFileAtomically(dir / "a.txt", "old");
+  motostab::io::writeFileAtomically(dir / "a.txt", "old");
   // A folder in the way of the target makes the rename fail.
   std::filesystem::create_directories(dir / "b.txt" / "x");
-  EXPECT_THROW(motostab::writeFileAtomically(dir / "b.txt", "new"), std::runtime_error);
+  EXPECT_THROW(motostab::io::writeFileAtomically(dir / "b.txt", "new"), std::runtime_error);
   std::ifstream in(dir / "a.txt");
   std::string s;
   in >> s;

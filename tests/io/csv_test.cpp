@@ -17,7 +17,7 @@ std::filesystem::path writeTemp(const std::string& name, const std::string& text
 
 TEST(Csv, ReadsCommentsHeaderAndRows) {
   auto p = writeTemp("motostab_csv_ok.csv", "# comment\nt_s,y\n0,1.5\n\n0.1,-2e-3\n");
-  auto t = motostab::readCsv(p);
+  auto t = motostab::io::readCsv(p);
   ASSERT_EQ(t.header.size(), 2u);
   ASSERT_EQ(t.rows.size(), 2u);
   EXPECT_DOUBLE_EQ(t.getColumn("y")[1], -2e-3);
@@ -27,9 +27,9 @@ TEST(Csv, ReadsCommentsHeaderAndRows) {
 TEST(Csv, BadCellNamesFileLineAndColumn) {
   auto p = writeTemp("motostab_csv_bad.csv", "t_s,y\n0,1\n0.1,abc\n");
   try {
-    motostab::readCsv(p);
+    motostab::io::readCsv(p);
     FAIL() << "no error";
-  } catch (const motostab::InputError& e) {
+  } catch (const motostab::io::InputError& e) {
     const std::string m = e.what();
     EXPECT_NE(m.find("motostab_csv_bad.csv:3:2"), std::string::npos) << m;
     EXPECT_NE(m.find("y"), std::string::npos) << m;
@@ -38,15 +38,15 @@ TEST(Csv, BadCellNamesFileLineAndColumn) {
 
 TEST(Csv, RaggedRowIsAnError) {
   auto p = writeTemp("motostab_csv_ragged.csv", "a,b\n1,2\n3\n");
-  EXPECT_THROW(motostab::readCsv(p), motostab::InputError);
+  EXPECT_THROW(motostab::io::readCsv(p), motostab::io::InputError);
 }
 
 TEST(Csv, WriterRoundTripsDoublesExactly) {
-  motostab::CsvWriter w({"x"});
+  motostab::io::CsvWriter w({"x"});
   const double v = 0.1 + 0.2;
   w.beginRow().add(v);
   auto p = writeTemp("motostab_csv_rt.csv", w.getText());
-  EXPECT_EQ(motostab::readCsv(p).rows[0][0], v);
+  EXPECT_EQ(motostab::io::readCsv(p).rows[0][0], v);
 }
 
 }  // namespace

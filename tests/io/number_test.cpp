@@ -5,10 +5,13 @@
 #include <cstdio>
 #include <cstring>
 
-#include "io/portable_random.h"
+#include "core/portable_random.h"
 #include "io/number.h"
 
-namespace motostab {
+namespace motostab::io {
+
+using core::PortableRandom;
+
 namespace {
 
 // Random finite doubles over many magnitudes (portable: raw mt19937_64 bits reinterpreted).
@@ -48,4 +51,4 @@ TEST(Number, RejectsEverythingElse) {
 }
 
 }  // namespace
-}  // namespace motostab
+}  // namespace motostab::io

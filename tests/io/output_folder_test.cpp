@@ -11,7 +11,7 @@
 #include "io/input_error.h"
 #include "io/output_folder.h"
 
-namespace motostab {
+namespace motostab::io {
 namespace {
 namespace fs = std::filesystem;
 
@@ -122,4 +122,4 @@ TEST(OutputFolder, LeftoversOfKilledRunsAreCleanedUp) {
 }
 
 }  // namespace
-}  // namespace motostab
+}  // namespace motostab::io

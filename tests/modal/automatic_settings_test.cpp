@@ -7,8 +7,19 @@
 #include <complex>
 #include <cstdint>
 
-#include "io/portable_random.h"
+#include "core/portable_random.h"
 #include "modal/automatic_settings.h"
+
+using motostab::modal::BandChoice;
+using motostab::modal::FrfEstimate;
+using motostab::modal::ImpactRecord;
+using motostab::modal::OrderChoice;
+using motostab::modal::WindowChoice;
+using motostab::modal::chooseBand;
+using motostab::modal::chooseExponentialWindow;
+using motostab::modal::chooseOrders;
+using motostab::modal::findIndicatorPeaks;
+
 
 namespace {
 
@@ -27,7 +38,7 @@ FrfEstimate makeEstimate(size_t bins, double df) {
 }
 
 TEST(AutomaticSettings, BandEndsWhereForceDropsTwentyDbAndStartsWhereCoherenceHolds) {
-  motostab::PortableRandom rng(7);
+  motostab::core::PortableRandom rng(7);
   for (int trial = 0; trial < 20; ++trial) {
     const double fc = rng.drawUniform(80, 200), fLow = std::floor(rng.drawUniform(15, 60));
     FrfEstimate e = makeEstimate(513, 1.0);  // Nyquist 512 Hz

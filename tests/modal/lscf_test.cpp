@@ -6,6 +6,15 @@
 #include "modal/lscf.h"
 #include "modal/peak_picking.h"
 
+using motostab::modal::LscfEstimator;
+using motostab::modal::LscfOptions;
+using motostab::modal::ModalModel;
+using motostab::modal::calcStabilisationDiagram;
+using motostab::modal::findHalfPowerPeaks;
+using motostab::modal::fitModalModel;
+using motostab::modal::selectStableModes;
+
+
 namespace {
 
 using namespace motostab::modal;

@@ -11,6 +11,22 @@
 #include "modal/peak_picking.h"
 #include "modal/spectra.h"
 
+using motostab::modal::FrfEstimate;
+using motostab::modal::HitCheck;
+using motostab::modal::ImpactRecord;
+using motostab::modal::LscfEstimator;
+using motostab::modal::LscfOptions;
+using motostab::modal::ModalEstimate;
+using motostab::modal::WindowOptions;
+using motostab::modal::calcJackknifeStdErr;
+using motostab::modal::calcPowerIndicator;
+using motostab::modal::calcStabilisationDiagram;
+using motostab::modal::checkHit;
+using motostab::modal::estimateH1;
+using motostab::modal::findHalfPowerPeaks;
+using motostab::modal::selectStableModes;
+
+
 namespace {
 
 using namespace motostab::modal;
@@ -18,7 +34,7 @@ using namespace motostab::modal;
 std::vector<ImpactRecord> loadPyFrfHits() {
   std::vector<ImpactRecord> hits;
   for (int i = 1; i <= 5; ++i) {
-    const auto t = motostab::readCsv(std::string(MOTOSTAB_TEST_DATA_DIR) + "/measured-data/pyFRF-impact/impact_" +
+    const auto t = motostab::io::readCsv(std::string(MOTOSTAB_TEST_DATA_DIR) + "/measured-data/pyFRF-impact/impact_" +
                                      std::to_string(i) + ".csv");
     ImpactRecord r;
     const auto time = t.getColumn("t_s");

@@ -3,9 +3,24 @@
 
 #include <cmath>
 
-#include "io/portable_random.h"
+#include "core/portable_random.h"
 #include "modal/lscf.h"
 #include "modal/spectra.h"
+
+using motostab::modal::HitCheck;
+using motostab::modal::HitCheckOptions;
+using motostab::modal::ImpactRecord;
+using motostab::modal::LscfEstimator;
+using motostab::modal::LscfOptions;
+using motostab::modal::WindowOptions;
+using motostab::modal::calcExponentialDecayRate;
+using motostab::modal::calcForceWindow;
+using motostab::modal::calcRealDft;
+using motostab::modal::calcStabilisationDiagram;
+using motostab::modal::checkHit;
+using motostab::modal::estimateH1;
+using motostab::modal::selectStableModes;
+
 
 namespace {
 
@@ -84,7 +99,7 @@ TEST(H1, ExponentialWindowCorrectionRecoversSdofDamping) {
   const double fs = 1000, f0 = 73.0, zeta = 0.004, m = 2.0, dt = 1 / fs;
   const double w0 = 2 * M_PI * f0, wd = w0 * std::sqrt(1 - zeta * zeta), sigma = zeta * w0;
   const size_t n = 2000, k0 = 10;
-  motostab::PortableRandom rng(3);
+  motostab::core::PortableRandom rng(3);
   std::vector<ImpactRecord> hits;
   for (int h = 0; h < 4; ++h) {
     ImpactRecord r;

@@ -1,6 +1,6 @@
-// Schema of the files `motostab sweep` and `motostab linearize` write (README, "Output files"):
+// Schema of the files `motostab sweep` and `motostab linearize` write (docs/commands.md, "Output files"):
 // eigenvalues.csv, summary.json, A.csv, B.csv, eigenvectors.csv, linear_model.json. Written from
-// random results drawn here, then read back and checked against the README's definitions
+// random results drawn here, then read back and checked against the definitions there
 // (frequency = imag/2pi, damping ratio = -real/|lambda|, seed eq. 27; 17 digits round-trip).
 #include <gtest/gtest.h>
 
@@ -10,14 +10,27 @@
 #include <string>
 #include <vector>
 
-#include "io/portable_random.h"
+#include "core/portable_random.h"
 #include "nlohmann/json.hpp"
 #include "output/sweep_output.h"
 #include "scenario/scenario.h"
 #include "tests/support/temp_dir.h"
 #include "tests/support/text_csv.h"
 
-namespace motostab {
+namespace motostab::output {
+
+using analysis::LinearModel;
+using analysis::ModeBranch;
+using analysis::SweepResult;
+using analysis::TrimOptions;
+using analysis::calcTrim;
+using analysis::linearize;
+using analysis::trackModes;
+using core::PortableRandom;
+using scenario::Scenario;
+using scenario::loadScenario;
+using vehicle::VehicleModel;
+
 namespace {
 
 using cd = std::complex<double>;
@@ -48,7 +61,7 @@ SweepResult makeRandomSweep(PortableRandom& rng) {
   return s;
 }
 
-// Stable grid ranges as the README defines them: runs of grid speeds where every mode but the
+// Stable grid ranges as docs/commands.md defines them: runs of grid speeds where every mode but the
 // neutral one has a negative real part.
 std::vector<std::pair<double, double>> calcStableRanges(const SweepResult& s) {
   std::vector<std::pair<double, double>> out;
@@ -216,4 +229,4 @@ TEST(SweepOutput, LinearModelFilesFollowTheReadme) {
 }
 
 }  // namespace
-}  // namespace motostab
+}  // namespace motostab::output

@@ -17,14 +17,22 @@
 #include <string>
 #include <vector>
 
-#include "io/portable_random.h"
+#include "core/portable_random.h"
 #include "nlohmann/json.hpp"
 #include "output/sweep_output.h"
 #include "scenario/scenario.h"
 #include "tests/support/temp_dir.h"
 #include "tests/support/text_csv.h"
 
-namespace motostab {
+namespace motostab::output {
+
+using analysis::ModeBranch;
+using analysis::SweepOptions;
+using analysis::SweepResult;
+using analysis::runSweep;
+using core::PortableRandom;
+using scenario::loadScenario;
+using vehicle::VehicleModel;
 namespace {
 
 using cd = std::complex<double>;
@@ -180,4 +188,4 @@ TEST(SweepPlot, NoStableRangeIsNotShadedAndIsSaid) {
 }
 
 }  // namespace
-}  // namespace motostab
+}  // namespace motostab::output

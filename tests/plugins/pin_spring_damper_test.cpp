@@ -5,10 +5,13 @@
 
 #include <cmath>
 
-#include "io/portable_random.h"
+#include "core/portable_random.h"
 #include "plugins/pin_spring_damper.h"
 
-namespace motostab {
+namespace motostab::plugins {
+
+using core::PortableRandom;
+
 namespace {
 
 struct OnePin {
@@ -59,4 +62,4 @@ TEST(PinSpringDamper, FreeOscillationFollowsTheDampedOscillator) {
 }
 
 }  // namespace
-}  // namespace motostab
+}  // namespace motostab::plugins

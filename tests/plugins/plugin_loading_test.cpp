@@ -8,9 +8,21 @@
 
 #include "tests/support/temp_dir.h"
 #include "analysis/sweep.h"
+#include "plugins/builtin.h"
 #include "vehicle/vehicle_model.h"
 
-namespace motostab {
+namespace motostab::plugins {
+
+using analysis::SweepOptions;
+using analysis::SweepResult;
+using analysis::runSweep;
+using io::InputError;
+using io::InputLocation;
+using scenario::Scenario;
+using scenario::loadScenario;
+using vehicle::ModelExtension;
+using vehicle::VehicleModel;
+
 namespace {
 
 // The benchmark scenario with its contact replaced and a plugin library listed.
@@ -229,4 +241,4 @@ TEST(Plugins, RelativeLibraryPathIsRelativeToTheScenario) {
 }
 
 }  // namespace
-}  // namespace motostab
+}  // namespace motostab::plugins

@@ -11,14 +11,17 @@
 
 #include "tests/support/temp_dir.h"
 #include "io/input_error.h"
+#include "output/response_output.h"
 #include "response/response_csv.h"
+
+using motostab::io::InputError;
+using motostab::response::CsvIdentificationRequest;
+using motostab::response::identifyModesFromCsv;
+
 
 namespace {
 
 namespace fs = std::filesystem;
-using motostab::InputError;
-using motostab::response::CsvIdentificationRequest;
-using motostab::response::identifyModesFromCsv;
 
 // A record with comments, the time in the second column: y = 0.2 + 1.3 e^{-0.5 t} cos(4 t + 0.6), 0..6 s.
 fs::path writeRecord(const fs::path& dir) {
@@ -124,7 +127,7 @@ TEST(ResponseCsv, WritesModesJsonAndPlot) {
   motostab::response::ResponseRecord record;
   const auto result = identifyModesFromCsv(request, &record);
   const fs::path out = dir / "out";
-  motostab::response::writeResponseReport(out, record, result);
+  motostab::output::writeResponseReport(out, record, result);
   std::ifstream in(out / "modes.json");
   const auto j = nlohmann::json::parse(in);
   ASSERT_EQ(j.at("modes").size(), 1u);

@@ -14,10 +14,12 @@
 #include "response/mode_identification.h"
 #include "response/response_csv.h"
 
-namespace {
-
 using motostab::response::IdentificationOptions;
 using motostab::response::IdentificationResult;
+
+
+namespace {
+
 
 const std::string kDir = std::string(MOTOSTAB_TEST_DATA_DIR) + "/measured-data/Kooijman2008/";
 constexpr double kPublishedReal = -1.16, kPublishedImag = 5.44;  // Kooijman et al. 2008, Fig. 6 caption
@@ -51,7 +53,7 @@ TEST(ResponseKooijman, Run52LeanRateFig6MatchesPublishedWeave) {
   EXPECT_GT(r.rSquared, 0.95);
 
   // The Fig. 7 bar of this run (4.794-5.344 m/s) carries the published value at 3 decimals.
-  const auto fig7 = motostab::readCsv(kDir + "kooijman2008_fig7_measured_weave.csv");
+  const auto fig7 = motostab::io::readCsv(kDir + "kooijman2008_fig7_measured_weave.csv");
   bool found = false;
   for (const auto& row : fig7.rows) {
     if (std::abs(row[fig7.getColumnIndex("v_min_mps")] - 4.794) < 1e-3 &&

@@ -9,15 +9,17 @@
 
 #include <Eigen/Dense>
 
-#include "io/portable_random.h"
+#include "core/portable_random.h"
 #include "response/mode_identification.h"
-
-namespace {
 
 using motostab::response::IdentificationOptions;
 using motostab::response::IdentificationResult;
 using motostab::response::IdentifiedMode;
 using motostab::response::identifyModes;
+
+
+namespace {
+
 
 struct TrueMode {
   double sigma, omega, amplitude, phase;  // 1/s, rad/s (0: real exponential), signal units, rad
@@ -31,7 +33,7 @@ std::vector<double> makeUniformTime(double duration, double step) {
 
 // Random steps uniform in [minStep, maxStep].
 std::vector<double> makeJitteredTime(double duration, double minStep, double maxStep, unsigned seed) {
-  motostab::PortableRandom rng(seed);
+  motostab::core::PortableRandom rng(seed);
   std::vector<double> t{0.0};
   while (t.back() < duration) t.push_back(t.back() + rng.drawUniform(minStep, maxStep));
   return t;
@@ -39,7 +41,7 @@ std::vector<double> makeJitteredTime(double duration, double minStep, double max
 
 std::vector<double> makeSignal(const std::vector<double>& t, double offset, const std::vector<TrueMode>& modes,
                                double noiseStd, unsigned seed) {
-  motostab::PortableRandom rng(seed);
+  motostab::core::PortableRandom rng(seed);
   std::vector<double> y;
   for (double ti : t) {
     double v = offset;

@@ -14,7 +14,11 @@
 #include "scenario/bicycle_parameters.h"
 #include "scenario/scenario.h"
 
-namespace motostab {
+namespace motostab::scenario {
+
+using io::InputError;
+using io::writeFileAtomically;
+
 namespace {
 
 const std::string kBicycles = std::string(MOTOSTAB_TEST_DATA_DIR) + "/measured-data/BicycleParameters/data/bicycles/";
@@ -120,4 +124,4 @@ TEST(BicycleParameters, ImportCommandToNullOneAndTrueYaml) {
 }
 
 }  // namespace
-}  // namespace motostab
+}  // namespace motostab::scenario

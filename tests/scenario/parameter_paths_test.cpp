@@ -1,5 +1,5 @@
 // Key paths of scalar parameters (scenario/parameter_paths.h) and `--set` with sequence indices.
-#include "io/portable_random.h"
+#include "core/portable_random.h"
 #include "scenario/parameter_paths.h"
 
 #include <gtest/gtest.h>
@@ -7,9 +7,16 @@
 #include <set>
 
 #include "scenario/scenario.h"
-#include "scenario/yaml_map.h"
+#include "io/yaml_map.h"
 
-namespace motostab {
+namespace motostab::scenario {
+
+using core::PortableRandom;
+using io::InputError;
+using io::applyOverride;
+using io::findKeyPath;
+using io::loadYamlFile;
+
 namespace {
 
 const std::string kWhipple = std::string(MOTOSTAB_SOURCE_DIR) + "/scenarios/whipple-benchmark.yaml";
@@ -98,4 +105,4 @@ TEST(ParameterPaths, SetCanAddAWholeSection) {
 }
 
 }  // namespace
-}  // namespace motostab
+}  // namespace motostab::scenario

@@ -8,12 +8,17 @@
 #include <sstream>
 
 #include "tests/support/temp_dir.h"
-#include "io/portable_random.h"
+#include "core/portable_random.h"
 #include "scenario/parameter_paths.h"
 #include "scenario/scenario.h"
 #include "vehicle/vehicle_model.h"
 
-namespace motostab {
+namespace motostab::scenario {
+
+using core::PortableRandom;
+using io::InputError;
+using vehicle::VehicleModel;
+
 namespace {
 
 const std::string kScenario = std::string(MOTOSTAB_SOURCE_DIR) + "/scenarios/whipple-benchmark.yaml";
@@ -217,4 +222,4 @@ TEST(Scenario, DerivedQuantities) {
 }
 
 }  // namespace
-}  // namespace motostab
+}  // namespace motostab::scenario

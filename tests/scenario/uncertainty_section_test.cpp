@@ -10,12 +10,16 @@
 #include <sstream>
 
 #include "tests/support/temp_dir.h"
-#include "io/portable_random.h"
+#include "core/portable_random.h"
 #include "scenario/bicycle_parameters.h"
 #include "scenario/bicycle_parameters_uncertainty.h"
 #include "scenario/scenario.h"
 
-namespace motostab {
+namespace motostab::scenario {
+
+using core::PortableRandom;
+using io::InputError;
+
 namespace {
 
 std::string readText(const std::string& p) {
@@ -113,4 +117,4 @@ TEST(UncertaintySection, ImportedBicycleParametersSigmasReachTheSection) {
 }
 
 }  // namespace
-}  // namespace motostab
+}  // namespace motostab::scenario

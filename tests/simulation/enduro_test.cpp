@@ -3,7 +3,7 @@
 // (analysis/linearize.h, independent of the integration path) for small perturbations.
 #include <gtest/gtest.h>
 
-#include "scenario/yaml_map.h"
+#include "io/yaml_map.h"
 
 #include <unsupported/Eigen/MatrixFunctions>
 
@@ -13,10 +13,17 @@
 #include "analysis/linearize.h"
 #include "io/input_error.h"
 #include "simulation/simulation.h"
-#include "simulation/simulation_output.h"
+#include "apps/simulate_identify.h"
 #include "tests/simulation/linear_reference.h"
 
 namespace motostab::simulation {
+
+using analysis::LinearModel;
+using io::InputError;
+using io::YamlMap;
+using scenario::Scenario;
+using scenario::loadScenario;
+
 namespace {
 
 const Scenario& getEnduroTorsion() {
@@ -84,7 +91,7 @@ TEST(SimulationEnduro, IdentifiedWeaveAndWobbleMatchLinearEigenvalues) {
     o.perturbations = {parsePerturbation("steer-rate:1e-3")};
     const SimulationResult r = runSimulation(getEnduroTorsion(), o);
     ASSERT_EQ(r.status, SimulationStatus::Completed) << r.message;
-    const auto id = identifySimulatedModes(r, 0.0);
+    const auto id = cli::identifySimulatedModes(r, 0.0);
     for (const std::string name : {"weave", "wobble"}) {
       const std::complex<double> ref = findLateralMode(lin, name);
       ASSERT_GT(ref.imag(), 0) << "no linear " << name << " at " << v << " m/s";

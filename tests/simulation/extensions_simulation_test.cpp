@@ -13,6 +13,11 @@
 #include "tests/simulation/linear_reference.h"
 
 namespace motostab::simulation {
+
+using analysis::LinearModel;
+using scenario::Scenario;
+using scenario::loadScenario;
+
 namespace {
 
 const Scenario& getExtendedEnduro() {

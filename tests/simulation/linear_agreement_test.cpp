@@ -12,9 +12,14 @@
 #include "analysis/linearize.h"
 #include "simulation/simulation.h"
 #include "tests/simulation/linear_reference.h"
-#include "simulation/simulation_output.h"
+#include "apps/simulate_identify.h"
 
 namespace motostab::simulation {
+
+using analysis::LinearModel;
+using scenario::Scenario;
+using scenario::loadScenario;
+
 namespace {
 
 const Scenario& getWhipple() {
@@ -71,7 +76,7 @@ TEST(SimulationLinear, IdentifiedWeaveMatchesLinearEigenvalue) {
     o.perturbations = {parsePerturbation("steer-rate:1e-4")};
     const SimulationResult r = runSimulation(getWhipple(), o);
     ASSERT_EQ(r.status, SimulationStatus::Completed) << r.message;
-    const auto id = identifySimulatedModes(r, 0.0);
+    const auto id = cli::identifySimulatedModes(r, 0.0);
     const response::IdentifiedMode* found = nullptr;
     for (const auto& m : id.modes)
       if (m.imag > 0 && (!found || std::abs(std::complex<double>(m.real, m.imag) - weave) <

@@ -12,6 +12,13 @@
 
 namespace motostab::simulation {
 
+using analysis::LinearModel;
+using analysis::calcTrim;
+using analysis::linearize;
+using scenario::Scenario;
+using vehicle::VehicleModel;
+
+
 inline LinearModel linearizeScenarioAt(const Scenario& scenario, double speed) {
   const VehicleModel model(scenario);
   return linearize(model, calcTrim(model, speed));

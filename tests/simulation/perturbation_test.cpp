@@ -6,6 +6,9 @@
 #include "simulation/simulation.h"
 
 namespace motostab::simulation {
+
+using io::InputError;
+
 namespace {
 
 TEST(SimulationPerturbation, ParsesEveryKind) {

@@ -10,9 +10,23 @@
 #include "io/csv.h"
 #include "io/input_error.h"
 #include "simulation/simulation.h"
-#include "simulation/simulation_output.h"
+#include "apps/simulate_identify.h"
+#include "output/simulation_output.h"
 
 namespace motostab::simulation {
+
+using analysis::StateFunction;
+using analysis::TrimResult;
+using analysis::calcTrim;
+using io::CsvTable;
+using io::InputError;
+using io::readCsv;
+using output::writeResponsePlot;
+using output::writeTimeseries;
+using scenario::Scenario;
+using scenario::loadScenario;
+using vehicle::VehicleModel;
+
 namespace {
 
 const Scenario& getWhipple() {
@@ -224,7 +238,7 @@ TEST(SimulationOutput, WritesTimeseriesPlotAndModes) {
   std::filesystem::remove_all(dir);
   writeTimeseries(dir, r);
   writeResponsePlot(dir, r, "test");
-  writeSimulatedModes(dir, r, getFreeResponseStart(o.perturbations), {{"speed_mps", 5}});
+  cli::writeSimulatedModes(dir, r, getFreeResponseStart(o.perturbations), {{"speed_mps", 5}});
   for (const char* f : {"timeseries.csv", "response.png", "response.svg", "response.gp", "modes.json"})
     EXPECT_TRUE(std::filesystem::exists(dir / f)) << f;
   std::filesystem::remove_all(dir);

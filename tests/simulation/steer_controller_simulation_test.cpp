@@ -12,12 +12,19 @@
 #include <unsupported/Eigen/MatrixFunctions>
 
 #include "io/csv.h"
-#include "io/portable_random.h"
+#include "core/portable_random.h"
 #include "analysis/linearize.h"
 #include "simulation/simulation.h"
 #include "tests/simulation/linear_reference.h"
 
 namespace motostab::simulation {
+
+using analysis::LinearModel;
+using core::PortableRandom;
+using io::formatNumber;
+using scenario::Scenario;
+using scenario::loadScenario;
+
 namespace {
 
 const std::string kWhipple = std::string(MOTOSTAB_SOURCE_DIR) + "/scenarios/whipple-benchmark.yaml";

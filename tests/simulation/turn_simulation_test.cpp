@@ -10,6 +10,15 @@
 #include "tests/simulation/linear_reference.h"
 
 namespace motostab::simulation {
+
+using analysis::LinearModel;
+using analysis::TrimOptions;
+using analysis::calcTrim;
+using analysis::linearize;
+using scenario::Scenario;
+using scenario::loadScenario;
+using vehicle::VehicleModel;
+
 namespace {
 
 // Small roll- and steer-rate kicks from turns of the Whipple bicycle (rolling constraints) and of the

@@ -8,6 +8,9 @@
 
 namespace motostab::test {
 
+using io::InputError;
+
+
 inline InputError catchInputError(const std::function<void()>& f) {
   try {
     f();

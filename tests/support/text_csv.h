@@ -29,7 +29,7 @@ inline TextCsv readTextCsv(const std::filesystem::path& path) {
   std::string line;
   while (std::getline(in, line)) {
     if (line.empty() || line[0] == '#') continue;
-    auto cells = motostab::splitFields(line, ',');
+    auto cells = motostab::io::splitFields(line, ',');
     if (t.header.empty()) {
       t.header = cells;
     } else {

@@ -5,9 +5,16 @@
 
 #include "swingarm/identification/decomposition.h"
 
+using motostab::swingarm::identification::calcBendingTorsionStiffness;
+using motostab::swingarm::identification::calcModalDamping;
+using motostab::swingarm::identification::calcReducedStiffness;
+using motostab::swingarm::identification::calcSeriesStiffness;
+using motostab::swingarm::identification::calcTwistDamping;
+
+
 namespace {
 
-using namespace motostab::identification;
+using namespace motostab::swingarm::identification;
 
 struct PaperSwingarm {
   double kTw, aTw, aB, kB, aT, kT;  // Table 2/3: Nm/rad, m

@@ -10,14 +10,35 @@
 #include <complex>
 #include <cstdint>
 
-#include "io/portable_random.h"
+#include "core/portable_random.h"
 #include "rig_truth.h"
 #include "swingarm/identification/virtual_rig.h"
 #include "tests/support/temp_dir.h"
 
+using motostab::swingarm::identification::FrfResult;
+using motostab::swingarm::identification::FrfTest;
+using motostab::swingarm::identification::ModeResult;
+using motostab::swingarm::identification::RigNoise;
+using motostab::swingarm::identification::StaticResult;
+using motostab::swingarm::identification::StaticTest;
+using motostab::swingarm::identification::VirtualSwingarm;
+using motostab::swingarm::identification::identifyFrf;
+using motostab::swingarm::identification::identifyStatic;
+using motostab::swingarm::identification::readFrfTest;
+using motostab::swingarm::identification::readHits;
+using motostab::swingarm::identification::readStaticReadings;
+using motostab::swingarm::identification::readStaticTest;
+using motostab::swingarm::identification::simulateHammerHits;
+using motostab::swingarm::identification::simulateStaticReadings;
+using motostab::swingarm::identification::wrapDegrees;
+using motostab::swingarm::identification::writeFrfTestFiles;
+using motostab::swingarm::identification::writeStaticTestFiles;
+
+
+
 namespace {
 
-using namespace motostab::identification;
+using namespace motostab::swingarm::identification;
 
 // Portable draws: mt19937_64 is specified bit for bit; the transforms below are ours.
 struct Draw {
@@ -25,7 +46,7 @@ struct Draw {
   double uniform(double a, double b) { return a + (b - a) * rng.drawUniform(); }
   double logUniform(double a, double b) { return std::exp(uniform(std::log(a), std::log(b))); }
   int integer(int a, int b) { return a + static_cast<int>(rng.drawBits() % static_cast<std::uint64_t>(b - a + 1)); }
-  motostab::PortableRandom rng;
+  motostab::core::PortableRandom rng;
 };
 
 // |accelerance| at resonance of mode m between the hit and sensor j, written here from the 1-DOF modal

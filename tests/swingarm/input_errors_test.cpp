@@ -11,10 +11,17 @@
 #include "swingarm/identification/static_laser.h"
 #include "tests/support/temp_dir.h"
 
+using motostab::io::InputError;
+using motostab::swingarm::identification::StaticTest;
+using motostab::swingarm::identification::readFrfTest;
+using motostab::swingarm::identification::readHits;
+using motostab::swingarm::identification::readStaticReadings;
+using motostab::swingarm::identification::readStaticTest;
+
+
 namespace {
 
-using namespace motostab::identification;
-using motostab::InputError;
+using namespace motostab::swingarm::identification;
 
 const char* kStaticHead =
     "test: static\nframe: \"x along the swingarm\"\nforce_point: {x: 0.55, z: 0.0}\n";

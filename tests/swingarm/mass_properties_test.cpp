@@ -9,9 +9,21 @@
 #include "swingarm/identification/virtual_rig.h"
 #include "tests/support/temp_dir.h"
 
+using motostab::swingarm::identification::CogResult;
+using motostab::swingarm::identification::InertiaResult;
+using motostab::swingarm::identification::VirtualPart;
+using motostab::swingarm::identification::calcTrifilarInertia;
+using motostab::swingarm::identification::identifyCog;
+using motostab::swingarm::identification::identifyInertia;
+using motostab::swingarm::identification::readCogTest;
+using motostab::swingarm::identification::readInertiaTest;
+using motostab::swingarm::identification::writeCogTestFiles;
+using motostab::swingarm::identification::writeInertiaTestFiles;
+
+
 namespace {
 
-using namespace motostab::identification;
+using namespace motostab::swingarm::identification;
 
 TEST(Cog, NoiseFreeTiltingRigGivesTheTruth) {
   const VirtualPart part;  // seed Table 1, swingarm 1: 6.96 kg, CoG (0.299, 0, 0.027) m
@@ -84,14 +96,14 @@ TEST(MassPropertiesInput, BadTiltAngleAndCollinearCellsAreInputErrors) {
     try {
       readCogTest(dir / "bad.yaml");
       FAIL() << "no error";
-    } catch (const motostab::InputError& e) {
+    } catch (const motostab::io::InputError& e) {
       EXPECT_EQ(e.getLocation().line, 3);
       EXPECT_EQ(e.getLocation().key, "tilt_deg");
     }
   }
   std::ofstream(dir / "line.yaml") << "test: cog\nload_cells:\n  - {name: N1, x: 0, y: 0}\n  - {name: N2, x: 0.1, y: 0}\n"
                                       "  - {name: N3, x: 0.2, y: 0}\nreadings: cog.csv\n";
-  EXPECT_THROW(readCogTest(dir / "line.yaml"), motostab::InputError);
+  EXPECT_THROW(readCogTest(dir / "line.yaml"), motostab::io::InputError);
 }
 
 }  // namespace

@@ -5,15 +5,28 @@
 
 #include <cstdint>
 
-#include "io/portable_random.h"
+#include "core/portable_random.h"
 #include "../apps/run_motostab.h"
 #include "swingarm/identification/frf_diagnosis.h"
 #include "swingarm/identification/virtual_rig.h"
 #include "tests/support/temp_dir.h"
 
+using motostab::swingarm::identification::FrfResult;
+using motostab::swingarm::identification::FrfTest;
+using motostab::swingarm::identification::RigNoise;
+using motostab::swingarm::identification::VirtualSwingarm;
+using motostab::swingarm::identification::identifyFrf;
+using motostab::swingarm::identification::readFrfTest;
+using motostab::swingarm::identification::readHits;
+using motostab::swingarm::identification::simulateHammerHits;
+using motostab::swingarm::identification::simulateStaticReadings;
+using motostab::swingarm::identification::writeFrfTestFiles;
+using motostab::swingarm::identification::writeStaticTestFiles;
+
+
 namespace {
 
-using namespace motostab::identification;
+using namespace motostab::swingarm::identification;
 
 std::vector<double> getLoads() {
   std::vector<double> loads;
@@ -25,7 +38,7 @@ TEST(NeverSilent, NoModeIsExit3WithWhatWasTriedAndWhatToSet) {
   const auto dir = makeTempDir("no_mode");
   const VirtualSwingarm rig;
   auto hits = simulateHammerHits(rig, {}, RigNoise(), 3);
-  motostab::PortableRandom rng(99);
+  motostab::core::PortableRandom rng(99);
   for (auto& h : hits)
     for (auto& ch : h.responses)
       for (auto& v : ch) v = rng.drawUniform(-1.0, 1.0);  // the accelerometers saw nothing but noise

@@ -12,7 +12,7 @@ struct RigTruth {
   double kTw;   ///< Nm/rad
 };
 
-inline RigTruth calcRigTruth(const motostab::identification::VirtualSwingarm& rig) {
+inline RigTruth calcRigTruth(const motostab::swingarm::identification::VirtualSwingarm& rig) {
   const double d = M_PI / 180;
   const double ub = rig.armB / rig.kB, ut = rig.armT / rig.kT;  // rotation per newton (eq. 6)
   const double wx = ub * std::cos(rig.betaBDeg * d) + ut * std::cos(rig.betaTDeg * d);

@@ -7,9 +7,20 @@
 #include "swingarm/identification/virtual_rig.h"
 #include "rig_truth.h"
 
+using motostab::swingarm::identification::PlatePoint;
+using motostab::swingarm::identification::RigNoise;
+using motostab::swingarm::identification::StaticReadings;
+using motostab::swingarm::identification::StaticResult;
+using motostab::swingarm::identification::StaticTest;
+using motostab::swingarm::identification::VirtualSwingarm;
+using motostab::swingarm::identification::identifyStatic;
+using motostab::swingarm::identification::simulateStaticReadings;
+
+
+
 namespace {
 
-using namespace motostab::identification;
+using namespace motostab::swingarm::identification;
 constexpr double kDeg = M_PI / 180;
 
 StaticTest makeTest(PlatePoint force, std::vector<PlatePoint> pts, double resolution) {

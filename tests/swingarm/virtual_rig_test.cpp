@@ -13,9 +13,34 @@
 #include "rig_truth.h"
 #include "tests/support/temp_dir.h"
 
+using motostab::swingarm::identification::FrfResult;
+using motostab::swingarm::identification::FrfTest;
+using motostab::swingarm::identification::HammerOptions;
+using motostab::swingarm::identification::RigNoise;
+using motostab::swingarm::identification::StaticResult;
+using motostab::swingarm::identification::StaticTest;
+using motostab::swingarm::identification::SwingarmIdentification;
+using motostab::swingarm::identification::VirtualSwingarm;
+using motostab::swingarm::identification::identifyFrf;
+using motostab::swingarm::identification::identifyStatic;
+using motostab::swingarm::identification::identifySwingarm;
+using motostab::swingarm::identification::readFrfTest;
+using motostab::swingarm::identification::readHits;
+using motostab::swingarm::identification::readStaticReadings;
+using motostab::swingarm::identification::readStaticTest;
+using motostab::swingarm::identification::simulateHammerHits;
+using motostab::swingarm::identification::simulateStaticReadings;
+using motostab::swingarm::identification::writeFrfOutputs;
+using motostab::swingarm::identification::writeFrfTestFiles;
+using motostab::swingarm::identification::writeStaticOutputs;
+using motostab::swingarm::identification::writeStaticTestFiles;
+using motostab::swingarm::identification::writeSwingarmOutputs;
+
+
+
 namespace {
 
-using namespace motostab::identification;
+using namespace motostab::swingarm::identification;
 constexpr double kDeg = M_PI / 180;
 
 struct Errors {

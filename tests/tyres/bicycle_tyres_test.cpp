@@ -16,7 +16,21 @@
 #include "analysis/sweep.h"
 #include "tyres/relaxation_linear.h"
 
-namespace motostab {
+namespace motostab::tyres {
+
+using analysis::LinearModel;
+using analysis::LinearizeOptions;
+using analysis::SweepOptions;
+using analysis::SweepResult;
+using analysis::TrimOptions;
+using analysis::calcTrim;
+using analysis::linearize;
+using analysis::runSweep;
+using io::InputError;
+using scenario::Scenario;
+using scenario::loadScenario;
+using vehicle::VehicleModel;
+
 namespace {
 
 const std::string kTyres = std::string(MOTOSTAB_SOURCE_DIR) + "/scenarios/whipple-benchmark-tyres.yaml";
@@ -65,7 +79,7 @@ double findCritical(const SweepResult& r, const std::string& mode, bool stabilis
 // Tyre slip on the benchmark bicycle. Published effect: Bulsink, Doria, van de Belt, Koopman (2015),
 // "The effect of tyre and rider properties on the stability of a bicycle", Advances in Mechanical
 // Engineering 7(12): measured tyres make the weave less stable (its critical speed rises) and
-// stabilise the capsize mode, "mainly caused by the twisting torque". Here (printed, in the README):
+// stabilise the capsize mode, "mainly caused by the twisting torque". Here (printed, in docs/scenario-format.md):
 // weave 4.292 -> 5.21 m/s and no capsize instability up to 9 m/s; without the twisting torque the
 // shifts nearly vanish (weave 4.36 m/s, capsize 6.10 m/s).
 TEST(BicycleTyres, PresetShiftsWeaveAndCapsizeSpeedsAsPublished) {
@@ -132,4 +146,4 @@ TEST(BicycleTyres, BadPresetInputNamesFileLineColumnAndKey) {
 }
 
 }  // namespace
-}  // namespace motostab
+}  // namespace motostab::tyres

@@ -23,7 +23,23 @@
 #include "analysis/trim.h"
 #include "tyres/tir_file.h"
 
-namespace motostab {
+namespace motostab::tyres {
+
+using analysis::LinearModel;
+using analysis::LinearizeOptions;
+using analysis::SweepOptions;
+using analysis::SweepResult;
+using analysis::TrimOptions;
+using analysis::TrimResult;
+using analysis::calcTrim;
+using analysis::linearize;
+using analysis::runSweep;
+using io::InputError;
+using scenario::loadScenario;
+using vehicle::CoordinateIndices;
+using vehicle::Input;
+using vehicle::VehicleModel;
+
 namespace {
 
 const std::string kSample = std::string(MOTOSTAB_TEST_DATA_DIR) + "/reference/MF61-sample-tir/sample_MF61_ExternData.tir";
@@ -236,4 +252,4 @@ TEST(MagicFormulaContact, ScenarioErrorsNameTheKey) {
 }
 
 }  // namespace
-}  // namespace motostab
+}  // namespace motostab::tyres

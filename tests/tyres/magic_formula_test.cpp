@@ -13,11 +13,15 @@
 #include <sstream>
 #include <regex>
 
-#include "io/portable_random.h"
+#include "core/portable_random.h"
 #include "tyres/magic_formula.h"
 #include "tyres/motorcycle_magic_formula.h"
 
-namespace motostab {
+namespace motostab::tyres {
+
+using core::PortableRandom;
+using io::InputError;
+
 namespace {
 
 const std::string kSample = std::string(MOTOSTAB_TEST_DATA_DIR) + "/reference/MF61-sample-tir/sample_MF61_ExternData.tir";
@@ -462,4 +466,4 @@ TEST(MotorcycleMagicFormula, RelaxationCoefficientsAllOrNone) {
 }
 
 }  // namespace
-}  // namespace motostab
+}  // namespace motostab::tyres

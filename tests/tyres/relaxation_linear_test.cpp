@@ -7,7 +7,20 @@
 
 #include "analysis/linearize.h"
 
-namespace motostab {
+namespace motostab::tyres {
+
+using analysis::LinearModel;
+using analysis::LinearizeOptions;
+using analysis::TrimOptions;
+using analysis::TrimResult;
+using analysis::calcTrim;
+using analysis::linearize;
+using scenario::Scenario;
+using scenario::loadScenario;
+using vehicle::CoordinateIndices;
+using vehicle::Input;
+using vehicle::VehicleModel;
+
 namespace {
 
 const std::string kWhipple = std::string(MOTOSTAB_SOURCE_DIR) + "/scenarios/whipple-benchmark.yaml";
@@ -72,4 +85,4 @@ TEST(RelaxationLinear, TrimHasNoSlipOrLeanWhenSymmetric) {
 }
 
 }  // namespace
-}  // namespace motostab
+}  // namespace motostab::tyres

@@ -10,7 +10,10 @@
 #include "tyres/magic_formula.h"
 #include "tyres/tir_file.h"
 
-namespace motostab {
+namespace motostab::tyres {
+
+using io::InputError;
+
 namespace {
 
 const std::string kSample = std::string(MOTOSTAB_TEST_DATA_DIR) + "/reference/MF61-sample-tir/sample_MF61_ExternData.tir";
@@ -131,4 +134,4 @@ TEST(TirFile, TablesAndCommentsAreNotKeys) {
 }
 
 }  // namespace
-}  // namespace motostab
+}  // namespace motostab::tyres

@@ -3,12 +3,16 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include "io/portable_random.h"
+#include "core/portable_random.h"
 
 #include "tests/uncertainty/test_support.h"
 #include "uncertainty/sampling.h"
 
-namespace motostab {
+namespace motostab::uncertainty {
+
+using core::PortableRandom;
+using scenario::ParameterUncertainty;
+
 namespace {
 
 using D = ParameterUncertainty::Distribution;
@@ -78,4 +82,4 @@ TEST(Sampling, DrawsDependOnlyOnSeedSampleAndPath) {
 }
 
 }  // namespace
-}  // namespace motostab
+}  // namespace motostab::uncertainty

@@ -5,7 +5,7 @@
 
 #include <cmath>
 #include <cstring>
-#include "io/portable_random.h"
+#include "core/portable_random.h"
 
 #include "analysis/sweep.h"
 #include "tests/uncertainty/test_support.h"
@@ -14,7 +14,16 @@
 #include "uncertainty/uncertainty_summary.h"
 #include "vehicle/vehicle_model.h"
 
-namespace motostab {
+namespace motostab::uncertainty {
+
+using analysis::SweepOptions;
+using analysis::SweepResult;
+using analysis::runSweep;
+using core::PortableRandom;
+using scenario::ParameterUncertainty;
+using scenario::loadScenario;
+using vehicle::VehicleModel;
+
 namespace {
 
 constexpr double kStart = 3.5, kStop = 7.0, kStep = 0.5;  // brackets the weave (4.29) and capsize (6.02) speeds
@@ -236,9 +245,9 @@ TEST(UncertaintyStudy, PercentilesAndRegressionMatchHandCalculations) {
 }
 
 }  // namespace
-}  // namespace motostab
+}  // namespace motostab::uncertainty
 
-namespace motostab {
+namespace motostab::uncertainty {
 namespace {
 
 TEST(UncertaintyStudy, UnphysicalDrawsAreRedrawnAndCounted) {
@@ -276,4 +285,4 @@ TEST(UncertaintyStudy, UnphysicalDrawsAreRedrawnAndCounted) {
 }
 
 }  // namespace
-}  // namespace motostab
+}  // namespace motostab::uncertainty

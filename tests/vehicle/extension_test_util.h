@@ -14,7 +14,7 @@
 #include <unistd.h>
 #include <vector>
 
-#include "io/portable_random.h"
+#include "core/portable_random.h"
 #include "analysis/linearize.h"
 #include "analysis/sweep.h"
 #include "analysis/trim.h"
@@ -22,6 +22,17 @@
 #include "vehicle/vehicle_model.h"
 
 namespace motostab::testing {
+
+using analysis::SweepOptions;
+using analysis::SweepResult;
+using analysis::calcTrim;
+using analysis::linearize;
+using analysis::runSweep;
+using io::InputError;
+using scenario::Scenario;
+using scenario::loadScenario;
+using vehicle::VehicleModel;
+
 
 using cd = std::complex<double>;
 

@@ -7,10 +7,18 @@
 #include <set>
 #include <sstream>
 
-#include "io/portable_random.h"
+#include "core/portable_random.h"
 #include "extension_test_util.h"
 
-namespace motostab {
+namespace motostab::vehicle {
+
+using analysis::SweepResult;
+using core::PortableRandom;
+using scenario::InertiaSpec;
+using scenario::Scenario;
+using scenario::loadScenario;
+
+
 namespace {
 
 using namespace motostab::testing;
@@ -156,4 +164,4 @@ TEST(ForkCompliance, MalformedInputNamesFileLineColumnAndKey) {
 }
 
 }  // namespace
-}  // namespace motostab
+}  // namespace motostab::vehicle

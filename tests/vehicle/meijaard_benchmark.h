@@ -8,6 +8,10 @@
 
 namespace motostab::testing {
 
+using scenario::BodySpec;
+using scenario::Scenario;
+
+
 // Meijaard, Papadopoulos, Ruina, Schwab (2007), Proc. R. Soc. A 463:1955-1982, Appendix A
 // (eqs. A1-A27): M, C1, K0, K2 of the linearised Whipple bicycle from its Table 1 parameters, in the
 // paper's frame (z down, steer positive right). Written here from the paper, not from motostab.

@@ -8,7 +8,17 @@
 
 #include "analysis/sweep.h"
 
-namespace motostab {
+namespace motostab::vehicle {
+
+using analysis::SweepOptions;
+using analysis::SweepResult;
+using analysis::TrimResult;
+using analysis::calcTrim;
+using analysis::runSweep;
+using scenario::Scenario;
+using scenario::calcStaticWheelLoads;
+using scenario::loadScenario;
+
 namespace {
 
 const std::string kEnduro = std::string(MOTOSTAB_SOURCE_DIR) + "/scenarios/enduro.yaml";
@@ -182,4 +192,4 @@ TEST(RearSuspension, ModeLabels) {
 }
 
 }  // namespace
-}  // namespace motostab
+}  // namespace motostab::vehicle

@@ -5,10 +5,18 @@
 #include <cmath>
 #include <sstream>
 
-#include "io/portable_random.h"
+#include "core/portable_random.h"
 #include "extension_test_util.h"
 
-namespace motostab {
+namespace motostab::vehicle {
+
+using core::PortableRandom;
+using scenario::BodySpec;
+using scenario::RiderLeanSpec;
+using scenario::Scenario;
+using scenario::loadScenario;
+
+
 namespace {
 
 using namespace motostab::testing;
@@ -115,4 +123,4 @@ TEST(RiderLean, MalformedInputNamesFileLineColumnAndKey) {
 }
 
 }  // namespace
-}  // namespace motostab
+}  // namespace motostab::vehicle

@@ -9,11 +9,21 @@
 
 #include "extension_test_util.h"
 #include "io/csv.h"
-#include "io/portable_random.h"
+#include "core/portable_random.h"
 #include "meijaard_benchmark.h"
 #include "vehicle/steer_controller.h"
 
-namespace motostab {
+namespace motostab::vehicle {
+
+using analysis::TrimResult;
+using analysis::calcTrim;
+using core::PortableRandom;
+using io::formatNumber;
+using scenario::Scenario;
+using scenario::SteerControllerSpec;
+using scenario::loadScenario;
+
+
 namespace {
 
 using namespace motostab::testing;
@@ -219,4 +229,4 @@ TEST(SteerController, MalformedInputNamesFileLineColumnAndKey) {
 }
 
 }  // namespace
-}  // namespace motostab
+}  // namespace motostab::vehicle

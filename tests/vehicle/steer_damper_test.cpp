@@ -5,12 +5,19 @@
 #include <Eigen/Eigenvalues>
 #include <cmath>
 
-#include "io/portable_random.h"
+#include "core/portable_random.h"
 #include "extension_test_util.h"
 #include "meijaard_benchmark.h"
 #include "vehicle/steer_damper.h"
 
-namespace motostab {
+namespace motostab::vehicle {
+
+using analysis::SweepResult;
+using core::PortableRandom;
+using scenario::Scenario;
+using scenario::loadScenario;
+
+
 namespace {
 
 using namespace motostab::testing;
@@ -119,4 +126,4 @@ TEST(SteerDamper, MalformedInputNamesFileLineColumnAndKey) {
 }
 
 }  // namespace
-}  // namespace motostab
+}  // namespace motostab::vehicle

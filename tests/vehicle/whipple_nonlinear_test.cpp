@@ -5,7 +5,11 @@
 
 #include "analysis/state_function.h"
 
-namespace motostab {
+namespace motostab::vehicle {
+
+using analysis::StateFunction;
+using scenario::loadScenario;
+
 namespace {
 
 // Their coordinates: rear-wheel centre (x, y, z) with z up; heading theta; lean psi from the
@@ -52,4 +56,4 @@ TEST(WhippleNonlinear, AccelerationsMatchBasuMandalTable1) {
 }
 
 }  // namespace
-}  // namespace motostab
+}  // namespace motostab::vehicle

@@ -7,7 +7,26 @@
 #include "analysis/sweep.h"
 #include "swingarm/compliance/swingarm_compliance.h"
 
-namespace motostab {
+namespace motostab::swingarm {
+
+using analysis::LinearModel;
+using analysis::SweepOptions;
+using analysis::SweepResult;
+using analysis::TrimResult;
+using analysis::calcTrim;
+using analysis::linearize;
+using analysis::runSweep;
+using io::YamlMap;
+using io::loadYamlFile;
+using scenario::InertiaSpec;
+using scenario::Scenario;
+using scenario::SwingarmFrame;
+using scenario::WheelSpec;
+using scenario::calcSwingarmFrame;
+using scenario::loadScenario;
+using vehicle::CoordinateIndices;
+using vehicle::VehicleModel;
+
 namespace {
 
 const std::string kEnduro = std::string(MOTOSTAB_SOURCE_DIR) + "/scenarios/enduro.yaml";
@@ -117,21 +136,21 @@ TEST(SwingarmCompliance, TiltedAxisTrimsWithSmallLateralStates) {
 }
 
 }  // namespace
-}  // namespace motostab
+}  // namespace motostab::swingarm
 
 #include <fstream>
 
 #include "swingarm/identification/decomposition.h"
 
-namespace motostab {
+namespace motostab::swingarm {
 namespace {
 
 // The fragment `motostab identify swingarm` writes is accepted unchanged (axes_from) and builds the
 // same model as the same values typed inline (seed Table 3 and 5, swingarm 2, with the enduro
 // scenario's beta).
 TEST(SwingarmCompliance, IdentificationFragmentIsUsedUnchanged) {
-  identification::SwingarmIdentification id;
-  auto fill = [](identification::LumpedModel& m, double arm, double betaDeg, double k, double c) {
+  swingarm::identification::SwingarmIdentification id;
+  auto fill = [](swingarm::identification::LumpedModel& m, double arm, double betaDeg, double k, double c) {
     m.arm.value = arm, m.betaDeg.value = betaDeg, m.stiffness.value = k, m.damping.value = c;
     const double b = betaDeg * M_PI / 180;
     m.direction = Eigen::Vector2d(std::cos(b), std::sin(b));
@@ -141,7 +160,7 @@ TEST(SwingarmCompliance, IdentificationFragmentIsUsedUnchanged) {
   fill(id.torsion, 0.014, 0.0, 55200, 0.49);
   fill(id.twist, 0.375, 86.48, 87600, 2.09);
   const auto file = makeTempDir("identified_swingarm") / "identified_swingarm.yaml";
-  std::ofstream(file) << identification::formatSwingarmYaml(id, "static.yaml", "frf.yaml", {0.5625, 0});
+  std::ofstream(file) << swingarm::identification::formatSwingarmYaml(id, "static.yaml", "frf.yaml", {0.5625, 0});
   for (const char* model : {"bending", "torsion", "twist"}) {
     const std::string sel = std::string("swingarm.compliance=") + model;
     const std::string axis = std::string("swingarm.") + model;
@@ -169,4 +188,4 @@ TEST(SwingarmCompliance, IdentificationFragmentIsUsedUnchanged) {
 }
 
 }  // namespace
-}  // namespace motostab
+}  // namespace motostab::swingarm

@@ -1,0 +1,197 @@
+// Steady turns: their figures, the continuation in roll from straight running, and hands-free turns.
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+#include "analysis/trim_detail.h"
+#include "tyres/rolling_no_slip.h"
+
+namespace motostab::analysis {
+
+using scenario::Scenario;
+using scenario::WheelSpec;
+using tyres::TorusContact;
+using tyres::calcTorusContact;
+using vehicle::CoordinateIndices;
+using vehicle::Input;
+using vehicle::VehicleModel;
+
+TurnFigures calcTurnFigures(const VehicleModel& model, const SimTK::State& s) {
+  model.getSystem().realize(s, SimTK::Stage::Velocity);
+  const Scenario& sc = model.getScenario();
+  const SimTK::MobilizedBody& wheel = model.getRearWheel();
+  const SimTK::MobilizedBody& frame = model.getRearFrame();
+  const TorusContact contact = calcTorusContact(wheel.getBodyRotation(s), wheel.getBodyAngularVelocity(s),
+                                                sc.rearWheel.radius, sc.rearWheel.crownRadius);
+  const SimTK::Vec3 p_GP = wheel.getBodyOriginLocation(s) + contact.r_CP_G;
+  const SimTK::Vec3 p_GO = frame.getBodyOriginLocation(s);
+  const SimTK::Vec3 v_GP = frame.getBodyOriginVelocity(s) + frame.getBodyAngularVelocity(s) % (p_GP - p_GO);
+  TurnFigures f;
+  f.speed = std::hypot(v_GP[0], v_GP[1]);
+  f.yawRate = s.getU()[model.getIndices().yaw];
+  f.pathRadius = f.yawRate == 0 ? INFINITY : f.speed / std::abs(f.yawRate);
+  f.lateralAcceleration = f.speed * f.yawRate;
+  return f;
+}
+
+namespace {
+
+// Heights (m) of the lowest points of both tyres' toroids (calcTorusContact), state realized to Position.
+Eigen::Vector2d calcContactHeights(const VehicleModel& model, const SimTK::State& s) {
+  model.getSystem().realize(s, SimTK::Stage::Position);
+  Eigen::Vector2d z;
+  int k = 0;
+  for (const auto* w : {&model.getRearWheel(), &model.getFrontWheel()}) {
+    const WheelSpec& spec = k == 0 ? model.getScenario().rearWheel : model.getScenario().frontWheel;
+    const SimTK::Transform& X_GW = w->getBodyTransform(s);
+    z[k++] = X_GW.p()[2] + calcTorusContact(X_GW.R(), SimTK::Vec3(0), spec.radius, spec.crownRadius).r_CP_G[2];
+  }
+  return z;
+}
+
+// Moves height and pitch so that both tyres' lowest points are back at `target` (m): a roll step
+// otherwise lifts stiff tyres off the ground, where the residual has no gradient. Geometry only,
+// whatever the contact model; a few Newton steps with differenced 2 x 2 Jacobians.
+void restoreContactHeights(const VehicleModel& model, const Eigen::Vector2d& target, SimTK::State& s) {
+  const CoordinateIndices& ix = model.getIndices();
+  const int unknowns[2] = {ix.height, ix.pitch};
+  for (int it = 0; it < 4; ++it) {
+    const Eigen::Vector2d e = calcContactHeights(model, s) - target;
+    if (e.lpNorm<Eigen::Infinity>() < 1e-13) return;
+    Eigen::Matrix2d J;
+    for (int j = 0; j < 2; ++j) {
+      const double h = 1e-7, q0 = s.getQ()[unknowns[j]];
+      s.updQ()[unknowns[j]] = q0 + h;
+      J.col(j) = (calcContactHeights(model, s) - target - e) / h;
+      s.updQ()[unknowns[j]] = q0;
+    }
+    const Eigen::Vector2d dq = J.fullPivLu().solve(-e);
+    if (!dq.allFinite()) return;
+    for (int j = 0; j < 2; ++j) s.updQ()[unknowns[j]] += dq[j];
+  }
+}
+
+}  // namespace
+
+namespace detail {
+
+// A turn from `res` (a trim at another roll, or straight running: roll 0) to opt.roll, in roll steps of
+// at most opt.rollStep at `speed`, each started from the last two by linear extrapolation (a failed step
+// is retried from the last roll reached with half the step, at most four times); then the turn with
+// opt's condition.
+void continueTurn(const VehicleModel& model, double speed, const TrimOptions& opt, TrimResult& res) {
+  const StateFunction fn(model);
+  const CoordinateIndices& ix = model.getIndices();
+  const double from = res.turn ? res.roll : 0.0;
+  if (!res.turn) {  // straight running as a turn of radius infinity, heading along x
+    SimTK::State& s = res.state;
+    const double v = s.getU()[ix.x];
+    s.updQ()[ix.yaw] = 0;
+    s.updU()[ix.y] = 0;
+    s.updU()[ix.yaw] = 0;
+    res.speed = v;
+  }
+  TrimOptions step = opt;
+  step.condition = TurnCondition::Speed;
+  const double full = opt.roll - from;
+  const int n = std::max(1, static_cast<int>(std::ceil(std::abs(full) / opt.rollStep - 1e-9)));
+  const auto unknowns = getTrimUnknowns(model, step);
+  const bool fromStraight = !res.turn;
+  double h = full / n, done = 0, lastStep = 0;  // rad: the step, the roll stepped so far, the last step
+  int halvings = 0, steps = 0;
+  Eigen::VectorXd last, beforeLast;  // unknowns at the last two rolls reached
+  SimTK::State saved;
+  while (steps == 0 || std::abs(full - done) > 1e-15) {  // at least one trim as a turn (roll 0 too)
+    const double next = std::abs(full - done) <= std::abs(h) * (1 + 1e-9) ? full : done + h;
+    step.roll = from + next;
+    SimTK::State& s = res.state;
+    saved = s;
+    const Eigen::Vector2d contactHeights = calcContactHeights(model, s);
+    s.updQ()[ix.roll] = step.roll;
+    if (beforeLast.size() > 0) {  // linear extrapolation from the last two rolls
+      for (size_t j = 0; j < unknowns.size(); ++j)
+        fn.set(s, unknowns[j], last[j] + (last[j] - beforeLast[j]) * (next - done) / lastStep);
+    } else if (steps == 0 && fromStraight) {  // the point-mass turn: tan(roll) = -r V / g, steer ~ w r / V
+      const double r = -model.getScenario().gravity * std::tan(step.roll) / std::max(speed, 0.5);
+      s.updU()[ix.yaw] = r;
+      s.updQ()[ix.steer] += model.getScenario().geometry.wheelbase * r / std::max(speed, 0.5);
+    }
+    restoreContactHeights(model, contactHeights, s);
+    res.unknownsPerSpeed.resize(0), res.unknownsCurvature.resize(0);
+    try {
+      solveTrim(model, speed, step, res, true);
+    } catch (const TrimError& e) {
+      s = saved;  // back to the last roll reached, with half the step
+      if (++halvings > 4) {
+        std::ostringstream os;
+        os << "stepping the roll from " << from * 180 / M_PI << " deg: failed at " << step.roll * 180 / M_PI
+           << " deg with the step halved 4 times";
+        throw TrimError(speed, e.residual, res.iterations, opt.roll, os.str());
+      }
+      h /= 2;
+      res.jacobian.resize(0, 0);
+      continue;
+    }
+    beforeLast.swap(last);
+    last.resize(unknowns.size());
+    for (size_t j = 0; j < unknowns.size(); ++j) last[j] = fn.get(s, unknowns[j]);
+    lastStep = next - done, done = next, ++steps;
+  }
+  if (opt.condition != TurnCondition::Speed) solveTrim(model, speed, opt, res, true);
+}
+
+}  // namespace detail
+
+NoTurnError::NoTurnError(double phi, double lo, double hi, double tLo, double tHi)
+    : std::runtime_error([&] {
+        std::ostringstream os;
+        os << "no hands-free turn at roll " << phi * 180 / M_PI << " deg between " << lo << " and " << hi
+           << " m/s: the steer torque of steady turns is " << tLo << " N m at " << lo << " m/s and " << tHi
+           << " N m at " << hi << " m/s, without a sign change";
+        return os.str();
+      }()),
+      roll(phi), low(lo), high(hi) {}
+
+TrimResult calcHandsFreeTrim(const VehicleModel& model, const std::vector<double>& speeds, const TrimOptions& opt,
+                             double preferredSpeed) {
+  TrimOptions fixedSpeed = opt;
+  fixedSpeed.condition = TurnCondition::Speed;
+  std::vector<TrimPoint> scan;  // descending speeds
+  TrimResult work;
+  for (auto v = speeds.rbegin(); v != speeds.rend(); ++v) {
+    try {
+      if (scan.empty()) work = calcTrim(model, *v, fixedSpeed);
+      else updTrim(model, *v, fixedSpeed, work);
+    } catch (const TrimError&) {
+      if (scan.empty()) throw;
+      break;  // too slow for this roll: the scan ends here
+    }
+    scan.push_back(makeTrimPoint(model, work));
+  }
+  const int torque = static_cast<int>(Input::SteerTorque);
+  int best = -1;
+  double bestSpeed = NAN;
+  for (size_t k = 0; k + 1 < scan.size(); ++k) {
+    const double t0 = scan[k].inputs[torque] - opt.steerTorque, t1 = scan[k + 1].inputs[torque] - opt.steerTorque;
+    if (t0 * t1 > 0 || t0 == t1) continue;
+    const double v = scan[k].speed + (scan[k + 1].speed - scan[k].speed) * t0 / (t0 - t1);
+    const bool better = best < 0 || (std::isnan(preferredSpeed) ? v < bestSpeed
+                                                                 : std::abs(v - preferredSpeed) < std::abs(bestSpeed - preferredSpeed));
+    if (better) best = static_cast<int>(k), bestSpeed = v;
+  }
+  if (best < 0)
+    throw NoTurnError(opt.roll, scan.back().speed, scan.front().speed, scan.back().inputs[torque], scan.front().inputs[torque]);
+  TrimPoint start = scan[best];  // the bracket's turns interpolated to the estimated speed
+  const double w = (bestSpeed - scan[best].speed) / (scan[best + 1].speed - scan[best].speed);
+  start.y += w * (scan[best + 1].y - scan[best].y);
+  start.inputs += w * (scan[best + 1].inputs - scan[best].inputs);
+  start.speed = bestSpeed;
+  TrimResult trim = restoreTrim(model, start);
+  trim.unknownsPerSpeed.resize(0), trim.unknownsCurvature.resize(0), trim.jacobian.resize(0, 0);
+  TrimOptions handsFree = opt;
+  handsFree.condition = TurnCondition::SteerTorque;
+  updTrim(model, bestSpeed, handsFree, trim);
+  return trim;
+}
+
+}  // namespace motostab::analysis

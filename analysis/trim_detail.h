@@ -1,0 +1,14 @@
+#pragma once
+// Internal trim solvers shared by trim.cpp (Newton) and steady_turn.cpp (continuation in roll).
+#include "analysis/trim.h"
+
+namespace motostab::detail {
+
+// Newton's method from `res` (a warm start when `warm`, else the default state) to the trim at `speed`
+// (trim.cpp).
+void solveTrim(const vehicle::VehicleModel& model, double speed, const TrimOptions& opt, TrimResult& res, bool warm);
+
+// A turn from `res` to opt.roll in roll steps, then the turn with opt's condition (steady_turn.cpp).
+void continueTurn(const vehicle::VehicleModel& model, double speed, const TrimOptions& opt, TrimResult& res);
+
+}  // namespace motostab::detail

@@ -1,0 +1,328 @@
+#include "io/yaml_map.h"
+
+#include <filesystem>
+#include <map>
+
+#include "io/number.h"
+
+namespace motostab::io {
+namespace {
+
+InputLocation locationOf(const YAML::Node& n, const std::string& file, const std::string& path) {
+  const YAML::Mark m = n.Mark();
+  return {file, m.line >= 0 ? m.line + 1 : 0, m.column >= 0 ? m.column + 1 : 0, path};
+}
+
+std::string joinPath(const std::string& path, const std::string& key) { return path.empty() ? key : path + "." + key; }
+
+// Keys of a mapping must be scalars and unique; `recursive` checks every mapping below it too.
+void checkKeys(const YAML::Node& node, const std::string& file, const std::string& path, bool recursive) {
+  if (node.IsSequence() && recursive) {
+    for (size_t i = 0; i < node.size(); ++i) checkKeys(node[i], file, path + "[" + std::to_string(i) + "]", true);
+  }
+  if (!node.IsMap()) return;
+  std::map<std::string, int> seen;  // key -> line of its first occurrence
+  for (const auto& kv : node) {
+    if (!kv.first.IsScalar()) throw InputError(locationOf(kv.first, file, path), "a key must be a plain name");
+    const std::string k = kv.first.Scalar();
+    const InputLocation at = locationOf(kv.first, file, joinPath(path, k));
+    if (!seen.emplace(k, at.line).second)
+      throw InputError(at, "duplicate key (first given on line " + std::to_string(seen[k]) + ")");
+    if (recursive) checkKeys(kv.second, file, joinPath(path, k), true);
+  }
+}
+
+}  // namespace
+
+YamlMap::YamlMap(const YAML::Node& node, std::string file, std::string path)
+    : node_(node), file_(std::move(file)), path_(std::move(path)),
+      used_(std::make_shared<std::set<std::string>>()) {
+  if (!node_.IsMap()) fail("", "expected a mapping of keys to values");
+  checkKeys(node_, file_, path_, false);
+}
+
+std::string YamlMap::childPath(const std::string& key) const {
+  return path_.empty() ? key : (key.empty() ? path_ : path_ + "." + key);
+}
+
+InputLocation YamlMap::locate(const std::string& key) const {
+  if (!key.empty()) {
+    for (const auto& kv : node_)
+      if (kv.first.Scalar() == key) return locationOf(kv.first, file_, childPath(key));
+  }
+  return locationOf(node_, file_, childPath(key));
+}
+
+void YamlMap::fail(const std::string& key, const std::string& message) const {
+  throw InputError(locate(key), message);
+}
+
+void YamlMap::failElement(const std::string& key, size_t index, const std::string& message) const {
+  const YAML::Node list = static_cast<const YAML::Node&>(node_)[key];
+  const std::string at = childPath(key) + "[" + std::to_string(index) + "]";
+  if (list && list.IsSequence() && index < list.size()) throw InputError(locationOf(list[index], file_, at), message);
+  InputLocation where = locate(key);
+  where.key = at;
+  throw InputError(where, message);
+}
+
+double YamlMap::toFinite(const YAML::Node& n, const std::string& key, size_t index) const {
+  const auto v = n.IsScalar() ? parseFiniteNumber(n.Scalar()) : std::nullopt;
+  if (!v) {
+    const std::string got = n.IsScalar() ? " (got '" + n.Scalar() + "')" : "";
+    if (index == static_cast<size_t>(-1)) fail(key, "expected a finite number" + got);
+    failElement(key, index, "expected a finite number" + got);
+  }
+  return *v;
+}
+
+bool YamlMap::has(const std::string& key) const { return static_cast<bool>(node_[key]); }
+
+void YamlMap::markUsed(const std::string& key) { used_->insert(key); }
+
+YAML::Node YamlMap::require(const std::string& key) {
+  const YAML::Node n = static_cast<const YAML::Node&>(node_)[key];
+  if (!n) {
+    std::string given;  // a typo of the missing key is usually among them
+    for (const auto& kv : node_) given += (given.empty() ? "" : ", ") + kv.first.Scalar();
+    fail("", "missing key '" + childPath(key) + "' (keys given here: " + (given.empty() ? "none" : given) + ")");
+  }
+  used_->insert(key);
+  return n;
+}
+
+double YamlMap::getDouble(const std::string& key) { return toFinite(require(key), key, static_cast<size_t>(-1)); }
+
+double YamlMap::getDouble(const std::string& key, double fallback) {
+  return has(key) ? getDouble(key) : fallback;
+}
+
+double YamlMap::getPositive(const std::string& key) {
+  const double v = getDouble(key);
+  if (!(v > 0)) fail(key, "must be positive (got " + std::to_string(v) + ")");
+  return v;
+}
+
+double YamlMap::getNonNegative(const std::string& key) {
+  const double v = getDouble(key);
+  if (v < 0) fail(key, "must not be negative (got " + std::to_string(v) + ")");
+  return v;
+}
+
+double YamlMap::getPositive(const std::string& key, double fallback) { return has(key) ? getPositive(key) : fallback; }
+
+double YamlMap::getNonNegative(const std::string& key, double fallback) {
+  return has(key) ? getNonNegative(key) : fallback;
+}
+
+int YamlMap::getInt(const std::string& key) {
+  const YAML::Node n = require(key);
+  int v = 0;
+  if (!n.IsScalar() || !YAML::convert<int>::decode(n, v)) fail(key, "expected an integer");
+  return v;
+}
+
+bool YamlMap::getBool(const std::string& key, bool fallback) {
+  if (!has(key)) return fallback;
+  const YAML::Node n = require(key);
+  bool v = false;
+  if (!n.IsScalar() || !YAML::convert<bool>::decode(n, v)) fail(key, "expected true or false");
+  return v;
+}
+
+std::string YamlMap::getString(const std::string& key) {
+  const YAML::Node n = require(key);
+  if (!n.IsScalar()) fail(key, "expected a string");
+  return n.as<std::string>();
+}
+
+std::string YamlMap::getString(const std::string& key, const std::string& fallback) {
+  return has(key) ? getString(key) : fallback;
+}
+
+YAML::Node YamlMap::requireList(const std::string& key) {
+  const YAML::Node n = require(key);
+  if (!n.IsSequence()) fail(key, "expected a list");
+  return n;
+}
+
+std::vector<double> YamlMap::getDoubleList(const std::string& key) {
+  const YAML::Node n = requireList(key);
+  std::vector<double> out;
+  for (size_t i = 0; i < n.size(); ++i) out.push_back(toFinite(n[i], key, i));
+  return out;
+}
+
+std::vector<double> YamlMap::getDoubleList(const std::string& key, size_t size) {
+  const auto v = getDoubleList(key);
+  if (v.size() != size) fail(key, "expected " + std::to_string(size) + " numbers, found " + std::to_string(v.size()));
+  return v;
+}
+
+std::array<double, 3> YamlMap::getVec3(const std::string& key) {
+  const auto v = getDoubleList(key);
+  if (v.size() != 3) fail(key, "expected 3 numbers [x, y, z], found " + std::to_string(v.size()));
+  return {v[0], v[1], v[2]};
+}
+
+std::vector<std::string> YamlMap::getStringList(const std::string& key) {
+  const YAML::Node n = requireList(key);
+  std::vector<std::string> out;
+  for (size_t i = 0; i < n.size(); ++i) {
+    if (!n[i].IsScalar()) failElement(key, i, "expected a string");
+    out.push_back(n[i].Scalar());
+  }
+  return out;
+}
+
+YamlMap YamlMap::getMap(const std::string& key) {
+  const YAML::Node n = require(key);
+  if (!n.IsMap()) fail(key, "expected a mapping");
+  return YamlMap(n, file_, childPath(key));
+}
+
+std::vector<YamlMap> YamlMap::getMapList(const std::string& key) {
+  const YAML::Node n = requireList(key);
+  std::vector<YamlMap> out;
+  for (size_t i = 0; i < n.size(); ++i) {
+    if (!n[i].IsMap()) failElement(key, i, "expected a mapping");
+    out.emplace_back(n[i], file_, childPath(key) + "[" + std::to_string(i) + "]");
+  }
+  return out;
+}
+
+std::string resolveRelativeTo(const std::string& namingFile, const std::string& name) {
+  const std::filesystem::path p(name);
+  if (p.is_absolute()) return name;
+  return (std::filesystem::path(namingFile).parent_path() / p).lexically_normal().string();
+}
+
+std::string YamlMap::getFilePath(const std::string& key) {
+  const std::string name = getString(key);
+  if (name.empty()) fail(key, "expected a file name");
+  return resolveRelativeTo(file_, name);
+}
+
+std::vector<std::string> YamlMap::getFilePathList(const std::string& key) {
+  std::vector<std::string> out = getStringList(key);
+  for (size_t i = 0; i < out.size(); ++i) {
+    if (out[i].empty()) failElement(key, i, "expected a file name");
+    out[i] = resolveRelativeTo(file_, out[i]);
+  }
+  return out;
+}
+
+void YamlMap::finish() const {
+  for (const auto& kv : node_) {
+    const std::string k = kv.first.Scalar();
+    if (!used_->count(k)) throw InputError(locationOf(kv.first, file_, childPath(k)), "unknown key");
+  }
+}
+
+YamlMap loadYamlFile(const std::string& file) {
+  YAML::Node root;
+  try {
+    root = YAML::LoadFile(file);
+  } catch (const YAML::BadFile&) {
+    throw InputError({file, 0, 0, ""}, "cannot open file");
+  } catch (const YAML::ParserException& e) {
+    throw InputError({file, e.mark.line + 1, e.mark.column + 1, ""}, "YAML syntax error: " + e.msg);
+  }
+  checkKeys(root, file, "", true);
+  return YamlMap(root, file, "");
+}
+
+std::vector<KeyPathSegment> parseKeyPath(const std::string& path) {
+  std::vector<KeyPathSegment> out;
+  size_t start = 0;
+  while (true) {
+    const size_t dot = path.find('.', start);
+    std::string part = path.substr(start, dot == std::string::npos ? std::string::npos : dot - start);
+    KeyPathSegment seg;
+    const size_t open = part.find('[');
+    if (open != std::string::npos) {
+      const size_t close = part.find(']', open);
+      const std::string digits = close == std::string::npos ? "" : part.substr(open + 1, close - open - 1);
+      if (close != part.size() - 1 || digits.empty() || digits.find_first_not_of("0123456789") != std::string::npos ||
+          digits.size() > 6)
+        throw InputError({"", 0, 0, path}, "malformed index in key path (expected key[N])");
+      seg.index = std::stoi(digits);
+      part = part.substr(0, open);
+    }
+    if (part.empty()) throw InputError({"", 0, 0, path}, "empty key in key path");
+    seg.key = part;
+    out.push_back(seg);
+    if (dot == std::string::npos) break;
+    start = dot + 1;
+  }
+  return out;
+}
+
+YAML::Node findKeyPath(const YAML::Node& root, const std::string& path) {
+  YAML::Node node;  // a handle walked with const lookups only: the caller's tree gains no keys
+  node.reset(root);
+  for (const auto& seg : parseKeyPath(path)) {
+    if (!node.IsMap()) return YAML::Node(YAML::NodeType::Undefined);
+    const YAML::Node next = static_cast<const YAML::Node&>(node)[seg.key];
+    if (!next) return YAML::Node(YAML::NodeType::Undefined);
+    node.reset(next);
+    if (seg.index >= 0) {
+      if (!node.IsSequence() || seg.index >= static_cast<int>(node.size())) return YAML::Node(YAML::NodeType::Undefined);
+      const YAML::Node element = static_cast<const YAML::Node&>(node)[static_cast<size_t>(seg.index)];
+      node.reset(element);
+    }
+  }
+  return node;
+}
+
+void applyOverride(YAML::Node& root, const std::string& assignment) {
+  const auto eq = assignment.find('=');
+  if (eq == std::string::npos || eq == 0)
+    throw InputError({"--set", 0, 0, assignment}, "expected KEY.PATH=VALUE");
+  const std::string path = assignment.substr(0, eq);
+  YAML::Node value;
+  try {
+    value = YAML::Load(assignment.substr(eq + 1));
+  } catch (const YAML::Exception& e) {
+    throw InputError({"--set", 0, 0, assignment}, "the value is not valid YAML: " + e.msg);
+  }
+  checkKeys(value, "--set " + assignment, path, true);
+  std::vector<KeyPathSegment> segments;
+  try {
+    segments = parseKeyPath(path);
+  } catch (const InputError& e) {
+    throw InputError({"--set", 0, 0, assignment}, e.getReason());
+  }
+  // yaml-cpp nodes are handles: walk with fresh handles so the tree itself is edited.
+  std::vector<YAML::Node> chain{root};
+  for (size_t i = 0; i < segments.size(); ++i) {
+    const KeyPathSegment& seg = segments[i];
+    const bool last = i + 1 == segments.size();
+    if (!chain.back().IsMap())
+      throw InputError({"--set", 0, 0, path}, "'" + (i ? segments[i - 1].key : std::string("the scenario")) +
+                                                 "' is not a mapping in the scenario");
+    if (last && seg.index < 0) {
+      chain.back()[seg.key] = value;
+      return;
+    }
+    YAML::Node next = chain.back()[seg.key];
+    if (seg.index >= 0) {
+      if (!next || !next.IsSequence() || seg.index >= static_cast<int>(next.size()))
+        throw InputError({"--set", 0, 0, path}, "'" + seg.key + "' has no element " + std::to_string(seg.index) +
+                                                   " in the scenario");
+      if (last) {
+        next[static_cast<size_t>(seg.index)] = value;
+        return;
+      }
+      chain.push_back(next);
+      next = chain.back()[static_cast<size_t>(seg.index)];
+    } else if (!next) {
+      // A missing intermediate section is created; the scenario reader then validates its keys.
+      chain.back()[seg.key] = YAML::Node(YAML::NodeType::Map);
+      next = chain.back()[seg.key];
+    }
+    chain.push_back(next);
+  }
+}
+
+}  // namespace motostab::io

@@ -1,0 +1,19 @@
+#pragma once
+// Files written by `motostab study`: the seed paper's Figs. 9-12 with their data and scripts, and
+// a markdown report setting each finding of seed sec. 4 against this model.
+#include <filesystem>
+#include <string>
+
+#include "studies/study.h"
+
+namespace motostab::output {
+
+/// Writes DIR/study_modes.csv, DIR/weave_shapes.csv, fig09_root_locus, fig10_weave_real_part,
+/// fig11_weave_real_part_halved, fig12_weave_shapes (.gp/.png/.svg), each variant's
+/// eigenvalues.csv and summary.json under DIR/{nominal,halved}/VARIANT/, and DIR/report.md.
+void writeStudyOutputs(const std::filesystem::path& dir, const studies::StudyResult& study, const studies::StudyOptions& options);
+
+/// The markdown report alone (figures from calcStudyFindings, studies/study_findings.h).
+std::string makeStudyReport(const studies::StudyResult& study, const studies::StudyOptions& options);
+
+}  // namespace motostab::output

@@ -1,0 +1,116 @@
+#include "studies/study.h"
+
+#include <cmath>
+#include <future>
+#include <memory>
+
+namespace motostab::studies {
+
+using analysis::LinearModel;
+using analysis::LinearizeOptions;
+using analysis::ModeBranch;
+using analysis::Slot;
+using analysis::SweepOptions;
+using analysis::SweepResult;
+using analysis::TrimResult;
+using analysis::findBestMatch;
+using analysis::linearize;
+using analysis::restoreTrim;
+using analysis::runSweep;
+using analysis::updTrim;
+using scenario::Scenario;
+using scenario::loadScenario;
+using vehicle::VehicleModel;
+
+
+const ModeBranch* findBranch(const SweepResult& sweep, const std::string& label) {
+  for (const auto& b : sweep.branches)
+    if (b.label == label && b.eigenvalue.back().imag() >= 0) return &b;
+  return nullptr;
+}
+
+ModeShape calcWeaveShape(const VehicleModel& model, const SweepResult& sweep, double speed, const SweepOptions& opt) {
+  const ModeBranch* weave = findBranch(sweep, "weave");
+  if (!weave) throw std::runtime_error("no weave mode in the sweep");
+  size_t k = 0;
+  for (size_t i = 0; i < sweep.speeds.size(); ++i)
+    if (std::abs(sweep.speeds[i] - speed) < std::abs(sweep.speeds[k] - speed)) k = i;
+  TrimResult trim = restoreTrim(model, sweep.trims[k]);
+  updTrim(model, speed, opt.trim, trim);
+  LinearizeOptions lo = opt.linearize;
+  lo.removeYaw = sweep.models[k].findState("yaw") < 0 ? 1 : 0;
+  const LinearModel lin = linearize(model, trim, lo);
+  int e = findBestMatch(sweep.models[k], weave->index[k], lin);
+  if (lin.eigenvalues[e].imag() < 0) {  // the conjugate member: take the upper one
+    for (int j = 0; j < lin.eigenvalues.size(); ++j)
+      if (std::abs(lin.eigenvalues[j] - std::conj(lin.eigenvalues[e])) < 1e-9 * std::abs(lin.eigenvalues[e])) e = j;
+  }
+  ModeShape shape;
+  shape.speed = speed;
+  shape.eigenvalue = lin.eigenvalues[e];
+  const double w = model.getScenario().geometry.wheelbase;
+  auto component = [&](const std::string& state) -> std::complex<double> {
+    const int i = lin.findState(state);
+    return i < 0 ? 0.0 : lin.eigenvectors(i, e);
+  };
+  std::vector<std::pair<std::string, std::complex<double>>> parts{
+      {"roll", component("roll")}, {"yaw", component("yaw")}, {"steer", component("steer")},
+      {"lateral", component("vy") / shape.eigenvalue / w}};  // lateral displacement of the rear hub / wheelbase
+  for (const auto& st : lin.states)
+    if (st.entry.slot == Slot::Q && st.name.rfind("swingarm_", 0) == 0) parts.push_back({st.name, component(st.name)});
+  const std::complex<double> steerPhase = std::polar(1.0, -std::arg(component("steer")));
+  double largest = 0;
+  for (const auto& p : parts) largest = std::max(largest, std::abs(p.second));
+  for (const auto& [name, value] : parts) {
+    const std::complex<double> v = value * steerPhase;
+    shape.components.push_back({name, std::abs(v) / largest, std::arg(v) * 180 / M_PI});
+  }
+  return shape;
+}
+
+StudyResult runStudy(const std::string& file, const StudyOptions& opt) {
+  StudyResult out;
+  const Scenario base = loadScenario(file, opt.overrides);
+  out.scenario = base.name;
+  out.wheelbase = base.geometry.wheelbase;
+  // Each variant owns its model, so variants run in parallel safely.
+  struct Job {
+    std::vector<std::string> overrides;
+    bool halved;
+    std::string name;
+  };
+  std::vector<Job> jobs;
+  for (int halved = 0; halved < 2; ++halved)
+    for (const auto& v : opt.variants) {
+      std::vector<std::string> o = opt.overrides;
+      o.push_back("swingarm.compliance=" + v);
+      if (halved) {
+        o.push_back("swingarm.stiffness_scale=" + std::to_string(opt.stiffnessScale));
+        o.push_back("swingarm.damping_scale=" + std::to_string(opt.dampingScale));
+      }
+      jobs.push_back({o, halved == 1, v});
+    }
+  std::vector<SweepResult> results(jobs.size());
+  auto runJob = [&](size_t j) {
+    const VehicleModel model(loadScenario(file, jobs[j].overrides));
+    results[j] = runSweep(model, opt.sweep);
+  };
+  const int threads = std::max(1, opt.threads);
+  for (size_t start = 0; start < jobs.size(); start += threads) {
+    std::vector<std::future<void>> running;
+    for (size_t j = start; j < std::min(jobs.size(), start + threads); ++j)
+      running.push_back(std::async(std::launch::async, runJob, j));
+    for (auto& f : running) f.get();
+  }
+  for (size_t j = 0; j < jobs.size(); ++j)
+    (jobs[j].halved ? out.halved : out.nominal).push_back({jobs[j].name, jobs[j].overrides, std::move(results[j])});
+
+  for (const auto& v : out.nominal) {
+    if (v.name != opt.shapeVariant) continue;
+    const VehicleModel model(loadScenario(file, v.overrides));
+    for (double speed : opt.shapeSpeeds) out.weaveShapes.push_back(calcWeaveShape(model, v.sweep, speed, opt.sweep));
+  }
+  return out;
+}
+
+}  // namespace motostab::studies

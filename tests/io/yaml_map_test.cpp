@@ -1,0 +1,115 @@
+// The one strict YAML layer (io/yaml_map.h): duplicate keys, finite numbers, the relative-path
+// rule, and errors located by file:line:column and key path.
+#include <gtest/gtest.h>
+
+#include "tests/support/temp_dir.h"
+#include "tests/support/catch_input_error.h"
+
+#include <filesystem>
+#include <fstream>
+
+#include "io/yaml_map.h"
+
+namespace motostab::io {
+namespace {
+namespace fs = std::filesystem;
+
+std::string writeYaml(const std::string& name, const std::string& text) {
+  static const fs::path dir = makeTempDir("yaml_map");
+  fs::create_directories(dir);
+  const fs::path p = dir / name;
+  std::ofstream(p) << text;
+  return p.string();
+}
+
+using motostab::test::catchInputError;
+
+TEST(YamlMap, DuplicateKeysAnywhereAreRejectedAtTheSecond) {
+  struct Case {
+    std::string text, key;
+    int line, column, firstLine;
+  };
+  const std::vector<Case> cases{
+      {"a: 1\nb: 2\na: 3\n", "a", 3, 1, 1},
+      {"m:\n  x: 1\n  y: 2\n  x: 3\n", "m.x", 4, 3, 2},
+      {"l:\n  - {p: 1, q: 2}\n  - {p: 1, p: 2}\n", "l[1].p", 3, 12, 3},
+      {"m: {n: {k: 1, k: 1}}\n", "m.n.k", 1, 15, 1},
+  };
+  for (const auto& c : cases) {
+    const std::string file = writeYaml("dup.yaml", c.text);
+    const InputError e = catchInputError([&] { loadYamlFile(file); });
+    EXPECT_EQ(e.getLocation().key, c.key) << c.text;
+    EXPECT_EQ(e.getLocation().line, c.line) << c.text;
+    EXPECT_EQ(e.getLocation().column, c.column) << c.text;
+    EXPECT_NE(e.getReason().find("duplicate key (first given on line " + std::to_string(c.firstLine) + ")"),
+              std::string::npos)
+        << e.what();
+  }
+}
+
+TEST(YamlMap, DuplicateKeysInNodesBuiltElsewhere) {
+  // A map built outside loadYamlFile (an override value, a plugin section) is checked when opened.
+  const YAML::Node n = YAML::Load("{a: 1, a: 2}");
+  EXPECT_THROW(YamlMap(n, "x.yaml", "sec"), InputError);
+}
+
+TEST(YamlMap, NonScalarKeyIsAnError) {
+  const std::string file = writeYaml("key.yaml", "[1, 2]: 3\n");
+  const InputError e = catchInputError([&] { loadYamlFile(file); });
+  EXPECT_EQ(e.getLocation().line, 1);
+}
+
+TEST(YamlMap, NumbersMustBeFinite) {
+  for (const char* bad : {".nan", ".NaN", "nan", ".inf", "-.inf", "inf", "1e999", "0x10", "1_000", "'abc'", "[1]", "{a: 1}", "~"}) {
+    const std::string file = writeYaml("num.yaml", std::string("sec:\n  v: ") + bad + "\n  l: [1, 2]\n");
+    YamlMap root = loadYamlFile(file);
+    YamlMap sec = root.getMap("sec");
+    const InputError e = catchInputError([&] { sec.getDouble("v"); });
+    EXPECT_EQ(e.getLocation().key, "sec.v") << bad;
+    EXPECT_EQ(e.getLocation().line, 2) << bad;
+    EXPECT_EQ(e.getLocation().column, 3) << bad;
+  }
+  const std::string file = writeYaml("list.yaml", "l: [1, 2, .nan]\n");
+  YamlMap root = loadYamlFile(file);
+  const InputError e = catchInputError([&] { root.getDoubleList("l"); });
+  EXPECT_EQ(e.getLocation().key, "l[2]");
+  EXPECT_EQ(e.getLocation().column, 11);
+}
+
+TEST(YamlMap, RelativePathsAreRelativeToTheNamingFile) {
+  const std::string file = writeYaml("paths.yaml", "a: data/x.csv\nb: /abs/y.csv\nc: [../z.so, ./w.so]\n");
+  YamlMap m = loadYamlFile(file);
+  const fs::path dir = fs::path(file).parent_path();
+  EXPECT_EQ(m.getFilePath("a"), (dir / "data" / "x.csv").string());
+  EXPECT_EQ(m.getFilePath("b"), "/abs/y.csv");
+  const auto list = m.getFilePathList("c");
+  ASSERT_EQ(list.size(), 2u);
+  EXPECT_EQ(list[0], (dir.parent_path() / "z.so").string());
+  EXPECT_EQ(list[1], (dir / "w.so").string());
+  m.finish();
+}
+
+TEST(YamlMap, MapListsAreStrictPerElement) {
+  const std::string file = writeYaml("maps.yaml", "items:\n  - {name: a, v: 1}\n  - {name: b, w: 2}\n");
+  YamlMap root = loadYamlFile(file);
+  auto items = root.getMapList("items");
+  ASSERT_EQ(items.size(), 2u);
+  EXPECT_EQ(items[0].getDouble("v"), 1.0);
+  items[0].getString("name");
+  items[0].finish();
+  items[1].getString("name");
+  const InputError e = catchInputError([&] { items[1].finish(); });
+  EXPECT_EQ(e.getLocation().key, "items[1].w");
+  EXPECT_EQ(e.getLocation().line, 3);
+}
+
+TEST(YamlMap, OverrideValuesAreCheckedYaml) {
+  YAML::Node root = YAML::Load("a: {b: 1}");
+  EXPECT_THROW(applyOverride(root, "a.b=[1,"), InputError);
+  EXPECT_THROW(applyOverride(root, "a={c: 1, c: 2}"), InputError);
+  applyOverride(root, "a.b=2.5");
+  EXPECT_EQ(root["a"]["b"].as<double>(), 2.5);
+}
+
+}  // namespace
+}  // namespace motostab::io
