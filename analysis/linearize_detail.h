@@ -9,7 +9,7 @@
 #include "analysis/linearize.h"
 #include "analysis/state_function.h"
 
-namespace motostab::detail {
+namespace motostab::analysis::detail {
 
 using Direction = std::vector<std::pair<StateEntry, double>>;
 
@@ -79,4 +79,4 @@ bool isTrimSymmetric(const LinearizeContext& c, const ColumnGrouping& g, const L
 Eigen::VectorXd calcRowMirror(const LinearizeContext& c, const ColumnGrouping& g, const LinearModel& lin,
                               const std::vector<int>& linearIndexOf);
 
-}  // namespace motostab::detail
+}  // namespace motostab::analysis::detail

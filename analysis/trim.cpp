@@ -16,10 +16,6 @@ using vehicle::Input;
 using vehicle::VehicleModel;
 using vehicle::kNumInputs;
 
-using scenario::Scenario;
-using scenario::WheelSpec;
-using tyres::TorusContact;
-using tyres::calcTorusContact;
 
 namespace {
 std::string trimMessage(double speed, double residual, int iterations, double roll, const std::string& detail) {

@@ -2,7 +2,7 @@
 // Internal trim solvers shared by trim.cpp (Newton) and steady_turn.cpp (continuation in roll).
 #include "analysis/trim.h"
 
-namespace motostab::detail {
+namespace motostab::analysis::detail {
 
 // Newton's method from `res` (a warm start when `warm`, else the default state) to the trim at `speed`
 // (trim.cpp).
@@ -11,4 +11,4 @@ void solveTrim(const vehicle::VehicleModel& model, double speed, const TrimOptio
 // A turn from `res` to opt.roll in roll steps, then the turn with opt's condition (steady_turn.cpp).
 void continueTurn(const vehicle::VehicleModel& model, double speed, const TrimOptions& opt, TrimResult& res);
 
-}  // namespace motostab::detail
+}  // namespace motostab::analysis::detail

@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "diagnosis/physical_candidates.h"
+#include "diagnosis/priors.h"
 #include "io/csv.h"
 #include "scenario/parameter_paths.h"
 
@@ -166,9 +167,12 @@ bool isMeasured(const ScalarParameter& p, const std::vector<std::pair<std::strin
 }
 
 // Bounds keep the vehicle physical: masses, inertias and positive lengths stay above a tenth of their
-// value; everything within 30 sigma (and within a factor 5 of positive masses and inertias).
-Candidate makeParameterCandidate(const ScalarParameter& p, double sigma) {
-  CandidateParameter c = makeFreeParameter("value", p.path, p.value - 30 * sigma, p.value + 30 * sigma, p.value, 1e-3 * sigma);
+// value; a measured parameter within kParameterRangeSigmas sigma (room for a gross error), one with the
+// default sigma within 30 (already wide: 30 % of a mass, 30 deg); and within a factor 5 of positive masses
+// and inertias.
+Candidate makeParameterCandidate(const ScalarParameter& p, double sigma, bool measured = false) {
+  const double range = (measured ? kParameterRangeSigmas : 30) * sigma;
+  CandidateParameter c = makeFreeParameter("value", p.path, p.value - range, p.value + range, p.value, 1e-3 * sigma);
   const bool positive = p.value > 0 && (p.kind == ParameterKind::Mass || p.kind == ParameterKind::Inertia ||
                                         (p.kind == ParameterKind::Length && p.path.find("com_m") == std::string::npos &&
                                          p.path.find("pivot") == std::string::npos));
@@ -220,7 +224,7 @@ std::vector<Candidate> listCandidates(const YAML::Node& tree,
   addPhysicalCandidates(tree, out);
   for (const ScalarParameter& p : listScalarParameters(tree)) {
     const double sigma = findSigma(p, uncertainty);
-    if (sigma > 0) out.push_back(makeParameterCandidate(p, sigma));
+    if (sigma > 0) out.push_back(makeParameterCandidate(p, sigma, isMeasured(p, uncertainty)));
     if (sigma > 0) out.back().parameters[0].priorMeasured = isMeasured(p, uncertainty);
   }
   return out;

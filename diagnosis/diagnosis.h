@@ -5,19 +5,17 @@
 // Residuals r = (measured - predicted) / sigma: per eigenvalue row its real part and, for a complex
 // pair, its imaginary part; per response signal each sample. sigma is the row's stderr or the
 // signal's noise_std when given, else one per component (mode.real, mode.imag, run.column) estimated
-// at each step from the best candidate's fit (RSS / (n - k)), not the baseline's. chi2 = sum r^2 plus
-// the priors (Student-t, diagnosis/priors.h) of fitted scenario parameters; response signals whose
-// noise is estimated are prewhitened by their AR(p) noise (diagnosis/noise_model.h). Models are compared by their
-// deviance -2 ln L, in which the noise of each unestimated component is profiled out for that model
-// (n_c ln(RSS_c / n_c)): a candidate is never judged with the noise fitted to another model's
-// residuals, which with a few rows per component lets a flexible model trade misfit between
-// components. BIC = deviance + k ln n (Schwarz 1978), k = fitted parameters including the responses' initial
-// states, offsets and free gains. Likelihood ratio: deviance_base - deviance_cand against chi-square with as
-// many degrees of freedom as the candidate adds, halved (the 50:50 mixture of chi2_0 and chi2_1, Self
-// & Liang 1987) when "effect off" sits at a bound. Cross-validation: the measurement units
+// for each model from its own residuals, response signals as AR(p) noise that prewhitens them
+// (diagnosis/noise_model.h), fit and noise alternating (diagnosis/model_fit.h). chi2 = sum r^2 plus the
+// priors (Student-t, diagnosis/priors.h) of fitted scenario parameters. Models are compared by their
+// deviance -2 ln L with each unestimated component's noise profiled out (n_c ln(RSS_c / n_c)), each
+// at its own maximised likelihood. BIC = deviance + k ln n (Schwarz 1978), k = fitted parameters
+// including the responses' initial states, offsets, free gains and AR coefficients. Likelihood ratio,
+// criteria and look-alikes: diagnosis/cause_criteria.h; the search: diagnosis/stepwise_search.h and
+// diagnosis/pair_search.h; robustness: diagnosis/robustness.h. Cross-validation: the measurement units
 // (eigenvalue rows and response runs) sorted by speed and cut into K blocks; each block is predicted
 // from a fit to the others (every parameter refitted; a run's initial state, offsets and gains are
-// fitted on the run itself), for every candidate of the first step.
+// fitted on the run itself).
 #include <functional>
 #include <string>
 #include <vector>
@@ -45,6 +43,11 @@ struct DiagnosisOptions {
   /// A candidate meeting every criterion whose change of the residuals correlates with the named
   /// cause's above this is listed with it as indistinguishable (swingarm bending vs twist).
   double maxPredictionCorrelation = 0.95;
+  /// Cross-validate every first-step candidate for the report's table, also those failing a cheaper
+  /// criterion (false: only those meeting the others, as in later steps; the causes do not change).
+  bool candidateTableCv = true;
+  /// When no single candidate qualifies, search pairs of the best singles (diagnosis/pair_search.h).
+  bool pairSearch = true;
   /// Rerun the stepwise search on each variant of the data (diagnosis/robustness.h).
   bool robustness = false;
 };
@@ -67,6 +70,8 @@ struct FitSummary {
   std::vector<ParameterEstimate> parameters;  ///< the candidate's own
   std::vector<ParameterEstimate> allParameters;  ///< causes' and candidate's
   Eigen::MatrixXd correlation;                ///< of all fitted parameters
+  /// rms: of the normalised data residuals, in the step baseline's noise (candidates) or the extended
+  /// model's (baseline and extended of the result), so that RMS values compared share one noise.
   double chi2 = 0, rms = 0, cvRms = 0, bic = 0, deltaBic = 0, pValue = 1;
   double deviance = 0;                        ///< -2 ln L, unknown noise profiled out (FitProblem::calcDeviance)
   std::vector<double> foldRms;                ///< per fold
@@ -80,6 +85,9 @@ struct FitSummary {
   /// Moves a measured parameter by more than kContradictionSigmas sigma (diagnosis/priors.h).
   bool contradictsMeasurement = false;
   Eigen::VectorXd x;                          ///< internal coordinates
+  NoiseState noise;                           ///< the model's own noise estimate (diagnosis/model_fit.h)
+  int numNoiseParameters = 0;                 ///< AR coefficients of that noise (counted in numParameters)
+  std::vector<std::string> members;           ///< a pair's two candidates (diagnosis/pair_search.h); else empty
 };
 
 struct ComponentResidual {   ///< residuals of one mode (eigenvalues) or signal (responses)
@@ -105,12 +113,24 @@ struct NoiseLevel {
 };
 
 /// The causes the stepwise search names on one variant of the data (diagnosis/robustness.h).
+/// How a rerun's first cause compares with the full data's (diagnosis/robustness.h).
+enum class RobustnessVerdict {
+  Same,               ///< the same first cause, its values consistent within their intervals
+  LostPower,          ///< names nothing where the full data named a cause: less data, not a contradiction
+  Indistinguishable,  ///< names a candidate the full data listed as indistinguishable from its cause
+  OtherCause,         ///< names another cause (or one where the full data named none): fragile
+  ValueDiffers,       ///< the same cause with a value outside the intervals of the full data's: fragile
+  Failed              ///< the search failed on this variant: no verdict
+};
+
+/// The causes the stepwise search names on one variant of the data (diagnosis/robustness.h).
 struct RobustnessRun {
   std::string leftOut;
   std::vector<std::string> causes;          ///< names, in the order named
   std::vector<FitSummary> fits;             ///< their fits (estimates before the final refit)
-  bool sameCauses = false;                  ///< the same causes as on all the data
+  RobustnessVerdict verdict = RobustnessVerdict::Same;
   std::string error;                        ///< the search failed on this variant (then causes is empty)
+  bool isFragile() const { return verdict == RobustnessVerdict::OtherCause || verdict == RobustnessVerdict::ValueDiffers; }
 };
 
 struct DiagnosisResult {
@@ -120,11 +140,12 @@ struct DiagnosisResult {
   FitSummary baseline, extended;               ///< the base model and the model with every cause
   std::vector<FitSummary> candidates;          ///< first step's, best (lowest BIC) first
   std::vector<Cause> causes;
+  std::vector<FitSummary> pairs;               ///< the pair search's fits, when it ran (diagnosis/pair_search.h)
   /// Candidates that met every criterion but "fit, but contradict the measurement" and were not
   /// named (diagnosis/priors.h), with the step they were found at.
   std::vector<FitSummary> contradicting;
   std::vector<RobustnessRun> robustness;      ///< empty unless DiagnosisOptions::robustness
-  /// Some variant names other causes (or fails): the causes are fragile.
+  /// Some variant names another first cause, or the same with an inconsistent value (robustness.h).
   bool isFragile() const;
   std::vector<ComponentResidual> residualsBefore, residualsAfter;
   std::vector<NoiseLevel> noise;
@@ -135,6 +156,9 @@ struct DiagnosisResult {
   std::vector<double> observed;                ///< per observation
   std::vector<std::string> observationComponent;
   std::vector<double> predictedBefore, predictedAfter;  ///< per observation
+  /// Per observation: the normalised residual the likelihood sees (a response sample's prewhitened one
+  /// over the innovation sigma; diagnosis/residual_summary.h), before and after.
+  std::vector<double> whitenedBefore, whitenedAfter;
   std::vector<double> observationSpeed;               ///< m/s
   std::vector<double> observationTime;                ///< s (responses), NaN for eigenvalues
   std::vector<int> observationRow, observationPart;   ///< eigenvalue row (-1: response) and part (0 real, 1 imag)

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numeric>
+#include <stdexcept>
 
 #include "diagnosis/priors.h"
 #include "scenario/parameter_paths.h"
@@ -56,6 +57,20 @@ Eigen::VectorXd ModelSpec::calcPriorResiduals(const Eigen::VectorXd& x) const {
   for (size_t i = 0; i < ps.size(); ++i)
     if (ps[i]->priorSigma > 0) r.push_back(calcPriorResidual(getValue(static_cast<int>(i), x), ps[i]->priorMean, ps[i]->priorSigma));
   return Eigen::Map<Eigen::VectorXd>(r.data(), static_cast<int>(r.size()));
+}
+
+void FitProblem::setNoise(const NoiseState& n) {
+  if (n.sigma.size() != components.size() || n.ar.size() != components.size())
+    throw std::logic_error("FitProblem::setNoise: " + std::to_string(n.sigma.size()) + " sigmas for " +
+                           std::to_string(components.size()) + " components");
+  componentSigma = n.sigma, componentAr = n.ar;
+}
+
+int FitProblem::countNoiseParameters() const {
+  int k = 0;
+  for (size_t c = 0; c < components.size(); ++c)
+    if (!componentKnown[c] && seriesLength[c] > 0) k += componentAr[c].getOrder();
+  return k;
 }
 
 FitProblem::FitProblem(const Predictor& predictor, const MeasuredData& data, int folds)

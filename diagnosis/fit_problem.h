@@ -48,7 +48,7 @@ class FitProblem {
   std::vector<double> componentSigma;    ///< current sigma of each component (unknown ones estimated)
   std::vector<bool> componentKnown;
   /// AR noise of each component (order 0: white). Response signals whose noise is estimated carry the
-  /// AR(p) fitted to the best fit's residuals (noise_model.h); their componentSigma is then the
+  /// AR(p) fitted to the residuals of the model being scored (noise_model.h, model_fit.h); their componentSigma is then the
   /// innovation sigma. Eigenvalue rows and signals with a given noise_std are white.
   std::vector<ArNoise> componentAr;
   /// First observation and length of each component's time series (response signals; -1, 0 otherwise).
@@ -85,6 +85,12 @@ class FitProblem {
   /// component its sigma (RSS / n times n / (n - k)).
   void updateNoise(const Eigen::VectorXd& e, int k);
   const MeasuredData& getData() const { return data_; }
+  NoiseState getNoise() const { return {componentSigma, componentAr}; }
+  /// Takes `n` (one entry per component: throws std::logic_error otherwise).
+  void setNoise(const NoiseState& n);
+  /// AR coefficients estimated from the data (sum of the orders of the estimated series): parameters
+  /// of the noise model that BIC counts, since models may choose different orders.
+  int countNoiseParameters() const;
 
  private:
   void addEigenvalueObservations();

@@ -16,7 +16,7 @@ struct MeasuredEigenvalue {
   bool hasRange = false;
   std::string mode;            ///< motostab label (weave, capsize, ...) or empty: the nearest eigenvalue
   double real = 0, imag = 0;   ///< 1/s, rad/s
-  double realStderr = 0, imagStderr = 0;  ///< 0: unknown (estimated from the best fit's residuals)
+  double realStderr = 0, imagStderr = 0;  ///< 0: unknown (estimated per model from its residuals)
   io::InputLocation where;         ///< file and line of the row
   /// `steer_controller.*` overrides in force for this row (its file's `controller:` mapping, then its
   /// `steer_controller.<key>` columns); empty: the scenario's own controller.
@@ -34,7 +34,7 @@ struct ResponseSignal {
   Quantity quantity = Quantity::RollRate;
   bool freeScale = false; ///< uncalibrated: a gain is fitted (else the column is in rad or rad/s)
   double scale = 1;       ///< calibrated: factor to rad or rad/s
-  double noiseStd = 0;    ///< in the column's unit; 0: estimated from the best fit's residuals
+  double noiseStd = 0;    ///< in the column's unit; 0: estimated per model from its residuals
   std::vector<double> values;  ///< samples in the window, column unit
 };
 

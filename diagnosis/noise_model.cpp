@@ -33,6 +33,17 @@ double ArNoise::calcLogDeterminant() const {
   return sum;
 }
 
+double NoiseState::calcChange(const NoiseState& o) const {
+  double change = 0;
+  for (size_t c = 0; c < sigma.size() && c < o.sigma.size(); ++c) change = std::max(change, std::abs(std::log(sigma[c] / o.sigma[c])));
+  for (size_t c = 0; c < ar.size() && c < o.ar.size(); ++c) {
+    if (ar[c].getOrder() != o.ar[c].getOrder()) return std::max(change, 1.0);
+    for (int j = 0; j < ar[c].getOrder(); ++j)
+      change = std::max(change, std::abs(std::atanh(ar[c].reflection[j]) - std::atanh(o.ar[c].reflection[j])));
+  }
+  return change;
+}
+
 ArNoise fitArNoise(const double* e, int n, double* innovationVariance, int maxOrder) {
   ArNoise best;
   double v = 0;

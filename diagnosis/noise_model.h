@@ -33,6 +33,17 @@ struct ArNoise {
   int getOrder() const { return static_cast<int>(reflection.size()); }
 };
 
+/// The noise of every component of a diagnosis' fit problem for one model: each unknown component's
+/// sigma (the innovation sigma of AR ones) and each response series' AR noise (order 0 elsewhere).
+/// Each model is scored with its own (diagnosis/model_fit.h).
+struct NoiseState {
+  std::vector<double> sigma;
+  std::vector<ArNoise> ar;
+  /// Largest change from `o`: |ln sigma ratio| and |atanh k - atanh k'| of the reflection coefficients
+  /// (atanh: a change near |k| = 1 weighs as it does in the likelihood); an order change counts 1.
+  double calcChange(const NoiseState& o) const;
+};
+
 /// Burg estimate of AR(p) noise from a residual series (mean not removed: the fits hold an offset),
 /// order by the Schwarz criterion up to min(kMaxArOrder, n / 10); `innovationVariance` gets v_p
 /// (the series' unit squared). A series shorter than 20 samples gets p = 0.

@@ -27,23 +27,11 @@ void addTyreCrown(const YAML::Node& tree, std::vector<Candidate>& out) {
   out.push_back({"tyre_crown", {}, {p}});
 }
 
-void addSteerFriction(const YAML::Node& tree, const std::vector<Candidate>& out, std::vector<Candidate>& added) {
-  if (tree["steer_damper"]) return;
-  for (const auto& c : out)
-    if (c.name == "steer_damper") {
-      Candidate f = c;
-      f.name = "steer_friction";
-      f.parameters[0].name = "equivalent_damping_Nms_per_rad";
-      added.push_back(f);
-    }
-}
-
 }  // namespace
 
 void addPhysicalCandidates(const YAML::Node& tree, std::vector<Candidate>& out) {
   std::vector<Candidate> added;
   addTyreCrown(tree, added);
-  addSteerFriction(tree, out, added);
   out.insert(out.end(), added.begin(), added.end());
 }
 

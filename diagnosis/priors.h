@@ -18,7 +18,10 @@
 // evidence is overwhelming, i.e. its BIC is at least kOverwhelmingBic below that of the best
 // alternative (the baseline, or the best candidate meeting every criterion without contradicting a
 // measurement): posterior odds of e^(kOverwhelmingBic / 2) (Kass & Raftery 1995, JASA 90:773, sect. 3.2:
-// a BIC difference above 10 is already "very strong").
+// a BIC difference above 10 is already "very strong"). A contradicting fit whose only unmet criterion is
+// an estimate held at the bound of its search range (kParameterRangeSigmas sigma: a gross error beyond
+// even that) is reported as contradicting too, never dropped silently. The rule reads the point
+// estimate: a change the data put beyond 3 sigma is reported, however wide its interval.
 #include <vector>
 
 #include "diagnosis/diagnosis.h"
@@ -28,6 +31,12 @@ namespace motostab::diagnosis {
 constexpr double kPriorNu = 4;              ///< Student-t degrees of freedom of every prior
 constexpr double kContradictionSigmas = 3;  ///< a named change beyond this many sigma of a measured value contradicts it
 constexpr double kOverwhelmingBic = 40;     ///< BIC lead that lets a contradicting candidate be named
+/// Half-width of a measured scenario parameter's search range in its sigmas (candidates.cpp): wide enough for a
+/// gross error (a 40-sigma wheelbase) to be fitted; the t prior costs 5 ln(1 + z^2 / 5) = 38 there.
+constexpr double kParameterRangeSigmas = 100;
+
+/// True when some estimate moves a measured parameter by more than kContradictionSigmas sigma.
+bool contradictsMeasurement(const std::vector<ParameterEstimate>& estimates);
 
 /// Least-squares residual sign(z) sqrt(eq. 1) of the Student-t prior, z = (value - mean) / sigma.
 double calcPriorResidual(double value, double mean, double sigma);
@@ -39,7 +48,7 @@ bool isOverwhelming(double contradicting, double alternative);
 /// The cause of a step among `fits` (judged: `failed` empty means every criterion is met): the lowest
 /// BIC among those that contradict no measurement, unless a contradicting one is overwhelming (then
 /// the lowest-BIC such one). -1: none. `contradicting` gets the indices of the contradicting ones
-/// that met every criterion and were not named.
+/// that met every criterion (but the bound of the search range) and were not named.
 int pickCause(const std::vector<FitSummary>& fits, double baselineBic, std::vector<int>* contradicting);
 
 }  // namespace motostab::diagnosis

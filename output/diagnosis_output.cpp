@@ -7,6 +7,7 @@
 #include "io/atomic_file.h"
 #include "io/csv.h"
 #include "io/plot.h"
+#include "diagnosis/robustness.h"
 
 namespace motostab::output {
 
@@ -110,11 +111,13 @@ json makeDiagnosisJson(const DiagnosisResult& r) {
   for (const auto& run : r.robustness) {
     json causes = json::array();
     for (const auto& f : run.fits) causes.push_back({{"name", f.name}, {"parameters", makeParameters(f.parameters)}});
-    json e{{"left_out", run.leftOut}, {"causes", causes}, {"same_causes", run.sameCauses}};
+    json e{{"left_out", run.leftOut}, {"causes", causes}, {"verdict", getVerdictName(run.verdict)}, {"fragile", run.isFragile()}};
     if (!run.error.empty()) e["error"] = run.error;
     j["robustness"].push_back(e);
   }
   if (!r.robustness.empty()) j["fragile"] = r.isFragile();
+  j["pairs"] = json::array();
+  for (const auto& p : r.pairs) j["pairs"].push_back(makeFit(p));
   j["contradicts_measurement"] = json::array();
   for (const auto& c : r.contradicting) j["contradicts_measurement"].push_back(makeFit(c));
   const double factor = r.extended.cvRms > 0 ? r.baseline.cvRms / r.extended.cvRms : 0.0;
@@ -154,8 +157,9 @@ std::string makeDataSection(const DiagnosisResult& r) {
   const MeasuredData& d = *r.data;
   o << "## The data\n\n`" << d.file << "` (" << d.name << "): " << d.eigenvalues.size() << " eigenvalue rows, "
     << d.responses.size() << " response runs; " << r.numObservations << " scalar observations, " << r.numFolds
-    << " cross-validation folds.\n\nNoise (sigma per component; estimated ones from the best fit's residuals; a response "
-    << "signal's residuals as AR(p) noise, sigma its innovations', prewhitened in every fit):\n\n"
+    << " cross-validation folds.\n\nNoise (sigma per component; estimated ones are the extended model's, each "
+    << "model being scored with its own estimate; a response signal's residuals as AR(p) noise, sigma its "
+    << "innovations', prewhitened in every fit; the RMS values below are of the whitened residuals):\n\n"
     << "| component | sigma | source | AR coefficients | marginal sigma |\n|---|---|---|---|---|\n";
   for (const auto& n : r.noise) {
     std::string ar;
@@ -170,7 +174,7 @@ std::string makeResidualSection(const DiagnosisResult& r) {
   std::ostringstream o;
   o << "\n## What the model gets wrong\n\nBase scenario `" << r.scenarioFile << "`: RMS " << fmt(r.baseline.rms)
     << " (normalised), chi2 " << fmt(r.baseline.chi2) << ", BIC " << fmt(r.baseline.bic) << ".\n\n"
-    << "| component | n | mean residual (measured - model) | RMS / sigma | trend per m/s (p) | VAF % |\n|---|---|---|---|---|---|\n";
+    << "| component | n | mean residual (measured - model) | RMS / sigma (whitened) | trend per m/s (p) | VAF % |\n|---|---|---|---|---|---|\n";
   for (const auto& c : r.residualsBefore) {
     o << "| " << c.name << " | " << c.count << " | " << fmt(c.meanReal) << " | " << fmt(c.rmsReal) << " | ";
     o << (c.slopeStderr > 0 ? fmt(c.slopeRealPerMps) + " (" + fmt(c.slopeP, 2) + ")" : "-") << " | ";
@@ -230,6 +234,21 @@ std::string makeCauseSection(const DiagnosisResult& r) {
   return o.str();
 }
 
+std::string makePairSection(const DiagnosisResult& r) {
+  if (r.pairs.empty()) return "";
+  std::ostringstream o;
+  o << "\n## Pairs\n\nNo single candidate met every criterion, so pairs of the best singles (by deviance gain) were "
+       "fitted together, for effects that partly cancel. A pair must meet the criteria of a cause and need both "
+       "members (each alone explains significantly less).\n\n| pair | parameters | delta BIC | p | unmet criteria |\n|---|---|---|---|---|\n";
+  for (const auto& p : r.pairs) {
+    std::string failed;
+    for (const auto& f : p.failed) failed += (failed.empty() ? "" : "; ") + f;
+    o << "| " << p.name << " | " << makeParameterText(p.parameters) << " | " << fmt(p.deltaBic) << " | " << fmt(p.pValue, 2)
+      << " | " << (failed.empty() ? "none" : failed) << " |\n";
+  }
+  return o.str();
+}
+
 std::string makeContradictionSection(const DiagnosisResult& r) {
   if (r.contradicting.empty()) return "";
   std::ostringstream o;
@@ -250,13 +269,15 @@ std::string makeRobustnessSection(const DiagnosisResult& r) {
   o << "\n## Robustness\n\nThe stepwise search rerun on other preparations of the same data (each source left out, "
        "speed ranges taken at their mid speeds). On all the data: "
     << (named.empty() ? "no cause" : named) << ". "
-    << (r.isFragile() ? "**Fragile**: some preparation names something else." : "Robust: every preparation names the same.")
-    << "\n\n| left out | causes named | same |\n|---|---|---|\n";
+    << (r.isFragile() ? "**Fragile**: some preparation names another first cause, or the same with an inconsistent value."
+                      : "Not fragile: no preparation names another first cause or an inconsistent value.")
+    << " (Verdicts: same; lost power = names nothing with less data; indistinguishable = names a look-alike the "
+       "full data listed; other cause; value differs; failed.)\n\n| left out | causes named | verdict |\n|---|---|---|\n";
   for (const auto& run : r.robustness) {
     std::string causes;
     for (const auto& f : run.fits) causes += (causes.empty() ? "" : "; ") + f.name + " (" + makeParameterText(f.parameters) + ")";
     if (!run.error.empty()) causes = "search failed: " + run.error;
-    o << "| " << run.leftOut << " | " << (causes.empty() ? "none" : causes) << " | " << (run.sameCauses ? "yes" : "no") << " |\n";
+    o << "| " << run.leftOut << " | " << (causes.empty() ? "none" : causes) << " | " << getVerdictName(run.verdict) << " |\n";
   }
   return o.str();
 }
@@ -269,7 +290,7 @@ std::string makeGainSection(const DiagnosisResult& r) {
   const double factor = r.extended.cvRms > 0 ? r.baseline.cvRms / r.extended.cvRms : 0.0;
   o << "\n## The gain\n\nRMS (normalised) " << fmt(r.baseline.rms) << " -> " << fmt(r.extended.rms) << "; cross-validated "
     << fmt(r.baseline.cvRms) << " -> " << fmt(r.extended.cvRms) << " (factor " << fmt(factor, 3) << ").\n\n"
-    << "| component | RMS / sigma before | after | VAF % before | after |\n|---|---|---|---|---|\n";
+    << "| component | RMS / sigma (whitened) before | after | VAF % before | after |\n|---|---|---|---|---|\n";
   for (size_t k = 0; k < r.residualsAfter.size(); ++k) {
     const auto& a = r.residualsAfter[k];
     const bool run = a.name.rfind("run", 0) == 0;
@@ -281,11 +302,12 @@ std::string makeGainSection(const DiagnosisResult& r) {
 
 std::string makeResidualCsv(const DiagnosisResult& r) {
   CsvWriter w({"component", "speed_mps", "time_s", "measured", "sigma", "predicted_before", "predicted_after",
-               "residual_before", "residual_after"});
+               "residual_before", "residual_after", "whitened_before", "whitened_after"});
   for (size_t i = 0; i < r.observed.size(); ++i)
     w.beginRow().add(r.observationComponent[i]).add(r.observationSpeed[i]).add(r.observationTime[i]).add(r.observed[i])
         .add(r.sigma[i]).add(r.predictedBefore[i]).add(r.predictedAfter[i])
-        .add((r.observed[i] - r.predictedBefore[i]) / r.sigma[i]).add((r.observed[i] - r.predictedAfter[i]) / r.sigma[i]);
+        .add((r.observed[i] - r.predictedBefore[i]) / r.sigma[i]).add((r.observed[i] - r.predictedAfter[i]) / r.sigma[i])
+        .add(i < r.whitenedBefore.size() ? r.whitenedBefore[i] : 0.0).add(i < r.whitenedAfter.size() ? r.whitenedAfter[i] : 0.0);
   return w.getText();
 }
 
@@ -351,7 +373,7 @@ void writeResponsePlots(const std::filesystem::path& dir, const DiagnosisResult&
 
 std::string makeDiagnosisReport(const DiagnosisResult& r) {
   return "# Diagnosis of " + r.scenarioFile + " against " + r.data->name + "\n\n" + makeDataSection(r) +
-         makeResidualSection(r) + makeCandidateSection(r) + makeCauseSection(r) + makeContradictionSection(r) +
+         makeResidualSection(r) + makeCandidateSection(r) + makePairSection(r) + makeCauseSection(r) + makeContradictionSection(r) +
          makeRobustnessSection(r) + makeGainSection(r);
 }
 

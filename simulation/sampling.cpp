@@ -13,7 +13,6 @@ using vehicle::Input;
 using vehicle::VehicleModel;
 
 using SimTK::State;
-using SimTK::Vec3;
 
 std::vector<std::string> listColumns(const VehicleModel& model, const SimulationOptions& opt) {
   std::vector<std::string> columns{"time"};

@@ -25,13 +25,8 @@ using scenario::calcMassSummary;
 using vehicle::ModelExtension;
 using vehicle::VehicleModel;
 
-using analysis::StateFunction;
-using analysis::chooseDependentColumns;
-using vehicle::CoordinateIndices;
-using vehicle::Input;
 
 using SimTK::State;
-using SimTK::Vec3;
 
 namespace {
 

@@ -37,7 +37,6 @@ using scenario::rethrowNamingOverride;
 using SimTK::MobilizedBody;
 using SimTK::Rotation;
 using SimTK::Transform;
-using SimTK::UnitVec3;
 using SimTK::Vec3;
 
 namespace {

@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 
 #include <Eigen/Dense>
+#include <algorithm>
 #include <cmath>
 
 #include "core/portable_random.h"
@@ -79,6 +80,22 @@ TEST(NoiseModel, WhiteningIsTheExactAr2Likelihood) {
   EXPECT_NEAR(ww, quad, 1e-10 * quad);
   EXPECT_NEAR(ar.calcLogDeterminant(), logDet, 1e-10);
   EXPECT_NEAR(ar.calcMarginalFactor(), std::sqrt(gamma0), 1e-12);
+}
+
+// The convergence measure of the per-model noise iteration (diagnosis/model_fit.h): the largest
+// |ln sigma ratio| or |atanh k - atanh k'|, an order change counting 1; values drawn.
+TEST(NoiseModel, NoiseStateChangeIsTheLargestLogSigmaOrAtanhStep) {
+  PortableRandom rng(77);
+  for (int i = 0; i < 20; ++i) {
+    const double s1 = rng.drawUniform(0.1, 2), s2 = rng.drawUniform(0.1, 2), k1 = rng.drawUniform(0.8, 0.98), k2 = rng.drawUniform(0.8, 0.98);
+    ArNoise a, b;
+    a.reflection = {k1}, b.reflection = {k2};
+    const NoiseState x{{1.0, s1}, {ArNoise(), a}}, y{{1.0, s2}, {ArNoise(), b}};
+    const double expected = std::max(std::abs(std::log(s1 / s2)), std::abs(0.5 * std::log((1 + k1) / (1 - k1)) - 0.5 * std::log((1 + k2) / (1 - k2))));
+    EXPECT_NEAR(x.calcChange(y), expected, 1e-12);
+    const NoiseState white{{1.0, s1}, {ArNoise(), ArNoise()}};
+    EXPECT_GE(x.calcChange(white), 1.0);
+  }
 }
 
 }  // namespace

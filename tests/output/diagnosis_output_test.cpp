@@ -64,7 +64,7 @@ Made makeResult(PortableRandom& rng, bool withRobustness) {
   const double c = rng.drawUniform(0.1, 1);
   Cause cause{makeFit("steer_damper", "damping_Nms_per_rad", c, 0.01, -30), {}};
   cause.fit.parameters[0].hasProfile = true, cause.fit.parameters[0].profileLow = c - 0.02, cause.fit.parameters[0].profileHigh = c + 0.02;
-  cause.indistinguishable.push_back(makeFit("steer_friction", "equivalent_damping_Nms_per_rad", c, 0.01, -30));
+  cause.indistinguishable.push_back(makeFit("fork_compliance", "stiffness_Nm_per_rad", 1000 * c, 10, -30));
   r.causes.push_back(cause);
   r.candidates = {cause.fit};
   FitSummary contra = makeFit("parameter:geometry.trail_m", "value", 0.09, 0.001, -20);
@@ -74,8 +74,8 @@ Made makeResult(PortableRandom& rng, bool withRobustness) {
   r.noise.push_back({"weave.real", 0.1, true, {}, 0.1});
   r.noise.push_back({"weave.imag", 0.2, true, {0.9}, 0.2 / std::sqrt(1 - 0.81)});
   if (withRobustness) {
-    RobustnessRun same{"eigenvalues: a.csv", {"steer_damper"}, {cause.fit}, true, ""};
-    RobustnessRun other{"speed ranges -> mid speeds", {"parameter:geometry.trail_m"}, {contra}, false, ""};
+    RobustnessRun same{"eigenvalues: a.csv", {"steer_damper"}, {cause.fit}, RobustnessVerdict::Same, ""};
+    RobustnessRun other{"speed ranges -> mid speeds", {"parameter:geometry.trail_m"}, {contra}, RobustnessVerdict::OtherCause, ""};
     r.robustness = {same, other};
   }
   for (int i = 0; i < 4; ++i) {
@@ -84,6 +84,7 @@ Made makeResult(PortableRandom& rng, bool withRobustness) {
     r.sigma.push_back(rng.drawUniform(0.05, 0.2));
     r.predictedBefore.push_back(r.observed.back() + rng.drawNormal(0, 0.3));
     r.predictedAfter.push_back(r.observed.back() + rng.drawNormal(0, 0.1));
+    r.whitenedBefore.push_back(rng.drawNormal()), r.whitenedAfter.push_back(rng.drawNormal());
     r.observationComponent.push_back(part ? "weave.imag" : "weave.real");
     r.observationSpeed.push_back(m.data.eigenvalues[row].speed);
     r.observationTime.push_back(std::nan(""));
@@ -102,7 +103,9 @@ TEST(DiagnosisOutput, JsonHoldsTheCausesNoiseContradictionsAndRobustness) {
   EXPECT_EQ(j["causes"][0]["name"], "steer_damper");
   EXPECT_DOUBLE_EQ(j["causes"][0]["parameters"]["damping_Nms_per_rad"]["value"].get<double>(), m.result.causes[0].fit.parameters[0].value);
   EXPECT_EQ(j["causes"][0]["parameters"]["damping_Nms_per_rad"]["profile_interval_95"].size(), 2u);
-  EXPECT_EQ(j["causes"][0]["indistinguishable"][0]["name"], "steer_friction");
+  EXPECT_EQ(j["causes"][0]["indistinguishable"][0]["name"], "fork_compliance");  // named with its value
+  EXPECT_DOUBLE_EQ(j["causes"][0]["indistinguishable"][0]["parameters"]["stiffness_Nm_per_rad"]["value"].get<double>(),
+                   m.result.causes[0].indistinguishable[0].parameters[0].value);
   EXPECT_EQ(j["contradicts_measurement"][0]["name"], "parameter:geometry.trail_m");
   EXPECT_DOUBLE_EQ(j["contradicts_measurement"][0]["parameters"]["value"]["change_in_sigmas"].get<double>(), 20);
   EXPECT_DOUBLE_EQ(j["noise"]["weave.imag"]["ar"][0].get<double>(), 0.9);
@@ -110,7 +113,9 @@ TEST(DiagnosisOutput, JsonHoldsTheCausesNoiseContradictionsAndRobustness) {
   ASSERT_EQ(j["robustness"].size(), 2u);
   EXPECT_EQ(j["robustness"][0]["left_out"], "eigenvalues: a.csv");
   EXPECT_EQ(j["robustness"][1]["causes"][0]["name"], "parameter:geometry.trail_m");
-  EXPECT_EQ(j["robustness"][1]["same_causes"], false);
+  EXPECT_EQ(j["robustness"][1]["verdict"], "other cause");
+  EXPECT_EQ(j["robustness"][1]["fragile"], true);
+  EXPECT_EQ(j["robustness"][0]["fragile"], false);
   EXPECT_EQ(j["fragile"], true);
   EXPECT_NEAR(j["gain"]["factor"].get<double>(), 2.2 / 1.1, 1e-12);
 }
@@ -124,7 +129,7 @@ TEST(DiagnosisOutput, ReportHasItsSections) {
                               "## Fits, but contradicts the measurement", "## Robustness", "## The extension", "## The gain"})
     EXPECT_NE(report.find(section), std::string::npos) << section;
   EXPECT_NE(report.find("**Fragile**"), std::string::npos);
-  EXPECT_NE(report.find("steer_friction"), std::string::npos);  // the indistinguishable look-alike is named
+  EXPECT_NE(report.find("fork_compliance"), std::string::npos);  // the indistinguishable look-alike is named
   EXPECT_NE(report.find("20 sigma"), std::string::npos);
   m.result.robustness.clear();
   m.result.contradicting.clear();
@@ -151,16 +156,18 @@ TEST(DiagnosisOutput, FilesAreWrittenWithTheirResiduals) {
   std::ifstream in(dir / "residuals.csv");
   std::string line;
   std::getline(in, line);
-  EXPECT_EQ(line.rfind("component,speed_mps,time_s,measured,sigma,predicted_before,predicted_after,residual_before,residual_after", 0), 0u);
+  EXPECT_EQ(line.rfind("component,speed_mps,time_s,measured,sigma,predicted_before,predicted_after,residual_before,residual_after,whitened_before,whitened_after", 0), 0u);
   for (int i = 0; i < 4; ++i) {
     ASSERT_TRUE(std::getline(in, line));
     std::vector<std::string> cells;
     std::stringstream ss(line);
     for (std::string c; std::getline(ss, c, ',');) cells.push_back(c);
-    ASSERT_EQ(cells.size(), 9u) << line;
+    ASSERT_EQ(cells.size(), 11u) << line;
     const auto& r = m.result;
     EXPECT_NEAR(std::stod(cells[7]), (r.observed[i] - r.predictedBefore[i]) / r.sigma[i], 1e-9);
     EXPECT_NEAR(std::stod(cells[8]), (r.observed[i] - r.predictedAfter[i]) / r.sigma[i], 1e-9);
+    EXPECT_NEAR(std::stod(cells[9]), r.whitenedBefore[i], 1e-9);
+    EXPECT_NEAR(std::stod(cells[10]), r.whitenedAfter[i], 1e-9);
   }
   fs::remove_all(dir);
 }

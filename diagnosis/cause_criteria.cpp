@@ -1,0 +1,98 @@
+#include "diagnosis/cause_criteria.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "diagnosis/least_squares.h"
+#include "diagnosis/model_fit.h"
+#include "diagnosis/priors.h"
+
+namespace motostab::diagnosis {
+
+const char* const kAtBoundFailure = "estimate at a bound of its range";
+
+namespace {
+
+constexpr double kZ95 = 1.959963984540054;  // two-sided 95 % normal quantile
+
+bool excludesOff(const CandidateParameter& p, const ParameterEstimate& e, double xInternal, double seInternal) {
+  if (!(seInternal > 0) || !std::isfinite(seInternal)) return false;
+  if (p.offAtInfinity) return xInternal + kZ95 * seInternal < std::log(p.upper) && !e.atBound;
+  return std::abs(e.value - p.off) > kZ95 * e.stderr_;
+}
+
+// The parameter criteria: interval excludes off, not at a bound, correlations.
+void judgeParameters(const Candidate& c, FitSummary& fit, int off, const DiagnosisOptions& opt) {
+  const int df = static_cast<int>(c.parameters.size());
+  for (int k = 0; k < df; ++k) {
+    const ParameterEstimate& e = fit.parameters[k];
+    const double seInternal = c.parameters[k].logScale ? e.stderr_ / std::max(e.value, 1e-300) : e.stderr_;
+    if (!excludesOff(c.parameters[k], e, fit.x(off + k), seInternal)) fit.failed.push_back("confidence interval includes off");
+    // An estimate held at a bound of its search range (kParameterRangeSigmas prior sigmas, a
+    // stiffness's factor 1000) is not determined by the data: its fit only says "further than this".
+    if (e.atBound && e.value != c.parameters[k].off) fit.failed.push_back(kAtBoundFailure);
+    for (int l = 0; l < k; ++l)
+      if (std::abs(fit.correlation(off + k, off + l)) > opt.maxCorrelation) fit.failed.push_back("correlation > 0.95");
+  }
+}
+
+}  // namespace
+
+void judgeCandidate(const FitProblem& problem, const std::vector<const Candidate*>& causes, const Candidate& c,
+                    const FitSummary& baseline, FitSummary& fit, const DiagnosisOptions& opt, bool alwaysCv) {
+  if (!std::isfinite(fit.chi2)) return;
+  const ModelSpec model = makeModel(causes, &c);
+  fit.deltaBic = fit.bic - baseline.bic;
+  const double lr = std::max(0.0, baseline.deviance - fit.deviance);
+  const int df = static_cast<int>(c.parameters.size());
+  const int dfNoise = std::max(0, fit.numNoiseParameters - baseline.numNoiseParameters);
+  const bool bound = df == 1 && dfNoise == 0 && c.parameters[0].offAtBound;
+  fit.pValue = (bound ? 0.5 : 1.0) * calcChiSquareSurvival(lr, df + dfNoise);
+  fit.failed.clear();
+  if (!(fit.deltaBic <= -opt.minBicDrop)) fit.failed.push_back("BIC drop < " + std::to_string(int(opt.minBicDrop)));
+  if (!(fit.pValue < opt.maxPValue)) fit.failed.push_back("likelihood-ratio p >= 0.01");
+  judgeParameters(c, fit, model.size() - df, opt);
+  fit.contradictsMeasurement = contradictsMeasurement(fit.parameters);
+  if (!fit.failed.empty() && !alwaysCv) return;
+  // Both scored with the candidate's own noise: one metric for the two (the baseline's noise has
+  // absorbed the misfit the candidate explains and would whiten it away).
+  crossValidate(problem, model, fit.noise, fit);
+  FitSummary base = baseline;
+  crossValidate(problem, makeModel(causes, nullptr), fit.noise, base);
+  if (fit.hasCv) {
+    fit.foldsBetter = 0;
+    for (size_t f = 0; f < fit.foldRms.size(); ++f)  // a failed fold never counts as better
+      fit.foldsBetter += !fit.foldFailed[f] && fit.foldRms[f] < base.foldRms[f];
+    if (fit.foldsBetter < opt.minFoldShare * problem.numFolds - 1e-9) fit.failed.push_back("CV better in < 80 % of folds");
+  }
+}
+
+std::vector<FitSummary> findIndistinguishable(const FitProblem& problem, const std::vector<const Candidate*>& causes,
+                                              const std::vector<const Candidate*>& parts, const FitSummary& baseline,
+                                              const std::vector<FitSummary>& fits, int k, const DiagnosisOptions& opt) {
+  // Residual changes measured with the named fit's noise, so that every candidate's is in one metric.
+  const FitProblem common = withNoise(problem, fits[k].noise);
+  const auto change = [&](size_t i) -> Eigen::VectorXd {
+    return common.calcResiduals(common.predict(makeModel(causes, nullptr), baseline.x)) -
+           common.calcResiduals(common.predict(makeModel(causes, parts[i]), fits[i].x));
+  };
+  std::vector<double> similarity(fits.size(), 0.0);
+  try {
+    const Eigen::VectorXd dk = change(k);
+    for (size_t i = 0; i < fits.size(); ++i) {
+      if (static_cast<int>(i) == k || !std::isfinite(fits[i].chi2) || !fits[i].failed.empty()) continue;
+      const Eigen::VectorXd di = change(i);
+      const double den = dk.norm() * di.norm();
+      similarity[i] = den > 0 ? dk.dot(di) / den : 0.0;
+    }
+  } catch (const std::exception&) {  // a prediction that fails here was fitted: leave the rest at 0
+  }
+  std::vector<FitSummary> out;
+  for (size_t i = 0; i < fits.size(); ++i)
+    if (static_cast<int>(i) != k && (std::abs(fits[i].bic - fits[k].bic) <= opt.indistinguishableBic ||
+                                     (fits[i].failed.empty() && similarity[i] > opt.maxPredictionCorrelation)))
+      out.push_back(fits[i]);
+  return out;
+}
+
+}  // namespace motostab::diagnosis
