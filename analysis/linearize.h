@@ -83,10 +83,10 @@ struct LinearModel {
 /// (QR rank, threshold 1e-9), until there are as many as G has rows.
 std::vector<int> chooseDependentColumns(const Eigen::MatrixXd& G, const std::vector<int>& priority);
 
-/// The trim's Newton Jacobian d[udot; zdot]/d(getTrimUnknowns) read off A and B, for models without
-/// constraints whose linearisation kept every u and z; columns of removed coordinates are zero.
-/// Without B the input columns (M^-1 times a unit mobility force: configuration only, so nearly
-/// speed-independent) are copied from `previous`, a trim Jacobian of the same model.
+/// The trim's Newton Jacobian d[udot; zdot]/d(getTrimUnknowns) read off A and B (the block of
+/// A and B), for models without constraints whose linearisation kept every u and z; columns of removed
+/// coordinates are zero. Without B the input columns (M^-1 times a unit mobility force: configuration
+/// only, so nearly speed-independent) are copied from `previous`, a trim Jacobian of the same model.
 /// Empty when neither holds (then the trim differentiates).
 /// About a turn (`trimOptions`, lin in the heading frame) the rows of the heading-frame velocities are
 /// the turn residual's, and the speed equation's row (TurnCondition::Speed) is copied from `previous`.

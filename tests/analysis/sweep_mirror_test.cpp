@@ -28,7 +28,8 @@ namespace {
 
 const std::string kEnduro = std::string(MOTOSTAB_SOURCE_DIR) + "/scenarios/enduro.yaml";
 
-// The four model extensions (docs/scenario-format.md) with stiffnesses and dampings drawn at random (seeded).
+// The four model extensions (steer damper, fork compliance, rider lean, tyre contact) with stiffnesses and
+// dampings drawn at random (seeded).
 std::vector<std::string> drawExtensions(PortableRandom& g) {
   auto draw = [&](double a, double b) {
     std::ostringstream s;

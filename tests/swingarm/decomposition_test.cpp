@@ -47,7 +47,7 @@ TEST(PaperTables, Swingarm1ReducedStiffnessAndDamping) { checkTables(kSwingarm1)
 TEST(PaperTables, Swingarm2ReducedStiffnessAndDamping) { checkTables(kSwingarm2); }
 
 TEST(PaperTables, Table4BendingValueOfSwingarm1) {
-  // Worked example: seed eq. 17 (14) with Table 2 gives k'_b = 248.8 kNm/rad.
+  // The seed paper's worked example: eq. 17 (14) with Table 2 gives k'_b = 248.8 kNm/rad.
   EXPECT_NEAR(calcReducedStiffness(222.4e3, 0.451, 0.477) / 1e3, 248.8, 0.1);
 }
 
