@@ -17,6 +17,7 @@
 // from a fit to the others (every parameter refitted; a run's initial state, offsets and gains are
 // fitted on the run itself).
 #include <functional>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -50,6 +51,12 @@ struct DiagnosisOptions {
   bool pairSearch = true;
   /// Rerun the stepwise search on each variant of the data (diagnosis/robustness.h).
   bool robustness = false;
+  /// Keep the linear models computed and take a chain asked for again (same changes, same speeds) from
+  /// the store, across the search, folds, profiles and reruns (diagnosis/sweep_cache.h). The results
+  /// are the same to the bit either way.
+  bool reuseLinearModels = true;
+  /// The store to use (e.g. to read its counters afterwards); none: a new one per diagnosis.
+  std::shared_ptr<SweepCache> sweepCache;
 };
 
 struct ParameterEstimate {

@@ -11,6 +11,7 @@ using analysis::LinearModel;
 using analysis::ModeBranch;
 using analysis::SweepOptions;
 using analysis::SweepResult;
+using analysis::makeSpeedGrid;
 using analysis::runSweep;
 using scenario::ParameterOverrides;
 using scenario::Scenario;
@@ -36,8 +37,9 @@ SweepOptions makeChainOptions() {
 Predictor::Predictor(const std::string& scenarioFile, ParameterOverrides baseChanges, const MeasuredData& data)
     : Predictor(ScenarioSource::open(scenarioFile), std::move(baseChanges), data) {}
 
-Predictor::Predictor(std::shared_ptr<const ScenarioSource> source, ParameterOverrides baseChanges, const MeasuredData& data)
-    : source_(std::move(source)), baseChanges_(std::move(baseChanges)), data_(data) {
+Predictor::Predictor(std::shared_ptr<const ScenarioSource> source, ParameterOverrides baseChanges, const MeasuredData& data,
+                     std::shared_ptr<SweepCache> cache)
+    : source_(std::move(source)), baseChanges_(std::move(baseChanges)), data_(data), cache_(std::move(cache)) {
   makeControllerParts();
   if (!parts_.empty()) return;
   speeds_ = collectSpeeds();
@@ -52,7 +54,7 @@ void Predictor::makeControllerParts() {
     part->group = std::move(g);
     ParameterOverrides base = baseChanges_;
     base.append(ParameterOverrides(part->group.overrides));
-    part->predictor = std::make_unique<Predictor>(source_, base, part->group.data);
+    part->predictor = std::make_unique<Predictor>(source_, base, part->group.data, cache_);
     for (double v : part->predictor->speeds_) speeds_.push_back(v);
     parts_.push_back(part);
   }
@@ -73,15 +75,22 @@ std::vector<double> Predictor::collectSpeeds() const {
 
 // The base scenario's sweep over its own range widened to the measured speeds (0.1 m/s at most
 // between speeds), for the mode labels.
+// Through the cache, a rerun whose speeds need the same range shares it (a two-thread sweep agrees with
+// a new one to the trim tolerance, not to the bit: analysis/sweep.h).
 void Predictor::makeReferenceSweep() {
   const Scenario scenario = source_->load(baseChanges_);
-  const VehicleModel model(scenario);
   SweepOptions opt;
   opt.step = std::min(scenario.speeds.step, 0.1);
   opt.start = std::min(scenario.speeds.start, std::floor(speeds_.front() / opt.step) * opt.step);
   opt.stop = std::max(scenario.speeds.stop, std::ceil(speeds_.back() / opt.step) * opt.step);
   opt.threads = 2;
-  reference_ = std::make_shared<SweepResult>(runSweep(model, opt));
+  const auto compute = [&] { return runSweep(VehicleModel(scenario), opt); };
+  if (!cache_) {
+    reference_ = std::make_shared<const SweepResult>(compute());
+    return;
+  }
+  const std::vector<double> range{opt.start, opt.stop, opt.step};
+  reference_ = cache_->get(SweepCache::makeKey("reference", baseChanges_, range), makeSpeedGrid(opt.start, opt.stop, opt.step).size(), compute);
 }
 
 // The fast predictions' speeds: Chebyshev nodes over the interpolated labelled rows, plus the speeds
@@ -139,7 +148,8 @@ std::vector<double> Predictor::chooseNodes(double lo, double hi, int labelled) c
   std::vector<double> nodes;
   for (int n = 5; n <= 16 && n < labelled; ++n) {
     nodes = makeChebyshevNodes(lo, hi, n);
-    const SweepResult sweep = calcSweep({}, nodes);
+    const auto shared = getSweep({}, nodes);
+    const SweepResult& sweep = *shared;
     double worst = 0;
     for (const ModeTrack& t : matcher_->track(sweep)) {
       if (isExactMode(t.mode)) continue;
@@ -166,6 +176,13 @@ SweepResult Predictor::calcSweep(const ParameterOverrides& changes, const std::v
   all.append(changes);
   const VehicleModel model(source_->load(all));
   return runSweep(model, speeds, makeChainOptions());
+}
+
+std::shared_ptr<const SweepResult> Predictor::getSweep(const ParameterOverrides& changes, const std::vector<double>& speeds) const {
+  if (!cache_) return std::make_shared<const SweepResult>(calcSweep(changes, speeds));
+  ParameterOverrides all = baseChanges_;
+  all.append(changes);
+  return cache_->get(SweepCache::makeKey("chain", all, speeds), speeds.size(), [&] { return calcSweep(changes, speeds); });
 }
 
 std::vector<LinearModel> Predictor::calcLinearModels(const ParameterOverrides& changes,
@@ -242,7 +259,8 @@ Prediction Predictor::predict(const ParameterOverrides& changes, const std::vect
                               bool exact, const std::vector<std::vector<ArNoise>>& noise) const {
   if (!parts_.empty()) return predictParts(changes, sigma, exact, noise);
   const bool fast = !exact && !nodes_.empty();
-  const SweepResult sweep = calcSweep(changes, fast ? fastSpeeds_ : speeds_);
+  const auto shared = getSweep(changes, fast ? fastSpeeds_ : speeds_);
+  const SweepResult& sweep = *shared;
   Prediction p;
   p.eigenvalues = predictRows(sweep, fast);
   for (size_t r = 0; r < data_.responses.size(); ++r) {

@@ -16,6 +16,10 @@
 // fewer linearisations than the rows' own speeds: the fewest points (5 to 16) that reproduce the base
 // scenario's labelled modes at its reference sweep's speeds to 3e-4 (1 + |lambda|) 1/s. Reported
 // predictions are exact (exact = true), so a sweep of the extended scenario reproduces them.
+//
+// Predictors of one diagnosis may share a SweepCache (diagnosis/sweep_cache.h): a chain asked for again
+// with the same changes and speeds (and the reference sweep and node choice of a rerun on the same
+// rows) is taken from it, identical to the bit to a new evaluation.
 #include <complex>
 #include <memory>
 #include <string>
@@ -28,6 +32,7 @@
 #include "diagnosis/mode_matching.h"
 #include "diagnosis/noise_model.h"
 #include "diagnosis/speed_nodes.h"
+#include "diagnosis/sweep_cache.h"
 #include "scenario/scenario_source.h"
 
 namespace motostab::diagnosis {
@@ -40,13 +45,15 @@ struct Prediction {
 };
 
 /// Predicts measured data for a scenario with parameter changes. Thread-safe: predict() builds its
-/// own model on each call.
+/// own model on each chain it computes (or takes the chain from the shared cache).
 class Predictor {
  public:
   /// Sweeps the base scenario (`baseChanges` applied) once for the mode labels. Data taken with
   /// several controller settings is predicted group by group (diagnosis/controller_groups.h), each
-  /// group by a predictor of its own whose base changes end with the group's.
-  Predictor(std::shared_ptr<const scenario::ScenarioSource> source, scenario::ParameterOverrides baseChanges, const MeasuredData& data);
+  /// group by a predictor of its own whose base changes end with the group's. `cache` (optional, for
+  /// predictors of one `source` only) keeps and shares the chains computed.
+  Predictor(std::shared_ptr<const scenario::ScenarioSource> source, scenario::ParameterOverrides baseChanges, const MeasuredData& data,
+            std::shared_ptr<SweepCache> cache = nullptr);
   /// The same, reading `scenarioFile` (once).
   Predictor(const std::string& scenarioFile, scenario::ParameterOverrides baseChanges, const MeasuredData& data);
   /// Predictions with `changes` after the base changes; `sigma` per response run and signal.
@@ -74,6 +81,9 @@ class Predictor {
   void makeControllerParts();
   std::vector<double> collectSpeeds() const;
   void makeReferenceSweep();
+  /// calcSweep through the cache (when there is one).
+  std::shared_ptr<const analysis::SweepResult> getSweep(const scenario::ParameterOverrides& changes,
+                                                        const std::vector<double>& speeds) const;
   void chooseFastSpeeds();
   Prediction predictParts(const scenario::ParameterOverrides& changes, const std::vector<std::vector<double>>& sigma,
                           bool exact, const std::vector<std::vector<ArNoise>>& noise) const;
@@ -94,7 +104,8 @@ class Predictor {
   /// Labelled modes whose base branch turns between real and complex over the rows' speeds (a
   /// branch point no polynomial follows): the fast predictions take them at the rows' own speeds.
   std::vector<std::string> exactModes_;
-  std::shared_ptr<analysis::SweepResult> reference_;
+  std::shared_ptr<const analysis::SweepResult> reference_;
+  std::shared_ptr<SweepCache> cache_;
   std::unique_ptr<ModeMatcher> matcher_;
   std::vector<std::shared_ptr<ControllerPart>> parts_;  ///< per controller setting (empty: one setting)
 };

@@ -100,7 +100,7 @@ std::vector<RobustnessRun> runRobustness(const std::shared_ptr<const ScenarioSou
     RobustnessRun run;
     run.leftOut = variants[k].leftOut;
     try {
-      const Predictor predictor(source, opt.overrides, variants[k].data);
+      const Predictor predictor(source, opt.overrides, variants[k].data, opt.sweepCache);
       const FitProblem problem(predictor, variants[k].data, opt.folds);
       SearchState state;
       state.pool = pool;
