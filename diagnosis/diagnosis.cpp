@@ -1,11 +1,6 @@
 #include "diagnosis/diagnosis.h"
 
-#include <chrono>
 #include <cmath>
-#include <cstdio>
-#include <cstdlib>
-#include <ctime>
-#include <optional>
 #include <stdexcept>
 
 #include "diagnosis/controller_groups.h"
@@ -28,24 +23,6 @@ using scenario::ParameterOverrides;
 using scenario::ScenarioSource;
 
 namespace {
-
-// TEMP measurement
-struct TempStage {
-  const DiagnosisOptions& o;
-  std::string name;
-  std::chrono::steady_clock::time_point t0 = std::chrono::steady_clock::now();
-  std::clock_t c0 = std::clock();
-  SweepCache::Counters k0 = o.sweepCache ? o.sweepCache->getCounters() : SweepCache::Counters();
-  ~TempStage() {
-    if (!std::getenv("MOTOSTAB_DIAG_TRACE") || !o.sweepCache) return;
-    const auto k = o.sweepCache->getCounters();
-    std::fprintf(stderr, "TRACE %-22s wall %6.2f cpu %6.2f lookups %6ld hits %6ld builds %6ld lins %7ld saved %7ld bytes %zu peak %zu speedrep %ld\n",
-                 name.c_str(), std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(),
-                 double(std::clock() - c0) / CLOCKS_PER_SEC, k.lookups - k0.lookups, k.hits - k0.hits, k.builds - k0.builds,
-                 k.linearisations - k0.linearisations, k.savedLinearisations - k0.savedLinearisations, k.bytes, k.peakBytes,
-                 o.sweepCache->tempSpeedRepeats);
-  }
-};
 
 std::vector<const Candidate*> probeCandidates(const ScenarioSource& source, const DiagnosisOptions& opt,
                                               const std::vector<Candidate>& all, std::vector<std::string>& unavailable) {
@@ -162,37 +139,26 @@ bool DiagnosisResult::isFragile() const {
 }
 
 DiagnosisResult runDiagnosis(const std::string& scenarioFile, const MeasuredData& data, const DiagnosisOptions& options) {
-  DiagnosisOptions opt = options;
+  DiagnosisOptions opt = options;  // every predictor below (reruns too) shares one store of chains
   if (!opt.reuseLinearModels) opt.sweepCache = nullptr;
   else if (!opt.sweepCache) opt.sweepCache = std::make_shared<SweepCache>();
   if (opt.progress) opt.progress("reference sweep", 0, 1);
   const auto source = ScenarioSource::open(scenarioFile);  // read once for every prediction
-  std::optional<TempStage> ts(TempStage{opt, "predictor"});
   const Predictor predictor(source, opt.overrides, data, opt.sweepCache);
   const FitProblem problem(predictor, data, opt.folds);
-  ts.reset();
-  ts.emplace(TempStage{opt, "probe"});
   std::vector<std::string> unavailable;
   const std::vector<Candidate> all = selectCandidates(*source, data, opt, unavailable);
   const std::vector<const Candidate*> pool = probeCandidates(*source, opt, all, unavailable);
   SearchState state;
   state.pool = pool;
   DiagnosisResult result;
-  ts.reset();
-  ts.emplace(TempStage{opt, "search"});
   runStepwiseSearch(problem, state, opt, result, true);
-  ts.reset();
   result.scenarioFile = scenarioFile;
   result.data = &data;
   result.unavailable = unavailable;
   result.extendedOverrides = opt.overrides.format();
-  ts.emplace(TempStage{opt, "final"});
   fitFinalModels(problem, state, result, opt.threads);
-  ts.reset();
-  ts.emplace(TempStage{opt, "tabulate"});
   tabulate(problem, makeModel(state.causes, nullptr), result);
-  ts.reset();
-  ts.emplace(TempStage{opt, "robustness"});
   if (opt.robustness) result.robustness = runRobustness(source, data, opt, pool, result.causes);
   return result;
 }

@@ -7,7 +7,7 @@ namespace motostab::diagnosis {
 
 using analysis::SweepResult;
 
-SweepCache::SweepCache(size_t maxEntries) : maxEntries_(std::max<size_t>(maxEntries, 1)) {}
+SweepCache::SweepCache(size_t maxBytes) : maxBytes_(maxBytes) {}
 
 std::string SweepCache::makeKey(const std::string& kind, const scenario::ParameterOverrides& changes,
                                 const std::vector<double>& speeds) {
@@ -36,24 +36,12 @@ std::shared_ptr<const SweepResult> SweepCache::get(const std::string& key, size_
       recent_.splice(recent_.begin(), recent_, it->second.age);
       result = it->second.result;
     } else {
-      {  // TEMP measurement: per (changes, speed) repeats
-        const size_t at = key.find("\n@");
-        const std::string head = key.substr(0, at);
-        size_t pos = at + 2;
-        while (pos < key.size()) {
-          size_t next = key.find(' ', pos + 1);
-          if (next == std::string::npos) next = key.size();
-          if (!tempSeen_.insert(head + key.substr(pos, next - pos)).second) ++tempSpeedRepeats;
-          pos = next;
-        }
-      }
       ++counters_.builds;
       counters_.linearisations += static_cast<long>(numSpeeds);
       recent_.push_front(key);
       Entry& e = entries_[key];
       e.result = promise.get_future().share();
       e.age = recent_.begin();
-      evict();
     }
   }
   if (result.valid()) return result.get();  // rethrows a stored failure
@@ -72,12 +60,13 @@ std::shared_ptr<const SweepResult> SweepCache::get(const std::string& key, size_
     it->second.bytes = bytes;
     counters_.bytes += bytes;
     counters_.peakBytes = std::max(counters_.peakBytes, counters_.bytes);
+    evict();
   }
   return value;
 }
 
 void SweepCache::evict() {
-  while (entries_.size() > maxEntries_) {
+  while (counters_.bytes > maxBytes_ && recent_.size() > 1) {
     const auto it = entries_.find(recent_.back());
     counters_.bytes -= it->second.bytes;
     entries_.erase(it);

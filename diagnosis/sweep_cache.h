@@ -14,9 +14,10 @@
 //
 // Repeats come from the fits' structure: a Levenberg-Marquardt fit ends with the Jacobian at its
 // solution, and the next noise iteration, the candidate's RMS, its folds' first step and the next
-// search step's baseline start from that same point; the robustness reruns start their fits where the
-// full data's did. Memory is bounded by a count of entries (least recently used evicted); the
-// counters say how much work was done and saved.
+// search step's baseline start from that same point; the robustness reruns share the reference sweep
+// and node choice, and start their fits where the full data's did. Memory is bounded by the results'
+// approximate size (least recently used evicted first; a result evicted and asked for again is
+// computed again, identical); the counters say how much work was done and saved.
 #include <atomic>
 #include <cstddef>
 #include <functional>
@@ -26,7 +27,6 @@
 #include <mutex>
 #include <string>
 #include <unordered_map>
-#include <unordered_set>
 #include <vector>
 
 #include "analysis/sweep.h"
@@ -49,8 +49,9 @@ class SweepCache {
     size_t peakBytes = 0;     ///< the most held at once
   };
 
-  /// Keeps at most `maxEntries` results (least recently used evicted first).
-  explicit SweepCache(size_t maxEntries = kDefaultEntries);
+  /// Keeps results of at most about `maxBytes` together (calcSweepBytes; least recently used evicted
+  /// first, the newest always kept).
+  explicit SweepCache(size_t maxBytes = kDefaultBytes);
 
   /// The result for `key` (makeKey), computing it with `compute` (which builds one model and runs one
   /// chain of `numSpeeds` speeds) when it is not held. Concurrent calls with one key compute once;
@@ -65,8 +66,10 @@ class SweepCache {
   static std::string makeKey(const std::string& kind, const scenario::ParameterOverrides& changes,
                              const std::vector<double>& speeds);
 
-  /// 4000 results: about 40 MB for a 10-state vehicle at 20 speeds (counter `peakBytes`).
-  static constexpr size_t kDefaultEntries = 4000;
+  /// 32 MiB: about 1500 chains of 11 speeds of the Kooijman bicycle (22 kB each). The Kooijman
+  /// diagnosis keeps 99 % of the hits it would have with no bound (its search and reruns ask again
+  /// mostly for recent chains).
+  static constexpr size_t kDefaultBytes = size_t{32} << 20;
 
  private:
   struct Entry {
@@ -76,14 +79,11 @@ class SweepCache {
   };
   void evict();  // under mutex_
 
-  size_t maxEntries_;
+  size_t maxBytes_;
   mutable std::mutex mutex_;
   std::unordered_map<std::string, Entry> entries_;
   std::list<std::string> recent_;  ///< keys, most recently used first
   Counters counters_;
- public:
-  std::unordered_set<std::string> tempSeen_;  // TEMP
-  long tempSpeedRepeats = 0;                  // TEMP
 };
 
 /// Approximate memory of a sweep result, bytes.
