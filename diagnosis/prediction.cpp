@@ -74,9 +74,9 @@ std::vector<double> Predictor::collectSpeeds() const {
 }
 
 // The base scenario's sweep over its own range widened to the measured speeds (0.1 m/s at most
-// between speeds), for the mode labels.
-// Through the cache, a rerun whose speeds need the same range shares it (a two-thread sweep agrees with
-// a new one to the trim tolerance, not to the bit: analysis/sweep.h).
+// between speeds), for the mode labels. Through the cache, a rerun whose speeds need the same range
+// shares it (a two-thread sweep agrees with a new one to the trim tolerance, not to the bit:
+// analysis/sweep.h).
 void Predictor::makeReferenceSweep() {
   const Scenario scenario = source_->load(baseChanges_);
   SweepOptions opt;

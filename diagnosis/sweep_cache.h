@@ -66,10 +66,10 @@ class SweepCache {
   static std::string makeKey(const std::string& kind, const scenario::ParameterOverrides& changes,
                              const std::vector<double>& speeds);
 
-  /// 32 MiB: about 1500 chains of 11 speeds of the Kooijman bicycle (22 kB each). The Kooijman
-  /// diagnosis keeps 99 % of the hits it would have with no bound (its search and reruns ask again
-  /// mostly for recent chains).
-  static constexpr size_t kDefaultBytes = size_t{32} << 20;
+  /// 16 MiB: about 750 chains of 10 speeds of the Kooijman bicycle (22 kB each). The Kooijman
+  /// diagnosis keeps 98 % of the hits it would have with no bound (its search and reruns ask again
+  /// mostly for recent chains; docs/performance.md).
+  static constexpr size_t kDefaultBytes = size_t{16} << 20;
 
  private:
   struct Entry {
