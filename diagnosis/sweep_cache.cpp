@@ -50,19 +50,23 @@ std::shared_ptr<const SweepResult> SweepCache::get(const std::string& key, size_
     value = std::make_shared<const SweepResult>(compute());
   } catch (...) {
     promise.set_exception(std::current_exception());
+    account(key, kEntryOverhead);
     throw;
   }
   promise.set_value(value);
-  const size_t bytes = calcSweepBytes(*value);
+  account(key, calcSweepBytes(*value) + kEntryOverhead);
+  return value;
+}
+
+// Counts the size of the entry just filled (key and bookkeeping included) and evicts past the bound.
+void SweepCache::account(const std::string& key, size_t bytes) {
   std::lock_guard<std::mutex> lock(mutex_);
   const auto it = entries_.find(key);
-  if (it != entries_.end() && it->second.bytes == 0) {
-    it->second.bytes = bytes;
-    counters_.bytes += bytes;
-    counters_.peakBytes = std::max(counters_.peakBytes, counters_.bytes);
-    evict();
-  }
-  return value;
+  if (it == entries_.end() || it->second.bytes != 0) return;  // evicted meanwhile
+  it->second.bytes = bytes + 2 * key.size();  // the map's key and the age list's copy
+  counters_.bytes += it->second.bytes;
+  counters_.peakBytes = std::max(counters_.peakBytes, counters_.bytes);
+  evict();
 }
 
 void SweepCache::evict() {

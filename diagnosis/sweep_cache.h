@@ -77,7 +77,9 @@ class SweepCache {
     std::list<std::string>::iterator age;  ///< place in recent_
     size_t bytes = 0;
   };
+  void account(const std::string& key, size_t bytes);
   void evict();  // under mutex_
+  static constexpr size_t kEntryOverhead = 256;  ///< bytes of a map node, list node and shared state
 
   size_t maxBytes_;
   mutable std::mutex mutex_;
