@@ -15,27 +15,6 @@
 #include "swingarm/identification/virtual_rig.h"
 #include "tests/support/temp_dir.h"
 
-using motostab::swingarm::identification::FrfResult;
-using motostab::swingarm::identification::FrfTest;
-using motostab::swingarm::identification::ModeResult;
-using motostab::swingarm::identification::RigNoise;
-using motostab::swingarm::identification::StaticResult;
-using motostab::swingarm::identification::StaticTest;
-using motostab::swingarm::identification::VirtualSwingarm;
-using motostab::swingarm::identification::identifyFrf;
-using motostab::swingarm::identification::identifyStatic;
-using motostab::swingarm::identification::readFrfTest;
-using motostab::swingarm::identification::readHits;
-using motostab::swingarm::identification::readStaticReadings;
-using motostab::swingarm::identification::readStaticTest;
-using motostab::swingarm::identification::simulateHammerHits;
-using motostab::swingarm::identification::simulateStaticReadings;
-using motostab::swingarm::identification::wrapDegrees;
-using motostab::swingarm::identification::writeFrfTestFiles;
-using motostab::swingarm::identification::writeStaticTestFiles;
-
-
-
 namespace {
 
 using namespace motostab::swingarm::identification;

@@ -6,7 +6,7 @@
 #include <cstdint>
 
 #include "core/portable_random.h"
-#include "../apps/run_motostab.h"
+#include "tests/apps/cli_support.h"
 #include "swingarm/identification/frf_diagnosis.h"
 #include "swingarm/identification/virtual_rig.h"
 #include "tests/support/temp_dir.h"
