@@ -11,6 +11,7 @@
 #include "io/atomic_file.h"
 #include "io/output_folder.h"
 #include "output/swingarm_output.h"
+#include "output/virtual_rig_output.h"
 #include "swingarm/identification/decomposition.h"
 #include "swingarm/identification/frf_diagnosis.h"
 #include "swingarm/identification/hammer_frf.h"
@@ -128,11 +129,11 @@ void runVirtualRig(const Args& args) {
   const auto noise = id::RigNoise().scaled(args.noiseFactor);
   std::vector<double> loads;  // load and unload, 0-4000-0 N in 250 N steps
   for (int i = 0; i <= 32; ++i) loads.push_back(250.0 * (i <= 16 ? i : 32 - i));
-  id::writeStaticTestFiles(out, rig, id::simulateStaticReadings(rig, loads, noise, args.seed), noise.laserResolution);
-  id::writeFrfTestFiles(out, rig, id::simulateHammerHits(rig, {}, noise, args.seed + 1));  // default settings
+  output::writeStaticTestFiles(out, rig, id::simulateStaticReadings(rig, loads, noise, args.seed), noise.laserResolution);
+  output::writeFrfTestFiles(out, rig, id::simulateHammerHits(rig, {}, noise, args.seed + 1));  // default settings
   const id::VirtualPart part;
-  id::writeCogTestFiles(out, part, {0.05, 0.0, 0.04}, 0.05 * args.noiseFactor, args.seed + 2);
-  id::writeInertiaTestFiles(out, part, 1e-3 * args.noiseFactor, args.seed + 3);
+  output::writeCogTestFiles(out, id::simulateCogReadings(part, {0.05, 0.0, 0.04}, 0.05 * args.noiseFactor, args.seed + 2));
+  output::writeInertiaTestFiles(out, id::simulateTrifilarTest(part, 1e-3 * args.noiseFactor, args.seed + 3));
   folder.commit();
   std::printf("virtual rig inputs written to %s (truth: docs/swingarm-identification.md, 'Virtual rig')\n",
               folder.getTarget().c_str());

@@ -11,11 +11,6 @@
 
 namespace motostab::swingarm::identification {
 
-using io::CsvTable;
-using io::InputError;
-using io::YamlMap;
-using io::readCsv;
-
 namespace {
 
 struct MeanStat {

@@ -10,12 +10,6 @@
 
 namespace motostab::swingarm::identification {
 
-using io::CsvTable;
-using io::InputError;
-using io::YamlMap;
-using io::readCsv;
-
-
 StaticTest readStaticTest(const std::filesystem::path& file) {
   YamlMap root = openTestFile(file, "static");
   StaticTest t;

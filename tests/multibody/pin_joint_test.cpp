@@ -21,7 +21,8 @@ SimTK::Vec3 drawVec3(PortableRandom& rng, double a, double b) {
 // Rotation by `angle` (rad) about the unit axis `n`: R = I + sin(angle) K + (1 - cos(angle)) K^2, K = [n]x.
 SimTK::Mat33 calcRodrigues(const SimTK::Vec3& n, double angle) {
   const SimTK::Mat33 k(0, -n[2], n[1], n[2], 0, -n[0], -n[1], n[0], 0);
-  return SimTK::Mat33(1) + std::sin(angle) * k + (1 - std::cos(angle)) * k * k;
+  const SimTK::Mat33 identity(1, 0, 0, 0, 1, 0, 0, 0, 1);
+  return identity + std::sin(angle) * k + (1 - std::cos(angle)) * k * k;
 }
 
 SimTK::Mat33 toMat(const SimTK::Rotation& r) { return r.asMat33(); }

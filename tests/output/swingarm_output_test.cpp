@@ -1,53 +1,34 @@
-// The writers of `motostab identify static|frf|swingarm`: static.json keys, the FRF files and a
-// swingarm.yaml with the schema of docs/swingarm-identification.md, holding the identified values.
+// The writers of `motostab identify static|frf|swingarm|cog|inertia`: static.json keys, the FRF files, a
+// swingarm.yaml with the schema of docs/swingarm-identification.md, and the mass-property files, holding
+// the identified values.
 #include <gtest/gtest.h>
 
 #include <yaml-cpp/yaml.h>
 
 #include <filesystem>
 #include <fstream>
+#include <string>
 #include <nlohmann/json.hpp>
 
 #include "output/swingarm_output.h"
-#include "swingarm/identification/virtual_rig.h"
+#include "tests/swingarm/rig_round_trip.h"
 #include "tests/support/temp_dir.h"
 
 namespace {
 
 using namespace motostab::swingarm::identification;
+using motostab::output::writeCogOutputs;
+using motostab::output::writeCogTestFiles;
 using motostab::output::writeFrfOutputs;
+using motostab::output::writeInertiaOutputs;
+using motostab::output::writeInertiaTestFiles;
 using motostab::output::writeStaticOutputs;
 using motostab::output::writeSwingarmOutputs;
 
-// The virtual rig's static and hammer tests (realistic noise), read back and identified.
-struct Identified {
-  StaticTest staticTest;
-  FrfTest frfTest;
-  StaticResult stat;
-  FrfResult frf;
-  SwingarmIdentification id;
-};
-
-Identified identifyVirtualRig(std::uint64_t seed) {
-  const VirtualSwingarm rig;
-  const RigNoise noise;
-  const auto dir = makeTempDir("swingarm_output_inputs");
-  std::vector<double> loads;
-  for (int i = 0; i <= 32; ++i) loads.push_back(250.0 * (i <= 16 ? i : 32 - i));  // 0-4000-0 N
-  writeStaticTestFiles(dir, rig, simulateStaticReadings(rig, loads, noise, seed), noise.laserResolution);
-  writeFrfTestFiles(dir, rig, simulateHammerHits(rig, {}, noise, seed + 7), "  band_hz: [60, 400]\n  model_order: [4, 24]\n");
-  Identified r;
-  r.staticTest = readStaticTest(dir / "static.yaml");
-  r.frfTest = readFrfTest(dir / "frf.yaml");
-  r.stat = identifyStatic(r.staticTest, readStaticReadings(r.staticTest));
-  r.frf = identifyFrf(r.frfTest, readHits(r.frfTest));
-  r.id = identifySwingarm(r.stat, r.frf);
-  return r;
-}
-
 // The CLI's writers: static.json keys, FRF outputs and a swingarm.yaml with the documented schema.
 TEST(SwingarmOutput, OutputsFollowTheDocumentedSchema) {
-  const Identified r = identifyVirtualRig(21);
+  const IdentifiedRig r = identifyRigTests(VirtualSwingarm(), RigNoise(), 21, makeTempDir("swingarm_output_inputs"),
+                                           "  band_hz: [60, 400]\n  model_order: [4, 24]\n");
   const auto dir = makeTempDir("outputs_written");
   writeStaticOutputs(r.staticTest, r.stat, dir);
   writeFrfOutputs(r.frfTest, r.frf, dir / "frf");
@@ -81,6 +62,37 @@ TEST(SwingarmOutput, OutputsFollowTheDocumentedSchema) {
   }
   EXPECT_NEAR(y["bending"]["stiffness_Nm_per_rad"].as<double>(), r.id.bending.stiffness.value, 1e-6 * r.id.bending.stiffness.value);
   EXPECT_NEAR(y["twist"]["damping_Nms_per_rad"].as<double>(), r.id.twist.damping.value, 1e-6);
+}
+
+// cog.json and inertia.json hold the identified values; the fit tables have one row per tilt or set-up.
+TEST(SwingarmOutput, MassPropertyFilesHoldTheResults) {
+  const auto dir = makeTempDir("mass_property_outputs");
+  writeCogTestFiles(dir, simulateCogReadings(VirtualPart(), {0.05, 0.0, 0.04}, 0.05, 3));
+  const CogTest cogTest = readCogTest(dir / "cog.yaml");
+  const CogResult cog = identifyCog(cogTest);
+  writeInertiaTestFiles(dir, simulateTrifilarTest(VirtualPart(), 1e-3, 4));
+  const InertiaTest inertiaTest = readInertiaTest(dir / "inertia.yaml");
+  const InertiaResult inertia = identifyInertia(inertiaTest);
+  writeCogOutputs(cogTest, cog, dir / "out");
+  writeInertiaOutputs(inertiaTest, inertia, dir / "out");
+  auto countLines = [](const std::filesystem::path& p) {
+    std::ifstream in(p);
+    int n = 0;
+    for (std::string line; std::getline(in, line);) ++n;
+    return n;
+  };
+  nlohmann::json cj, ij;
+  std::ifstream(dir / "out" / "cog.json") >> cj;
+  std::ifstream(dir / "out" / "inertia.json") >> ij;
+  EXPECT_EQ(cj["mass_kg"].get<double>(), cog.mass);
+  for (int i = 0; i < 3; ++i) EXPECT_EQ(cj["cog_m"][i].get<double>(), cog.cog[i]) << i;
+  EXPECT_EQ(countLines(dir / "out" / "cog_fit.csv"), 1 + static_cast<int>(cogTest.tiltDeg.size()));
+  EXPECT_EQ(ij["I_xx_kg_m2"].get<double>(), inertia.tensor(0, 0));
+  EXPECT_EQ(ij["I_xz_kg_m2_stderr"].get<double>(), inertia.tensorStderr(0, 2));
+  EXPECT_EQ(ij["setups"].size(), inertiaTest.setups.size());
+  EXPECT_EQ(countLines(dir / "out" / "inertia_setups.csv"), 1 + static_cast<int>(inertiaTest.setups.size()));
+  for (const char* f : {"cog_fit.png", "cog_fit.svg", "inertia_setups.png", "inertia_setups.svg"})
+    EXPECT_TRUE(std::filesystem::exists(dir / "out" / f)) << f;
 }
 
 }  // namespace

@@ -11,11 +11,15 @@
 #include <cstdint>
 
 #include "core/portable_random.h"
+#include "output/virtual_rig_output.h"
 #include "rig_truth.h"
 #include "swingarm/identification/virtual_rig.h"
 #include "tests/support/temp_dir.h"
 
 namespace {
+
+using motostab::output::writeFrfTestFiles;
+using motostab::output::writeStaticTestFiles;
 
 using namespace motostab::swingarm::identification;
 

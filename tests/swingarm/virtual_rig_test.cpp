@@ -4,12 +4,14 @@
 
 #include <cmath>
 
-#include "swingarm/identification/decomposition.h"
-#include "swingarm/identification/virtual_rig.h"
+#include "output/virtual_rig_output.h"
+#include "rig_round_trip.h"
 #include "rig_truth.h"
 #include "tests/support/temp_dir.h"
 
 namespace {
+
+using motostab::output::writeFrfTestFiles;
 
 using namespace motostab::swingarm::identification;
 constexpr double kDeg = M_PI / 180;
@@ -18,30 +20,16 @@ struct Errors {
   double beta, kTw, fB, fT, zB, zT, kB, kT, cTw;  // deg or relative
 };
 
-struct RoundTrip {
-  StaticTest staticTest;
-  FrfTest frfTest;
-  StaticResult stat;
-  FrfResult frf;
-  SwingarmIdentification id;
+struct RoundTrip : IdentifiedRig {
   Errors err;
 };
 
 RoundTrip runRoundTrip(const std::string& name, double noiseFactor, std::uint64_t seed, const std::string& extra = "") {
   const VirtualSwingarm rig;
   const RigNoise noise = RigNoise().scaled(noiseFactor);
-  const auto dir = makeTempDir(name);
-  std::vector<double> loads;
-  for (int i = 0; i <= 32; ++i) loads.push_back(250.0 * (i <= 16 ? i : 32 - i));  // 0-4000-0 N
-  writeStaticTestFiles(dir, rig, simulateStaticReadings(rig, loads, noise, seed), noise.laserResolution);
-  writeFrfTestFiles(dir, rig, simulateHammerHits(rig, {}, noise, seed + 7),
-                    "  band_hz: [60, 400]\n  model_order: [4, 24]\n" + extra);
   RoundTrip r;
-  r.staticTest = readStaticTest(dir / "static.yaml");
-  r.frfTest = readFrfTest(dir / "frf.yaml");
-  r.stat = identifyStatic(r.staticTest, readStaticReadings(r.staticTest));
-  r.frf = identifyFrf(r.frfTest, readHits(r.frfTest));
-  r.id = identifySwingarm(r.stat, r.frf);
+  static_cast<IdentifiedRig&>(r) =
+      identifyRigTests(rig, noise, seed, makeTempDir(name), "  band_hz: [60, 400]\n  model_order: [4, 24]\n" + extra);
   const RigTruth t = calcRigTruth(rig);
   const double cB = rig.kB * rig.zetaB / (M_PI * rig.fB), cT = rig.kT * rig.zetaT / (M_PI * rig.fT);
   const double rb = rig.armB * t.kTw / (rig.kB * t.aTw), rt = rig.armT * t.kTw / (rig.kT * t.aTw);
