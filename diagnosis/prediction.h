@@ -45,7 +45,8 @@ class Predictor {
  public:
   /// Sweeps the base scenario (`baseChanges` applied) once for the mode labels. Data taken with
   /// several controller settings is predicted group by group (diagnosis/controller_groups.h), each
-  /// group by a predictor of its own whose base changes end with the group's.
+  /// group by a predictor of its own whose base changes end with the group's. Data without
+  /// eigenvalue rows and response runs: std::invalid_argument (there is nothing to sweep for).
   Predictor(std::shared_ptr<const scenario::ScenarioSource> source, scenario::ParameterOverrides baseChanges, const MeasuredData& data);
   /// The same, reading `scenarioFile` (once).
   Predictor(const std::string& scenarioFile, scenario::ParameterOverrides baseChanges, const MeasuredData& data);
