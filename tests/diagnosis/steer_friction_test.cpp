@@ -13,6 +13,7 @@
 #include "diagnosis/diagnosis.h"
 #include "diagnosis/model_fit.h"
 #include "diagnosis/physical_candidates.h"
+#include "diagnosis/robustness.h"
 #include "diagnosis/steer_rate_amplitude.h"
 #include "run_hidden.h"
 #include "scenario/scenario.h"
@@ -227,6 +228,11 @@ TEST(SteerFriction, HiddenFrictionIsFoundAsFrictionOrItsLookAlike) {
   EXPECT_LE(lo, tf);
   EXPECT_GE(hi, tf);
   EXPECT_NEAR(f.value, tf, 0.15 * tf);
+  // A robustness rerun naming the look-alike is "indistinguishable", not "other cause".
+  RobustnessRun rerun;
+  rerun.causes = {other};
+  rerun.fits = {*look};
+  EXPECT_EQ(judgeRobustness(r.causes, rerun), RobustnessVerdict::Indistinguishable);
 }
 
 }  // namespace
