@@ -5,6 +5,7 @@
 
 #include <Eigen/Dense>
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 
@@ -220,11 +221,14 @@ TEST(SteerFriction, HiddenFrictionIsFoundAsFrictionOrItsLookAlike) {
   const FitSummary& damper = cause.fit.name == "steer_damper" ? cause.fit : *look;
   ASSERT_EQ(friction.parameters.size(), 1u);
   const ParameterEstimate& f = friction.parameters[0];
+  const double lo = f.hasProfile ? f.profileLow : f.value - 1.96 * f.stderr_;
+  const double hi = f.hasProfile ? f.profileHigh : f.value + 1.96 * f.stderr_;
   EXPECT_EQ(f.name, "friction_torque_Nm");
   EXPECT_NE(f.note.find(io::formatNumber(omega) + " rad/s"), std::string::npos) << f.note;
   EXPECT_NEAR(damper.parameters[0].value * M_PI * omega / 4, f.value, 0.01 * f.value);
-  const double lo = f.hasProfile ? f.profileLow : f.value - 1.96 * f.stderr_;
-  const double hi = f.hasProfile ? f.profileHigh : f.value + 1.96 * f.stderr_;
+  EXPECT_NEAR(look->bic, cause.fit.bic, 0.5);  // one model: the same fit
+  std::printf("named %s; delta BIC of %s %.3g; T_f %.4g N m, friction %.4g (%.4g-%.4g)\n", cause.fit.name.c_str(), other.c_str(),
+              look->bic - cause.fit.bic, tf, f.value, lo, hi);
   EXPECT_LE(lo, tf);
   EXPECT_GE(hi, tf);
   EXPECT_NEAR(f.value, tf, 0.15 * tf);
