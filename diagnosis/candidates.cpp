@@ -66,8 +66,8 @@ Candidate makeSteerFriction(const YAML::Node& tree, const SteerRateAmplitude& om
   p.name = "friction_torque_Nm";
   p.lower /= k, p.upper /= k, p.start /= k, p.step /= k;
   p.keyScale = k;
-  p.note = "at a steer-rate amplitude of " + formatNumber(omega.value_rad_s) + " rad/s (" + omega.source +
-           "): damping " + formatNumber(k) + " N m s/rad per N m";
+  p.note = "at a steer-rate amplitude of " + formatNumber(omega.value_rad_s, 4) + " rad/s (" + omega.source +
+           "): damping " + formatNumber(k, 4) + " N m s/rad per N m";
   if (tree["steer_damper"]) {  // added to the damper there is
     p.keyOffset = getScalar(tree, "steer_damper", "damping_Nms_per_rad", 0);
     c.fixedOverrides = {};

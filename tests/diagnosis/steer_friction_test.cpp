@@ -224,7 +224,7 @@ TEST(SteerFriction, HiddenFrictionIsFoundAsFrictionOrItsLookAlike) {
   const double lo = f.hasProfile ? f.profileLow : f.value - 1.96 * f.stderr_;
   const double hi = f.hasProfile ? f.profileHigh : f.value + 1.96 * f.stderr_;
   EXPECT_EQ(f.name, "friction_torque_Nm");
-  EXPECT_NE(f.note.find(io::formatNumber(omega) + " rad/s"), std::string::npos) << f.note;
+  EXPECT_NE(f.note.find(io::formatNumber(omega, 4) + " rad/s"), std::string::npos) << f.note;
   EXPECT_NEAR(damper.parameters[0].value * M_PI * omega / 4, f.value, 0.01 * f.value);
   EXPECT_NEAR(look->bic, cause.fit.bic, 0.5);  // one model: the same fit
   std::printf("named %s; delta BIC of %s %.3g; T_f %.4g N m, friction %.4g (%.4g-%.4g)\n", cause.fit.name.c_str(), other.c_str(),
