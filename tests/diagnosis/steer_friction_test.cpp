@@ -16,6 +16,7 @@
 #include "diagnosis/physical_candidates.h"
 #include "diagnosis/robustness.h"
 #include "diagnosis/steer_rate_amplitude.h"
+#include "benchmark_equations.h"
 #include "run_hidden.h"
 #include "scenario/scenario.h"
 
@@ -123,7 +124,7 @@ TEST(SteerFriction, SinusoidAmplitude) {
 
 // Source (c): a calibrated roll-rate run gives Omega = its amplitude times the weave's |steer| / |roll|
 // mode-shape ratio, here against the benchmark's published linear equations (Meijaard et al. 2007,
-// Proc. R. Soc. A 463, eq. (A 20) with the Table 1 bicycle: M, C1, K0, K2) solved here. Source (b): a
+// benchmark_equations.h) solved here. Source (b): a
 // calibrated steer-rate signal is used as it is; (a): the data's own key wins.
 TEST(SteerFriction, AmplitudeFromTheData) {
   PortableRandom rng(99);
@@ -140,17 +141,7 @@ TEST(SteerFriction, AmplitudeFromTheData) {
   MeasuredData data;
   data.responses = {run};
   const Predictor predictor(kBenchmark, {}, data);
-  // Meijaard et al. (2007) eq. (A 20): M q'' + v C1 q' + (g K0 + v^2 K2) q = 0, q = (roll, steer).
-  Eigen::Matrix2d M, C1, K0, K2;
-  M << 80.81722, 2.31941332208709, 2.31941332208709, 0.29784188199686;
-  C1 << 0, 33.86641391492494, -0.85035641456978, 1.68540397397560;
-  K0 << -80.95, -2.59951685249872, -2.59951685249872, -0.80329488458618;
-  K2 << 0, 76.59734589573222, 0, 2.65431523794604;
-  Eigen::Matrix4d A = Eigen::Matrix4d::Zero();
-  A.topRightCorner<2, 2>().setIdentity();
-  A.bottomLeftCorner<2, 2>() = -M.inverse() * (9.81 * K0 + v * v * K2);
-  A.bottomRightCorner<2, 2>() = -M.inverse() * (v * C1);
-  const Eigen::EigenSolver<Eigen::Matrix4d> es(A);
+  const Eigen::EigenSolver<Eigen::Matrix4d> es(testing::calcBenchmarkStateMatrix(v));
   double ratio = 0;
   for (int i = 0; i < 4; ++i)
     if (es.eigenvalues()(i).imag() > 1) ratio = std::abs(es.eigenvectors()(1, i)) / std::abs(es.eigenvectors()(0, i));
