@@ -5,7 +5,6 @@
 
 #include "apps/commands.h"
 #include "io/output_folder.h"
-#include "response/modes_json.h"
 #include "output/response_output.h"
 #include "response/response_csv.h"
 
@@ -35,7 +34,7 @@ void runResponseIdentify(ResponseArgs args) {
   const std::filesystem::path out =
       args.out.empty() ? std::filesystem::path(std::filesystem::path(args.csv).stem().string() + "-modes")
                        : std::filesystem::path(args.out);
-  std::cout << response::formatModesTable(result, record.signalColumns);
+  std::cout << output::formatModesTable(result, record.signalColumns);
   OutputFolder folder(out);
   output::writeResponseReport(folder.getPath(), record, result);
   folder.commit();

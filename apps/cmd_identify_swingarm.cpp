@@ -10,6 +10,8 @@
 #include "io/input_error.h"
 #include "io/atomic_file.h"
 #include "io/output_folder.h"
+#include "output/swingarm_output.h"
+#include "output/virtual_rig_output.h"
 #include "swingarm/identification/decomposition.h"
 #include "swingarm/identification/frf_diagnosis.h"
 #include "swingarm/identification/hammer_frf.h"
@@ -66,7 +68,7 @@ void writeWholeFolder(const std::string& target, const Write& write) {
 void runStatic(const Args& args) {
   const auto t = id::readStaticTest(args.first);
   const auto r = id::identifyStatic(t, id::readStaticReadings(t));
-  writeWholeFolder(args.out, [&](const std::filesystem::path& dir) { id::writeStaticOutputs(t, r, dir); });
+  writeWholeFolder(args.out, [&](const std::filesystem::path& dir) { output::writeStaticOutputs(t, r, dir); });
   printStatic(r);
 }
 
@@ -74,7 +76,7 @@ void runFrf(const Args& args) {
   const auto t = id::readFrfTest(args.first);
   const auto r = id::identifyFrf(t, id::readHits(t));
   // Complete even without modes: the FRFs to look at.
-  writeWholeFolder(args.out, [&](const std::filesystem::path& dir) { id::writeFrfOutputs(t, r, dir); });
+  writeWholeFolder(args.out, [&](const std::filesystem::path& dir) { output::writeFrfOutputs(t, r, dir); });
   printFrf(r, args.verbose);
   id::requireModes(r);  // exit 3 with what was tried and what to set
 }
@@ -92,9 +94,9 @@ void runSwingarm(const Args& args) {
   id::requireBendingAndTorsion(fr);
   const auto swr = id::identifySwingarm(sr, fr);
   OutputFolder folder(args.out);
-  id::writeStaticOutputs(st, sr, folder.getPath());
-  id::writeFrfOutputs(ft, fr, folder.getPath() / "frf");
-  id::writeSwingarmOutputs(swr, st, ft, folder.getPath());
+  output::writeStaticOutputs(st, sr, folder.getPath());
+  output::writeFrfOutputs(ft, fr, folder.getPath() / "frf");
+  output::writeSwingarmOutputs(swr, st, ft, folder.getPath());
   writeFileAtomically(folder.getPath() / "swingarm_uncertainty.yaml", id::formatSwingarmUncertainty(swr));
   folder.commit();
   const std::filesystem::path out(args.out);
@@ -107,7 +109,7 @@ void runSwingarm(const Args& args) {
 void runCog(const Args& args) {
   const auto t = id::readCogTest(args.first);
   const auto r = id::identifyCog(t);
-  writeWholeFolder(args.out, [&](const std::filesystem::path& dir) { id::writeCogOutputs(t, r, dir); });
+  writeWholeFolder(args.out, [&](const std::filesystem::path& dir) { output::writeCogOutputs(t, r, dir); });
   std::printf("cog: mass %.4f +/- %.4f kg, CoG (%.5f, %.5f, %.5f) +/- (%.5f, %.5f, %.5f) m\n", r.mass, r.massStderr,
               r.cog[0], r.cog[1], r.cog[2], r.cogStderr[0], r.cogStderr[1], r.cogStderr[2]);
 }
@@ -115,7 +117,7 @@ void runCog(const Args& args) {
 void runInertia(const Args& args) {
   const auto t = id::readInertiaTest(args.first);
   const auto r = id::identifyInertia(t);
-  writeWholeFolder(args.out, [&](const std::filesystem::path& dir) { id::writeInertiaOutputs(t, r, dir); });
+  writeWholeFolder(args.out, [&](const std::filesystem::path& dir) { output::writeInertiaOutputs(t, r, dir); });
   std::printf("inertia about CoG: Ixx %.5f +/- %.5f, Iyy %.5f +/- %.5f, Izz %.5f +/- %.5f kg m^2\n", r.tensor(0, 0),
               r.tensorStderr(0, 0), r.tensor(1, 1), r.tensorStderr(1, 1), r.tensor(2, 2), r.tensorStderr(2, 2));
 }
@@ -127,11 +129,11 @@ void runVirtualRig(const Args& args) {
   const auto noise = id::RigNoise().scaled(args.noiseFactor);
   std::vector<double> loads;  // load and unload, 0-4000-0 N in 250 N steps
   for (int i = 0; i <= 32; ++i) loads.push_back(250.0 * (i <= 16 ? i : 32 - i));
-  id::writeStaticTestFiles(out, rig, id::simulateStaticReadings(rig, loads, noise, args.seed), noise.laserResolution);
-  id::writeFrfTestFiles(out, rig, id::simulateHammerHits(rig, {}, noise, args.seed + 1));  // default settings
+  output::writeStaticTestFiles(out, rig, id::simulateStaticReadings(rig, loads, noise, args.seed), noise.laserResolution);
+  output::writeFrfTestFiles(out, rig, id::simulateHammerHits(rig, {}, noise, args.seed + 1));  // default settings
   const id::VirtualPart part;
-  id::writeCogTestFiles(out, part, {0.05, 0.0, 0.04}, 0.05 * args.noiseFactor, args.seed + 2);
-  id::writeInertiaTestFiles(out, part, 1e-3 * args.noiseFactor, args.seed + 3);
+  output::writeCogTestFiles(out, id::simulateCogReadings(part, {0.05, 0.0, 0.04}, 0.05 * args.noiseFactor, args.seed + 2));
+  output::writeInertiaTestFiles(out, id::simulateTrifilarTest(part, 1e-3 * args.noiseFactor, args.seed + 3));
   folder.commit();
   std::printf("virtual rig inputs written to %s (truth: docs/swingarm-identification.md, 'Virtual rig')\n",
               folder.getTarget().c_str());

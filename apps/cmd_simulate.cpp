@@ -11,7 +11,7 @@
 #include "apps/common_options.h"
 #include "io/input_error.h"
 #include "io/output_folder.h"
-#include "response/modes_json.h"
+#include "output/response_output.h"
 #include "apps/simulate_identify.h"
 #include "output/simulation_output.h"
 
@@ -101,7 +101,7 @@ void runSimulate(SimulateArgs a) {
     const double t0 = simulation::getFreeResponseStart(o.perturbations);
     const std::vector<std::string> signals{"roll_rate", "steer_rate"};
     const auto modes = writeSimulatedModes(out, result, t0, describeSettings(a), signals);
-    std::cout << response::formatModesTable(modes, signals) << "Wrote " << (target / "modes.json").string() << "\n";
+    std::cout << output::formatModesTable(modes, signals) << "Wrote " << (target / "modes.json").string() << "\n";
   }
   folder.commit();  // also after a fall or a failure: the samples up to it are the run's outputs
   // A failure is reported after the data up to it has been written.

@@ -4,10 +4,8 @@
 #include <cmath>
 #include <sstream>
 
-#include "io/atomic_file.h"
-#include "io/csv.h"
-#include "io/plot.h"
 #include "diagnosis/robustness.h"
+#include "output/writer_tools.h"
 
 namespace motostab::output {
 
@@ -18,11 +16,6 @@ using diagnosis::FitSummary;
 using diagnosis::MeasuredData;
 using diagnosis::ParameterEstimate;
 using diagnosis::makeScenarioTree;
-using io::CsvWriter;
-using io::formatNumber;
-using io::gnuplotQuote;
-using io::renderGnuplot;
-using io::writeFileAtomically;
 
 namespace {
 
@@ -153,7 +146,6 @@ std::string makeParameterText(const std::vector<ParameterEstimate>& ps) {
   }
   return s;
 }
-
 
 std::string makeDataSection(const DiagnosisResult& r) {
   std::ostringstream o;

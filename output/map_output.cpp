@@ -5,20 +5,13 @@
 #include <sstream>
 #include <vector>
 
-#include "io/atomic_file.h"
-#include "io/csv.h"
-#include "io/plot.h"
 #include "output/sweep_output.h"
+#include "output/writer_tools.h"
 
 namespace motostab::output {
 
 using analysis::SweepResult;
 using analysis::TurnMapResult;
-using io::CsvWriter;
-using io::gnuplotQuote;
-using io::renderGnuplot;
-using io::writeFileAtomically;
-
 
 namespace {
 

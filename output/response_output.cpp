@@ -1,25 +1,87 @@
 #include "output/response_output.h"
 
 #include <cstdio>
+#include <stdexcept>
 
-#include "io/atomic_file.h"
-#include "io/csv.h"
 #include "io/number.h"
-#include "io/plot.h"
-#include "response/modes_json.h"
+#include "output/writer_tools.h"
 
 namespace motostab::output {
 
-using io::CsvWriter;
-using io::formatNumber;
-using io::gnuplotQuote;
-using io::renderGnuplot;
-using io::writeFileAtomically;
 using response::IdentificationResult;
 using response::ResponseRecord;
 using response::calcModelResponse;
-using response::makeModesJson;
 
+nlohmann::json makeModesJson(const IdentificationResult& result, const std::vector<std::string>& signalNames) {
+  if (signalNames.size() != result.offset.size())
+    throw std::invalid_argument("makeModesJson: " + std::to_string(signalNames.size()) + " names for " +
+                                std::to_string(result.offset.size()) + " signals");
+  nlohmann::json modes = nlohmann::json::array();
+  for (const auto& m : result.modes) {
+    modes.push_back({{"real", m.real},
+                     {"imag", m.imag},
+                     {"frequency_hz", m.frequencyHz},
+                     {"damping_ratio", m.dampingRatio},
+                     {"kind", m.imag > 0 ? "oscillatory" : "real"},
+                     {"amplitude", m.amplitude},
+                     {"phase_rad", m.phase}});
+  }
+  nlohmann::json candidates = nlohmann::json::array();
+  for (const auto& c : result.candidates)
+    candidates.push_back({{"order", c.order},
+                          {"pencil_size", c.pencilSize},
+                          {"offset", c.offset},
+                          {"singular_value_ratio", c.singularValueRatio},
+                          {"at_gap", c.atGap},
+                          {"r_squared", c.rSquared},
+                          {"bic", c.criterion}});
+  return {{"method", "matrix pencil (Hua & Sarkar 1990); order: lowest BIC among pencil sizes at a "
+                     "singular-value gap; variable-projection Levenberg-Marquardt polish on the original samples"},
+          {"model", "y_k(t) = offset_k + sum_m amplitude_mk exp(real_m tau) cos(imag_m tau + phase_mk), "
+                    "tau = t - reference_time_s; complex pairs listed once (imag > 0)"},
+          {"signals", signalNames},
+          {"modes", modes},
+          {"offset", result.offset},
+          {"order", result.order},
+          {"fit",
+           {{"r_squared", result.rSquared},
+            {"rms_residual", result.rmsResidual},
+            {"normalised_rms_residual", result.normalisedRmsResidual}}},
+          {"window", {{"start_s", result.windowStart}, {"end_s", result.windowEnd}, {"samples", result.sampleCount}}},
+          {"reference_time_s", result.referenceTime},
+          {"pencil", {{"resampled", result.resampled}, {"step_s", result.pencilStep},
+                      {"singular_values", result.singularValues}}},
+          {"candidates", candidates}};
+}
+
+std::string formatModesTable(const IdentificationResult& result, const std::vector<std::string>& signalNames) {
+  std::string out;
+  char line[256];
+  std::snprintf(line, sizeof line, "%-4s %12s %12s %12s %10s  %s\n", "mode", "real [1/s]", "imag [rad/s]",
+                "freq [Hz]", "damping", "amplitude");
+  out += line;
+  for (size_t i = 0; i < result.modes.size(); ++i) {
+    const auto& m = result.modes[i];
+    std::string amps;
+    for (size_t s = 0; s < m.amplitude.size(); ++s) {
+      char a[64];
+      std::snprintf(a, sizeof a, "%s%.4g", s ? ", " : "", m.amplitude[s]);
+      amps += a;
+    }
+    std::snprintf(line, sizeof line, "%-4zu %12.5f %12.5f %12.5f %10.5f  %s\n", i + 1, m.real, m.imag, m.frequencyHz,
+                  m.dampingRatio, amps.c_str());
+    out += line;
+  }
+  std::snprintf(line, sizeof line, "order %d, R^2 = %.6f, window %.6g to %.6g s (%d samples)\n", result.order,
+                result.rSquared, result.windowStart, result.windowEnd, result.sampleCount);
+  out += line;
+  for (size_t s = 0; s < signalNames.size() && s < result.rmsResidual.size(); ++s) {
+    std::snprintf(line, sizeof line, "  %s: offset %.6g, rms residual %.4g (%.4g of its std dev)\n",
+                  signalNames[s].c_str(), result.offset[s], result.rmsResidual[s], result.normalisedRmsResidual[s]);
+    out += line;
+  }
+  return out;
+}
 
 void writeResponseReport(const std::filesystem::path& dir, const ResponseRecord& record,
                          const IdentificationResult& result, const nlohmann::json& extra) {

@@ -2,18 +2,11 @@
 
 #include <algorithm>
 
-#include "io/atomic_file.h"
-#include "io/csv.h"
-#include "io/plot.h"
+#include "output/writer_tools.h"
 
 namespace motostab::output {
 
-using io::CsvWriter;
-using io::gnuplotQuote;
-using io::renderGnuplot;
-using io::writeFileAtomically;
 using simulation::SimulationResult;
-
 
 void writeTimeseries(const std::filesystem::path& dir, const SimulationResult& result) {
   CsvWriter csv(result.columns);

@@ -4,18 +4,12 @@
 #include <iomanip>
 #include <sstream>
 
-#include "io/atomic_file.h"
-#include "io/csv.h"
-#include "io/plot.h"
 #include "output/sweep_output.h"
+#include "output/writer_tools.h"
 #include "studies/study_findings.h"
 
 namespace motostab::output {
 
-using io::CsvWriter;
-using io::gnuplotQuote;
-using io::renderGnuplot;
-using io::writeFileAtomically;
 using studies::StudyFindings;
 using studies::StudyOptions;
 using studies::StudyResult;

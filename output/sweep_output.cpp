@@ -7,9 +7,7 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "io/atomic_file.h"
-#include "io/csv.h"
-#include "io/plot.h"
+#include "output/writer_tools.h"
 
 namespace motostab::output {
 
@@ -18,11 +16,6 @@ using analysis::ModeBranch;
 using analysis::StableRange;
 using analysis::SweepResult;
 using analysis::calcStableSpeedRanges;
-using io::CsvWriter;
-using io::gnuplotQuote;
-using io::renderGnuplot;
-using io::writeFileAtomically;
-
 
 double calcFrequencyHz(std::complex<double> l) { return l.imag() / (2 * M_PI); }
 

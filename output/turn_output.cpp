@@ -4,18 +4,16 @@
 #include <iomanip>
 #include <sstream>
 
-#include "io/atomic_file.h"
+#include "output/writer_tools.h"
 
 namespace motostab::output {
 
 using analysis::TrimResult;
 using analysis::TurnFigures;
 using analysis::calcTurnFigures;
-using io::writeFileAtomically;
 using vehicle::CoordinateIndices;
 using vehicle::Input;
 using vehicle::VehicleModel;
-
 
 nlohmann::json makeTrimJson(const VehicleModel& model, const TrimResult& trim) {
   const CoordinateIndices& ix = model.getIndices();

@@ -1,16 +1,8 @@
 #include "output/tyre_curve_output.h"
 
-#include "io/atomic_file.h"
-#include "io/csv.h"
-#include "io/plot.h"
+#include "output/writer_tools.h"
 
 namespace motostab::output {
-
-using io::CsvWriter;
-using io::gnuplotQuote;
-using io::renderGnuplot;
-using io::writeFileAtomically;
-
 
 const std::vector<std::string>& getTyreCurveColumns() {
   static const std::vector<std::string> columns{"fz_N",  "slip_angle_rad", "camber_rad", "slip_ratio", "fx_N",

@@ -5,17 +5,10 @@
 #include <numeric>
 #include <sstream>
 
-#include "io/atomic_file.h"
-#include "io/csv.h"
-#include "io/plot.h"
+#include "output/writer_tools.h"
 
 namespace motostab::output {
 
-using io::CsvWriter;
-using io::formatNumber;
-using io::gnuplotQuote;
-using io::renderGnuplot;
-using io::writeFileAtomically;
 using uncertainty::ModeQuantiles;
 using uncertainty::SamplingMethod;
 using uncertainty::TaskKind;

@@ -1,18 +1,14 @@
 #include "swingarm/identification/decomposition.h"
 
 #include <cmath>
-#include <cstdio>
 #include <sstream>
 #include <stdexcept>
 
-#include "io/atomic_file.h"
 #include "io/csv.h"
-#include "swingarm/identification/axes_plot.h"
 
 namespace motostab::swingarm::identification {
 
 using io::formatNumber;
-using io::writeFileAtomically;
 
 namespace {
 constexpr double kDeg = M_PI / 180;
@@ -130,28 +126,6 @@ std::string formatSwingarmYaml(const SwingarmIdentification& id, const std::stri
   model("torsion", id.torsion, true, "rotation about the torsion-mode axis (seed eq. 7, 10, 15, 20)");
   model("twist", id.twist, false, "rotation about the static twist axis (seed eq. 1-4, 25)");
   return y.str();
-}
-
-void writeSwingarmOutputs(const SwingarmIdentification& id, const StaticTest& stat, const FrfTest& frf,
-                          const std::filesystem::path& dir) {
-  writeFileAtomically(dir / "swingarm.yaml",
-                      formatSwingarmYaml(id, stat.file.string(), frf.file.string(), stat.forcePoint));
-  std::vector<PlotMarker> sensors;
-  for (const auto& s : stat.sensors) sensors.push_back({s.name + " (laser)", s.position});
-  for (const auto& c : frf.channels) {
-    bool shared = false;
-    for (auto& s : sensors)
-      if (std::hypot(s.position.x - c.position.x, s.position.z - c.position.z) < 1e-4) s.label += "/" + c.name, shared = true;
-    if (!shared) sensors.push_back({c.name + " (acc.)", c.position});
-  }
-  char t[3][96];
-  std::snprintf(t[0], 96, "static twist axis, k_{tw} %.4g Nm/rad", id.twist.stiffness.value);
-  std::snprintf(t[1], 96, "bending axis, k_{b} %.4g Nm/rad", id.bending.stiffness.value);
-  std::snprintf(t[2], 96, "torsion axis, k_{t} %.4g Nm/rad", id.torsion.stiffness.value);
-  writeAxesPlot(dir, "swingarm_axes", "Static and modal twist axes (seed Fig. 3, 5, 8)", sensors, stat.forcePoint,
-                {{t[0], id.twist.point, id.twist.direction},
-                 {t[1], id.bending.point, id.bending.direction},
-                 {t[2], id.torsion.point, id.torsion.direction}});
 }
 
 }  // namespace motostab::swingarm::identification

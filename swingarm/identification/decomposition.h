@@ -62,8 +62,4 @@ SwingarmIdentification identifySwingarm(const StaticResult& stat, const FrfResul
 std::string formatSwingarmYaml(const SwingarmIdentification& id, const std::string& staticFile,
                                const std::string& frfFile, const PlatePoint& forcePoint);
 
-/// Writes DIR/swingarm.yaml and the plot DIR/swingarm_axes.png/.svg (static, bending, torsion axes).
-void writeSwingarmOutputs(const SwingarmIdentification& id, const StaticTest& stat, const FrfTest& frf,
-                          const std::filesystem::path& dir);
-
 }  // namespace motostab::swingarm::identification

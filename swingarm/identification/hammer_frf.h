@@ -93,8 +93,4 @@ struct FrfResult {
 /// and diagnostics (swingarm/identification/frf_diagnosis.h). Frequencies in Hz, damping ratios viscous.
 FrfResult identifyFrf(const FrfTest& test, const std::vector<modal::ImpactRecord>& hits);
 
-/// Writes DIR/frf.csv, DIR/modes.csv, DIR/stabilisation.csv, DIR/frf.json and the plots
-/// frf_magnitude_phase, coherence, stabilisation and modal_axes (png + svg).
-void writeFrfOutputs(const FrfTest& test, const FrfResult& result, const std::filesystem::path& dir);
-
 }  // namespace motostab::swingarm::identification

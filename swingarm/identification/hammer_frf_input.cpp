@@ -9,11 +9,6 @@
 
 namespace motostab::swingarm::identification {
 
-using io::CsvTable;
-using io::InputError;
-using io::YamlMap;
-using io::readCsv;
-
 namespace {
 
 // The optional `processing` mapping of a hammer test.

@@ -1,26 +1,15 @@
 #include "swingarm/identification/mass_properties.h"
 
 #include <cmath>
-#include <nlohmann/json.hpp>
 #include <set>
 #include <sstream>
 
-#include "io/atomic_file.h"
 #include "io/csv.h"
 #include "io/input_error.h"
-#include "io/plot.h"
 #include "swingarm/identification/plate_motion.h"
 #include "swingarm/identification/yaml_input.h"
 
 namespace motostab::swingarm::identification {
-
-using io::CsvTable;
-using io::CsvWriter;
-using io::InputError;
-using io::YamlMap;
-using io::readCsv;
-using io::renderGnuplot;
-using io::writeFileAtomically;
 
 namespace {
 
@@ -129,30 +118,6 @@ CogResult identifyCog(const CogTest& t) {
   return res;
 }
 
-void writeCogOutputs(const CogTest& t, const CogResult& r, const std::filesystem::path& dir) {
-  nlohmann::json j;
-  j["test"] = t.file.string();
-  j["frame"] = t.frame;
-  j["mass_kg"] = r.mass;
-  j["mass_kg_stderr"] = r.massStderr;
-  j["cog_m"] = {r.cog[0], r.cog[1], r.cog[2]};
-  j["cog_m_stderr"] = {r.cogStderr[0], r.cogStderr[1], r.cogStderr[2]};
-  j["centre_of_pressure_fit_rms_m"] = r.residualRms;
-  j["method"] = "x_p = x_G - z_G tan(tilt), least squares over all tilt angles (seed section 2.4)";
-  writeFileAtomically(dir / "cog.json", j.dump(2) + "\n");
-  CsvWriter w({"tilt_deg", "tan_tilt", "centre_of_pressure_x_m", "fit_m"});
-  const Eigen::Vector3d g = r.cog + t.partOrigin;
-  for (size_t i = 0; i < t.tiltDeg.size(); ++i) {
-    const double tt = std::tan(t.tiltDeg[i] * M_PI / 180);
-    w.beginRow().add(t.tiltDeg[i]).add(tt).add(r.centreOfPressureX[i]).add(g[0] - g[2] * tt);
-  }
-  writeFileAtomically(dir / "cog_fit.csv", w.getText());
-  renderGnuplot(dir, "cog_fit",
-                "set datafile separator ','\nset key autotitle columnhead\nset grid\nset xlabel 'tan(tilt)'\n"
-                "set ylabel 'centre of pressure x (m)'\nset title 'Tilting rig: x_p = x_G - z_G tan(tilt)'\n"
-                "plot 'cog_fit.csv' using 2:3 with points pt 7 title 'measured', '' using 2:4 with lines title 'fit'\n");
-}
-
 namespace {
 
 // A non-empty list of positive periods, s.
@@ -245,39 +210,6 @@ InertiaResult identifyInertia(const InertiaTest& t) {
     r.tensorStderr(idx[k][0], idx[k][1]) = r.tensorStderr(idx[k][1], idx[k][0]) = se[k];
   }
   return r;
-}
-
-void writeInertiaOutputs(const InertiaTest& t, const InertiaResult& r, const std::filesystem::path& dir) {
-  nlohmann::json j;
-  j["test"] = t.file.string();
-  j["plate_inertia_kg_m2"] = r.plateInertia;
-  j["plate_inertia_kg_m2_stderr"] = r.plateInertiaStderr;
-  const char* names[6] = {"I_xx", "I_yy", "I_zz", "I_xy", "I_xz", "I_yz"};
-  const int idx[6][2] = {{0, 0}, {1, 1}, {2, 2}, {0, 1}, {0, 2}, {1, 2}};
-  for (int k = 0; k < (r.fullTensor ? 6 : 3); ++k) {
-    j[std::string(names[k]) + "_kg_m2"] = r.tensor(idx[k][0], idx[k][1]);
-    j[std::string(names[k]) + "_kg_m2_stderr"] = r.tensorStderr(idx[k][0], idx[k][1]);
-  }
-  j["full_tensor"] = r.fullTensor;
-  j["about"] = "the part's centre of gravity, part frame; products of inertia I_xy = sum(m x y) sign convention "
-               "as entries of the inertia matrix (n^T I n = moment about n)";
-  CsvWriter w({"setup", "axis_x", "axis_y", "axis_z", "inertia_kg_m2", "inertia_kg_m2_stderr", "model_kg_m2"});
-  nlohmann::json js = nlohmann::json::array();
-  for (size_t i = 0; i < t.setups.size(); ++i) {
-    const auto& u = t.setups[i];
-    const double model = u.axis.dot(r.tensor * u.axis);
-    w.beginRow().add(static_cast<double>(i + 1)).add(u.axis[0]).add(u.axis[1]).add(u.axis[2]).add(r.setupInertia[i])
-        .add(r.setupInertiaStderr[i]).add(model);
-    js.push_back({{"name", u.name}, {"inertia_kg_m2", r.setupInertia[i]}, {"inertia_kg_m2_stderr", r.setupInertiaStderr[i]},
-                  {"model_kg_m2", model}});
-  }
-  j["setups"] = js;
-  writeFileAtomically(dir / "inertia.json", j.dump(2) + "\n");
-  writeFileAtomically(dir / "inertia_setups.csv", w.getText());
-  renderGnuplot(dir, "inertia_setups",
-                "set datafile separator ','\nset grid\nset xlabel 'set-up'\nset ylabel 'moment of inertia about CoG (kg m^2)'\n"
-                "set title 'Trifilar pendulum: measured (error bars) and fitted tensor'\nset xrange [0.5:*]\nset offsets 0,0.5,0,0\n"
-                "plot 'inertia_setups.csv' using 1:5:6 with yerrorbars pt 7 title 'measured', '' using 1:7 with points pt 4 ps 2 title 'n^T I n'\n");
 }
 
 }  // namespace motostab::swingarm::identification

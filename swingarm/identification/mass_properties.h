@@ -46,9 +46,6 @@ struct CogResult {
 /// m = sum(N_i)/(g cos alpha). Standard errors from the residuals, floored by the cell resolution.
 CogResult identifyCog(const CogTest& test);
 
-/// Writes DIR/cog.json and the plot DIR/cog_fit.png/.svg.
-void writeCogOutputs(const CogTest& test, const CogResult& result, const std::filesystem::path& dir);
-
 /// One trifilar set-up: the part on the plate with `axis` (unit vector in the part frame) vertical and
 /// its CoG `cogOffset` m from the pendulum axis.
 struct PendulumSetup {
@@ -86,8 +83,5 @@ struct InertiaResult {
 /// squares of n^T I n over set-ups for the 6 tensor components (or the 3 diagonal ones if the set-ups do
 /// not determine the products). Period stderr = max(scatter/sqrt(n), resolution/sqrt(12)).
 InertiaResult identifyInertia(const InertiaTest& test);
-
-/// Writes DIR/inertia.json and the plot DIR/inertia_setups.png/.svg.
-void writeInertiaOutputs(const InertiaTest& test, const InertiaResult& result, const std::filesystem::path& dir);
 
 }  // namespace motostab::swingarm::identification

@@ -2,23 +2,13 @@
 
 #include <cmath>
 #include <cstdio>
-#include <nlohmann/json.hpp>
 #include <set>
 
-#include "io/atomic_file.h"
 #include "io/csv.h"
 #include "io/input_error.h"
-#include "swingarm/identification/axes_plot.h"
 #include "swingarm/identification/yaml_input.h"
 
 namespace motostab::swingarm::identification {
-
-using io::CsvTable;
-using io::InputError;
-using io::YamlMap;
-using io::readCsv;
-using io::writeFileAtomically;
-
 
 StaticTest readStaticTest(const std::filesystem::path& file) {
   YamlMap root = openTestFile(file, "static");
@@ -120,55 +110,6 @@ StaticResult identifyStatic(const StaticTest& test, const StaticReadings& rd) {
   res.yLatPerN = v[5], res.yLatPerNStderr = se(5);
   res.axisPointStderr = Eigen::Vector2d(se(6), se(7));
   return res;
-}
-
-void writeStaticOutputs(const StaticTest& test, const StaticResult& r, const std::filesystem::path& dir) {
-  using nlohmann::json;
-  const Eigen::Vector2d dirStderr = Eigen::Vector2d(std::abs(std::sin(r.betaDeg * M_PI / 180)),
-                                                    std::abs(std::cos(r.betaDeg * M_PI / 180))) *
-                                    (r.betaStderrDeg * M_PI / 180);
-  json j;
-  j["test"] = test.file.string();
-  j["frame"] = test.frame;
-  j["k_lat_N_per_m"] = r.kLat;
-  j["k_lat_N_per_m_stderr"] = r.kLatStderr;
-  j["a_tw_m"] = r.aTw;
-  j["a_tw_m_stderr"] = r.aTwStderr;
-  j["k_tw_Nm_per_rad"] = r.kTw;
-  j["k_tw_Nm_per_rad_stderr"] = r.kTwStderr;
-  j["beta_deg"] = r.betaDeg;
-  j["beta_deg_stderr"] = r.betaStderrDeg;
-  j["axis_point_m"] = {r.axis.point[0], 0.0, r.axis.point[1]};
-  j["axis_point_m_stderr"] = {r.axisPointStderr[0], 0.0, r.axisPointStderr[1]};
-  j["axis_direction"] = {r.axis.direction[0], 0.0, r.axis.direction[1]};
-  j["axis_direction_stderr"] = {dirStderr[0], 0.0, dirStderr[1]};
-  j["rotation_per_N_rad_per_N"] = r.rotationPerN;
-  j["rotation_per_N_rad_per_N_stderr"] = r.rotationPerNStderr;
-  j["y_lat_per_N_m_per_N"] = r.yLatPerN;
-  j["y_lat_per_N_m_per_N_stderr"] = r.yLatPerNStderr;
-  j["y_lat_at_max_load_m"] = r.yLatPerN * r.maxForce;
-  j["y_lat_at_max_load_m_stderr"] = r.yLatPerNStderr * r.maxForce;
-  j["max_load_N"] = r.maxForce;
-  j["force_point_m"] = {test.forcePoint.x, 0.0, test.forcePoint.z};
-  j["reading_sigma_m"] = r.sigma;
-  j["reading_sigma_residual_m"] = r.sigmaResidual;
-  j["residual_dof"] = r.residualDof;
-  j["sensor_resolution_m"] = test.sensorResolution;
-  json levels = json::array();
-  for (const auto& lv : r.levels)
-    levels.push_back({{"force_N", lv.force}, {"d0_m", lv.plane[0]}, {"dx_rad", lv.plane[1]}, {"dz_rad", lv.plane[2]},
-                      {"residual_rms_m", lv.residualRms}});
-  j["load_levels"] = levels;
-  j["conventions"] =
-      "axis point = foot of the perpendicular from the force point, in (x, y, z) with y = 0 the plate plane; "
-      "axis_direction is oriented so that a_tw > 0 (y at the force point = theta * a_tw); beta_deg = atan2(e_z, e_x)";
-  writeFileAtomically(dir / "static.json", j.dump(2) + "\n");
-  std::vector<PlotMarker> sensors;
-  for (const auto& s : test.sensors) sensors.push_back({s.name, s.position});
-  char title[160];
-  std::snprintf(title, sizeof title, "Static twist axis: {/Symbol b} = %.2f deg, a_{tw} = %.4f m, k_{tw} = %.4g Nm/rad",
-                r.betaDeg, r.aTw, r.kTw);
-  writeAxesPlot(dir, "static_axis", title, sensors, test.forcePoint, {{"static twist axis", r.axis.point, r.axis.direction}});
 }
 
 }  // namespace motostab::swingarm::identification

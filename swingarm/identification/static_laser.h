@@ -72,8 +72,4 @@ struct StaticResult {
 /// Standard errors: Cov(slope) = sigma^2 (A^T A)^-1 / sum (F - mean F)^2, propagated to first order.
 StaticResult identifyStatic(const StaticTest& test, const StaticReadings& readings);
 
-/// Writes DIR/static.json (keys k_lat_N_per_m, a_tw_m, k_tw_Nm_per_rad, beta_deg, axis_point_m,
-/// axis_direction, their *_stderr, and details) and the plot DIR/static_axis.png/.svg.
-void writeStaticOutputs(const StaticTest& test, const StaticResult& result, const std::filesystem::path& dir);
-
 }  // namespace motostab::swingarm::identification

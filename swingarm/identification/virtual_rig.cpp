@@ -1,33 +1,19 @@
 #include "swingarm/identification/virtual_rig.h"
 
 #include <cmath>
-#include <sstream>
+#include <string>
 
 #include <unsupported/Eigen/MatrixFunctions>
 
-#include "io/atomic_file.h"
-#include "io/csv.h"
 #include "core/portable_random.h"
 
 namespace motostab::swingarm::identification {
 
 using core::PortableRandom;
-using io::formatNumber;
-using io::writeFileAtomically;
 
 namespace {
 
 constexpr double kDeg = M_PI / 180;
-
-std::string num(double v, int digits = 10) { return formatNumber(v, digits); }
-
-std::string sensorList(const VirtualSwingarm& rig, const char* prefix) {
-  std::ostringstream s;
-  for (size_t j = 0; j < rig.sensorPoints.size(); ++j)
-    s << "  - {name: " << prefix << j + 1 << ", x: " << num(rig.sensorPoints[j].x) << ", z: "
-      << num(rig.sensorPoints[j].z) << "}\n";
-  return s.str();
-}
 
 }  // namespace
 
@@ -138,53 +124,8 @@ std::vector<modal::ImpactRecord> simulateHammerHits(const VirtualSwingarm& rig, 
   return hits;
 }
 
-void writeStaticTestFiles(const std::filesystem::path& dir, const VirtualSwingarm& rig, const StaticReadings& r,
-                          double laserResolution) {
-  std::ostringstream y;
-  y << "test: static\n"
-    << "frame: \"x along the swingarm from the pivot towards the hub, z up, y lateral (the force direction); metres\"\n"
-    << "force_point: {x: " << num(rig.forcePoint.x) << ", z: " << num(rig.forcePoint.z) << "}\n"
-    << "sensors:\n" << sensorList(rig, "L") << "readings: static.csv\n"
-    << "sensor_resolution_m: " << num(laserResolution) << "\n";
-  writeFileAtomically(dir / "static.yaml", y.str());
-  std::ostringstream c;
-  c << "# virtual rig (motostab), laser resolution " << num(laserResolution) << " m\nforce_N";
-  for (size_t j = 0; j < rig.sensorPoints.size(); ++j) c << ",L" << j + 1 << "_m";
-  c << "\n";
-  for (size_t i = 0; i < r.force.size(); ++i) {
-    c << num(r.force[i]);
-    for (int j = 0; j < r.dy.cols(); ++j) c << "," << num(r.dy(i, j));
-    c << "\n";
-  }
-  writeFileAtomically(dir / "static.csv", c.str());
-}
-
-void writeFrfTestFiles(const std::filesystem::path& dir, const VirtualSwingarm& rig,
-                       const std::vector<modal::ImpactRecord>& hits, const std::string& processing) {
-  std::ostringstream y;
-  y << "test: frf\nframe: \"same convention as the static test\"\n"
-    << "force_point: {x: " << num(rig.forcePoint.x) << ", z: " << num(rig.forcePoint.z) << "}\n"
-    << "channels:\n" << sensorList(rig, "A") << "hits: [";
-  for (size_t h = 0; h < hits.size(); ++h) y << (h ? ", " : "") << "hit" << h + 1 << ".csv";
-  y << "]\n";
-  if (!processing.empty()) y << "processing:\n" << processing;
-  writeFileAtomically(dir / "frf.yaml", y.str());
-  for (size_t h = 0; h < hits.size(); ++h) {
-    std::ostringstream c;
-    c << "time_s,force_N";
-    for (size_t j = 0; j < hits[h].responses.size(); ++j) c << ",A" << j + 1 << "_mps2";
-    c << "\n";
-    for (size_t k = 0; k < hits[h].force.size(); ++k) {
-      c << num(k * hits[h].dt, 9) << "," << num(hits[h].force[k], 7);
-      for (const auto& ch : hits[h].responses) c << "," << num(ch[k], 7);
-      c << "\n";
-    }
-    writeFileAtomically(dir / ("hit" + std::to_string(h + 1) + ".csv"), c.str());
-  }
-}
-
-void writeCogTestFiles(const std::filesystem::path& dir, const VirtualPart& part, const Eigen::Vector3d& origin,
-                       double cellNoise, std::uint64_t seed) {
+CogRigReadings simulateCogReadings(const VirtualPart& part, const Eigen::Vector3d& origin, double cellNoise,
+                                   std::uint64_t seed) {
   PortableRandom rng(seed);
   const double g = 9.80665;
   const double cx[4] = {-0.3, 0.3, 0.3, -0.3}, cy[4] = {-0.2, -0.2, 0.2, 0.2};
@@ -199,62 +140,46 @@ void writeCogTestFiles(const std::filesystem::path& dir, const VirtualPart& part
   };
   const Eigen::Vector3d platformCog(0.01, 0.0, -0.03);
   const double platformMass = 20.0;
-  std::ostringstream rd, tr;
-  rd << "tilt_deg,N1_N,N2_N,N3_N,N4_N\n";
-  tr << "tilt_deg,N1_N,N2_N,N3_N,N4_N\n";
+  CogRigReadings r;
+  for (int j = 0; j < 4; ++j) r.cells.push_back({"N" + std::to_string(j + 1), cx[j], cy[j]});
+  r.partOrigin = origin;
   for (int a = 0; a <= 30; a += 3) {
     const double alpha = a * kDeg;
     const Eigen::Vector4d plat = cellLoads(platformMass, platformCog, alpha);
     const Eigen::Vector4d withPart = plat + cellLoads(part.mass, origin + part.cog, alpha);
-    rd << a;
-    tr << a;
+    Eigen::Vector4d loads, tare;
     for (int j = 0; j < 4; ++j) {
-      rd << "," << num(withPart[j] + cellNoise * rng.drawNormal(), 8);
-      tr << "," << num(plat[j] + cellNoise * rng.drawNormal(), 8);
+      loads[j] = withPart[j] + cellNoise * rng.drawNormal();
+      tare[j] = plat[j] + cellNoise * rng.drawNormal();
     }
-    rd << "\n";
-    tr << "\n";
+    r.tiltDeg.push_back(a);
+    r.loads.push_back(loads);
+    r.tareLoads.push_back(tare);
   }
-  writeFileAtomically(dir / "cog.csv", rd.str());
-  writeFileAtomically(dir / "cog_tare.csv", tr.str());
-  std::ostringstream y;
-  y << "test: cog\nframe: \"platform: x normal to the tilt hinge towards the raised side, y along the hinge, z up "
-       "from the platform surface; metres\"\nload_cells:\n";
-  for (int j = 0; j < 4; ++j) y << "  - {name: N" << j + 1 << ", x: " << cx[j] << ", y: " << cy[j] << "}\n";
-  y << "readings: cog.csv\ntare: cog_tare.csv\nload_cell_resolution_N: 0.05\npart_origin_m: [" << num(origin[0])
-    << ", " << num(origin[1]) << ", " << num(origin[2]) << "]\n";
-  writeFileAtomically(dir / "cog.yaml", y.str());
+  return r;
 }
 
-void writeInertiaTestFiles(const std::filesystem::path& dir, const VirtualPart& part, double periodNoise,
-                           std::uint64_t seed) {
+InertiaTest simulateTrifilarTest(const VirtualPart& part, double periodNoise, std::uint64_t seed) {
   PortableRandom rng(seed);
-  const double g = 9.80665, length = 2.0, radius = 0.3, plateMass = 4.0, plateInertia = 0.25;
-  auto period = [&](double mass, double inertia) {
-    return 2 * M_PI * std::sqrt(inertia * length / (mass * g * radius * radius));
-  };
+  InertiaTest t;
+  t.wireLength = 2.0, t.radius = 0.3, t.plateMass = 4.0, t.partMass = part.mass;
+  const double plateInertia = 0.25;
   auto periods = [&](double mass, double inertia) {
-    std::ostringstream s;
-    s << "[";
-    for (int i = 0; i < 5; ++i) s << (i ? ", " : "") << num(period(mass, inertia) + periodNoise * rng.drawNormal(), 8);
-    return s.str() + "]";
+    const double period = 2 * M_PI * std::sqrt(inertia * t.wireLength / (mass * t.g * t.radius * t.radius));
+    std::vector<double> p;
+    for (int i = 0; i < 5; ++i) p.push_back(period + periodNoise * rng.drawNormal());
+    return p;
   };
-  std::ostringstream y;
-  y << "test: inertia\nframe: \"part frame of the CoG test; setup axes in that frame\"\n"
-    << "pendulum: {wire_length_m: " << length << ", radius_m: " << radius << ", plate_mass_kg: " << plateMass << "}\n"
-    << "period_resolution_s: 0.001\npart_mass_kg: " << num(part.mass) << "\n"
-    << "plate_periods_s: " << periods(plateMass, plateInertia) << "\nsetups:\n";
+  t.platePeriods = periods(t.plateMass, plateInertia);
   const double s2 = std::sqrt(0.5);
   const Eigen::Vector3d axes[6] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {s2, s2, 0}, {s2, 0, s2}, {0, s2, s2}};
   const char* names[6] = {"x", "y", "z", "xy", "xz", "yz"};
   for (int i = 0; i < 6; ++i) {
     const double d = 0.005 * i;  // CoG slightly off the pendulum axis
     const double inertia = plateInertia + axes[i].dot(part.inertia * axes[i]) + part.mass * d * d;
-    y << "  - {name: " << names[i] << ", axis: [" << num(axes[i][0]) << ", " << num(axes[i][1]) << ", "
-      << num(axes[i][2]) << "], cog_offset_m: " << d << ", periods_s: " << periods(plateMass + part.mass, inertia)
-      << "}\n";
+    t.setups.push_back({names[i], axes[i], d, periods(t.plateMass + part.mass, inertia)});
   }
-  writeFileAtomically(dir / "inertia.yaml", y.str());
+  return t;
 }
 
 }  // namespace motostab::swingarm::identification

@@ -3,9 +3,9 @@
 // 2-DOF lumped system (rotation theta_b about a bending axis, theta_t about a torsion axis, seed Fig. 8),
 // uncoupled in mass and stiffness, so the modes are exactly the bending and torsion rotations. Generates
 // laser readings (quantised to the laser resolution), hammer time histories (half-sine pulse, exact
-// first-order-hold integration, sensor noise) and mass-property rig readings.
+// first-order-hold integration, sensor noise) and mass-property rig readings. Their files, in the formats
+// of docs/swingarm-identification.md, are written by output/virtual_rig_output.h.
 #include <cstdint>
-#include <filesystem>
 #include <vector>
 
 #include "modal/spectra.h"
@@ -57,13 +57,6 @@ StaticReadings simulateStaticReadings(const VirtualSwingarm& rig, const std::vec
 std::vector<modal::ImpactRecord> simulateHammerHits(const VirtualSwingarm& rig, const HammerOptions& options,
                                                     const RigNoise& noise, std::uint64_t seed);
 
-/// Writes DIR/static.yaml and DIR/static.csv (format of docs/swingarm-identification.md).
-void writeStaticTestFiles(const std::filesystem::path& dir, const VirtualSwingarm& rig, const StaticReadings& r,
-                          double laserResolution);
-/// Writes DIR/frf.yaml and DIR/hitN.csv; `processing` is extra YAML (indented under `processing:`), or "".
-void writeFrfTestFiles(const std::filesystem::path& dir, const VirtualSwingarm& rig,
-                       const std::vector<modal::ImpactRecord>& hits, const std::string& processing = "");
-
 /// Truth of the mass-property rig.
 struct VirtualPart {
   double mass = 6.96;                                     ///< kg (seed Table 1, swingarm 1)
@@ -71,13 +64,21 @@ struct VirtualPart {
   Eigen::Matrix3d inertia = Eigen::Vector3d(0.11, 0.27, 0.34).asDiagonal();  ///< kg m^2 about CoG
 };
 
-/// Tilting-rig files DIR/cog.yaml + DIR/cog.csv: four cells, tilts 0..30 deg in 3 deg steps, part frame
-/// origin at `origin` on the platform, Gaussian cell noise (N).
-void writeCogTestFiles(const std::filesystem::path& dir, const VirtualPart& part, const Eigen::Vector3d& origin,
-                       double cellNoise, std::uint64_t seed);
-/// Trifilar files DIR/inertia.yaml: plate alone and six set-ups (x, y, z and three oblique axes), five
-/// periods each with Gaussian timing noise (s).
-void writeInertiaTestFiles(const std::filesystem::path& dir, const VirtualPart& part, double periodNoise,
-                           std::uint64_t seed);
+/// Readings of the tilting rig (before the tare is subtracted).
+struct CogRigReadings {
+  std::vector<LoadCell> cells;                        ///< N1..N4 on the platform, m
+  Eigen::Vector3d partOrigin = Eigen::Vector3d::Zero();  ///< part-frame origin on the platform, m
+  std::vector<int> tiltDeg;                           ///< deg, one per row
+  std::vector<Eigen::Vector4d> loads, tareLoads;      ///< N per cell: platform with the part, platform alone
+};
+
+/// Tilting rig with four cells, tilts 0..30 deg in 3 deg steps, part frame origin at `origin` on the
+/// platform, Gaussian cell noise (N); the cell loads from the moment balance of part and platform.
+CogRigReadings simulateCogReadings(const VirtualPart& part, const Eigen::Vector3d& origin, double cellNoise,
+                                   std::uint64_t seed);
+/// Trifilar pendulum (wire 2 m, radius 0.3 m, plate 4 kg, 0.25 kg m^2): plate alone and six set-ups (x, y, z
+/// and three oblique axes, CoG 0..25 mm off the pendulum axis), five periods each with Gaussian timing
+/// noise (s), from I = m g R^2 T^2 / (4 pi^2 L).
+InertiaTest simulateTrifilarTest(const VirtualPart& part, double periodNoise, std::uint64_t seed);
 
 }  // namespace motostab::swingarm::identification

@@ -6,7 +6,7 @@
 #include <filesystem>
 #include <fstream>
 
-#include "tests/apps/run_motostab.h"
+#include "tests/apps/cli_support.h"
 
 namespace motostab::cli {
 namespace {

@@ -7,36 +7,22 @@
 #include <fstream>
 
 #include "tests/support/temp_dir.h"
-#include "tests/apps/run_motostab.h"
+#include "tests/apps/cli_support.h"
 
 namespace motostab::cli {
 namespace {
 
 const std::string kWhipple = std::string(MOTOSTAB_SOURCE_DIR) + "/scenarios/whipple-benchmark.yaml";
 
-struct Outcome {
-  int code;
-  std::string output;
-};
-
-Outcome run(const std::vector<std::string>& args) {
-  static const auto dir = makeTempDir("cli_errors");
-  std::filesystem::create_directories(dir);
-  static int calls = 0;  // ctest runs the cases of this file in parallel processes: one log per run
-  const std::string log = (dir / ("log-" + std::to_string(getpid()) + "-" + std::to_string(++calls) + ".txt")).string();
-  const int code = test::waitForExit(test::startMotostab(args, dir.string(), log));
-  Outcome out{code, test::readLog(log)};
-  std::filesystem::remove(log);
-  return out;
+// The runs' folder: relative --out paths of a run that wrongly succeeded land there.
+const std::string& getRunDir() {
+  static const std::string dir = makeTempDir("cli_errors_runs").string();
+  return dir;
 }
 
 // Exit code 2 with `needle` in the message.
 void expectInputError(const std::vector<std::string>& args, const std::string& needle) {
-  const Outcome o = run(args);
-  std::string cmd;
-  for (const auto& a : args) cmd += a + " ";
-  EXPECT_EQ(o.code, 2) << cmd << "\n" << o.output;
-  EXPECT_NE(o.output.find(needle), std::string::npos) << cmd << "\n" << o.output;
+  ::expectInputError(args, needle, getRunDir());
 }
 
 TEST(CliInput, SpeedsMustBeFinite) {
@@ -73,7 +59,7 @@ TEST(CliInput, ParseErrorsExit2NotCli11Codes) {
   expectInputError({"sweep", "/nonexistent/scenario.yaml"}, "scenario");  // ExistingFile check
   expectInputError({"no-such-command"}, "subcommand");
   expectInputError({"linearize", kWhipple, "--out", "x"}, "--speed");  // required option
-  EXPECT_EQ(run({"--help"}).code, 0);
+  EXPECT_EQ(runCli({"--help"}, getRunDir()).exitCode, 0);
 }
 
 TEST(CliInput, BadSetNamesTheOverride) {

@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "nlohmann/json.hpp"
-#include "tests/apps/run_motostab.h"
+#include "tests/apps/cli_support.h"
 #include "tests/support/temp_dir.h"
 
 namespace motostab::cli {
@@ -87,13 +87,8 @@ TEST(TurnCli, BadTurnInputExits2AndSaysWhatToChange) {
       {{"sweep", w, "--speeds", "1:5:1", "--roll-deg", "0:95:5"}, "strictly between -89 and 89"},
       {{"linearize", w, "--speed", "0", "--roll-deg", "10", "--out", "x"}, "above 0"},
   };
-  for (const Case& c : cases) {
-    const Outcome o = run("bad_input", c.args);
-    std::string cmd;
-    for (const auto& a : c.args) cmd += a + " ";
-    EXPECT_EQ(o.code, 2) << cmd << "\n" << o.output;
-    EXPECT_NE(o.output.find(c.needle), std::string::npos) << cmd << "\n" << o.output;
-  }
+  const std::string dir = makeTempDir("turn_cli_bad_input").string();
+  for (const Case& c : cases) expectInputError(c.args, c.needle, dir);
 }
 
 TEST(TurnCli, FailedTrimExits1NamingSpeedRollAndResidual) {

@@ -11,7 +11,7 @@
 #include <thread>
 
 #include "tests/support/temp_dir.h"
-#include "tests/apps/run_motostab.h"
+#include "tests/apps/cli_support.h"
 
 namespace motostab::cli {
 namespace {

@@ -15,22 +15,13 @@
 #include "analysis/sweep.h"
 #include "io/csv.h"
 #include "scenario/scenario.h"
+#include "tests/support/analysis_chain.h"
 #include "vehicle/vehicle_model.h"
 
 namespace motostab::testing {
 
-using analysis::LinearModel;
-using analysis::SweepOptions;
-using analysis::SweepResult;
-using analysis::TrimResult;
-using analysis::calcTrim;
-using analysis::linearize;
-using analysis::runSweep;
 using core::PortableRandom;
 using io::formatNumber;
-using scenario::Scenario;
-using scenario::loadScenario;
-using vehicle::VehicleModel;
 
 
 /// Portable draws: uniform in [0, 1) from the top 53 bits, normal by Box-Muller.

@@ -15,18 +15,10 @@
 
 namespace motostab::diagnosis {
 
-using analysis::LinearModel;
-using analysis::SweepOptions;
-using analysis::SweepResult;
-using analysis::TrimResult;
-using analysis::calcTrim;
-using analysis::linearize;
-using analysis::runSweep;
+using namespace motostab::testing;
 using io::formatNumber;
 using io::writeFileAtomically;
 using scenario::convertBicycleParametersToScenario;
-using scenario::loadScenario;
-using vehicle::VehicleModel;
 
 
 namespace {

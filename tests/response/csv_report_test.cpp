@@ -1,5 +1,5 @@
-// Identification from CSV files: errors name the file, line and column; outputs (modes.json, plot) hold the
-// generating parameters of a synthetic record.
+// Identification from CSV files: errors name the file, line and column (the written outputs:
+// tests/output/response_output_test.cpp).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -7,11 +7,8 @@
 #include <fstream>
 #include <sstream>
 
-#include <nlohmann/json.hpp>
-
 #include "tests/support/temp_dir.h"
 #include "io/input_error.h"
-#include "output/response_output.h"
 #include "response/response_csv.h"
 
 using motostab::io::InputError;
@@ -119,32 +116,6 @@ TEST(ResponseCsv, MalformedWindowText) {
   motostab::response::setWindowFromText("9.9:12.5", "f.csv", o);
   EXPECT_EQ(o.windowStart, 9.9);
   EXPECT_EQ(o.windowEnd, 12.5);
-}
-
-TEST(ResponseCsv, WritesModesJsonAndPlot) {
-  const auto dir = makeTempDir("report");
-  auto request = makeRequest(writeRecord(dir));
-  motostab::response::ResponseRecord record;
-  const auto result = identifyModesFromCsv(request, &record);
-  const fs::path out = dir / "out";
-  motostab::output::writeResponseReport(out, record, result);
-  std::ifstream in(out / "modes.json");
-  const auto j = nlohmann::json::parse(in);
-  ASSERT_EQ(j.at("modes").size(), 1u);
-  const auto& m = j.at("modes")[0];
-  EXPECT_NEAR(m.at("real").get<double>(), -0.5, 1e-8);
-  EXPECT_NEAR(m.at("imag").get<double>(), 4.0, 1e-8);
-  EXPECT_NEAR(m.at("frequency_hz").get<double>(), 4.0 / (2 * M_PI), 1e-8);
-  EXPECT_NEAR(m.at("damping_ratio").get<double>(), 0.5 / std::hypot(0.5, 4.0), 1e-8);
-  EXPECT_NEAR(m.at("amplitude")[0].get<double>(), 1.3, 1e-8);
-  EXPECT_NEAR(m.at("phase_rad")[0].get<double>(), 0.6, 1e-8);
-  EXPECT_NEAR(j.at("offset")[0].get<double>(), 0.2, 1e-8);
-  EXPECT_GT(j.at("fit").at("r_squared").get<double>(), 1 - 1e-12);
-  EXPECT_EQ(j.at("signals")[0], "roll_rate");
-  EXPECT_EQ(j.at("source").at("time_column"), "time_s");
-  for (const char* f : {"response_fit.png", "response_fit.svg", "response_fit.gp", "response_fit.csv",
-                        "response_data.csv"})
-    EXPECT_TRUE(fs::exists(out / f)) << f;
 }
 
 }  // namespace

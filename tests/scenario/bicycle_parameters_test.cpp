@@ -8,7 +8,7 @@
 #include <fstream>
 
 #include "tests/support/temp_dir.h"
-#include "../apps/run_motostab.h"
+#include "tests/apps/cli_support.h"
 #include "io/atomic_file.h"
 #include "io/input_error.h"
 #include "scenario/bicycle_parameters.h"

@@ -11,32 +11,15 @@
 #include <cstdint>
 
 #include "core/portable_random.h"
+#include "output/virtual_rig_output.h"
 #include "rig_truth.h"
 #include "swingarm/identification/virtual_rig.h"
 #include "tests/support/temp_dir.h"
 
-using motostab::swingarm::identification::FrfResult;
-using motostab::swingarm::identification::FrfTest;
-using motostab::swingarm::identification::ModeResult;
-using motostab::swingarm::identification::RigNoise;
-using motostab::swingarm::identification::StaticResult;
-using motostab::swingarm::identification::StaticTest;
-using motostab::swingarm::identification::VirtualSwingarm;
-using motostab::swingarm::identification::identifyFrf;
-using motostab::swingarm::identification::identifyStatic;
-using motostab::swingarm::identification::readFrfTest;
-using motostab::swingarm::identification::readHits;
-using motostab::swingarm::identification::readStaticReadings;
-using motostab::swingarm::identification::readStaticTest;
-using motostab::swingarm::identification::simulateHammerHits;
-using motostab::swingarm::identification::simulateStaticReadings;
-using motostab::swingarm::identification::wrapDegrees;
-using motostab::swingarm::identification::writeFrfTestFiles;
-using motostab::swingarm::identification::writeStaticTestFiles;
-
-
-
 namespace {
+
+using motostab::output::writeFrfTestFiles;
+using motostab::output::writeStaticTestFiles;
 
 using namespace motostab::swingarm::identification;
 

@@ -5,30 +5,22 @@
 #include <fstream>
 
 #include "io/input_error.h"
+#include "output/virtual_rig_output.h"
 #include "swingarm/identification/mass_properties.h"
 #include "swingarm/identification/virtual_rig.h"
 #include "tests/support/temp_dir.h"
 
-using motostab::swingarm::identification::CogResult;
-using motostab::swingarm::identification::InertiaResult;
-using motostab::swingarm::identification::VirtualPart;
-using motostab::swingarm::identification::calcTrifilarInertia;
-using motostab::swingarm::identification::identifyCog;
-using motostab::swingarm::identification::identifyInertia;
-using motostab::swingarm::identification::readCogTest;
-using motostab::swingarm::identification::readInertiaTest;
-using motostab::swingarm::identification::writeCogTestFiles;
-using motostab::swingarm::identification::writeInertiaTestFiles;
-
-
 namespace {
+
+using motostab::output::writeCogTestFiles;
+using motostab::output::writeInertiaTestFiles;
 
 using namespace motostab::swingarm::identification;
 
 TEST(Cog, NoiseFreeTiltingRigGivesTheTruth) {
   const VirtualPart part;  // seed Table 1, swingarm 1: 6.96 kg, CoG (0.299, 0, 0.027) m
   const auto dir = makeTempDir("cog_exact");
-  writeCogTestFiles(dir, part, {0.05, 0.0, 0.04}, 0.0, 1);
+  writeCogTestFiles(dir, simulateCogReadings(part, {0.05, 0.0, 0.04}, 0.0, 1));
   const CogResult r = identifyCog(readCogTest(dir / "cog.yaml"));
   EXPECT_NEAR(r.mass, part.mass, 1e-5);
   for (int i = 0; i < 3; ++i) EXPECT_NEAR(r.cog[i], part.cog[i], 1e-5) << i;
@@ -42,7 +34,7 @@ TEST(Cog, NoisyTiltingRigWithinStatedUncertainty) {
   double zx = 0, zz = 0, worstX = 0, worstZ = 0, worstM = 0;
   const auto dir = makeTempDir("cog_noisy");
   for (int seed = 0; seed < n; ++seed) {
-    writeCogTestFiles(dir, part, {0.05, 0.0, 0.04}, 0.05, 500 + seed);
+    writeCogTestFiles(dir, simulateCogReadings(part, {0.05, 0.0, 0.04}, 0.05, 500 + seed));
     const CogResult r = identifyCog(readCogTest(dir / "cog.yaml"));
     worstM = std::max(worstM, std::abs(r.mass - part.mass));
     worstX = std::max(worstX, std::abs(r.cog[0] - part.cog[0]));
@@ -71,7 +63,7 @@ TEST(Inertia, SixSetUpsGiveTheTensorAboutTheCog) {
   part.inertia(0, 2) = part.inertia(2, 0) = 0.02;  // a product of inertia too
   for (const double noise : {0.0, 1e-3}) {
     const auto dir = makeTempDir("inertia" + std::to_string(noise > 0));
-    writeInertiaTestFiles(dir, part, noise, 9);
+    writeInertiaTestFiles(dir, simulateTrifilarTest(part, noise, 9));
     const InertiaResult r = identifyInertia(readInertiaTest(dir / "inertia.yaml"));
     EXPECT_TRUE(r.fullTensor);
     const double tol = noise > 0 ? 0.01 : 1e-5;  // kg m^2
@@ -87,7 +79,7 @@ TEST(Inertia, SixSetUpsGiveTheTensorAboutTheCog) {
 
 TEST(MassPropertiesInput, BadTiltAngleAndCollinearCellsAreInputErrors) {
   const auto dir = makeTempDir("cog_bad");
-  writeCogTestFiles(dir, VirtualPart(), {0.05, 0.0, 0.04}, 0.0, 1);
+  writeCogTestFiles(dir, simulateCogReadings(VirtualPart(), {0.05, 0.0, 0.04}, 0.0, 1));
   {
     std::ofstream(dir / "bad.csv") << "tilt_deg,N1_N,N2_N,N3_N,N4_N\n0,1,1,1,1\n75,1,1,1,1\n";
     std::ofstream(dir / "bad.yaml") << "test: cog\nload_cells:\n  - {name: N1, x: -0.3, y: -0.2}\n"

@@ -8,7 +8,7 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 
-#include "../apps/run_motostab.h"
+#include "tests/apps/cli_support.h"
 #include "tests/support/temp_dir.h"
 
 namespace {

@@ -2,43 +2,16 @@
 // with the rig's known truth (computed here from seed eq. 5-9 and the rig parameters).
 #include <gtest/gtest.h>
 
-#include <yaml-cpp/yaml.h>
-
 #include <cmath>
-#include <fstream>
-#include <nlohmann/json.hpp>
 
-#include "swingarm/identification/decomposition.h"
-#include "swingarm/identification/virtual_rig.h"
+#include "output/virtual_rig_output.h"
+#include "rig_round_trip.h"
 #include "rig_truth.h"
 #include "tests/support/temp_dir.h"
 
-using motostab::swingarm::identification::FrfResult;
-using motostab::swingarm::identification::FrfTest;
-using motostab::swingarm::identification::HammerOptions;
-using motostab::swingarm::identification::RigNoise;
-using motostab::swingarm::identification::StaticResult;
-using motostab::swingarm::identification::StaticTest;
-using motostab::swingarm::identification::SwingarmIdentification;
-using motostab::swingarm::identification::VirtualSwingarm;
-using motostab::swingarm::identification::identifyFrf;
-using motostab::swingarm::identification::identifyStatic;
-using motostab::swingarm::identification::identifySwingarm;
-using motostab::swingarm::identification::readFrfTest;
-using motostab::swingarm::identification::readHits;
-using motostab::swingarm::identification::readStaticReadings;
-using motostab::swingarm::identification::readStaticTest;
-using motostab::swingarm::identification::simulateHammerHits;
-using motostab::swingarm::identification::simulateStaticReadings;
-using motostab::swingarm::identification::writeFrfOutputs;
-using motostab::swingarm::identification::writeFrfTestFiles;
-using motostab::swingarm::identification::writeStaticOutputs;
-using motostab::swingarm::identification::writeStaticTestFiles;
-using motostab::swingarm::identification::writeSwingarmOutputs;
-
-
-
 namespace {
+
+using motostab::output::writeFrfTestFiles;
 
 using namespace motostab::swingarm::identification;
 constexpr double kDeg = M_PI / 180;
@@ -47,30 +20,16 @@ struct Errors {
   double beta, kTw, fB, fT, zB, zT, kB, kT, cTw;  // deg or relative
 };
 
-struct RoundTrip {
-  StaticTest staticTest;
-  FrfTest frfTest;
-  StaticResult stat;
-  FrfResult frf;
-  SwingarmIdentification id;
+struct RoundTrip : IdentifiedRig {
   Errors err;
 };
 
 RoundTrip runRoundTrip(const std::string& name, double noiseFactor, std::uint64_t seed, const std::string& extra = "") {
   const VirtualSwingarm rig;
   const RigNoise noise = RigNoise().scaled(noiseFactor);
-  const auto dir = makeTempDir(name);
-  std::vector<double> loads;
-  for (int i = 0; i <= 32; ++i) loads.push_back(250.0 * (i <= 16 ? i : 32 - i));  // 0-4000-0 N
-  writeStaticTestFiles(dir, rig, simulateStaticReadings(rig, loads, noise, seed), noise.laserResolution);
-  writeFrfTestFiles(dir, rig, simulateHammerHits(rig, {}, noise, seed + 7),
-                    "  band_hz: [60, 400]\n  model_order: [4, 24]\n" + extra);
   RoundTrip r;
-  r.staticTest = readStaticTest(dir / "static.yaml");
-  r.frfTest = readFrfTest(dir / "frf.yaml");
-  r.stat = identifyStatic(r.staticTest, readStaticReadings(r.staticTest));
-  r.frf = identifyFrf(r.frfTest, readHits(r.frfTest));
-  r.id = identifySwingarm(r.stat, r.frf);
+  static_cast<IdentifiedRig&>(r) =
+      identifyRigTests(rig, noise, seed, makeTempDir(name), "  band_hz: [60, 400]\n  model_order: [4, 24]\n" + extra);
   const RigTruth t = calcRigTruth(rig);
   const double cB = rig.kB * rig.zetaB / (M_PI * rig.fB), cT = rig.kT * rig.zetaT / (M_PI * rig.fT);
   const double rb = rig.armB * t.kTw / (rig.kB * t.aTw), rt = rig.armT * t.kTw / (rig.kT * t.aTw);
@@ -179,44 +138,6 @@ TEST(VirtualRig, DoubleHitAndOverloadedHitsAreRejected) {
   EXPECT_NE(r.rejectedHits[0].find("hit4.csv: double hit"), std::string::npos) << r.rejectedHits[0];
   EXPECT_NE(r.rejectedHits[1].find("hit5.csv: overload"), std::string::npos) << r.rejectedHits[1];
   EXPECT_EQ(r.frf.averages, 3);
-}
-
-// The CLI's writers: static.json keys, FRF outputs and a swingarm.yaml with the documented schema.
-TEST(VirtualRig, OutputsFollowTheDocumentedSchema) {
-  const RoundTrip r = runRoundTrip("outputs", 1.0, 21);
-  const auto dir = makeTempDir("outputs_written");
-  writeStaticOutputs(r.staticTest, r.stat, dir);
-  writeFrfOutputs(r.frfTest, r.frf, dir / "frf");
-  writeSwingarmOutputs(r.id, r.staticTest, r.frfTest, dir);
-  nlohmann::json j;
-  std::ifstream(dir / "static.json") >> j;
-  for (const char* k : {"k_lat_N_per_m", "a_tw_m", "k_tw_Nm_per_rad", "beta_deg", "axis_point_m", "axis_direction"}) {
-    ASSERT_TRUE(j.contains(k)) << k;
-    ASSERT_TRUE(j.contains(std::string(k) + "_stderr")) << k;
-  }
-  EXPECT_DOUBLE_EQ(j["k_tw_Nm_per_rad"].get<double>(), r.stat.kTw);
-  for (const char* f : {"static_axis.png", "static_axis.svg", "frf/frf.csv", "frf/modes.csv", "frf/frf.json",
-                        "frf/frf_magnitude_phase.png", "frf/coherence.png", "frf/stabilisation.png",
-                        "frf/modal_axes.png", "swingarm_axes.png"})
-    EXPECT_TRUE(std::filesystem::exists(dir / f)) << f;
-  nlohmann::json fj;
-  std::ifstream(dir / "frf" / "frf.json") >> fj;
-  ASSERT_EQ(fj["modes"].size(), 2u);
-  for (const char* k : {"frequency_hz", "frequency_hz_stderr", "damping_ratio", "damping_ratio_stderr", "loss_factor",
-                        "loss_factor_stderr"})
-    EXPECT_TRUE(fj["modes"][0].contains(k)) << k;
-  EXPECT_DOUBLE_EQ(fj["modes"][0]["loss_factor"].get<double>(), 2 * fj["modes"][0]["damping_ratio"].get<double>());
-  const YAML::Node y = YAML::LoadFile((dir / "swingarm.yaml").string());
-  for (const char* m : {"bending", "torsion", "twist"}) {
-    ASSERT_TRUE(y[m]) << m;
-    for (const char* k : {"arm_m", "arm_m_stderr", "beta_deg", "beta_deg_stderr", "point_m", "direction"})
-      EXPECT_TRUE(y[m]["axis"][k]) << m << ".axis." << k;
-    for (const char* k : {"stiffness_Nm_per_rad", "stiffness_Nm_per_rad_stderr", "damping_Nms_per_rad",
-                          "damping_Nms_per_rad_stderr"})
-      EXPECT_TRUE(y[m][k]) << m << "." << k;
-  }
-  EXPECT_NEAR(y["bending"]["stiffness_Nm_per_rad"].as<double>(), r.id.bending.stiffness.value, 1e-6 * r.id.bending.stiffness.value);
-  EXPECT_NEAR(y["twist"]["damping_Nms_per_rad"].as<double>(), r.id.twist.damping.value, 1e-6);
 }
 
 }  // namespace

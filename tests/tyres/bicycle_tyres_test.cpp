@@ -15,21 +15,11 @@
 #include "analysis/linearize.h"
 #include "analysis/sweep.h"
 #include "tyres/relaxation_linear.h"
+#include "tests/support/analysis_chain.h"
 
 namespace motostab::tyres {
 
-using analysis::LinearModel;
-using analysis::LinearizeOptions;
-using analysis::SweepOptions;
-using analysis::SweepResult;
-using analysis::TrimOptions;
-using analysis::calcTrim;
-using analysis::linearize;
-using analysis::runSweep;
-using io::InputError;
-using scenario::Scenario;
-using scenario::loadScenario;
-using vehicle::VehicleModel;
+using namespace motostab::testing;
 
 namespace {
 

@@ -22,23 +22,13 @@
 #include "analysis/sweep.h"
 #include "analysis/trim.h"
 #include "tyres/tir_file.h"
+#include "tests/support/analysis_chain.h"
 
 namespace motostab::tyres {
 
-using analysis::LinearModel;
-using analysis::LinearizeOptions;
-using analysis::SweepOptions;
-using analysis::SweepResult;
-using analysis::TrimOptions;
-using analysis::TrimResult;
-using analysis::calcTrim;
-using analysis::linearize;
-using analysis::runSweep;
-using io::InputError;
-using scenario::loadScenario;
+using namespace motostab::testing;
 using vehicle::CoordinateIndices;
 using vehicle::Input;
-using vehicle::VehicleModel;
 
 namespace {
 

@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "core/portable_random.h"
+#include "tests/support/analysis_chain.h"
 #include "analysis/linearize.h"
 #include "analysis/sweep.h"
 #include "analysis/trim.h"
@@ -22,17 +23,6 @@
 #include "vehicle/vehicle_model.h"
 
 namespace motostab::testing {
-
-using analysis::SweepOptions;
-using analysis::SweepResult;
-using analysis::calcTrim;
-using analysis::linearize;
-using analysis::runSweep;
-using io::InputError;
-using scenario::Scenario;
-using scenario::loadScenario;
-using vehicle::VehicleModel;
-
 
 using cd = std::complex<double>;
 

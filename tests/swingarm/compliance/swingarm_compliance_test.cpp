@@ -6,26 +6,18 @@
 #include "tests/support/temp_dir.h"
 #include "analysis/sweep.h"
 #include "swingarm/compliance/swingarm_compliance.h"
+#include "tests/support/analysis_chain.h"
 
 namespace motostab::swingarm {
 
-using analysis::LinearModel;
-using analysis::SweepOptions;
-using analysis::SweepResult;
-using analysis::TrimResult;
-using analysis::calcTrim;
-using analysis::linearize;
-using analysis::runSweep;
+using namespace motostab::testing;
 using io::YamlMap;
 using io::loadYamlFile;
 using scenario::InertiaSpec;
-using scenario::Scenario;
 using scenario::SwingarmFrame;
 using scenario::WheelSpec;
 using scenario::calcSwingarmFrame;
-using scenario::loadScenario;
 using vehicle::CoordinateIndices;
-using vehicle::VehicleModel;
 
 namespace {
 
