@@ -230,5 +230,24 @@ TEST(SteerFriction, HiddenFrictionIsFoundAsFrictionOrItsLookAlike) {
   EXPECT_EQ(judgeRobustness(r.causes, rerun), RobustnessVerdict::Indistinguishable);
 }
 
+// Both look-alikes offered on noise-only data: the pair search (run because no single qualifies) pools
+// only one of them, so no pair holds steer_damper while another holds steer_friction, and nothing is named.
+TEST(SteerFriction, PairSearchPoolsOneOfTheLookAlikes) {
+  testing::HiddenEffect h;
+  h.scenario = kBenchmark;
+  h.seed = 11003;
+  h.modes = {"weave", "capsize"};
+  h.steerRateAmplitude = PortableRandom(8).drawUniform(0.3, 1.5);
+  const DiagnosisResult r = testing::runHidden(
+      h, "friction-pairs", true, {}, "steer_damper,steer_friction,parameter:geometry.trail_m,parameter:geometry.wheelbase_m", 2);
+  EXPECT_TRUE(r.causes.empty());
+  ASSERT_FALSE(r.pairs.empty());
+  bool damper = false, friction = false;
+  for (const auto& p : r.pairs)
+    for (const auto& m : p.members) damper |= m == "steer_damper", friction |= m == "steer_friction";
+  EXPECT_FALSE(damper && friction);
+  EXPECT_EQ(r.pairs.size(), 3u);  // three distinct effects: three pairs
+}
+
 }  // namespace
 }  // namespace motostab::diagnosis
