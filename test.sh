@@ -21,7 +21,8 @@ case "$mode" in
     ctest --output-on-failure -j "$jobs" -LE long "$@" ;;
   --tsan)
     shift
-    export MOTOSTAB_BUILD_DIR=build-tsan MOTOSTAB_CMAKE_ARGS="-DMOTOSTAB_BUILD_BENCH=OFF -DMOTOSTAB_EIGEN_CHECKS=ON"
+    # Without the precompiled header and unity groups, so a missing #include is caught here.
+    export MOTOSTAB_BUILD_DIR=build-tsan MOTOSTAB_CMAKE_ARGS="-DMOTOSTAB_BUILD_BENCH=OFF -DMOTOSTAB_EIGEN_CHECKS=ON -DMOTOSTAB_PCH=OFF -DMOTOSTAB_UNITY_GROUPS=OFF"
     export MOTOSTAB_CXX_FLAGS="-fsanitize=thread -fno-omit-frame-pointer"
     export TSAN_OPTIONS="${TSAN_OPTIONS:-halt_on_error=1:second_deadlock_stack=1}"
     "$root/scripts/build.sh" test_core test_analysis test_apps test_plugins test_uncertainty test_diagnosis motostab

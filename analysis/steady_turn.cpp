@@ -154,6 +154,8 @@ NoTurnError::NoTurnError(double phi, double lo, double hi, double tLo, double tH
 
 TrimResult calcHandsFreeTrim(const VehicleModel& model, const std::vector<double>& speeds, const TrimOptions& opt,
                              double preferredSpeed) {
+  if (speeds.size() < 2 || !std::is_sorted(speeds.begin(), speeds.end()))
+    throw std::invalid_argument("calcHandsFreeTrim needs at least two speeds in ascending order");
   TrimOptions fixedSpeed = opt;
   fixedSpeed.condition = TurnCondition::Speed;
   std::vector<TrimPoint> scan;  // descending speeds

@@ -18,6 +18,10 @@ using core::runWorkers;
 using vehicle::VehicleModel;
 
 std::vector<double> makeSpeedGrid(double start, double stop, double step) {
+  const double steps = (stop - start) / step;
+  if (!(step > 0 && steps >= 0 && steps <= scenario::SpeedRange::kMaxSteps))
+    throw std::invalid_argument("speed grid " + std::to_string(start) + ":" + std::to_string(stop) + ":" +
+                                std::to_string(step) + " needs start <= stop, step > 0 and at most 1e6 steps");
   std::vector<double> v;
   const long n = static_cast<long>(std::floor((stop - start) / step + 1e-9));
   for (long i = 0; i <= n; ++i) v.push_back(start + i * step);
@@ -134,7 +138,7 @@ class SweepRun {
 
   // Every chain, on the calling thread or on one worker each (a worker builds its own model replica:
   // no shared Simbody caches). A failure stops the others at their next speed and releases any wait
-  // for the reference. The lead's partner takes at least its first speed; the lead computes the
+  // for the reference. The lead's partner takes its first speed when its span holds one; the lead computes the
   // reference before taking any shared speed.
   void runChains() {
     if (plan_.workers == 1) {
@@ -358,13 +362,34 @@ std::vector<double> findCriticalSpeedsBetween(const SweepResult& sweep, double l
 
 }  // namespace
 
-std::vector<StableRange> calcStableSpeedRanges(const SweepResult& sweep) {
-  std::vector<StableRange> ranges;
+namespace {
+
+// Index runs [first, last] of consecutive stable grid speeds.
+std::vector<std::pair<size_t, size_t>> findStableRuns(const SweepResult& sweep) {
+  std::vector<std::pair<size_t, size_t>> runs;
   const size_t n = sweep.speeds.size();
   for (size_t i = 0; i < n; ++i) {
     if (!isStableAt(sweep, i)) continue;
     size_t j = i;
     while (j + 1 < n && isStableAt(sweep, j + 1)) ++j;
+    runs.emplace_back(i, j);
+    i = j;
+  }
+  return runs;
+}
+
+}  // namespace
+
+std::vector<StableRange> calcStableGridRanges(const SweepResult& sweep) {
+  std::vector<StableRange> ranges;
+  for (const auto& [i, j] : findStableRuns(sweep)) ranges.push_back({sweep.speeds[i], sweep.speeds[j]});
+  return ranges;
+}
+
+std::vector<StableRange> calcStableSpeedRanges(const SweepResult& sweep) {
+  std::vector<StableRange> ranges;
+  const size_t n = sweep.speeds.size();
+  for (const auto& [i, j] : findStableRuns(sweep)) {
     StableRange r{sweep.speeds[i], sweep.speeds[j]};
     if (i > 0) {
       const auto below = findCriticalSpeedsBetween(sweep, sweep.speeds[i - 1], sweep.speeds[i]);
@@ -375,7 +400,6 @@ std::vector<StableRange> calcStableSpeedRanges(const SweepResult& sweep) {
       if (!above.empty()) r.stop = *std::min_element(above.begin(), above.end());
     }
     ranges.push_back(r);
-    i = j;
   }
   return ranges;
 }

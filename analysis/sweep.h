@@ -59,7 +59,8 @@ struct SweepResult {
   std::vector<CriticalSpeed> criticalSpeeds;
 };
 
-/// The speeds start, start+step, ..., stop (stop included when it falls on the grid within 1e-9).
+/// The speeds start, start+step, ..., stop, m/s (stop included when it falls on the grid within 1e-9 of
+/// a step). Throws std::invalid_argument unless start <= stop, step > 0 and there are at most 1e6 steps.
 std::vector<double> makeSpeedGrid(double start, double stop, double step);
 
 /// Trims and linearises at every speed (each trim warm-started from the previous one), tracks and
@@ -79,6 +80,10 @@ void updateCriticalSpeeds(const vehicle::VehicleModel& model, const SweepOptions
 struct StableRange {
   double start = 0, stop = 0;
 };
+
+/// The runs of grid speeds (m/s, first and last grid speed of each run) where every branch but the
+/// neutral ones has a negative real part (a NaN real part counts as not stable).
+std::vector<StableRange> calcStableGridRanges(const SweepResult& sweep);
 
 /// The speed ranges where the vehicle is stable: every branch but the neutral ones has a negative
 /// real part (Meijaard et al. 2007, sec. 6: the weave-to-capsize range of the benchmark bicycle).

@@ -173,17 +173,21 @@ void registerStudyCommand(CLI::App& app) {
   study->add_option("--compare", st->variants, "Compliance variants to compare")->delimiter(',');
   study->add_option("--stiffness-scale", st->stiffnessScale, "Stiffness factor of the second set (seed Fig. 11: 0.5)")
       ->check(makeNumberCheck(0, 1e6, true));
-  study->add_option("--damping-scale", st->dampingScale, "Damping factor of the second set (seed: 1/sqrt(2))")
-      ->check(makeNumberCheck(0, 1e6));
+  CLI::Option* dampingOption =
+      study->add_option("--damping-scale", st->dampingScale,
+                        "Damping factor of the second set (default: the square root of the stiffness factor, which keeps "
+                        "each damping ratio; seed: 1/sqrt(2))")
+          ->check(makeNumberCheck(0, 1e6));
   study->add_option("--shape-speeds", st->shapeSpeeds, "Speeds of the weave mode-shape compass plots, m/s")
       ->delimiter(',')
       ->check(makeNumberCheck(0, 1e3));
   study->add_option("--threads", st->threads, "Variants swept in parallel")->check(makeThreadsCheck());
   study->add_option("--roll-deg", st->rollDeg, "Compare the variants about steady turns at this roll angle (deg)")
       ->check(makeRollCheck());
-  study->callback([st]() {
+  study->callback([st, dampingOption]() {
     const ParameterOverrides changes(st->overrides);  // the --set text, parsed once
-    const Scenario scenario = ScenarioSource(st->scenario).load(changes);
+    const ScenarioSource source(st->scenario);        // the file, read once for every variant
+    const Scenario scenario = source.load(changes);
     StudyOptions opt;
     opt.sweep.start = scenario.speeds.start;
     opt.sweep.stop = scenario.speeds.stop;
@@ -191,8 +195,13 @@ void registerStudyCommand(CLI::App& app) {
     if (!st->speeds.empty()) parseSpeedRange(st->speeds, opt.sweep.start, opt.sweep.stop, opt.sweep.step);
     opt.variants = st->variants;
     opt.stiffnessScale = st->stiffnessScale;
-    opt.dampingScale = st->dampingScale;
+    opt.dampingScale = dampingOption->count() > 0 ? st->dampingScale : std::sqrt(st->stiffnessScale);
     opt.shapeSpeeds = st->shapeSpeeds;
+    for (const double v : opt.shapeSpeeds)
+      if (v < opt.sweep.start || v > opt.sweep.stop)
+        throw InputError({"--shape-speeds", 0, 0, std::to_string(v)},
+                         "a mode-shape speed must lie within the swept speeds " + std::to_string(opt.sweep.start) +
+                             " to " + std::to_string(opt.sweep.stop) + " m/s");
     opt.overrides = changes;
     opt.threads = st->threads;
     if (st->rollDeg != 0) {
@@ -201,10 +210,11 @@ void registerStudyCommand(CLI::App& app) {
     }
     const std::string out = st->out.empty() ? scenario.name + "-study" : st->out;
     OutputFolder folder(out);
-    const StudyResult result = runStudy(st->scenario, opt);
-    writeStudyOutputs(folder.getPath(), result, opt);
+    const StudyResult result = runStudy(source, opt);
+    const studies::StudyFindings findings = studies::calcStudyFindings(result);
+    writeStudyOutputs(folder.getPath(), result, findings, opt);
     folder.commit();
-    std::cout << makeStudyReport(result, opt) << "\nWrote " << out
+    std::cout << makeStudyReport(result, findings, opt) << "\nWrote " << out
               << "/{report.md, study_modes.csv, weave_shapes.csv, fig09..fig12 (.gp/.png/.svg), nominal/, halved/}\n";
   });
 }

@@ -8,6 +8,7 @@
 
 #include "io/input_error.h"
 #include "io/number.h"
+#include "scenario/scenario.h"
 
 namespace motostab::cli {
 
@@ -21,7 +22,7 @@ void parseSpeedRange(const std::string& text, double& start, double& stop, doubl
   std::string part;
   while (std::getline(ss, part, ':')) v.push_back(parseFiniteNumber(part));
   const bool ok = v.size() == 3 && v[0] && v[1] && v[2] && *v[0] >= 0 && *v[1] >= *v[0] && *v[2] > 0 &&
-                  (*v[1] - *v[0]) / *v[2] <= 1e6;
+                  (*v[1] - *v[0]) / *v[2] <= scenario::SpeedRange::kMaxSteps;
   if (!ok)
     throw InputError({"--speeds", 0, 0, text},
                      "expected START:STOP:STEP, finite, with 0 <= START <= STOP, STEP > 0 and at most 1e6 speeds");

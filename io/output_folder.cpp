@@ -5,6 +5,7 @@
 #include <stdio.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <cstring>
 #include <stdexcept>
@@ -55,6 +56,12 @@ OutputFolder::OutputFolder(fs::path target) : target_(std::move(target)) {
   if (target_.empty()) throw InputError({"command line", 0, 0, "--out"}, "the output folder name is empty");
   if (!target_.has_filename()) target_ = target_.parent_path();  // "out/" -> "out"
   std::error_code ec;
+  const fs::path whole = fs::weakly_canonical(fs::absolute(target_), ec);
+  const fs::path here = fs::current_path(ec);
+  const bool holdsHere = !whole.empty() && std::mismatch(whole.begin(), whole.end(), here.begin(), here.end()).first == whole.end();
+  if (target_.filename() == "." || target_.filename() == ".." || holdsHere)
+    throw InputError({"command line", 0, 0, "--out"},
+                     "'" + target_.string() + "' is the current folder or holds it; name a folder of its own");
   const fs::file_status status = fs::status(target_, ec);
   if (ec && status.type() != fs::file_type::not_found)
     throw InputError({"command line", 0, 0, "--out"}, "'" + target_.string() + "': " + ec.message());

@@ -132,13 +132,6 @@ double YamlMap::getNonNegative(const std::string& key, double fallback) {
   return has(key) ? getNonNegative(key) : fallback;
 }
 
-int YamlMap::getInt(const std::string& key) {
-  const YAML::Node n = require(key);
-  int v = 0;
-  if (!n.IsScalar() || !YAML::convert<int>::decode(n, v)) fail(key, "expected an integer");
-  return v;
-}
-
 bool YamlMap::getBool(const std::string& key, bool fallback) {
   if (!has(key)) return fallback;
   const YAML::Node n = require(key);

@@ -34,7 +34,6 @@ class YamlMap {
   double getPositive(const std::string& key, double fallback);
   /// Optional value >= 0 with a default.
   double getNonNegative(const std::string& key, double fallback);
-  int getInt(const std::string& key);
   bool getBool(const std::string& key, bool fallback);
   std::string getString(const std::string& key);
   std::string getString(const std::string& key, const std::string& fallback);

@@ -16,7 +16,6 @@ using studies::StudyResult;
 using studies::SwingarmModeFinding;
 using studies::WeaveFindings;
 using studies::WobbleFindings;
-using studies::calcStudyFindings;
 
 namespace {
 
@@ -155,9 +154,10 @@ void writeStudyPlots(const std::filesystem::path& dir, const StudyResult& st, co
   std::string panels;
   for (size_t i = 0; i < st.weaveShapes.size(); ++i) {
     const double v = st.weaveShapes[i].speed;
-    panels += "  set title '" + fmt(v, 1) + " m/s'\n  plot 'weave_shapes.csv' using (0):(0):(($1 == " + fmt(v, 6) +
-              ") ? $5 : NaN):6 with vectors head filled lw 2 notitle, \\\n       'weave_shapes.csv' using (($1 == " + fmt(v, 6) +
-              ") ? 1.15*$5 : NaN):(1.15*$6):2 with labels notitle\n";
+    const std::string here = "(abs($1 - " + fmt(v, 9) + ") < 1e-6)";  // the CSV holds the speed to more digits
+    panels += "  set title '" + fmt(v, 1) + " m/s'\n  plot 'weave_shapes.csv' using (0):(0):(" + here +
+              " ? $5 : NaN):6 with vectors head filled lw 2 notitle, \\\n       'weave_shapes.csv' using (" + here +
+              " ? 1.15*$5 : NaN):(1.15*$6):2 with labels notitle\n";
   }
   renderGnuplot(dir, "fig12_weave_shapes",
                 common + "  set size ratio -1\n  set xrange [-1.3:1.3]\n  set yrange [-1.3:1.3]\n  set multiplot layout 1," +
@@ -168,8 +168,7 @@ void writeStudyPlots(const std::filesystem::path& dir, const StudyResult& st, co
 
 }  // namespace
 
-std::string makeStudyReport(const StudyResult& st, const StudyOptions& opt) {
-  const StudyFindings findings = calcStudyFindings(st);
+std::string makeStudyReport(const StudyResult& st, const StudyFindings& findings, const StudyOptions& opt) {
   std::ostringstream r;
   appendIntroduction(r, st, opt);
   appendWobble(r, findings.wobble);
@@ -180,11 +179,12 @@ std::string makeStudyReport(const StudyResult& st, const StudyOptions& opt) {
   return r.str();
 }
 
-void writeStudyOutputs(const std::filesystem::path& dir, const StudyResult& st, const StudyOptions& opt) {
+void writeStudyOutputs(const std::filesystem::path& dir, const StudyResult& st, const StudyFindings& findings,
+                       const StudyOptions& opt) {
   writeStudyModes(dir, st);
   writeWeaveShapes(dir, st);
   writeStudyPlots(dir, st, opt);
-  writeFileAtomically(dir / "report.md", makeStudyReport(st, opt));
+  writeFileAtomically(dir / "report.md", makeStudyReport(st, findings, opt));
 }
 
 }  // namespace motostab::output

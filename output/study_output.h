@@ -5,15 +5,18 @@
 #include <string>
 
 #include "studies/study.h"
+#include "studies/study_findings.h"
 
 namespace motostab::output {
 
 /// Writes DIR/study_modes.csv, DIR/weave_shapes.csv, fig09_root_locus, fig10_weave_real_part,
 /// fig11_weave_real_part_halved, fig12_weave_shapes (.gp/.png/.svg), each variant's
 /// eigenvalues.csv and summary.json under DIR/{nominal,halved}/VARIANT/, and DIR/report.md.
-void writeStudyOutputs(const std::filesystem::path& dir, const studies::StudyResult& study, const studies::StudyOptions& options);
+void writeStudyOutputs(const std::filesystem::path& dir, const studies::StudyResult& study,
+                       const studies::StudyFindings& findings, const studies::StudyOptions& options);
 
-/// The markdown report alone (figures from calcStudyFindings, studies/study_findings.h).
-std::string makeStudyReport(const studies::StudyResult& study, const studies::StudyOptions& options);
+/// The markdown report alone, setting `findings` (studies::calcStudyFindings of `study`) against the paper.
+std::string makeStudyReport(const studies::StudyResult& study, const studies::StudyFindings& findings,
+                            const studies::StudyOptions& options);
 
 }  // namespace motostab::output

@@ -15,6 +15,7 @@ using analysis::LinearModel;
 using analysis::ModeBranch;
 using analysis::StableRange;
 using analysis::SweepResult;
+using analysis::calcStableGridRanges;
 using analysis::calcStableSpeedRanges;
 
 double calcFrequencyHz(std::complex<double> l) { return l.imag() / (2 * M_PI); }
@@ -148,20 +149,9 @@ nlohmann::json makeSweepSummary(const std::string& name, const SweepResult& swee
   j["critical_speeds"] = crit;
   for (const auto& [mode, speeds] : byMode)
     j[mode + "_speed_mps"] = speeds.empty() ? nlohmann::json(nullptr) : speeds[0];
-  // Speed ranges of the sweep grid where every labelled mode has a negative real part.
-  nlohmann::json ranges = nlohmann::json::array();
-  double startStable = NAN;
-  for (size_t k = 0; k < sweep.speeds.size(); ++k) {
-    bool stable = true;
-    for (const auto& b : sweep.branches)
-      if (b.label != "neutral" && b.eigenvalue[k].real() >= 0) stable = false;
-    if (stable && std::isnan(startStable)) startStable = sweep.speeds[k];
-    if ((!stable || k + 1 == sweep.speeds.size()) && !std::isnan(startStable)) {
-      ranges.push_back({startStable, stable ? sweep.speeds[k] : sweep.speeds[k - 1]});
-      startStable = NAN;
-    }
-  }
-  j["stable_grid_ranges_mps"] = ranges;
+  // Runs of grid speeds where every branch but the neutral ones has a negative real part.
+  j["stable_grid_ranges_mps"] = nlohmann::json::array();
+  for (const StableRange& r : calcStableGridRanges(sweep)) j["stable_grid_ranges_mps"].push_back({r.start, r.stop});
   // The same ranges bounded by the critical speeds (calcStableSpeedRanges), as the plot shades them.
   j["stable_speed_ranges_mps"] = nlohmann::json::array();
   for (const StableRange& r : calcStableSpeedRanges(sweep)) j["stable_speed_ranges_mps"].push_back({r.start, r.stop});

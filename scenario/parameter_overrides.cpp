@@ -79,7 +79,8 @@ std::vector<std::string> ParameterOverrides::format() const {
 void ParameterOverrides::applyTo(YAML::Node& tree) const {
   for (const auto& c : items_) {
     YAML::Node value;  // a fresh node per tree: trees never share (or edit) this map's sections
-    if (const double* v = std::get_if<double>(&c.value)) value = makeOverrideScalar(formatShortest(*v));
+    if (const double* v = std::get_if<double>(&c.value))  // the user's digits, so a name "1e3" stays "1e3"
+      value = makeOverrideScalar(c.text.empty() ? formatShortest(*v) : parseOverride(c.text).value.Scalar());
     else if (const std::string* s = std::get_if<std::string>(&c.value)) value = makeOverrideScalar(*s);
     else value = copyTree(std::get<YAML::Node>(c.value));
     setKeyPath(tree, c.path, value, c.format());

@@ -195,6 +195,8 @@ Scenario readScenario(const std::string& file, YamlMap& m) {
     s.speeds.stop = sp.getNonNegative("stop");
     s.speeds.step = sp.getPositive("step");
     if (s.speeds.stop < s.speeds.start) sp.fail("stop", "must not be below start");
+    if (!((s.speeds.stop - s.speeds.start) / s.speeds.step <= SpeedRange::kMaxSteps))
+      sp.fail("step", "gives more than 1e6 speeds between start and stop");
     sp.finish();
   }
   {

@@ -135,6 +135,8 @@ struct PluginSpec {
 /// Default speed range for sweeps, m/s.
 struct SpeedRange {
   double start = 0, stop = 10, step = 0.1;
+  /// The most steps (stop - start) / step a range may hold, wherever it is given.
+  static constexpr double kMaxSteps = 1e6;
 };
 
 /// A stated uncertainty of one scenario parameter (the `uncertainty:` section): the key path as

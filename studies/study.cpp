@@ -70,9 +70,8 @@ ModeShape calcWeaveShape(const VehicleModel& model, const SweepResult& sweep, do
   return shape;
 }
 
-StudyResult runStudy(const std::string& file, const StudyOptions& opt) {
+StudyResult runStudy(const ScenarioSource& source, const StudyOptions& opt) {
   StudyResult out;
-  const ScenarioSource source(file);  // read once for every variant
   const Scenario base = source.load(opt.overrides);
   out.scenario = base.name;
   out.wheelbase = base.geometry.wheelbase;

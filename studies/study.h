@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "analysis/sweep.h"
+#include "scenario/scenario_source.h"
 #include "scenario/parameter_overrides.h"
 
 namespace motostab::studies {
@@ -33,7 +34,7 @@ struct StudyOptions {
   analysis::SweepOptions sweep;
   std::vector<std::string> variants{"rigid", "bending", "torsion", "twist"};
   double stiffnessScale = 0.5;             ///< the seed's "doubled compliances" (Fig. 11)
-  double dampingScale = 1.0 / std::sqrt(2.0);  ///< keeps the damping ratio (seed eq. 18)
+  double dampingScale = 1.0 / std::sqrt(2.0);  ///< sqrt(stiffnessScale) keeps each damping ratio (seed eq. 18)
   std::string shapeVariant = "torsion";
   std::vector<double> shapeSpeeds{10.0, 18.5, 30.0};
   scenario::ParameterOverrides overrides;  ///< applied to every variant first
@@ -47,8 +48,9 @@ struct StudyResult {
   std::vector<ModeShape> weaveShapes;      ///< of options.shapeVariant, nominal stiffness
 };
 
-/// Runs every variant at identified and scaled stiffness (in parallel when threads > 1).
-StudyResult runStudy(const std::string& scenarioFile, const StudyOptions& options);
+/// Runs every variant at identified and scaled stiffness (in parallel when threads > 1), each built from
+/// `source` (the scenario file read once) with the options' and the variant's typed changes.
+StudyResult runStudy(const scenario::ScenarioSource& source, const StudyOptions& options);
 
 /// The weave shape of `model` at `speed`, continuing the weave of `sweep` (seed Fig. 12).
 ModeShape calcWeaveShape(const vehicle::VehicleModel& model, const analysis::SweepResult& sweep, double speed, const analysis::SweepOptions& options);

@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 #include <algorithm>
 #include <complex>
 #include <fstream>
@@ -15,6 +16,7 @@
 #include <string>
 #include <vector>
 
+#include "core/portable_random.h"
 #include "tests/apps/cli_support.h"
 
 namespace {
@@ -208,6 +210,23 @@ TEST(CliCommands, StudyVariantsEqualTheirSweeps) {
     if (c.sub == "nominal/rigid") expectRigidReportNumbers(report, b, readJson(dir / "sweep" / "summary.json"));
     else expectHalvedTorsionReportNumbers(report, b);
   }
+}
+
+// Without --damping-scale the second set's damping is scaled by the square root of the drawn stiffness
+// factor, which keeps each lumped element's damping ratio c / (2 sqrt(k J)) (seed eq. 18).
+TEST(CliCommands, StudyDampingScaleKeepsTheDampingRatio) {
+  const auto dir = makeTempDir("cli_study_damping");
+  motostab::core::PortableRandom rng(4021);
+  const double s = rng.drawUniform(0.2, 0.8);
+  char scale[32], expected[64];
+  std::snprintf(scale, sizeof scale, "%.6f", s);
+  std::snprintf(expected, sizeof expected, "damping x%.4f", std::sqrt(std::stod(scale)));
+  const CliRun r = runCli({"study", kEnduro, "--speeds", "10:30:10", "--compare", "torsion", "--shape-speeds", "10",
+                           "--stiffness-scale", scale, "--out", (dir / "study").string()});
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  std::ifstream reportFile(dir / "study" / "report.md");
+  const std::string report((std::istreambuf_iterator<char>(reportFile)), std::istreambuf_iterator<char>());
+  EXPECT_NE(report.find(expected), std::string::npos) << expected << "\n" << report.substr(0, 600);
 }
 
 TEST(CliCommands, SimulateWritesATimeseriesAndIdentifiesTheWeave) {

@@ -50,6 +50,9 @@ TEST(CliInput, NumbersMustBeFiniteAndInRange) {
   expectInputError({"simulate", kWhipple, "--speed", "5", "--duration", "1", "--perturb", "roll-rate:nan"}, "--perturb");
   expectInputError({"study", kWhipple, "--stiffness-scale", "0"}, "--stiffness-scale");
   expectInputError({"study", kWhipple, "--shape-speeds", "10,nan"}, "--shape-speeds");
+  expectInputError({"study", std::string(MOTOSTAB_SOURCE_DIR) + "/scenarios/enduro.yaml", "--speeds", "4:20:4",
+                    "--shape-speeds", "30"},
+                   "--shape-speeds");  // outside the swept speeds
   expectInputError({"identify", "virtual-rig", "--out", "x", "--noise-factor", "inf"}, "--noise-factor");
 }
 

@@ -1,4 +1,9 @@
 #include <gtest/gtest.h>
+#include <sys/resource.h>
+
+#include <algorithm>
+#include <csignal>
+#include <vector>
 
 #include <filesystem>
 #include <fstream>
@@ -20,15 +25,53 @@ TEST(AtomicFile, WritesWholeContentAndLeavesNoTemporary) {
   EXPECT_EQ(files, 1);
 }
 
-TEST(AtomicFile, FailureLeavesOldFileIntact) {
+namespace {
+
+std::string readAll(const std::filesystem::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  std::stringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
+}
+
+std::vector<std::string> listFolder(const std::filesystem::path& dir) {
+  std::vector<std::string> names;
+  for (auto& e : std::filesystem::directory_iterator(dir)) names.push_back(e.path().filename().string());
+  std::sort(names.begin(), names.end());
+  return names;
+}
+
+}  // namespace
+
+// A target that exists keeps its old content when the new content cannot be written in full: the
+// file-size limit (RLIMIT_FSIZE, which binds root too) makes the write fail half-way.
+TEST(AtomicFile, FailedWriteLeavesOldTargetAndNoTemporary) {
   const auto dir = makeTempDir("atomic_test2");
-  std::filesystem::remove_all(dir);
-  motostab::io::writeFileAtomically(dir / "a.txt", "old");
-  // A folder in the way of the target makes the rename fail.
+  motostab::io::writeFileAtomically(dir / "b.txt", "old");
+  rlimit saved{};
+  ASSERT_EQ(getrlimit(RLIMIT_FSIZE, &saved), 0);
+  void (*savedHandler)(int) = std::signal(SIGXFSZ, SIG_IGN);
+  rlimit small = saved;
+  small.rlim_cur = 64;
+  ASSERT_EQ(setrlimit(RLIMIT_FSIZE, &small), 0);
+  bool threw = false;
+  try {
+    motostab::io::writeFileAtomically(dir / "b.txt", std::string(4096, 'n'));
+  } catch (const std::runtime_error& e) {
+    threw = std::string(e.what()).find("b.txt") != std::string::npos;
+  }
+  setrlimit(RLIMIT_FSIZE, &saved);
+  std::signal(SIGXFSZ, savedHandler);
+  EXPECT_TRUE(threw);
+  EXPECT_EQ(readAll(dir / "b.txt"), "old");
+  EXPECT_EQ(listFolder(dir), std::vector<std::string>{"b.txt"});
+}
+
+// A folder in the way of the target makes the rename fail: an error, and no temporary left behind.
+TEST(AtomicFile, FailedRenameLeavesNoTemporary) {
+  const auto dir = makeTempDir("atomic_test3");
   std::filesystem::create_directories(dir / "b.txt" / "x");
   EXPECT_THROW(motostab::io::writeFileAtomically(dir / "b.txt", "new"), std::runtime_error);
-  std::ifstream in(dir / "a.txt");
-  std::string s;
-  in >> s;
-  EXPECT_EQ(s, "old");
+  EXPECT_EQ(listFolder(dir), std::vector<std::string>{"b.txt"});
+  EXPECT_TRUE(std::filesystem::is_directory(dir / "b.txt" / "x"));
 }

@@ -102,6 +102,26 @@ TEST(OutputFolder, NamesTheFileSystemRejectsAreInputErrors) {
   EXPECT_EQ(listNames(dir), std::set<std::string>{"file"});
 }
 
+// "--out ." (or "..", "x/..", or any folder that holds the working folder) would have the run replace
+// the folder it works in: refused at once, before any computing, and nothing is created.
+TEST(OutputFolder, TheWorkingFolderOrOneHoldingItIsRefused) {
+  const fs::path dir = freshDir("here");
+  fs::create_directories(dir / "work");
+  const fs::path saved = fs::current_path();
+  fs::current_path(dir / "work");
+  for (const fs::path& bad : {fs::path("."), fs::path(".."), fs::path("x/.."), fs::path("./"), dir, dir / "work"}) {
+    try {
+      OutputFolder out(bad);
+      ADD_FAILURE() << "no error for " << bad;
+    } catch (const InputError& e) {
+      EXPECT_EQ(e.getLocation().key, "--out") << e.what();
+    }
+  }
+  fs::current_path(saved);
+  EXPECT_EQ(listNames(dir), std::set<std::string>{"work"});
+  EXPECT_TRUE(fs::is_empty(dir / "work"));
+}
+
 TEST(OutputFolder, LeftoversOfKilledRunsAreCleanedUp) {
   const fs::path dir = freshDir("stale");
   const fs::path target = dir / "out";

@@ -84,6 +84,16 @@ TEST(ScenarioSource, FullPrecisionSurvives) {
   EXPECT_EQ(formatShortest(0.1), "0.1");
 }
 
+// Text that reads as a number keeps the user's digits where the scenario expects text, and its value
+// where it expects a number.
+TEST(ScenarioSource, NumberLikeTextKeepsItsDigits) {
+  const Scenario s = ScenarioSource(kScenario).load(ParameterOverrides(
+      std::vector<std::string>{"name=1e3", "description=1.50", "geometry.trail_m=8.0e-2"}));
+  EXPECT_EQ(s.name, "1e3");
+  EXPECT_EQ(s.description, "1.50");
+  EXPECT_EQ(s.geometry.trail, 0.08);
+}
+
 TEST(ScenarioSource, SwitchesAndSectionsAsTyped) {
   const ScenarioSource source(kEnduro);
   ParameterOverrides o;

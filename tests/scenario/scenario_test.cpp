@@ -107,6 +107,14 @@ TEST(Scenario, InertiaViolatesTriangleInequality) {
               "yy: 20", "rear_frame.inertia_kgm2", "triangle inequality");
 }
 
+// A speed range whose step count overflows (or would fill the memory) is an input error, not a crash.
+TEST(Scenario, SpeedRangeWithTooManySteps) {
+  expectError(variant("speeds", "{start: 0, stop: 10, step: 0.1}", "{start: 0, stop: 1e300, step: 1e-300}"),
+              "speeds_mps", "speeds_mps.step", "more than 1e6 speeds");
+  expectError(variant("speeds2", "{start: 0, stop: 10, step: 0.1}", "{start: 0, stop: 1e9, step: 1e-3}"),
+              "speeds_mps", "speeds_mps.step", "more than 1e6 speeds");
+}
+
 TEST(Scenario, UnknownPlugin) {
   expectError(variant("plugin", "{model: rolling_no_slip}", "{model: magic_tyre}"), "magic_tyre", "contact.model",
               "unknown contact plugin 'magic_tyre'");

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include "core/portable_random.h"
+#include "io/yaml_map.h"
 #include "scenario/scenario_source.h"
 #include "studies/study.h"
 
@@ -25,7 +26,10 @@ TEST(StudyOverrides, ScaleFactorsKeepFullPrecision) {
   opt.shapeSpeeds = {};
   opt.sweep.start = 10, opt.sweep.stop = 10.2, opt.sweep.step = 0.1;
   opt.threads = 2;
-  const StudyResult r = runStudy(kEnduro, opt);
+  const long opened = io::getYamlFileOpenCount(kEnduro);
+  const ScenarioSource source(kEnduro);
+  const StudyResult r = runStudy(source, opt);
+  EXPECT_EQ(io::getYamlFileOpenCount(kEnduro) - opened, 1) << "the study reads its scenario once";
   ASSERT_EQ(r.halved.size(), 1u);
   const Scenario s = ScenarioSource(kEnduro).load(r.halved[0].overrides);
   EXPECT_EQ(s.swingarm.compliance, "torsion");

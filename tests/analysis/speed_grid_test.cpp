@@ -1,0 +1,39 @@
+// makeSpeedGrid: the grid's points against start + i * step computed here, with start, stop and step
+// drawn; degenerate and oversized ranges throw instead of overflowing or exhausting memory.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <stdexcept>
+
+#include "analysis/sweep.h"
+#include "core/portable_random.h"
+
+namespace motostab::analysis {
+namespace {
+
+TEST(SpeedGrid, PointsAndEndpointForDrawnRanges) {
+  core::PortableRandom rng(20261125);
+  for (int trial = 0; trial < 50; ++trial) {
+    const double start = rng.drawUniform(0, 5), step = rng.drawUniform(0.05, 1.0);
+    const int steps = 1 + static_cast<int>(rng.drawIndex(60));
+    // stop on the grid (up to rounding), and stop half a step past the last point
+    for (const double stop : {start + steps * step, start + (steps + 0.5) * step}) {
+      const std::vector<double> v = makeSpeedGrid(start, stop, step);
+      ASSERT_EQ(v.size(), static_cast<size_t>(steps + 1)) << start << ":" << stop << ":" << step;
+      for (int i = 0; i <= steps; ++i) EXPECT_DOUBLE_EQ(v[i], start + i * step);
+      EXPECT_LE(v.back(), stop + 1e-9 * step);
+    }
+  }
+}
+
+TEST(SpeedGrid, RejectsDegenerateAndOversizedRanges) {
+  EXPECT_THROW(makeSpeedGrid(0, 1e300, 1e-300), std::invalid_argument);
+  EXPECT_THROW(makeSpeedGrid(0, 1e9, 1e-3), std::invalid_argument);
+  EXPECT_THROW(makeSpeedGrid(5, 4, 0.1), std::invalid_argument);
+  EXPECT_THROW(makeSpeedGrid(0, 1, 0), std::invalid_argument);
+  EXPECT_THROW(makeSpeedGrid(0, 1, std::nan("")), std::invalid_argument);
+  EXPECT_EQ(makeSpeedGrid(3, 3, 0.1).size(), 1u);
+}
+
+}  // namespace
+}  // namespace motostab::analysis
