@@ -53,6 +53,28 @@ Candidate makeSteerDamper(const YAML::Node& tree) {
   return {"steer_damper", {"steer_damper={damping_Nms_per_rad: 0}"}, {c}};
 }
 
+// Steer-head friction, a Coulomb torque T_f (N m), as the describing-function equivalent viscous damping
+// c_eq = 4 T_f / (pi Omega) at the measured steer-rate amplitude Omega (physical_candidates.h eq. 1),
+// added to the scenario's steer damper coefficient, or a damper of its own where there is none. Its
+// bounds, start and step are steer_damper's mapped through c_eq, so that both search alike.
+Candidate makeSteerFriction(const YAML::Node& tree, const SteerRateAmplitude& omega) {
+  Candidate c = makeSteerDamper(tree);
+  c.name = "steer_friction";
+  c.sameModelAs = "steer_damper";
+  const double k = calcFrictionDampingFactor(omega.value_rad_s);
+  CandidateParameter& p = c.parameters[0];
+  p.name = "friction_torque_Nm";
+  p.lower /= k, p.upper /= k, p.start /= k, p.step /= k;
+  p.keyScale = k;
+  p.note = "at a steer-rate amplitude of " + formatNumber(omega.value_rad_s, 4) + " rad/s (" + omega.source +
+           "): damping " + formatNumber(k, 4) + " N m s/rad per N m";
+  if (tree["steer_damper"]) {  // added to the damper there is
+    p.keyOffset = getScalar(tree, "steer_damper", "damping_Nms_per_rad", 0);
+    c.fixedOverrides = {};
+  }
+  return c;
+}
+
 // A steer controller's effective gain and delay (vehicle/steer_controller.h): `steer_controller_gain`
 // scales every gain (gain_factor, log scale over [0.05, 20], off at 1), `steer_controller_delay` adds
 // a Pade delay (delay_s in [0, 0.3] s, off at the bound 0; absent when the scenario has one).
@@ -211,10 +233,12 @@ void addTyreScalingCandidates(const YAML::Node& tree, std::vector<Candidate>& ou
 
 std::vector<Candidate> listCandidates(const YAML::Node& tree,
                                       const std::vector<std::pair<std::string, double>>& uncertainty,
-                                      std::vector<std::string>* unavailable) {
+                                      std::vector<std::string>* unavailable, const SteerRateAmplitude& steerRate) {
   std::vector<Candidate> out;
   std::vector<std::string> none;
   if (!tree["steer_damper"]) out.push_back(makeSteerDamper(tree));
+  if (steerRate.value_rad_s > 0) out.push_back(makeSteerFriction(tree, steerRate));
+  else if (!steerRate.source.empty()) (unavailable ? *unavailable : none).push_back("steer_friction: " + steerRate.source);
   if (!tree["fork_compliance"]) out.push_back(makeForkCompliance(tree));
   addRiderLeanCandidate(tree, out, unavailable ? *unavailable : none);
   addSwingarmCandidates(tree, out);

@@ -12,6 +12,13 @@
 
 namespace motostab::diagnosis {
 
+/// The steer-rate amplitude of the measured oscillations that steer_friction's equivalent damping is
+/// taken at (diagnosis/steer_rate_amplitude.h finds it in the data).
+struct SteerRateAmplitude {
+  double value_rad_s = 0;  ///< 0: none in the data
+  std::string source;      ///< where it comes from, or why there is none
+};
+
 struct CandidateParameter {
   std::string name;         ///< JSON key: the scenario key (damping_Nms_per_rad) or "value" for parameter:*
   std::string path;         ///< override key path, e.g. steer_damper.damping_Nms_per_rad
@@ -25,12 +32,20 @@ struct CandidateParameter {
   double priorMean = 0, priorSigma = 0;  ///< Student-t prior (diagnosis/priors.h); sigma 0: none
   bool priorMeasured = false;  ///< the sigma is the scenario's `uncertainty:` one, not motostab's default
   std::vector<std::string> alsoPaths;  ///< further keys set to the same value (both tyres)
+  /// The override keys get keyOffset + keyScale * value (key unit): a parameter in its own unit
+  /// applied through another key (steer_friction: the friction torque in N m as the equivalent
+  /// viscous damping added to the damper's coefficient, physical_candidates.h).
+  double keyScale = 1, keyOffset = 0;
+  std::string note;         ///< reported with the value (steer_friction: the steer-rate amplitude it is read at)
 };
 
 struct Candidate {
   std::string name;                         ///< steer_damper, parameter:geometry.trail_m, ...
   scenario::ParameterOverrides fixedOverrides;  ///< applied before the parameters' (switch the effect on)
   std::vector<CandidateParameter> parameters;
+  /// A candidate that predicts exactly as this one in a linear model (steer_friction and
+  /// steer_damper): the pair search pools only the better of the two.
+  std::string sameModelAs = {};
 };
 
 /// Every candidate the scenario (its YAML tree after base overrides, and the measured parameters'
@@ -42,9 +57,12 @@ struct Candidate {
 /// in `unavailable` says why (a riderless vehicle such as Kooijman's Silvercity has no rider to lean).
 /// With a `steer_controller`: `steer_controller_gain` (its gain_factor free) and, without a delay,
 /// `steer_controller_delay` (delay_s free).
+/// `steer_friction` (physical_candidates.h) where `steerRate` holds a steer-rate amplitude; else a
+/// line in `unavailable` says why not.
 std::vector<Candidate> listCandidates(const YAML::Node& scenarioTree,
                                       const std::vector<std::pair<std::string, double>>& uncertainty,
-                                      std::vector<std::string>* unavailable = nullptr);
+                                      std::vector<std::string>* unavailable = nullptr,
+                                      const SteerRateAmplitude& steerRate = {});
 
 /// Mass of the rider the `rider_lean` candidate assumes (an estimate), kg.
 constexpr double kRiderMass_kg = 75;

@@ -43,21 +43,23 @@ FoldScores scoreFolds(int numFolds, const std::vector<int>& foldOf, const std::f
   for (int f = 0; f < numFolds; ++f) {
     int m = 0;
     const double fallback = sumFold(fullFit, foldOf, f, m);
-    const double fallbackRms = m ? std::sqrt(fallback / m) : 0.0;
-    double sum = fallback;
+    double sum = 0;
     s.reasons[f] = errors[f];
     if (errors[f].empty()) {
       sum = sumFold(fitted[f], foldOf, f, m);
       if (!std::isfinite(sum)) s.reasons[f] = "non-finite prediction";
-      else if (m && std::sqrt(sum / m) > divergence * std::max(1.0, fallbackRms))
+      else if (m && std::sqrt(sum / m) > divergence * std::max(1.0, std::sqrt(fallback / m)))
         s.reasons[f] = "diverged (held-out RMS " + std::to_string(std::sqrt(sum / m)) + ")";
     }
-    if (!s.reasons[f].empty()) s.failed[f] = true, ++s.numFailed, sum = fallback;
+    if (!s.reasons[f].empty()) {
+      s.failed[f] = true, ++s.numFailed, s.rms[f] = std::nan("");
+      continue;
+    }
     s.rms[f] = m ? std::sqrt(sum / m) : 0.0;
     total += sum;
     count += m;
   }
-  s.cvRms = std::sqrt(total / std::max(count, 1));
+  s.cvRms = count > 0 ? std::sqrt(total / count) : std::nan("");
   return s;
 }
 

@@ -9,6 +9,7 @@
 #include "diagnosis/profile_likelihood.h"
 #include "diagnosis/residual_summary.h"
 #include "diagnosis/robustness.h"
+#include "diagnosis/steer_rate_amplitude.h"
 #include "diagnosis/stepwise_search.h"
 #include "io/yaml_map.h"
 #include "scenario/scenario.h"
@@ -49,10 +50,10 @@ std::vector<std::pair<std::string, double>> getUncertainty(const ScenarioSource&
 
 // The candidates of the scenario the options select; parameters the data set per controller setting
 // are not one value and go to `unavailable`.
-std::vector<Candidate> selectCandidates(const ScenarioSource& source, const MeasuredData& data, const DiagnosisOptions& opt,
-                                        std::vector<std::string>& unavailable) {
-  std::vector<Candidate> listed =
-      listCandidates(source.makeTree(opt.overrides), getUncertainty(source, opt), &unavailable);
+std::vector<Candidate> selectCandidates(const ScenarioSource& source, const MeasuredData& data, const Predictor& nominal,
+                                        const DiagnosisOptions& opt, std::vector<std::string>& unavailable) {
+  std::vector<Candidate> listed = listCandidates(source.makeTree(opt.overrides), getUncertainty(source, opt), &unavailable,
+                                                 findSteerRateAmplitude(data, nominal));
   for (const std::string& path : getControllerPaths(data))
     for (auto it = listed.begin(); it != listed.end();)
       if (it->name == "parameter:" + path) {
@@ -80,6 +81,8 @@ void fitFinalModels(const FitProblem& problem, const SearchState& state, Diagnos
   result.extended.rms = calcRms(problem, extended, result.extended.x, result.extended.noise);
   crossValidate(problem, none, result.extended.noise, result.baseline);
   crossValidate(problem, extended, result.extended.noise, result.extended, threads);
+  if (!result.extended.foldFailures.empty())  // the gain compares the two over the same folds
+    result.baseline.cvRms = calcCvRmsOver(problem, result.baseline, result.extended.foldFailed);
   calcProfiles(withNoise(problem, result.extended.noise), extended, result.extended);
   for (size_t c = 0, i = 0; c < result.causes.size(); ++c)
     for (auto& e : result.causes[c].fit.parameters) {
@@ -147,7 +150,7 @@ DiagnosisResult runDiagnosis(const std::string& scenarioFile, const MeasuredData
   const Predictor predictor(source, opt.overrides, data, opt.sweepCache);
   const FitProblem problem(predictor, data, opt.folds);
   std::vector<std::string> unavailable;
-  const std::vector<Candidate> all = selectCandidates(*source, data, opt, unavailable);
+  const std::vector<Candidate> all = selectCandidates(*source, data, predictor, opt, unavailable);
   const std::vector<const Candidate*> pool = probeCandidates(*source, opt, all, unavailable);
   SearchState state;
   state.pool = pool;

@@ -69,6 +69,7 @@ struct ParameterEstimate {
   bool priorMeasured = false;           ///< priorSigma is the scenario's `uncertainty:` sigma (not the default)
   double sigmas = 0;                    ///< (value - prior mean) / priorSigma
   bool atBound = false;
+  std::string note;                     ///< read the value with this (steer_friction: its steer-rate amplitude)
 };
 
 /// One model's fit at a step: the current causes plus a candidate (or none: the baseline).

@@ -42,8 +42,9 @@ ParameterOverrides ModelSpec::makeOverrides(const Eigen::VectorXd& x) const {
   for (const auto* c : parts) {
     out.append(c->fixedOverrides);
     for (const auto& p : c->parameters) {
-      out.set(p.path, p.logScale ? std::exp(x(i)) : x(i));
-      for (const auto& also : p.alsoPaths) out.set(also, p.logScale ? std::exp(x(i)) : x(i));
+      const double key = p.keyOffset + p.keyScale * (p.logScale ? std::exp(x(i)) : x(i));
+      out.set(p.path, key);
+      for (const auto& also : p.alsoPaths) out.set(also, key);
       ++i;
     }
   }

@@ -301,6 +301,7 @@ MeasuredData loadMeasuredData(const std::string& path) {
   data.name = root.getString("name", fs::path(path).stem().string());
   for (auto& e : getMapList(root, "eigenvalues")) readEigenvalueFile(e, data);
   for (auto& r : getMapList(root, "responses")) data.responses.push_back(readRun(r));
+  data.steerRateAmplitude = root.getPositive("steer_rate_amplitude_rad_s", 0.0);
   root.finish();
   if (data.eigenvalues.empty() && data.responses.empty())
     root.fail("", "no measurements: give eigenvalues and/or responses");

@@ -55,6 +55,9 @@ struct MeasuredData {
   std::vector<MeasuredEigenvalue> eigenvalues;
   std::vector<ResponseRun> responses;
   std::vector<std::string> eigenvalueFiles;  ///< resolved CSV paths
+  /// `steer_rate_amplitude_rad_s`: the steer-rate amplitude of the measured oscillations (rad/s), at
+  /// which the steer_friction candidate's equivalent damping is taken; 0: not given.
+  double steerRateAmplitude = 0;
 };
 
 /// Reads a measurement YAML file and every CSV it names (paths relative to it). Strict: an unknown

@@ -54,6 +54,7 @@ ParameterEstimate makeEstimate(const ModelSpec& model, const LeastSquaresResult&
   e.priorMeasured = p.priorMeasured;
   e.sigmas = p.priorSigma > 0 ? (e.value - p.priorMean) / p.priorSigma : 0.0;
   e.atBound = r.atBound.size() > i && r.atBound(i);
+  e.note = p.note;
   return e;
 }
 
@@ -175,6 +176,17 @@ void crossValidate(const FitProblem& problem, const ModelSpec& model, const Nois
     if (scores.failed[f]) s.foldFailures.push_back("fold " + std::to_string(f + 1) + ": " + scores.reasons[f]);
   s.cvRms = scores.cvRms;
   s.hasCv = true;
+}
+
+double calcCvRmsOver(const FitProblem& problem, const FitSummary& s, const std::vector<bool>& skip) {
+  std::vector<int> count(s.foldRms.size(), 0);
+  for (const auto& o : problem.observations)
+    if (o.fold >= 0 && o.fold < static_cast<int>(count.size())) ++count[o.fold];
+  double sum = 0;
+  int n = 0;
+  for (size_t f = 0; f < count.size(); ++f)
+    if (!(f < skip.size() && skip[f])) sum += s.foldRms[f] * s.foldRms[f] * count[f], n += count[f];
+  return n > 0 ? std::sqrt(sum / n) : std::nan("");
 }
 
 double calcRms(const FitProblem& problem, const ModelSpec& model, const Eigen::VectorXd& x, const NoiseState& noise) {

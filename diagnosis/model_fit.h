@@ -59,6 +59,10 @@ FitSummary fitOrFail(const FitProblem& problem, const ModelSpec& model, const Ei
 void crossValidate(const FitProblem& problem, const ModelSpec& model, const NoiseState& noise, FitSummary& s,
                    int threads = 1);
 
+/// The CV RMS of `s` (crossValidate) over the folds not marked in `skip`: sqrt(sum of fold RMS^2 times
+/// the fold's observation count over their count); NaN when every fold is skipped.
+double calcCvRmsOver(const FitProblem& problem, const FitSummary& s, const std::vector<bool>& skip);
+
 /// RMS of the normalised (whitened) data residuals of `model` at x with `noise`: models compared by RMS
 /// must share one noise (each model's own sigma makes its own RMS about 1).
 double calcRms(const FitProblem& problem, const ModelSpec& model, const Eigen::VectorXd& x, const NoiseState& noise);

@@ -23,14 +23,20 @@ std::vector<CandidateParameter> renameParameters(const Candidate& c) {
 }
 
 // The singles to pair: the kPairPool largest deviance gains over the baseline, whatever their sign (a
-// member whose effect the other cancels may gain nothing alone).
-std::vector<int> choosePairPool(const std::vector<FitSummary>& fits) {
-  std::vector<int> order;
+// member whose effect the other cancels may gain nothing alone). Of two candidates that predict alike
+// (Candidate::sameModelAs: steer_friction and steer_damper) only the better is taken: they cannot be
+// paired with each other, and the other would take a place that a different effect could use.
+std::vector<int> choosePairPool(const std::vector<FitSummary>& fits, const std::vector<const Candidate*>& pool) {
+  std::vector<int> order, out;
   for (size_t i = 0; i < fits.size(); ++i)
     if (std::isfinite(fits[i].deviance)) order.push_back(static_cast<int>(i));
-  std::sort(order.begin(), order.end(), [&](int a, int b) { return fits[a].deviance < fits[b].deviance; });
-  if (order.size() > static_cast<size_t>(kPairPool)) order.resize(kPairPool);
-  return order;
+  std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return fits[a].deviance < fits[b].deviance; });
+  const auto alike = [&](int a, int b) { return pool[a]->sameModelAs == pool[b]->name || pool[b]->sameModelAs == pool[a]->name; };
+  for (int i : order) {
+    if (out.size() == static_cast<size_t>(kPairPool)) break;
+    if (std::none_of(out.begin(), out.end(), [&](int j) { return alike(i, j); })) out.push_back(i);
+  }
+  return out;
 }
 
 // Each member needed: the pair beats the single fit of either member by BIC and by likelihood ratio.
@@ -57,7 +63,7 @@ PairSearch searchPairs(const FitProblem& problem, const std::vector<const Candid
                        const std::vector<const Candidate*>& pool, const FitSummary& baseline,
                        const std::vector<FitSummary>& fits, const DiagnosisOptions& opt) {
   PairSearch out;
-  const std::vector<int> top = choosePairPool(fits);
+  const std::vector<int> top = choosePairPool(fits, pool);
   std::vector<std::pair<int, int>> members;
   for (size_t i = 0; i < top.size(); ++i)
     for (size_t j = i + 1; j < top.size(); ++j)

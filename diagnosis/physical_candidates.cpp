@@ -29,6 +29,8 @@ void addTyreCrown(const YAML::Node& tree, std::vector<Candidate>& out) {
 
 }  // namespace
 
+double calcFrictionDampingFactor(double steerRateAmplitude) { return 4 / (M_PI * steerRateAmplitude); }
+
 void addPhysicalCandidates(const YAML::Node& tree, std::vector<Candidate>& out) {
   std::vector<Candidate> added;
   addTyreCrown(tree, added);

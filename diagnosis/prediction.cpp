@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 
 #include "vehicle/vehicle_model.h"
 
@@ -40,6 +41,8 @@ Predictor::Predictor(const std::string& scenarioFile, ParameterOverrides baseCha
 Predictor::Predictor(std::shared_ptr<const ScenarioSource> source, ParameterOverrides baseChanges, const MeasuredData& data,
                      std::shared_ptr<SweepCache> cache)
     : source_(std::move(source)), baseChanges_(std::move(baseChanges)), data_(data), cache_(std::move(cache)) {
+  if (data_.eigenvalues.empty() && data_.responses.empty())
+    throw std::invalid_argument("Predictor: the measured data hold no eigenvalue rows and no response runs: nothing to predict");
   makeControllerParts();
   if (!parts_.empty()) return;
   speeds_ = collectSpeeds();

@@ -30,6 +30,7 @@ json makeParameters(const std::vector<ParameterEstimate>& ps) {
     if (p.priorSigma > 0)
       e["prior_sigma"] = p.priorSigma, e["change_in_sigmas"] = p.sigmas, e["prior_measured"] = p.priorMeasured;
     if (p.hasProfile) e["profile_interval_95"] = {p.profileLow, p.profileHigh};
+    if (!p.note.empty()) e["note"] = p.note;
     j[p.name] = e;
   }
   return j;
@@ -40,8 +41,9 @@ json makeFit(const FitSummary& f) {
          {"bic", f.bic}, {"delta_bic", f.deltaBic}, {"at_bound", f.atBound}, {"p_value", f.pValue},
          {"num_parameters", f.numParameters}, {"failed_criteria", f.failed}};
   j["cv_rms"] = f.hasCv ? json(f.cvRms) : json(nullptr);
-  if (f.hasCv)
-    j["folds_better"] = f.foldsBetter, j["failed_folds"] = f.foldFailures;
+  if (f.hasCv)  // cv_folds: the folds the CV RMS covers (a failed fold has no held-out score)
+    j["folds_better"] = f.foldsBetter, j["failed_folds"] = f.foldFailures,
+    j["cv_folds"] = f.foldFailed.size() - f.foldFailures.size();
   json corr = json::array();
   for (int r = 0; r < f.correlation.rows(); ++r) {
     json row = json::array();
@@ -140,6 +142,7 @@ std::string makeParameterText(const std::vector<ParameterEstimate>& ps) {
     if (p.priorSigma > 0)
       s += " (" + fmt(p.sigmas, 3) + (p.priorMeasured ? " sigma from the measured " : " default sigma from the scenario's ") +
            fmt(p.priorMean, 6) + ")";
+    if (!p.note.empty()) s += " (" + p.note + ")";
   }
   return s;
 }
@@ -175,6 +178,12 @@ std::string makeResidualSection(const DiagnosisResult& r) {
   return o.str();
 }
 
+// " (over k of K folds)" when some folds of `f`'s cross-validation failed; else "".
+std::string makeFoldCount(const FitSummary& f) {
+  if (f.foldFailures.empty()) return "";
+  return " (over " + std::to_string(f.foldFailed.size() - f.foldFailures.size()) + " of " + std::to_string(f.foldFailed.size()) + " folds)";
+}
+
 std::string makeCandidateSection(const DiagnosisResult& r) {
   std::ostringstream o;
   o << "\n## Candidates (first step, best BIC first)\n\n| candidate | parameters | RMS | CV RMS | delta BIC | p | unmet criteria |\n|---|---|---|---|---|---|---|\n";
@@ -183,7 +192,7 @@ std::string makeCandidateSection(const DiagnosisResult& r) {
     for (const auto& f : c.failed) failed += (failed.empty() ? "" : "; ") + f;
     for (const auto& f : c.foldFailures) failed += (failed.empty() ? "" : "; ") + ("CV " + f + ", not counted as better");
     o << "| " << c.name << " | " << makeParameterText(c.parameters) << " | " << fmt(c.rms) << " | "
-      << (c.hasCv ? fmt(c.cvRms) : "-") << " | " << fmt(c.deltaBic) << " | " << fmt(c.pValue, 2) << " | "
+      << (c.hasCv ? fmt(c.cvRms) + makeFoldCount(c) : "-") << " | " << fmt(c.deltaBic) << " | " << fmt(c.pValue, 2) << " | "
       << (failed.empty() ? "none" : failed) << " |\n";
   }
   if (!r.unavailable.empty()) {
@@ -281,7 +290,8 @@ std::string makeGainSection(const DiagnosisResult& r) {
   for (const auto& s : r.extendedOverrides) o << "- `" << s << "`\n";
   const double factor = r.extended.cvRms > 0 ? r.baseline.cvRms / r.extended.cvRms : 0.0;
   o << "\n## The gain\n\nRMS (normalised) " << fmt(r.baseline.rms) << " -> " << fmt(r.extended.rms) << "; cross-validated "
-    << fmt(r.baseline.cvRms) << " -> " << fmt(r.extended.cvRms) << " (factor " << fmt(factor, 3) << ").\n\n"
+    << fmt(r.baseline.cvRms) << " -> " << fmt(r.extended.cvRms) << makeFoldCount(r.extended) << " (factor " << fmt(factor, 3)
+    << ").\n\n"
     << "| component | RMS / sigma (whitened) before | after | VAF % before | after |\n|---|---|---|---|---|\n";
   for (size_t k = 0; k < r.residualsAfter.size(); ++k) {
     const auto& a = r.residualsAfter[k];

@@ -1,7 +1,8 @@
 // Cross-validation scores with failing folds (diagnosis/cross_validation.h): a fold whose refit throws,
 // returns NaN or runs off to a degenerate model (held-out RMS ~1e29, as fork_compliance gave on the
-// Kooijman data) is marked failed and scored with the full fit's residuals; healthy folds, including
-// one merely a few times worse than the full fit, keep their own. Reference: the sums written here.
+// Kooijman data) is marked failed, has no score (NaN) and is left out of the CV RMS, which covers the
+// other folds' held-out residuals only; healthy folds, including one merely a few times worse than the
+// full fit, keep their own. Reference: the sums written here.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -34,6 +35,7 @@ TEST(CrossValidation, FailedAndDivergingFoldsAreMarkedAndDoNotPoisonTheScore) {
   };
   const FoldScores s = scoreFolds(K, foldOf, fitFold, full);
   double total = 0;
+  int count = 0;
   for (int f = 0; f < K; ++f) {
     const bool bad = f == throws || f == nan || f == huge;
     EXPECT_EQ(s.failed[f], bad) << f;
@@ -41,13 +43,21 @@ TEST(CrossValidation, FailedAndDivergingFoldsAreMarkedAndDoNotPoisonTheScore) {
     double sum = 0;
     int m = 0;
     for (int i = 0; i < n; ++i)
-      if (foldOf[i] == f) sum += bad ? full(i) * full(i) : held(i) * held(i), ++m;
+      if (foldOf[i] == f) sum += held(i) * held(i), ++m;
+    if (bad) {
+      EXPECT_TRUE(std::isnan(s.rms[f])) << f;
+      continue;
+    }
     EXPECT_NEAR(s.rms[f], std::sqrt(sum / m), 1e-12) << f;
-    total += sum;
+    total += sum, count += m;
   }
   EXPECT_EQ(s.numFailed, 3);
-  EXPECT_NEAR(s.cvRms, std::sqrt(total / n), 1e-12);
+  EXPECT_NEAR(s.cvRms, std::sqrt(total / count), 1e-12);
   EXPECT_TRUE(std::isfinite(s.cvRms));
+  // Every fold failing: no CV RMS at all.
+  const FoldScores none = scoreFolds(K, foldOf, [](int) -> Eigen::VectorXd { throw std::runtime_error("no trim"); }, full);
+  EXPECT_EQ(none.numFailed, K);
+  EXPECT_TRUE(std::isnan(none.cvRms));
 }
 
 }  // namespace

@@ -47,6 +47,7 @@ struct HiddenEffect {
   uint64_t seed = 1;
   double runNoiseRho = 0;               ///< responses: AR(1) noise e_t = rho e_{t-1} + sqrt(1 - rho^2) w_t (stationary)
   int runSamples = 300;                 ///< responses: samples per run (0.01 s apart)
+  double steerRateAmplitude = 0;        ///< > 0: written as the data's steer_rate_amplitude_rad_s (rad/s)
 };
 
 inline std::string writeEigenvalueData(const HiddenEffect& h, const std::filesystem::path& dir, Draw& draw) {
@@ -116,6 +117,7 @@ inline std::string writeHiddenEffectData(const HiddenEffect& h, const std::files
   std::string yaml = "name: hidden-effect\n";
   if (eigen) yaml += writeEigenvalueData(h, dir, draw);
   if (!runSpeeds.empty()) yaml += writeResponseData(h, runSpeeds, runNoise, dir, draw);
+  if (h.steerRateAmplitude > 0) yaml += "steer_rate_amplitude_rad_s: " + formatNumber(h.steerRateAmplitude) + "\n";
   std::ofstream(dir / "measured.yaml") << yaml;
   return (dir / "measured.yaml").string();
 }

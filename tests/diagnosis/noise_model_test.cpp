@@ -57,8 +57,10 @@ TEST(NoiseModel, WhiteningIsTheExactAr2Likelihood) {
   PortableRandom rng(4242);
   const double phi2 = rng.drawUniform(-0.6, 0.3), phi1 = rng.drawUniform(0.2, 0.95) * (1 - phi2);
   ArNoise ar;
-  ar.reflection = {phi1 / (1 - phi2), phi2};  // partial autocorrelations of an AR(2)
-  ar.phi = {phi1, phi2};
+  // Moved in whole, not assigned from a braced list: GCC 12's -Wnonnull misreads the latter's copy
+  // into the empty vector.
+  ar.reflection = std::vector<double>{phi1 / (1 - phi2), phi2};  // partial autocorrelations of an AR(2)
+  ar.phi = std::vector<double>{phi1, phi2};
   const int n = 40;
   std::vector<double> rhoK(n);
   rhoK[0] = 1, rhoK[1] = phi1 / (1 - phi2);
@@ -89,7 +91,7 @@ TEST(NoiseModel, NoiseStateChangeIsTheLargestLogSigmaOrAtanhStep) {
   for (int i = 0; i < 20; ++i) {
     const double s1 = rng.drawUniform(0.1, 2), s2 = rng.drawUniform(0.1, 2), k1 = rng.drawUniform(0.8, 0.98), k2 = rng.drawUniform(0.8, 0.98);
     ArNoise a, b;
-    a.reflection = {k1}, b.reflection = {k2};
+    a.reflection = std::vector<double>{k1}, b.reflection = std::vector<double>{k2};
     const NoiseState x{{1.0, s1}, {ArNoise(), a}}, y{{1.0, s2}, {ArNoise(), b}};
     const double expected = std::max(std::abs(std::log(s1 / s2)), std::abs(0.5 * std::log((1 + k1) / (1 - k1)) - 0.5 * std::log((1 + k2) / (1 - k2))));
     EXPECT_NEAR(x.calcChange(y), expected, 1e-12);

@@ -15,6 +15,7 @@
 #include "io/yaml_map.h"
 #include "output/diagnosis_output.h"
 #include "scenario/scenario_source.h"
+#include "benchmark_equations.h"
 #include "tests/support/temp_dir.h"
 
 namespace motostab::diagnosis {
@@ -106,20 +107,9 @@ TEST(PredictionSource, AWholeKooijmanDiagnosisReadsTheScenarioAtMostThreeTimes) 
   EXPECT_EQ(scenario.name.empty(), false);
 }
 
-// Meijaard et al. (2007), eq. (1) and the benchmark's matrices (Appendix A, Table 1 bicycle):
-// M q'' + v C1 q' + (g K0 + v^2 K2) q = 0, q = (roll, steer), g = 9.81 m/s^2. The four eigenvalues
-// at speed v, from the first-order form.
+// The four eigenvalues of the benchmark bicycle at speed v (benchmark_equations.h).
 Eigen::VectorXcd calcBenchmarkEigenvalues(double v) {
-  Eigen::Matrix2d M, C1, K0, K2;
-  M << 80.81722, 2.31941332208709, 2.31941332208709, 0.29784188199686;
-  C1 << 0, 33.86641391492494, -0.85035641456978, 1.68540397397560;
-  K0 << -80.95, -2.59951685249872, -2.59951685249872, -0.80329488458618;
-  K2 << 0, 76.59734589573222, 0, 2.65431523794604;
-  Eigen::Matrix4d A = Eigen::Matrix4d::Zero();
-  A.block<2, 2>(0, 2) = Eigen::Matrix2d::Identity();
-  A.block<2, 2>(2, 0) = -M.inverse() * (9.81 * K0 + v * v * K2);
-  A.block<2, 2>(2, 2) = -M.inverse() * (v * C1);
-  return Eigen::EigenSolver<Eigen::Matrix4d>(A).eigenvalues();
+  return Eigen::EigenSolver<Eigen::Matrix4d>(testing::calcBenchmarkStateMatrix(v)).eigenvalues();
 }
 
 // Below about 0.68 m/s the benchmark's weave is two positive real roots (Meijaard et al. 2007,

@@ -37,6 +37,17 @@ MeasuredEigenvalue makeRow(double v, const std::string& mode, double re, double 
 
 // Meijaard et al. (2007) Table 2: weave at 5 m/s -0.77534188219585 +/- 4.46486771378823i, capsize
 // -0.32286642900409 (1/s); at 4 m/s the weave pair is 0.41325331521125 +/- 3.07910818603206i.
+// No eigenvalue rows and no runs: a clear error, not a read of an empty speed list.
+TEST(Prediction, NoDataIsAClearError) {
+  const MeasuredData none;
+  try {
+    Predictor(kBenchmark, {}, none);
+    ADD_FAILURE() << "no error";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("no eigenvalue rows and no response runs"), std::string::npos) << e.what();
+  }
+}
+
 TEST(Prediction, LabelledEigenvaluesMatchTheBenchmark) {
   MeasuredData data;
   data.eigenvalues = {makeRow(5, "weave", 0, 0), makeRow(5, "capsize", 0, 0), makeRow(4, "weave", 0, 0),
