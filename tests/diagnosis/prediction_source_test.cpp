@@ -15,7 +15,7 @@
 #include "io/yaml_map.h"
 #include "output/diagnosis_output.h"
 #include "scenario/scenario_source.h"
-#include "benchmark_equations.h"
+#include "tests/support/benchmark_equations.h"
 #include "tests/support/temp_dir.h"
 
 namespace motostab::diagnosis {

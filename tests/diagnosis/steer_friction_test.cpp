@@ -16,7 +16,7 @@
 #include "diagnosis/physical_candidates.h"
 #include "diagnosis/robustness.h"
 #include "diagnosis/steer_rate_amplitude.h"
-#include "benchmark_equations.h"
+#include "tests/support/benchmark_equations.h"
 #include "run_hidden.h"
 #include "scenario/scenario.h"
 
@@ -124,7 +124,7 @@ TEST(SteerFriction, SinusoidAmplitude) {
 
 // Source (c): a calibrated roll-rate run gives Omega = its amplitude times the weave's |steer| / |roll|
 // mode-shape ratio, here against the benchmark's published linear equations (Meijaard et al. 2007,
-// benchmark_equations.h) solved here. Source (b): a
+// tests/support/benchmark_equations.h) solved here. Source (b): a
 // calibrated steer-rate signal is used as it is; (a): the data's own key wins.
 TEST(SteerFriction, AmplitudeFromTheData) {
   PortableRandom rng(99);

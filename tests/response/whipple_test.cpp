@@ -10,6 +10,7 @@
 #include <Eigen/Dense>
 
 #include "response/mode_identification.h"
+#include "tests/support/benchmark_equations.h"
 
 namespace {
 
@@ -30,15 +31,7 @@ const BenchmarkPoint kPoints[] = {
 // Roll rate and steer rate (rad/s) after a steer-rate kick of 0.5 rad/s, sampled at `step` s for `duration` s.
 void simulateKick(double v, double duration, double step, std::vector<double>& t, std::vector<double>& rollRate,
                   std::vector<double>& steerRate) {
-  Eigen::Matrix2d m, c1, k0, k2;
-  m << 80.81722, 2.31941332208709, 2.31941332208709, 0.29784188199686;
-  c1 << 0, 33.86641391492494, -0.85035641456978, 1.68540397397560;
-  k0 << -80.95, -2.59951685249872, -2.59951685249872, -0.80329488458618;
-  k2 << 0, 76.59734589573222, 0, 2.65431523794604;
-  Eigen::Matrix4d a = Eigen::Matrix4d::Zero();
-  a.topRightCorner<2, 2>().setIdentity();
-  a.bottomLeftCorner<2, 2>() = -m.inverse() * (9.81 * k0 + v * v * k2);
-  a.bottomRightCorner<2, 2>() = -m.inverse() * (v * c1);
+  const Eigen::Matrix4d a = motostab::testing::calcBenchmarkStateMatrix(v);
   Eigen::EigenSolver<Eigen::Matrix4d> eig(a);
   const Eigen::Matrix4cd vecs = eig.eigenvectors();
   const Eigen::Vector4cd coeff = vecs.inverse() * Eigen::Vector4cd(0, 0, 0, 0.5);
