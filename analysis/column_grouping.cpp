@@ -39,9 +39,11 @@ std::vector<std::vector<int>> colourColumns(const Eigen::Matrix<bool, Eigen::Dyn
 // roll or when the block is everything.
 std::vector<int> proposeMirror(const ColumnGrouping& g) {
   const int n = static_cast<int>(g.states.size());
-  const auto roll = std::find(g.states.begin(), g.states.end(), "roll");
-  if (roll == g.states.end()) return {};
-  std::vector<int> sign(n, 1), stack{static_cast<int>(roll - g.states.begin())};
+  int roll = -1;
+  for (int i = 0; i < n && roll < 0; ++i)
+    if (g.roles[i] == vehicle::StateRole::Roll && g.slots[i] == Slot::Q) roll = i;
+  if (roll < 0) return {};
+  std::vector<int> sign(n, 1), stack{roll};
   sign[stack.back()] = -1;
   int count = 1;
   while (!stack.empty()) {
@@ -88,8 +90,8 @@ ColumnGrouping calcColumnGrouping(const std::vector<const LinearModel*>& samples
       g.rowScale[i] = std::max(g.rowScale[i], rowMax);
       for (int j = 0; j < n; ++j) g.pattern(i, j) = g.pattern(i, j) || std::abs(row[j]) > tolerance * rowMax;
     }
+  for (const auto& st : first.states) g.slots.push_back(st.entry.slot), g.roles.push_back(st.role);
   g.mirror = proposeMirror(g);
-  for (const auto& st : first.states) g.slots.push_back(st.entry.slot);
   const std::vector<std::vector<int>> groups = colourColumns(g.pattern, orderBySlot(g.slots, {}));
   for (auto& grp : groups)
     if (grp.size() > 1) g.groups.push_back(grp);

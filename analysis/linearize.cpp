@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "analysis/linearize_detail.h"
+#include "analysis/modes.h"
 
 namespace motostab::analysis {
 
@@ -18,6 +19,18 @@ using vehicle::Input;
 int LinearModel::findState(const std::string& name) const {
   for (size_t i = 0; i < states.size(); ++i)
     if (states[i].name == name) return static_cast<int>(i);
+  return -1;
+}
+
+int LinearModel::findState(vehicle::StateRole role, vehicle::StateKind kind) const {
+  for (size_t i = 0; i < states.size(); ++i)
+    if (states[i].role == role && states[i].getKind() == kind) return static_cast<int>(i);
+  return -1;
+}
+
+int LinearModel::findState(const StateEntry& e) const {
+  for (size_t i = 0; i < states.size(); ++i)
+    if (states[i].entry.slot == e.slot && states[i].entry.index == e.index) return static_cast<int>(i);
   return -1;
 }
 
@@ -172,14 +185,15 @@ void differentiate(const LinearizeContext& c, SimTK::State& s, const Direction& 
 
 }  // namespace
 
-// Independent states in model order: q, u, z.
+// Independent states in model order: q, u, z, with their names and roles.
 std::vector<LinearState> listIndependentStates(const LinearizeContext& c, const TangentSpace& t) {
   std::vector<LinearState> states;
+  auto add = [&](const vehicle::StateInfo& info, Slot slot, int i) { states.push_back({info.name, {slot, i}, info.role, info.wheel}); };
   for (int i = 0; i < c.nq; ++i)
-    if (std::find(t.depQ.begin(), t.depQ.end(), i) == t.depQ.end()) states.push_back({c.model.getQNames()[i], {Slot::Q, i}});
+    if (std::find(t.depQ.begin(), t.depQ.end(), i) == t.depQ.end()) add(c.model.getQStates()[i], Slot::Q, i);
   for (int i = 0; i < c.nu; ++i)
-    if (std::find(t.depU.begin(), t.depU.end(), i) == t.depU.end()) states.push_back({c.model.getUNames()[i], {Slot::U, i}});
-  for (int i = 0; i < c.nz; ++i) states.push_back({c.model.getZNames()[i], {Slot::Z, i}});
+    if (std::find(t.depU.begin(), t.depU.end(), i) == t.depU.end()) add(c.model.getUStates()[i], Slot::U, i);
+  for (int i = 0; i < c.nz; ++i) add(c.model.getZStates()[i], Slot::Z, i);
   return states;
 }
 
@@ -344,6 +358,29 @@ std::vector<std::vector<int>> findDecoupledBlocks(const Eigen::MatrixXd& A) {
   return blocks;
 }
 
+// The mass matrix over the rate states of lin: T^T M T, the columns of T the tangent-space directions
+// of those rates (their dependent rates moved to keep the velocity constraints) in u.
+Eigen::MatrixXd calcRateMassMatrix(const LinearizeContext& c, const ConstraintJacobian& cj, const TangentSpace& t,
+                                   const LinearModel& lin) {
+  c.model.getSystem().realize(c.s, SimTK::Stage::Position);
+  SimTK::Matrix M;
+  c.model.getMatter().calcM(c.s, M);
+  std::vector<int> rates;
+  for (size_t i = 0; i < lin.states.size(); ++i)
+    if (lin.states[i].entry.slot == Slot::U) rates.push_back(static_cast<int>(i));
+  Eigen::MatrixXd T = Eigen::MatrixXd::Zero(c.nu, rates.size());
+  for (size_t j = 0; j < rates.size(); ++j) {
+    Direction dir;
+    addDirection(c, cj, t, lin.states[rates[j]].entry, 1.0, dir);
+    for (const auto& [e, v] : dir)
+      if (e.slot == Slot::U) T(e.index, j) += v;
+  }
+  Eigen::MatrixXd Me(c.nu, c.nu);
+  for (int i = 0; i < c.nu; ++i)
+    for (int j = 0; j < c.nu; ++j) Me(i, j) = M(i, j);
+  return T.transpose() * Me * T;
+}
+
 // Eigenvalues and unit eigenvectors; a block-diagonal A (after a permutation: sweeps of laterally
 // symmetric vehicles, whose grouped columns hold exact zeros off the pattern) block by block, the
 // eigenvectors zero outside their block (the same eigensystem at a fraction of the O(n^3) cost).
@@ -386,6 +423,10 @@ LinearModel linearizeInPlace(const VehicleModel& model, TrimResult& trim, const 
   const Eigen::MatrixXd B = differenceInputColumns(c, lin);
   removeStates(c, chooseRemovedStates(c, lin, A), A, B, lin);
   solveEigen(lin);
+  if (opt.labelModes) {
+    lin.massMatrix = calcRateMassMatrix(c, cj, tangent, lin);
+    lin.labels = labelModes(lin);
+  }
   return lin;
 }
 

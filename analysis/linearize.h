@@ -4,6 +4,7 @@
 #include <string>
 #include <vector>
 
+#include "analysis/mode_label.h"
 #include "analysis/trim.h"
 
 namespace motostab::analysis {
@@ -14,6 +15,7 @@ namespace motostab::analysis {
 struct ColumnGrouping {
   std::vector<std::string> states;            ///< names of the linear states (rows and columns)
   std::vector<Slot> slots;                    ///< q, u or z of each state
+  std::vector<vehicle::StateRole> roles;      ///< the role of each state
   /// Removed coordinates whose rows the samples keep (LinearModel::removedRows, e.g. the Whipple
   /// bicycle's yaw): grouped columns fill these rows too.
   std::vector<std::string> removedStates;
@@ -44,12 +46,22 @@ struct LinearizeOptions {
   bool computeB = true;
   /// Grouped column evaluation (sweeps: from calcColumnGrouping); empty groups: one by one.
   ColumnGrouping grouping;
+  /// Compute LinearModel::massMatrix and the mode labels (labelModes, analysis/modes.h).
+  bool labelModes = true;
 };
 
-/// One state of the linear model.
+/// One state of the linear model: its name (files, people), the q, u or z it stands for, its role and
+/// wheel (vehicle::StateInfo).
 struct LinearState {
   std::string name;
-  StateEntry entry;  ///< the q, u or z it stands for
+  StateEntry entry;
+  vehicle::StateRole role = vehicle::StateRole::Other;
+  vehicle::WheelSide wheel = vehicle::WheelSide::None;
+  /// Coordinate (q), rate (u) or auxiliary state (z).
+  vehicle::StateKind getKind() const {
+    return entry.slot == Slot::Q ? vehicle::StateKind::Coordinate
+                                 : entry.slot == Slot::U ? vehicle::StateKind::Rate : vehicle::StateKind::Auxiliary;
+  }
 };
 
 /// x' = A x + B u about a trim, restricted to the constraint tangent space (docs/simbody.md:
@@ -72,8 +84,17 @@ struct LinearModel {
   std::vector<std::pair<std::string, Eigen::RowVectorXd>> removedRows;
   Eigen::VectorXcd eigenvalues;   ///< 1/s
   Eigen::MatrixXcd eigenvectors;  ///< column k belongs to eigenvalue k, unit 2-norm
+  /// The mass matrix over the rate states (Slot::U, in their order): T^T M T, M Simbody's mass matrix
+  /// at the trim and T the tangent-space map from those rates to every u (kg, kg m, kg m^2).
+  Eigen::MatrixXd massMatrix;
+  /// labels[k]: the mode of eigenvalue k (labelModes); empty when LinearizeOptions::labelModes is off.
+  std::vector<ModeLabel> labels;
 
   int findState(const std::string& name) const;
+  /// The first state with this role and kind; -1 if none.
+  int findState(vehicle::StateRole role, vehicle::StateKind kind) const;
+  /// The state standing for entry `e`; -1 if none.
+  int findState(const StateEntry& e) const;
   /// The row c with d(name)/dt = c x: a kept state's row of A, or a removed coordinate's row;
   /// empty if `name` is neither.
   Eigen::RowVectorXd getRateRow(const std::string& name) const;

@@ -1,7 +1,10 @@
+// Mode content (energy and participation shares by state role), labels at each operating point, and
+// tracking across speed.
 #include "analysis/modes.h"
 
 #include "core/parallel.h"
 
+#include <Eigen/LU>
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -10,37 +13,369 @@
 namespace motostab::analysis {
 
 using core::runParallel;
+using vehicle::StateKind;
+using vehicle::WheelSide;
+using vehicle::isComplianceRole;
 
+namespace {
 
-bool isComplianceCoordinate(const std::string& name) {
-  auto starts = [&](const char* p) { return name.rfind(p, 0) == 0; };
-  return starts("swingarm") || starts("fork_bending") || starts("fork_torsion") || starts("rider_lean");
+constexpr const char* kLabelNames[kNumModeLabels] = {
+    "neutral", "weave", "wobble", "capsize", "castor", "bounce", "pitch", "rear_hop", "front_tyre_relaxation",
+    "rear_tyre_relaxation", "swingarm_bending", "swingarm_torsion", "swingarm_twist", "fork_bending", "fork_torsion",
+    "rider_lean", "compliance", "controller", "longitudinal", "other"};
+
+}  // namespace
+
+const char* toString(ModeLabel label) { return kLabelNames[static_cast<int>(label)]; }
+
+std::optional<ModeLabel> parseModeLabel(const std::string& name) {
+  for (int i = 0; i < kNumModeLabels; ++i)
+    if (name == kLabelNames[i]) return static_cast<ModeLabel>(i);
+  return std::nullopt;
 }
 
-DofGroup getDofGroup(const std::string& name) {
-  auto starts = [&](const char* p) { return name.rfind(p, 0) == 0; };
-  if (starts("roll")) return DofGroup::Roll;
-  if (starts("steer")) return DofGroup::Steer;
-  if (starts("yaw")) return DofGroup::Yaw;
-  if (name == "y" || name == "vy") return DofGroup::Lateral;
-  if (starts("pitch")) return DofGroup::Pitch;
-  if (name == "height" || name == "vz") return DofGroup::Bounce;
-  if (isComplianceCoordinate(name)) return DofGroup::Compliance;
-  if (starts("suspension")) return DofGroup::Suspension;
-  if (name == "x" || name == "vx" || name.find("wheel_angle") != std::string::npos) return DofGroup::Forward;
-  return DofGroup::Relaxation;
+double ModeContent::calcRollYawLateral() const {
+  return get(StateRole::Roll) + get(StateRole::Yaw) + get(StateRole::Lateral);
+}
+double ModeContent::calcInPlane() const {
+  return get(StateRole::Pitch) + get(StateRole::Height) + get(StateRole::Suspension);
+}
+double ModeContent::calcLongitudinal() const { return get(StateRole::Forward) + get(StateRole::WheelSpin); }
+double ModeContent::calcCompliance() const {
+  double s = 0;
+  for (int r = 0; r < kNumStateRoles; ++r)
+    if (isComplianceRole(static_cast<StateRole>(r))) s += role[r];
+  return s;
+}
+double ModeContent::calcAuxiliary() const {
+  return get(StateRole::TyreLag) + get(StateRole::Controller) + get(StateRole::Other);
 }
 
 namespace {
-std::string coordinateOf(const LinearState& s) {
-  const std::string& n = s.name;
-  if (n.size() > 5 && n.compare(n.size() - 5, 5, "_rate") == 0) return n.substr(0, n.size() - 5);
-  if (n == "vx") return "x";
-  if (n == "vy") return "y";
-  if (n == "vz") return "height";
-  return n;
+
+// A mechanical degree of freedom of a linear model: a rate state, the coordinate state of the same
+// mobility (-1 if that coordinate is not a state), and the diagonal stiffness that weighs the latter.
+struct MechanicalDof {
+  int rate = -1, coordinate = -1;
+  double stiffness = 0;  // |K_ii| (N/m, N m/rad)
+  StateRole role = StateRole::Other;
+};
+
+// What every eigenvector of one model shares: the degrees of freedom (in the order of the rate states,
+// that of lin.massMatrix), the mass matrix, and the auxiliary states.
+struct ContentLayout {
+  std::vector<MechanicalDof> dofs;
+  Eigen::MatrixXd mass;        // over the rate states (identity without lin.massMatrix)
+  std::vector<int> auxiliary;  // indices of the auxiliary (z) states
+};
+
+// The rate states with their coordinates, M, and |K_ii| with K = -M A_uq.
+ContentLayout calcContentLayout(const LinearModel& lin) {
+  ContentLayout layout;
+  std::vector<int> rates;
+  for (size_t i = 0; i < lin.states.size(); ++i) {
+    if (lin.states[i].entry.slot == Slot::U) rates.push_back(static_cast<int>(i));
+    if (lin.states[i].entry.slot == Slot::Z) layout.auxiliary.push_back(static_cast<int>(i));
+  }
+  const Eigen::Index nr = static_cast<Eigen::Index>(rates.size());
+  const bool hasMass = lin.massMatrix.rows() == nr && lin.massMatrix.cols() == nr;
+  layout.mass = hasMass ? lin.massMatrix : Eigen::MatrixXd::Identity(nr, nr);
+  for (Eigen::Index a = 0; a < nr; ++a) {
+    MechanicalDof d;
+    d.rate = rates[a];
+    d.role = lin.states[d.rate].role;
+    for (size_t j = 0; j < lin.states.size(); ++j)
+      if (lin.states[j].entry.slot == Slot::Q && lin.states[j].entry.index == lin.states[d.rate].entry.index)
+        d.coordinate = static_cast<int>(j);
+    if (d.coordinate >= 0) {
+      double k = 0;  // (M A_uq)_aa
+      for (Eigen::Index b = 0; b < nr; ++b) k += layout.mass(a, b) * lin.A(rates[b], d.coordinate);
+      d.stiffness = std::abs(k);
+    }
+    layout.dofs.push_back(d);
+  }
+  return layout;
 }
+
+// Participation factors |l_kj v_jk| of the auxiliary states j in each eigenvalue k, normalised by the sum
+// over all states (Perez-Arriaga, Verghese & Schweppe 1982, IEEE Trans. PAS 101(9):3117): rows follow
+// layout.auxiliary. Empty without auxiliary states or when the eigenvectors are singular.
+Eigen::MatrixXd calcAuxiliaryParticipation(const LinearModel& lin, const ContentLayout& layout) {
+  const Eigen::Index n = lin.eigenvectors.cols();
+  if (layout.auxiliary.empty() || n == 0) return {};
+  const Eigen::MatrixXcd L = Eigen::PartialPivLU<Eigen::MatrixXcd>(lin.eigenvectors).inverse();
+  if (!L.allFinite()) return {};
+  Eigen::MatrixXd p(layout.auxiliary.size(), n);
+  for (Eigen::Index k = 0; k < n; ++k) {
+    double total = 0;
+    for (Eigen::Index i = 0; i < n; ++i) total += std::abs(L(k, i) * lin.eigenvectors(i, k));
+    for (size_t a = 0; a < layout.auxiliary.size(); ++a) {
+      const int i = layout.auxiliary[a];
+      p(a, k) = total > 0 ? std::abs(L(k, i) * lin.eigenvectors(i, k)) / total : 0.0;
+    }
+  }
+  return p;
+}
+
+ModeContent calcContent(const LinearModel& lin, const ContentLayout& layout, const Eigen::MatrixXd& participation, int k) {
+  ModeContent c;
+  double auxiliary = 0;
+  for (size_t a = 0; a < layout.auxiliary.size() && participation.rows() > 0; ++a) {
+    const double p = participation(a, k);
+    const LinearState& st = lin.states[layout.auxiliary[a]];
+    c.role[static_cast<int>(st.role)] += p;
+    if (st.role == StateRole::TyreLag) (st.wheel == WheelSide::Front ? c.frontLag : c.rearLag) += p;
+    auxiliary += p;
+  }
+  // Kinetic energy by degree of freedom, Re(conj(u_i) (M u)_i) (summing to u^H M u), and potential
+  // energy |K_ii| |q_i|^2; summed by role, a role's negative total (coupling) counts as none.
+  const Eigen::Index nr = static_cast<Eigen::Index>(layout.dofs.size());
+  Eigen::VectorXcd u(nr);
+  for (Eigen::Index i = 0; i < nr; ++i) u[i] = lin.eigenvectors(layout.dofs[i].rate, k);
+  const Eigen::VectorXcd Mu = layout.mass * u;
+  std::array<double, kNumStateRoles> energy{};
+  for (Eigen::Index i = 0; i < nr; ++i) {
+    const MechanicalDof& d = layout.dofs[i];
+    double e = (std::conj(u[i]) * Mu[i]).real();
+    if (d.coordinate >= 0) e += d.stiffness * std::norm(lin.eigenvectors(d.coordinate, k));
+    energy[static_cast<int>(d.role)] += e;
+  }
+  double total = 0;
+  for (double& e : energy) total += (e = std::max(e, 0.0));
+  const double mechanical = std::max(0.0, 1.0 - auxiliary);
+  for (int r = 0; r < kNumStateRoles && total > 0; ++r) c.role[r] += mechanical * energy[r] / total;
+  double sum = 0;
+  for (double s : c.role) sum += s;
+  if (sum > 0) {
+    for (double& s : c.role) s /= sum;
+    c.frontLag /= sum, c.rearLag /= sum;
+  }
+  return c;
+}
+
 }  // namespace
+
+std::vector<ModeContent> calcModeContents(const LinearModel& lin) {
+  const ContentLayout layout = calcContentLayout(lin);
+  const Eigen::MatrixXd participation = calcAuxiliaryParticipation(lin, layout);
+  std::vector<ModeContent> out;
+  for (Eigen::Index k = 0; k < lin.eigenvalues.size(); ++k) out.push_back(calcContent(lin, layout, participation, static_cast<int>(k)));
+  return out;
+}
+
+ModeContent calcModeContent(const LinearModel& lin, int k) {
+  const ContentLayout layout = calcContentLayout(lin);
+  return calcContent(lin, layout, calcAuxiliaryParticipation(lin, layout), k);
+}
+
+namespace {
+
+// A root to label: a real eigenvalue, or the upper member of a complex pair with its conjugate.
+struct Root {
+  int k = -1, conjugate = -1;
+  std::complex<double> lambda;
+  bool oscillatory = false;
+  ModeContent c;
+  double rollYawLateral = 0, steer = 0, inPlane = 0, longitudinal = 0, compliance = 0, auxiliary = 0;
+  StateRole topCompliance = StateRole::Compliance;  // the compliance role with the largest share
+  std::optional<ModeLabel> label;
+  int size() const { return conjugate >= 0 ? 2 : 1; }
+};
+
+// Mode labels of the compliance roles.
+ModeLabel getComplianceLabel(StateRole r) {
+  switch (r) {
+    case StateRole::SwingarmBending: return ModeLabel::SwingarmBending;
+    case StateRole::SwingarmTorsion: return ModeLabel::SwingarmTorsion;
+    case StateRole::SwingarmTwist: return ModeLabel::SwingarmTwist;
+    case StateRole::ForkBending: return ModeLabel::ForkBending;
+    case StateRole::ForkTorsion: return ModeLabel::ForkTorsion;
+    case StateRole::RiderLean: return ModeLabel::RiderLean;
+    default: return ModeLabel::Compliance;
+  }
+}
+
+// Roots of lin with their content: each complex pair once (the member with the positive imaginary part).
+std::vector<Root> collectRoots(const LinearModel& lin) {
+  const std::vector<ModeContent> contents = calcModeContents(lin);
+  const Eigen::Index n = lin.eigenvalues.size();
+  std::vector<bool> used(n, false);
+  std::vector<Root> roots;
+  for (Eigen::Index k = 0; k < n; ++k) {
+    if (used[k]) continue;
+    const std::complex<double> l = lin.eigenvalues[k];
+    Root r;
+    r.k = static_cast<int>(k);
+    r.lambda = l;
+    r.oscillatory = std::abs(l.imag()) > 1e-9 * std::max(1.0, std::abs(l));
+    used[k] = true;
+    if (r.oscillatory) {  // the conjugate: the nearest unused eigenvalue to conj(l)
+      double best = INFINITY;
+      for (Eigen::Index j = 0; j < n; ++j)
+        if (!used[j] && std::abs(lin.eigenvalues[j] - std::conj(l)) < best) best = std::abs(lin.eigenvalues[j] - std::conj(l)), r.conjugate = static_cast<int>(j);
+      if (r.conjugate >= 0 && best <= 1e-6 * std::max(1.0, std::abs(l))) used[r.conjugate] = true;
+      else r.conjugate = -1;
+      if (r.conjugate >= 0 && l.imag() < 0) std::swap(r.k, r.conjugate), r.lambda = std::conj(l);
+    }
+    r.c = contents[r.k];
+    r.rollYawLateral = r.c.calcRollYawLateral();
+    r.steer = r.c.get(StateRole::Steer);
+    r.inPlane = r.c.calcInPlane();
+    r.longitudinal = r.c.calcLongitudinal();
+    r.compliance = r.c.calcCompliance();
+    r.auxiliary = r.c.calcAuxiliary();
+    double top = -1;
+    for (int s = 0; s < kNumStateRoles; ++s)
+      if (isComplianceRole(static_cast<StateRole>(s)) && r.c.role[s] > top) top = r.c.role[s], r.topCompliance = static_cast<StateRole>(s);
+    roots.push_back(r);
+  }
+  return roots;
+}
+
+// Labels with a limited number of roots per operating point (eigenvalues: a complex pair counts two).
+class Capacity {
+ public:
+  Capacity() {
+    left_.fill(2);
+    left_[static_cast<int>(ModeLabel::Capsize)] = left_[static_cast<int>(ModeLabel::Castor)] = 1;
+    for (ModeLabel unlimited : {ModeLabel::Neutral, ModeLabel::Controller, ModeLabel::Longitudinal, ModeLabel::Other})
+      left_[static_cast<int>(unlimited)] = std::numeric_limits<int>::max();
+  }
+  bool take(Root& r, ModeLabel l) {
+    int& left = left_[static_cast<int>(l)];
+    if (r.label || left < r.size()) return false;
+    left -= r.size();
+    r.label = l;
+    return true;
+  }
+  bool isFree(ModeLabel l) const { return left_[static_cast<int>(l)] > 0; }
+
+ private:
+  std::array<int, kNumModeLabels> left_;
+};
+
+// Zero roots of heading or forward motion: |lambda| below 1e-6 1/s with (almost) all of the content in
+// yaw, lateral, forward motion and wheel spin.
+bool isNeutral(const Root& r) {
+  const double drift = r.c.get(StateRole::Yaw) + r.c.get(StateRole::Lateral) + r.longitudinal;
+  return std::abs(r.lambda) < 1e-6 && drift > 0.999;
+}
+
+// The mechanical group that leads a root: a compliance role leads when it has more than the lateral
+// rigid-body motion, the in-plane and the longitudinal motion.
+enum class Family { Lateral, InPlane, Longitudinal, Compliance, Auxiliary };
+Family findFamily(const Root& r) {
+  const double lateral = r.rollYawLateral + r.steer;
+  if (r.auxiliary > 0.5) return Family::Auxiliary;
+  if (r.compliance > std::max({lateral, r.inPlane, r.longitudinal})) return Family::Compliance;
+  if (r.longitudinal > std::max(lateral, r.inPlane)) return Family::Longitudinal;
+  if (r.inPlane > lateral) return Family::InPlane;
+  return Family::Lateral;
+}
+
+// The unlabelled root `eligible` accepts that is `better` than every other such root; nullptr if none.
+template <class Eligible, class Better>
+Root* pickBest(std::vector<Root>& roots, Eligible eligible, Better better) {
+  Root* best = nullptr;
+  for (Root& r : roots)
+    if (!r.label && eligible(r) && (!best || better(r, *best))) best = &r;
+  return best;
+}
+
+// The lateral rigid-body modes (docs/methods.md): wobble (oscillation with more steer than roll), weave
+// (the other lateral oscillation), capsize (slowest roll-led real root), castor (most negative steer-led real root); below
+// the speed where the weave pair becomes complex, its two real roots.
+void labelLateralModes(std::vector<Root>& roots, Capacity& cap) {
+  auto lateral = [](const Root& r) { return r.rollYawLateral + r.steer; };
+  auto moreSteer = [](const Root& a, const Root& b) { return a.steer > b.steer; };
+  auto moreLateral = [&](const Root& a, const Root& b) { return lateral(a) > lateral(b); };
+  auto lateralFamily = [](const Root& r) { return findFamily(r) == Family::Lateral; };
+  if (Root* w = pickBest(
+          roots,
+          [](const Root& r) {
+            return r.oscillatory && r.auxiliary <= 0.5 && r.steer > r.c.get(StateRole::Roll) && r.steer >= 0.1 &&
+                   r.steer >= r.c.get(r.topCompliance);
+          },
+          moreSteer))
+    cap.take(*w, ModeLabel::Wobble);
+  if (Root* w = pickBest(roots, [&](const Root& r) { return r.oscillatory && lateralFamily(r); }, moreLateral))
+    cap.take(*w, ModeLabel::Weave);
+  // The slowest; of equal magnitudes (to 1e-6 relative: the +-lambda pairs at standstill) the lower real part.
+  auto slower = [](const Root& a, const Root& b) {
+    const double x = std::abs(a.lambda), y = std::abs(b.lambda);
+    if (std::abs(x - y) > 1e-6 * std::max(x, y)) return x < y;
+    return a.lambda.real() < b.lambda.real();
+  };
+  if (Root* c = pickBest(roots, [&](const Root& r) { return !r.oscillatory && lateralFamily(r) && r.rollYawLateral >= r.steer; },
+                         slower))
+    cap.take(*c, ModeLabel::Capsize);
+  if (Root* c = pickBest(roots, [&](const Root& r) { return !r.oscillatory && lateralFamily(r) && r.steer > r.rollYawLateral; },
+                         [](const Root& a, const Root& b) { return a.lambda.real() < b.lambda.real(); }))
+    cap.take(*c, ModeLabel::Castor);
+  while (cap.isFree(ModeLabel::Weave)) {  // the weave pair split into two real roots
+    Root* w = pickBest(roots, [&](const Root& r) { return !r.oscillatory && lateralFamily(r); }, moreLateral);
+    if (!w || !cap.take(*w, ModeLabel::Weave)) break;
+  }
+}
+
+// In-plane, compliance, auxiliary and longitudinal roots by their family, largest share first; a root
+// whose label is taken keeps looking (`fallback`).
+void labelOtherModes(std::vector<Root>& roots, Capacity& cap) {
+  auto inPlaneLabel = [](const Root& r) {
+    if (r.c.get(StateRole::Suspension) > 0.9 * r.inPlane) return ModeLabel::RearHop;
+    return r.c.get(StateRole::Height) >= r.c.get(StateRole::Pitch) ? ModeLabel::Bounce : ModeLabel::Pitch;
+  };
+  auto auxiliaryLabel = [](const Root& r) {
+    const double lag = r.c.frontLag + r.c.rearLag, controller = r.c.get(StateRole::Controller);
+    if (lag >= controller && lag >= r.c.get(StateRole::Other))
+      return r.c.frontLag >= r.c.rearLag ? ModeLabel::FrontTyreRelaxation : ModeLabel::RearTyreRelaxation;
+    return controller >= r.c.get(StateRole::Other) ? ModeLabel::Controller : ModeLabel::Other;
+  };
+  // Largest leading share first, so that the clearest root of each label takes it.
+  std::vector<Root*> order;
+  for (Root& r : roots)
+    if (!r.label) order.push_back(&r);
+  auto lead = [](const Root& r) {
+    return std::max({r.rollYawLateral + r.steer, r.inPlane, r.longitudinal, r.compliance, r.auxiliary});
+  };
+  std::stable_sort(order.begin(), order.end(), [&](const Root* a, const Root* b) { return lead(*a) > lead(*b); });
+  for (Root* r : order) {
+    switch (findFamily(*r)) {
+      case Family::InPlane:
+        if (!cap.take(*r, inPlaneLabel(*r)))
+          for (ModeLabel l : {ModeLabel::Pitch, ModeLabel::Bounce, ModeLabel::RearHop}) cap.take(*r, l);
+        break;
+      case Family::Compliance: cap.take(*r, getComplianceLabel(r->topCompliance)); break;
+      case Family::Auxiliary: cap.take(*r, auxiliaryLabel(*r)); break;
+      case Family::Longitudinal: cap.take(*r, ModeLabel::Longitudinal); break;
+      case Family::Lateral: break;
+    }
+  }
+  // What is left: the label of its largest non-rigid share (compliance, tyre lag), else other.
+  for (Root& r : roots) {
+    if (r.label) continue;
+    if (r.compliance >= 0.05) cap.take(r, getComplianceLabel(r.topCompliance));
+    if (r.auxiliary >= 0.05) cap.take(r, auxiliaryLabel(r));
+    cap.take(r, ModeLabel::Other);
+  }
+}
+
+}  // namespace
+
+std::vector<ModeLabel> labelModes(const LinearModel& lin) {
+  std::vector<Root> roots = collectRoots(lin);
+  Capacity cap;
+  for (Root& r : roots)
+    if (isNeutral(r)) cap.take(r, ModeLabel::Neutral);
+  labelLateralModes(roots, cap);
+  labelOtherModes(roots, cap);
+  std::vector<ModeLabel> out(lin.eigenvalues.size(), ModeLabel::Other);
+  for (const Root& r : roots) {
+    out[r.k] = *r.label;
+    if (r.conjugate >= 0) out[r.conjugate] = *r.label;
+  }
+  return out;
+}
 
 namespace {
 
@@ -51,58 +386,7 @@ bool hasSameStates(const LinearModel& a, const LinearModel& b) {
   return true;
 }
 
-// What each state of a linear model contributes to mode content: its group and how to weigh it.
-struct StateWeights {
-  std::vector<int> group;         // DofGroup, or -1: skipped (a rate whose coordinate is kept, wheel spin)
-  std::vector<char> isRate;       // divided by max(1, |lambda|)
-  std::vector<char> perWheelbase; // lateral and forward displacements, divided by the wheelbase
-  std::vector<int> compliance;    // indices of compliance coordinates (isComplianceCoordinate)
-};
-
-StateWeights calcStateWeights(const LinearModel& lin) {
-  StateWeights w;
-  const size_t n = lin.states.size();
-  w.group.resize(n);
-  w.isRate.resize(n);
-  w.perWheelbase.resize(n);
-  for (size_t i = 0; i < n; ++i) {
-    const LinearState& st = lin.states[i];
-    const std::string coordinate = coordinateOf(st);
-    const DofGroup g = getDofGroup(coordinate);
-    w.group[i] = static_cast<int>(g);
-    w.isRate[i] = st.entry.slot == Slot::U;
-    w.perWheelbase[i] = g == DofGroup::Lateral || g == DofGroup::Forward;
-    // A rate whose coordinate is kept counts through it; wheel spin follows pitch and tyre slip and
-    // says nothing about the mode's character.
-    if (st.entry.slot == Slot::U && (lin.findState(coordinate) >= 0 || st.name.find("wheel_angle") != std::string::npos))
-      w.group[i] = -1;
-    if (st.entry.slot == Slot::Q && isComplianceCoordinate(st.name)) w.compliance.push_back(static_cast<int>(i));
-  }
-  return w;
-}
-
-ModeContent calcModeContent(const LinearModel& lin, int k, double wheelbase, const StateWeights& w) {
-  ModeContent c{};
-  const double rateScale = std::max(1.0, std::abs(lin.eigenvalues[k]));
-  for (size_t i = 0; i < w.group.size(); ++i) {
-    if (w.group[i] < 0) continue;
-    double scale = 1.0;  // squared magnitudes: no hypot
-    if (w.isRate[i]) scale *= rateScale;
-    if (w.perWheelbase[i]) scale *= wheelbase;
-    c[w.group[i]] += std::norm(lin.eigenvectors(i, k)) / (scale * scale);
-  }
-  double sum = 0;
-  for (double v : c) sum += v;
-  if (sum > 0)
-    for (double& v : c) v /= sum;
-  return c;
-}
-
 }  // namespace
-
-ModeContent calcModeContent(const LinearModel& lin, int k, double wheelbase) {
-  return calcModeContent(lin, k, wheelbase, calcStateWeights(lin));
-}
 
 double calcMac(const LinearModel& a, int ka, const LinearModel& b, int kb) {
   std::complex<double> dot = 0;
@@ -143,117 +427,27 @@ int findBestMatch(const LinearModel& a, int ka, const LinearModel& b) {
   return best;
 }
 
-
-namespace {
-
-// Share of the in-plane content above which the rear suspension coordinate makes a mode rear_hop.
-constexpr double kRearHopShare = 0.9;
-
-
-struct BranchStats {
-  ModeContent content{};        // mean over speeds
-  double oscillatory = 0;       // fraction of speeds with a complex eigenvalue
-  double wobbleLike = 0;        // fraction of oscillatory speeds: steer-led and above 4 Hz
-  bool neutral = true;
-  std::map<std::string, double> compliance;
-};
-
-BranchStats calcBranchStats(const std::vector<LinearModel>& models, const std::vector<const StateWeights*>& weights,
-                            double wheelbase, const ModeBranch& br) {
-  BranchStats st;
-  const double n = static_cast<double>(models.size());
-  double osc = 0;
-  const StateWeights* shareLayout = nullptr;
-  size_t shareModel = 0;  // a model with shareLayout, for the names
-  std::vector<double> shares;
-  auto flushShares = [&]() {
-    for (size_t c = 0; c < shares.size(); ++c) st.compliance[models[shareModel].states[shareLayout->compliance[c]].name] += shares[c];
-    shares.clear();
-  };
-  for (size_t s = 0; s < models.size(); ++s) {
-    const std::complex<double> l = br.eigenvalue[s];
-    const ModeContent c = calcModeContent(models[s], br.index[s], wheelbase, *weights[s]);
-    for (int g = 0; g < kNumDofGroups; ++g) st.content[g] += c[g] / n;
-    const double inPlaneOrLateral = 1.0 - c[int(DofGroup::Forward)] - c[int(DofGroup::Yaw)] - c[int(DofGroup::Lateral)];
-    if (!(std::abs(l) < 1e-6 && inPlaneOrLateral < 1e-3)) st.neutral = false;
-    // Compliance shares (isComplianceCoordinate), summed per layout and named once.
-    if (weights[s] != shareLayout) {
-      flushShares();
-      shareLayout = weights[s], shareModel = s;
-      shares.assign(shareLayout->compliance.size(), 0.0);
+void labelBranches(const std::vector<std::vector<ModeLabel>>& labels, std::vector<ModeBranch>& branches) {
+  for (ModeBranch& br : branches) {
+    br.labels.assign(labels.size(), ModeLabel::Other);
+    std::array<int, kNumModeLabels> count{};
+    for (size_t s = 0; s < labels.size() && s < br.index.size(); ++s) {
+      const int k = br.index[s];
+      if (k >= 0 && static_cast<size_t>(k) < labels[s].size()) br.labels[s] = labels[s][k];
+      ++count[static_cast<int>(br.labels[s])];
     }
-    for (size_t c = 0; c < shares.size(); ++c) shares[c] += std::norm(models[s].eigenvectors(shareLayout->compliance[c], br.index[s]));
-    if (std::abs(l.imag()) > 1e-9 * std::max(1.0, std::abs(l))) {
-      ++osc;
-      const double steer = c[int(DofGroup::Steer)];
-      if (std::abs(l.imag()) / (2 * M_PI) > 4.0 && steer > 0.4 && steer > c[int(DofGroup::Roll)]) st.wobbleLike += 1;
-    }
+    int best = -1;  // the most frequent; of a tie, the first met along the speeds
+    for (ModeLabel l : br.labels)
+      if (best < 0 || count[static_cast<int>(l)] > count[best]) best = static_cast<int>(l);
+    br.label = best < 0 ? ModeLabel::Other : static_cast<ModeLabel>(best);
   }
-  flushShares();
-  st.oscillatory = osc / n;
-  st.wobbleLike = osc > 0 ? st.wobbleLike / osc : 0;
-  return st;
 }
 
-}  // namespace
-
-// Labels from content (seed sec. 4 mode names): neutral, swingarm_*, bounce, pitch, rear_hop (rear
-// wheel hop: the rear suspension angle carries over 90 % of the in-plane content), relaxation,
-// wobble, weave, capsize, castor, other. Weave and wobble keep only their best pair, capsize and
-// castor their best branch; the rest become `other`.
-void labelBranches(const std::vector<LinearModel>& models, double wheelbase, std::vector<ModeBranch>& branches,
-                   int threads) {
-  // State weights once per state layout (a sweep has one).
-  std::vector<StateWeights> layouts;
-  std::vector<const StateWeights*> weights(models.size());
-  std::vector<size_t> layoutOf;
-  for (size_t s = 0; s < models.size(); ++s) {
-    if (s == 0 || !hasSameStates(models[s], models[s - 1])) layouts.push_back(calcStateWeights(models[s]));
-    layoutOf.push_back(layouts.size() - 1);
-  }
-  for (size_t s = 0; s < models.size(); ++s) weights[s] = &layouts[layoutOf[s]];
-  std::vector<BranchStats> stats(branches.size());
-  runParallel(branches.size(), threads,
-              [&](size_t b) { stats[b] = calcBranchStats(models, weights, wheelbase, branches[b]); });
-  std::map<std::string, std::vector<std::pair<double, size_t>>> candidates;
-  for (size_t b = 0; b < branches.size(); ++b) {
-    ModeBranch& br = branches[b];
-    const BranchStats& st = stats[b];
-    const ModeContent& c = st.content;
-    const double roll = c[int(DofGroup::Roll)], steer = c[int(DofGroup::Steer)];
-    const double lateral = roll + steer + c[int(DofGroup::Yaw)] + c[int(DofGroup::Lateral)];
-    const double bounce = c[int(DofGroup::Bounce)], pitch = c[int(DofGroup::Pitch)];
-    const double suspension = c[int(DofGroup::Suspension)];
-    const double inPlane = bounce + pitch + suspension;
-    const bool oscillatory = st.oscillatory >= 0.5;
-    br.label = "other";
-    if (st.neutral) {
-      br.label = "neutral";
-    } else if (oscillatory && c[int(DofGroup::Compliance)] > 0.5 * (1.0 - c[int(DofGroup::Relaxation)])) {
-      // Compliance leads the mechanical content (tyre lag states excluded).
-      const auto top = std::max_element(st.compliance.begin(), st.compliance.end(),
-                                        [](const auto& a, const auto& b) { return a.second < b.second; });
-      br.label = top->first;
-    } else if (oscillatory && inPlane > 0.5) {
-      // Wheel hop: the arm swings on spring and tyre while the rear frame hardly moves. In the
-      // sprung modes the suspension deflects as much as the frame moves (up to about 80 %).
-      br.label = suspension > kRearHopShare * inPlane ? "rear_hop" : bounce >= pitch ? "bounce" : "pitch";
-    } else if (oscillatory && st.wobbleLike > 0.5) {
-      candidates["wobble"].push_back({steer, b});
-    } else if (c[int(DofGroup::Relaxation)] > 0.5) {
-      br.label = "relaxation";
-    } else if (oscillatory && lateral > 0.3) {
-      candidates["weave"].push_back({lateral, b});
-    } else if (!oscillatory && lateral > 0.3) {
-      if (roll >= steer) candidates["capsize"].push_back({roll, b});
-      else candidates["castor"].push_back({steer, b});
-    }
-  }
-  for (auto& [label, list] : candidates) {
-    std::sort(list.begin(), list.end(), [](const auto& a, const auto& b) { return a.first > b.first; });
-    const size_t keep = (label == "weave" || label == "wobble") ? 2 : 1;
-    for (size_t i = 0; i < list.size(); ++i) branches[list[i].second].label = i < keep ? label : "other";
-  }
+const ModeBranch* findLabelledBranch(const std::vector<ModeBranch>& branches, ModeLabel label, size_t k) {
+  const ModeBranch* best = nullptr;
+  for (const ModeBranch& b : branches)
+    if (k < b.labels.size() && b.labels[k] == label && (!best || b.eigenvalue[k].imag() > best->eigenvalue[k].imag())) best = &b;
+  return best;
 }
 
 Eigen::MatrixXd calcMatchCosts(const LinearModel& prev, const LinearModel& cur) {
@@ -283,18 +477,57 @@ Eigen::MatrixXd calcMatchCosts(const LinearModel& prev, const LinearModel& cur) 
   return c;
 }
 
-std::vector<ModeBranch> trackModes(const std::vector<LinearModel>& models, double wheelbase, int threads,
-                                   std::vector<Eigen::MatrixXd> costs) {
+namespace {
+
+// Branch b's next eigenvalue index for every branch, greedy on ascending cost; when every branch's
+// cheapest match is distinct, greedy takes exactly those.
+std::vector<int> assignNext(const std::vector<ModeBranch>& branches, const Eigen::MatrixXd& cost, size_t s) {
+  const int n = static_cast<int>(branches.size());
+  std::vector<int> assigned(n, -1);
+  std::vector<bool> taken(n, false);
+  bool distinct = true;
+  for (int b = 0; b < n; ++b) {
+    const int kp = branches[b].index.back();
+    double best = std::numeric_limits<double>::infinity();
+    bool finite = true;  // NaN must not reach the sort below
+    for (int k = 0; k < n; ++k) {
+      finite = finite && std::isfinite(cost(kp, k));
+      if (cost(kp, k) < best) best = cost(kp, k), assigned[b] = k;
+    }
+    if (!finite || assigned[b] < 0)
+      throw std::runtime_error("trackModes: non-finite eigenvalues or eigenvectors at speed index " + std::to_string(s));
+    distinct = distinct && !taken[assigned[b]];
+    taken[assigned[b]] = true;
+  }
+  if (distinct) return assigned;
+  std::vector<std::tuple<double, int, int>> pairs;
+  pairs.reserve(n * n);
+  for (int b = 0; b < n; ++b)
+    for (int k = 0; k < n; ++k) pairs.emplace_back(cost(branches[b].index.back(), k), b, k);
+  std::sort(pairs.begin(), pairs.end());
+  std::fill(assigned.begin(), assigned.end(), -1);
+  std::fill(taken.begin(), taken.end(), false);
+  for (const auto& [c, b, k] : pairs)
+    if (assigned[b] < 0 && !taken[k]) assigned[b] = k, taken[k] = true;
+  return assigned;
+}
+
+}  // namespace
+
+std::vector<ModeBranch> trackModes(const std::vector<LinearModel>& models, int threads, std::vector<Eigen::MatrixXd> costs) {
   std::vector<ModeBranch> branches;
   if (models.empty()) return branches;
   const int n = static_cast<int>(models[0].eigenvalues.size());
   for (const auto& m : models)
     if (m.eigenvalues.size() != n) throw std::runtime_error("trackModes: model size changed with speed");
-  // Match costs between every pair of consecutive speeds not given, independent of the
-  // assignment: in parallel.
+  // Match costs between every pair of consecutive speeds not given, and the labels of models that
+  // have none, independent of the assignment: in parallel.
   costs.resize(models.size());
-  runParallel(models.size() - 1, threads, [&](size_t i) {
-    if (costs[i + 1].rows() != n || costs[i + 1].cols() != n) costs[i + 1] = calcMatchCosts(models[i], models[i + 1]);
+  std::vector<std::vector<ModeLabel>> labels(models.size());
+  runParallel(models.size(), threads, [&](size_t i) {
+    if (i + 1 < models.size() && (costs[i + 1].rows() != n || costs[i + 1].cols() != n))
+      costs[i + 1] = calcMatchCosts(models[i], models[i + 1]);
+    labels[i] = models[i].labels.size() == static_cast<size_t>(n) ? models[i].labels : labelModes(models[i]);
   });
   branches.resize(n);
   for (int k = 0; k < n; ++k) {
@@ -302,42 +535,13 @@ std::vector<ModeBranch> trackModes(const std::vector<LinearModel>& models, doubl
     branches[k].eigenvalue.push_back(models[0].eigenvalues[k]);
   }
   for (size_t s = 1; s < models.size(); ++s) {
-    // Greedy assignment on ascending cost; when every branch's cheapest match is distinct, greedy
-    // takes exactly those.
-    std::vector<int> assigned(n, -1);
-    std::vector<bool> taken(n, false);
-    bool distinct = true;
-    for (int b = 0; b < n; ++b) {
-      const int kp = branches[b].index.back();
-      double best = std::numeric_limits<double>::infinity();
-      bool finite = true;  // NaN must not reach the sort below
-      for (int k = 0; k < n; ++k) {
-        const double cost = costs[s](kp, k);
-        finite = finite && std::isfinite(cost);
-        if (cost < best) best = cost, assigned[b] = k;
-      }
-      if (!finite || assigned[b] < 0) throw std::runtime_error("trackModes: non-finite eigenvalues or eigenvectors at speed index " +
-                                                     std::to_string(s));
-      distinct = distinct && !taken[assigned[b]];
-      taken[assigned[b]] = true;
-    }
-    if (!distinct) {
-      std::vector<std::tuple<double, int, int>> pairs;
-      pairs.reserve(n * n);
-      for (int b = 0; b < n; ++b)
-        for (int k = 0; k < n; ++k) pairs.emplace_back(costs[s](branches[b].index.back(), k), b, k);
-      std::sort(pairs.begin(), pairs.end());
-      std::fill(assigned.begin(), assigned.end(), -1);
-      std::fill(taken.begin(), taken.end(), false);
-      for (const auto& [cost, b, k] : pairs)
-        if (assigned[b] < 0 && !taken[k]) assigned[b] = k, taken[k] = true;
-    }
+    const std::vector<int> assigned = assignNext(branches, costs[s], s);
     for (int b = 0; b < n; ++b) {
       branches[b].index.push_back(assigned[b]);
       branches[b].eigenvalue.push_back(models[s].eigenvalues[assigned[b]]);
     }
   }
-  labelBranches(models, wheelbase, branches, threads);
+  labelBranches(labels, branches);
   return branches;
 }
 

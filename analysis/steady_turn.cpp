@@ -1,8 +1,10 @@
 // Steady turns: their figures, the continuation in roll from straight running, and hands-free turns.
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <sstream>
 
+#include "analysis/sweep.h"
 #include "analysis/trim_detail.h"
 #include "tyres/rolling_no_slip.h"
 
@@ -79,7 +81,7 @@ namespace detail {
 // at most opt.rollStep at `speed`, each started from the last two by linear extrapolation (a failed step
 // is retried from the last roll reached with half the step, at most four times); then the turn with
 // opt's condition.
-void continueTurn(const VehicleModel& model, double speed, const TrimOptions& opt, TrimResult& res) {
+void continueTurn(const VehicleModel& model, double speed, const TrimOptions& opt, TrimResult& res, bool stepWithCondition) {
   const StateFunction fn(model);
   const CoordinateIndices& ix = model.getIndices();
   const double from = res.turn ? res.roll : 0.0;
@@ -92,7 +94,7 @@ void continueTurn(const VehicleModel& model, double speed, const TrimOptions& op
     res.speed = v;
   }
   TrimOptions step = opt;
-  step.condition = TurnCondition::Speed;
+  if (!stepWithCondition) step.condition = TurnCondition::Speed;
   const double full = opt.roll - from;
   const int n = std::max(1, static_cast<int>(std::ceil(std::abs(full) / opt.rollStep - 1e-9)));
   const auto unknowns = getTrimUnknowns(model, step);
@@ -137,7 +139,7 @@ void continueTurn(const VehicleModel& model, double speed, const TrimOptions& op
     for (size_t j = 0; j < unknowns.size(); ++j) last[j] = fn.get(s, unknowns[j]);
     lastStep = next - done, done = next, ++steps;
   }
-  if (opt.condition != TurnCondition::Speed) solveTrim(model, speed, opt, res, true);
+  if (step.condition != opt.condition) solveTrim(model, speed, opt, res, true);
 }
 
 }  // namespace detail
@@ -152,13 +154,14 @@ NoTurnError::NoTurnError(double phi, double lo, double hi, double tLo, double tH
       }()),
       roll(phi), low(lo), high(hi) {}
 
-TrimResult calcHandsFreeTrim(const VehicleModel& model, const std::vector<double>& speeds, const TrimOptions& opt,
-                             double preferredSpeed) {
-  if (speeds.size() < 2 || !std::is_sorted(speeds.begin(), speeds.end()))
-    throw std::invalid_argument("calcHandsFreeTrim needs at least two speeds in ascending order");
+namespace {
+
+// Fixed-speed turns at opt.roll on `speeds` (ascending), trimmed from the top down and stopping below
+// the first that fails; descending speeds.
+std::vector<TrimPoint> scanFixedSpeedTurns(const VehicleModel& model, const std::vector<double>& speeds, const TrimOptions& opt) {
   TrimOptions fixedSpeed = opt;
   fixedSpeed.condition = TurnCondition::Speed;
-  std::vector<TrimPoint> scan;  // descending speeds
+  std::vector<TrimPoint> scan;
   TrimResult work;
   for (auto v = speeds.rbegin(); v != speeds.rend(); ++v) {
     try {
@@ -170,29 +173,120 @@ TrimResult calcHandsFreeTrim(const VehicleModel& model, const std::vector<double
     }
     scan.push_back(makeTrimPoint(model, work));
   }
+  return scan;
+}
+
+// The hands-free turn of the bracket scan[k], scan[k + 1] (a sign change of the steer torque less
+// opt.steerTorque): their turns interpolated to the estimated speed, then TurnCondition::SteerTorque.
+TrimResult solveBracket(const VehicleModel& model, const std::vector<TrimPoint>& scan, size_t k, const TrimOptions& opt) {
   const int torque = static_cast<int>(Input::SteerTorque);
-  int best = -1;
-  double bestSpeed = NAN;
-  for (size_t k = 0; k + 1 < scan.size(); ++k) {
-    const double t0 = scan[k].inputs[torque] - opt.steerTorque, t1 = scan[k + 1].inputs[torque] - opt.steerTorque;
-    if (t0 * t1 > 0 || t0 == t1) continue;
-    const double v = scan[k].speed + (scan[k + 1].speed - scan[k].speed) * t0 / (t0 - t1);
-    const bool better = best < 0 || (std::isnan(preferredSpeed) ? v < bestSpeed
-                                                                 : std::abs(v - preferredSpeed) < std::abs(bestSpeed - preferredSpeed));
-    if (better) best = static_cast<int>(k), bestSpeed = v;
-  }
-  if (best < 0)
-    throw NoTurnError(opt.roll, scan.back().speed, scan.front().speed, scan.back().inputs[torque], scan.front().inputs[torque]);
-  TrimPoint start = scan[best];  // the bracket's turns interpolated to the estimated speed
-  const double w = (bestSpeed - scan[best].speed) / (scan[best + 1].speed - scan[best].speed);
-  start.y += w * (scan[best + 1].y - scan[best].y);
-  start.inputs += w * (scan[best + 1].inputs - scan[best].inputs);
-  start.speed = bestSpeed;
+  const double t0 = scan[k].inputs[torque] - opt.steerTorque, t1 = scan[k + 1].inputs[torque] - opt.steerTorque;
+  const double w = t0 / (t0 - t1);
+  TrimPoint start = scan[k];
+  start.y += w * (scan[k + 1].y - scan[k].y);
+  start.inputs += w * (scan[k + 1].inputs - scan[k].inputs);
+  start.speed = scan[k].speed + w * (scan[k + 1].speed - scan[k].speed);
   TrimResult trim = restoreTrim(model, start);
   trim.unknownsPerSpeed.resize(0), trim.unknownsCurvature.resize(0), trim.jacobian.resize(0, 0);
   TrimOptions handsFree = opt;
   handsFree.condition = TurnCondition::SteerTorque;
-  updTrim(model, bestSpeed, handsFree, trim);
+  updTrim(model, start.speed, handsFree, trim);
+  return trim;
+}
+
+// Roll (rad) of the hands-free turns near upright from which the turns continuing from straight
+// running are followed in roll: 0.5 deg, or the turn's own roll when that is smaller.
+constexpr double kNearUprightRoll = 0.5 * M_PI / 180;
+
+// The speeds (m/s) where a real root of straight running crosses zero on `speeds`: there a hands-free
+// turn branches off straight running (docs/cornering.md).
+std::vector<double> findStraightRunningBranchPoints(const VehicleModel& model, const std::vector<double>& speeds) {
+  SweepOptions o;
+  o.keepFailedSpeeds = true;
+  std::vector<double> out;
+  try {
+    for (const CriticalSpeed& c : runSweep(model, speeds, o).criticalSpeeds)
+      if (c.frequency == 0 && c.refined) out.push_back(c.speed);
+  } catch (const TrimError&) {  // no straight running at all: no branch point
+  }
+  return out;
+}
+
+// The hands-free turn at opt.roll reached from straight running at branch point v0 (m/s): the hands-free
+// turn near upright (kNearUprightRoll) started from the fixed-speed turn at v0, followed in roll.
+TrimResult continueFromStraightRunning(const VehicleModel& model, double v0, const TrimOptions& opt) {
+  TrimOptions near = opt;
+  near.roll = std::copysign(std::min(kNearUprightRoll, std::abs(opt.roll)), opt.roll);
+  near.condition = TurnCondition::Speed;
+  TrimResult trim = calcTrim(model, v0, near);
+  near.condition = TurnCondition::SteerTorque;
+  trim.unknownsPerSpeed.resize(0), trim.unknownsCurvature.resize(0), trim.jacobian.resize(0, 0);
+  updTrim(model, v0, near, trim);
+  if (near.roll != opt.roll) {
+    TrimOptions handsFree = opt;
+    handsFree.condition = TurnCondition::SteerTorque;
+    detail::continueTurn(model, trim.speed, handsFree, trim, true);
+  }
+  return trim;
+}
+
+// Adds `trim` to `turns` unless a turn within 1e-6 of its speed is there; returns its index.
+size_t addTurn(const VehicleModel& model, const TrimResult& trim, std::vector<HandsFreeTurn>& turns) {
+  for (size_t i = 0; i < turns.size(); ++i)
+    if (std::abs(turns[i].trim.speed - trim.speed) <= 1e-6 * std::max(1.0, trim.speed)) return i;
+  turns.push_back({makeTrimPoint(model, trim), false});
+  return turns.size() - 1;
+}
+
+}  // namespace
+
+std::vector<HandsFreeTurn> calcHandsFreeTurns(const VehicleModel& model, const std::vector<double>& speeds,
+                                              const TrimOptions& opt) {
+  if (speeds.size() < 2 || !std::is_sorted(speeds.begin(), speeds.end()))
+    throw std::invalid_argument("calcHandsFreeTurns needs at least two speeds in ascending order");
+  const std::vector<TrimPoint> scan = scanFixedSpeedTurns(model, speeds, opt);
+  const int torque = static_cast<int>(Input::SteerTorque);
+  std::vector<HandsFreeTurn> turns;
+  std::optional<TrimError> firstFailure;
+  for (size_t k = 0; k + 1 < scan.size(); ++k) {
+    const double t0 = scan[k].inputs[torque] - opt.steerTorque, t1 = scan[k + 1].inputs[torque] - opt.steerTorque;
+    if (t0 * t1 > 0 || t0 == t1) continue;
+    try {
+      addTurn(model, solveBracket(model, scan, k, opt), turns);
+    } catch (const TrimError& e) {
+      if (!firstFailure) firstFailure = e;
+    }
+  }
+  for (double v0 : findStraightRunningBranchPoints(model, speeds)) {
+    try {
+      turns[addTurn(model, continueFromStraightRunning(model, v0, opt), turns)].continuesFromStraight = true;
+    } catch (const TrimError&) {  // the branch folds back or ends before this roll
+    }
+  }
+  if (turns.empty()) {
+    if (firstFailure) throw *firstFailure;
+    throw NoTurnError(opt.roll, scan.back().speed, scan.front().speed, scan.back().inputs[torque], scan.front().inputs[torque]);
+  }
+  std::sort(turns.begin(), turns.end(), [](const HandsFreeTurn& a, const HandsFreeTurn& b) { return a.trim.speed < b.trim.speed; });
+  return turns;
+}
+
+size_t chooseHandsFreeTurn(const std::vector<HandsFreeTurn>& turns, double preferredSpeed) {
+  if (turns.empty()) throw std::invalid_argument("chooseHandsFreeTurn: no turn");
+  size_t best = 0;
+  for (size_t i = 1; i < turns.size(); ++i) {
+    const double d = std::abs(turns[i].trim.speed - preferredSpeed), dBest = std::abs(turns[best].trim.speed - preferredSpeed);
+    const bool better = std::isnan(preferredSpeed) ? turns[i].continuesFromStraight && !turns[best].continuesFromStraight
+                                                   : d < dBest;
+    if (better) best = i;
+  }
+  return best;
+}
+
+TrimResult calcHandsFreeTrim(const VehicleModel& model, const std::vector<double>& speeds, const TrimOptions& opt,
+                             double preferredSpeed) {
+  const std::vector<HandsFreeTurn> turns = calcHandsFreeTurns(model, speeds, opt);
+  TrimResult trim = restoreTrim(model, turns[chooseHandsFreeTurn(turns, preferredSpeed)].trim);
   return trim;
 }
 

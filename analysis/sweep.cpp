@@ -28,12 +28,18 @@ std::vector<double> makeSpeedGrid(double start, double stop, double step) {
   return v;
 }
 
-double calcBranchRealPart(const VehicleModel& model, const SweepResult& sweep, const ModeBranch& branch, size_t k,
-                          double v, const SweepOptions& opt) {
+RootAtSpeed calcBranchRoot(const VehicleModel& model, const SweepResult& sweep, const ModeBranch& branch, size_t k,
+                           double v, const SweepOptions& opt) {
   TrimResult trim = restoreTrim(model, sweep.trims[k]);
   updTrim(model, v, opt.trim, trim);
   const LinearModel lin = linearizeInPlace(model, trim, opt.linearize);
-  return lin.eigenvalues[findBestMatch(sweep.models[k], branch.index[k], lin)].real();
+  const int kb = findBestMatch(sweep.models[k], branch.index[k], lin);
+  return {lin.eigenvalues[kb], static_cast<size_t>(kb) < lin.labels.size() ? lin.labels[kb] : labelModes(lin)[kb]};
+}
+
+double calcBranchRealPart(const VehicleModel& model, const SweepResult& sweep, const ModeBranch& branch, size_t k,
+                          double v, const SweepOptions& opt) {
+  return calcBranchRoot(model, sweep, branch, k, v, opt).lambda.real();
 }
 
 namespace {
@@ -118,6 +124,7 @@ class SweepRun {
     out_.trims.resize(plan_.n);
     out_.models.resize(plan_.n);
     costs_.resize(plan_.n);
+    failed_.assign(plan_.n, std::nullopt);
   }
 
   // The states must not change with speed: decide on yaw once, from a reference linearisation away
@@ -132,7 +139,7 @@ class SweepRun {
       TrimResult top = calcTrim(model_, std::max(1.0, out_.speeds.back()), opt_.trim);
       ownReference_ = linearizeInPlace(model_, top, opt_.linearize);
       ref_ = &*ownReference_;
-      fixed_.linearize.removeYaw = ref_->findState("yaw") < 0 ? 1 : 0;  // the sweep's states are ref's
+      fixed_.linearize.removeYaw = hasYaw(*ref_) ? 0 : 1;  // the sweep's states are ref's
     }
   }
 
@@ -152,13 +159,14 @@ class SweepRun {
           runChain(w > 0 ? *replicas_[w] : model_, plan_.spans[w / 2], w % 2 == 1, w == 0);
         },
         [&]() {
-          failed_ = true;
+          stopped_ = true;
           settleReference(std::make_exception_ptr(std::runtime_error("sweep stopped: another worker failed")));
         });
   }
 
   SweepResult takeTrackedResult() {
-    out_.branches = trackModes(out_.models, model_.getScenario().geometry.wheelbase, opt_.threads, std::move(costs_));
+    dropFailedSpeeds();
+    out_.branches = trackModes(out_.models, opt_.threads, std::move(costs_));
     return std::move(out_);
   }
   /// The options every speed was linearised with (removeYaw decided).
@@ -167,6 +175,8 @@ class SweepRun {
   std::vector<std::unique_ptr<VehicleModel>>& updReplicas() { return replicas_; }
 
  private:
+  static bool hasYaw(const LinearModel& lin) { return lin.findState(vehicle::StateRole::Yaw, vehicle::StateKind::Coordinate) >= 0; }
+
   void settleReference(std::exception_ptr e) {  // once: the value, or the failure that stops the sweep
     if (!refReady_.valid() || refSettled_.exchange(true)) return;
     if (e) refPromise_.set_exception(e);
@@ -177,15 +187,16 @@ class SweepRun {
   bool takeNext(Span& sp, bool downwards, bool lead, size_t i, size_t& k) {
     if (lead && i < plan_.leadDown) {
       k = plan_.leadFirst - i;
-      return !failed_;
+      return !stopped_;
     }
     std::lock_guard<std::mutex> guard(sp.lock);
-    if (sp.lo == sp.hi || failed_) return false;
+    if (sp.lo == sp.hi || stopped_) return false;
     k = downwards ? --sp.hi : sp.lo++;
     return true;
   }
 
-  // A chain's first speed: a cold trim; the lead's is the reference.
+  // A chain's first speed (or its first after failures left it without a trim): a cold trim, or the
+  // warm start of the options; the lead's first success is the reference.
   void linearizeFirst(const VehicleModel& m, size_t k, bool lead, TrimResult& work, LinearizeOptions& lo) {
     if (lead && opt_.warmStart) {
       work = restoreTrim(m, *opt_.warmStart);
@@ -194,12 +205,12 @@ class SweepRun {
     } else {
       work = calcTrim(m, out_.speeds[k], opt_.trim);
     }
-    const bool isReference = lead && refReady_.valid();  // removeYaw automatic
+    const bool isReference = lead && refReady_.valid() && !refSettled_;  // removeYaw automatic
     if (refReady_.valid() && !isReference) refReady_.get();
     out_.models[k] = linearizeInPlace(m, work, isReference ? opt_.linearize : fixed_.linearize);
     if (isReference) {
       ref_ = &out_.models[k];
-      fixed_.linearize.removeYaw = ref_->findState("yaw") < 0 ? 1 : 0;
+      fixed_.linearize.removeYaw = hasYaw(*ref_) ? 0 : 1;
       settleReference(nullptr);  // a failure reaches the waiting workers through onFirstFailure
     }
     lo = fixed_.linearize;
@@ -208,11 +219,11 @@ class SweepRun {
   // Without constraints the next speed's trim Jacobian is read off this speed's A, keeping the
   // input columns of the one this trim used (a differentiated one costs two realizations per
   // unknown), and extrapolated along speed.
-  void updateTrimJacobian(const VehicleModel& m, size_t k, size_t previous, size_t i, TrimResult& work,
+  void updateTrimJacobian(const VehicleModel& m, size_t k, size_t previous, bool extrapolate, TrimResult& work,
                           Eigen::MatrixXd& lastJ) {
     Eigen::MatrixXd J = calcTrimJacobian(m, out_.models[k], work.jacobian, opt_.trim);
     if (J.size() == 0) return;
-    if (i > 0 && lastJ.rows() == J.rows() && lastJ.cols() == J.cols())
+    if (extrapolate && lastJ.rows() == J.rows() && lastJ.cols() == J.cols())
       work.jacobianPerSpeed = (J - lastJ) / (out_.speeds[k] - out_.speeds[previous]);
     lastJ = J;
     work.jacobian = std::move(J);
@@ -220,9 +231,9 @@ class SweepRun {
 
   // A chain's column grouping, from its first two speeds and the reference; lateral symmetry (one
   // evaluation per lateral group) is checked at the first speed with a symmetric trim, if any.
-  void updateGrouping(const VehicleModel& m, size_t k, size_t previous, size_t i, TrimResult& work,
+  void updateGrouping(const VehicleModel& m, size_t k, size_t previous, bool second, TrimResult& work,
                       LinearizeOptions& lo, bool& mirrorPending) {
-    if (opt_.groupColumns && i == 1) {
+    if (opt_.groupColumns && second) {
       std::vector<const LinearModel*> samples{&out_.models[previous], &out_.models[k]};
       if (ref_) samples.push_back(ref_);
       lo.grouping = calcColumnGrouping(samples);
@@ -234,31 +245,83 @@ class SweepRun {
     mirrorPending = !std::isfinite(defect);
   }
 
+  // What a chain carries from speed to speed.
+  struct Chain {
+    LinearizeOptions lo;
+    TrimResult work, turn;         // turn: the lead's first trim, from which it goes up
+    Eigen::MatrixXd lastJ, turnJ;  // the previous speed's trim Jacobian read off its A
+    size_t previous = 0;           // the speed `work` holds
+    bool valid = false, turnValid = false;  // work (turn) holds a trim
+    size_t trimmed = 0;            // speeds trimmed so far
+    bool mirrorPending = false;    // lateral symmetry proposed by the grouping, not yet checked
+  };
+
+  // Trims and linearises speed k from the chain's last trim (or cold); false (the failure recorded)
+  // when the trim fails and failed speeds are kept: the chain then goes on from its last trim.
+  bool trimAndLinearize(const VehicleModel& m, size_t k, bool lead, Chain& c) {
+    try {
+      if (!c.valid) {
+        linearizeFirst(m, k, lead, c.work, c.lo);
+      } else {
+        updTrim(m, out_.speeds[k], opt_.trim, c.work);
+        out_.models[k] = linearizeInPlace(m, c.work, c.lo);
+      }
+      return true;
+    } catch (const TrimError& e) {
+      if (!opt_.keepFailedSpeeds) throw;
+      failed_[k] = FailedSpeed{out_.speeds[k], e.residual, e.what()};
+      if (c.valid) c.work = restoreTrim(m, out_.trims[c.previous]);  // the last trim, without its State
+      c.lastJ.resize(0, 0);
+      return false;
+    }
+  }
+
   // One warm-started chain: trims in place on one State (no State copies).
   void runChain(const VehicleModel& m, Span& sp, bool downwards, bool lead) {
-    LinearizeOptions lo;
-    TrimResult work, turn;  // turn: the lead's first trim, from which it goes up
-    Eigen::MatrixXd lastJ, turnJ;  // the previous speed's trim Jacobian read off its A
-    size_t k = 0, previous = 0;
-    bool mirrorPending = false;  // lateral symmetry proposed by the grouping, not yet checked
-    for (size_t i = 0; takeNext(sp, downwards, lead, i, k); ++i, previous = k) {
-      if (lead && i == plan_.leadDown && plan_.leadDown > 1)
-        work = std::move(turn), lastJ = std::move(turnJ), previous = plan_.leadFirst;
-      if (i == 0) {
-        linearizeFirst(m, k, lead, work, lo);
-      } else {
-        updTrim(m, out_.speeds[k], opt_.trim, work);
-        out_.models[k] = linearizeInPlace(m, work, lo);
+    Chain c;
+    size_t k = 0;
+    for (size_t i = 0; takeNext(sp, downwards, lead, i, k); ++i) {
+      if (lead && i == plan_.leadDown && plan_.leadDown > 1) {  // turn: up from the lead's first trim
+        if (c.turnValid) c.work = std::move(c.turn), c.lastJ = std::move(c.turnJ), c.previous = plan_.leadFirst, c.valid = true;
       }
-      if (i > 0) {  // the match costs of this step, for the tracking
-        const size_t low = std::min(k, previous);
+      const bool neighbour = c.valid && (k == c.previous + 1 || k + 1 == c.previous);
+      if (!trimAndLinearize(m, k, lead, c)) continue;
+      if (neighbour) {  // the match costs of this step, for the tracking
+        const size_t low = std::min(k, c.previous);
         costs_[low + 1] = calcMatchCosts(out_.models[low], out_.models[low + 1]);
       }
-      updateGrouping(m, k, previous, i, work, lo, mirrorPending);
-      updateTrimJacobian(m, k, previous, i, work, lastJ);
-      out_.trims[k] = makeTrimPoint(m, work);
-      if (lead && i == 0 && plan_.leadDown > 1) turn = work, turnJ = lastJ;  // one State copy
+      updateGrouping(m, k, c.previous, c.trimmed == 1 && c.valid, c.work, c.lo, c.mirrorPending);
+      updateTrimJacobian(m, k, c.previous, c.valid, c.work, c.lastJ);
+      out_.trims[k] = makeTrimPoint(m, c.work);
+      if (lead && i == 0 && plan_.leadDown > 1) c.turn = c.work, c.turnJ = c.lastJ, c.turnValid = true;  // one State copy
+      c.previous = k, c.valid = true, ++c.trimmed;
     }
+    if (lead) settleReference(std::make_exception_ptr(TrimError(out_.speeds[plan_.leadFirst], NAN, 0, opt_.trim.roll,
+                                                                "no speed of the sweep's first chain could be trimmed")));
+  }
+
+  // Leaves out the speeds that failed (listed in out_.failures); the match costs kept are those of
+  // speeds that stay neighbours. Throws the first failure when no speed trimmed.
+  void dropFailedSpeeds() {
+    std::vector<size_t> kept;
+    for (size_t k = 0; k < plan_.n; ++k) {
+      if (failed_[k]) out_.failures.push_back(*failed_[k]);
+      else kept.push_back(k);
+    }
+    if (out_.failures.empty()) return;
+    if (kept.empty()) throw TrimError(out_.failures.front().speed, out_.failures.front().residual, 0, opt_.trim.roll,
+                                      "no speed of the sweep could be trimmed; first: " + out_.failures.front().message);
+    SweepResult kept_;
+    std::vector<Eigen::MatrixXd> costs;
+    for (size_t j = 0; j < kept.size(); ++j) {
+      kept_.speeds.push_back(out_.speeds[kept[j]]);
+      kept_.trims.push_back(std::move(out_.trims[kept[j]]));
+      kept_.models.push_back(std::move(out_.models[kept[j]]));
+      costs.push_back(j > 0 && kept[j] == kept[j - 1] + 1 ? std::move(costs_[kept[j]]) : Eigen::MatrixXd());
+    }
+    kept_.failures = std::move(out_.failures);
+    out_ = std::move(kept_);
+    costs_ = std::move(costs);
   }
 
   const VehicleModel& model_;
@@ -267,54 +330,89 @@ class SweepRun {
   SweepPlan plan_;
   SweepResult out_;
   std::vector<Eigen::MatrixXd> costs_;  // costs_[k]: calcMatchCosts(models[k - 1], models[k])
+  std::vector<std::optional<FailedSpeed>> failed_;  // per speed (written by the chain that took it)
   std::vector<std::unique_ptr<VehicleModel>> replicas_;  // replicas_[w]: worker w's model (w > 0)
   std::optional<LinearModel> ownReference_;
   const LinearModel* ref_ = nullptr;
   std::promise<void> refPromise_;
   std::shared_future<void> refReady_;
-  std::atomic<bool> refSettled_{false}, failed_{false};
+  std::atomic<bool> refSettled_{false}, stopped_{false};
 };
 
-// Every sign change of a labelled mode's real part, refined by Brent's method; crossings are
-// independent, so workers share them (each with its own model replica: the chains' where given,
-// replicas[w] for worker w > 0, else a new one).
-void findCriticalSpeeds(const VehicleModel& model, const SweepOptions& opt, const SweepOptions& fixed, SweepResult& out,
-                        std::vector<std::unique_ptr<VehicleModel>>& replicas) {
-  struct Crossing {
-    const ModeBranch* branch;
-    size_t k;
-    double speed = 0;
-  };
+// Every sign change of a root's real part between neighbouring speeds (neutral roots excepted; one
+// member of a complex pair stands for both).
+struct Crossing {
+  const ModeBranch* branch = nullptr;
+  size_t k = 0;
+  CriticalSpeed found;
+};
+
+std::vector<Crossing> listCrossings(const SweepResult& out) {
   std::vector<Crossing> crossings;
-  for (const ModeBranch& br : out.branches) {
-    if (br.label == "neutral" || br.label == "other") continue;
+  for (const ModeBranch& br : out.branches)
     for (size_t k = 0; k + 1 < out.speeds.size(); ++k) {
       const double f0 = br.eigenvalue[k].real(), f1 = br.eigenvalue[k + 1].real();
-      // One member of a complex pair stands for both.
-      if ((f0 * f1 < 0 || (f1 == 0 && f0 != 0)) && br.eigenvalue[k].imag() >= 0) crossings.push_back({&br, k});
+      if (!(f0 * f1 < 0 || (f1 == 0 && f0 != 0)) || br.eigenvalue[k].imag() < 0) continue;
+      if (br.labels[k] == ModeLabel::Neutral || br.labels[k + 1] == ModeLabel::Neutral) continue;
+      crossings.push_back({&br, k, {}});
     }
-  }
-  auto refine = [&](const VehicleModel& m, Crossing& c) {
-    const double f0 = c.branch->eigenvalue[c.k].real(), f1 = c.branch->eigenvalue[c.k + 1].real();
-    auto f = [&](double v) { return calcBranchRealPart(m, out, *c.branch, c.k, v, fixed); };
-    c.speed = findRoot(f, out.speeds[c.k], out.speeds[c.k + 1], f0, f1, opt.criticalSpeedTolerance);
+  return crossings;
+}
+
+// The crossing's speed by Brent's method to the tolerance, named by the root's label at both grid speeds
+// when they agree, else by its label at the critical speed (where a double root, e.g. the capsize root
+// meeting the zero forward-speed root, can leave the eigenvectors ill-defined). Where a speed in the
+// interval does not trim (SweepOptions::keepFailedSpeeds), the linear interpolation of the
+// real parts between the grid speeds, named by the grid label of the unstable side.
+void refineCrossing(const VehicleModel& m, const SweepOptions& opt, const SweepOptions& fixed, const SweepResult& out,
+                    Crossing& c) {
+  const ModeBranch& br = *c.branch;
+  const double f0 = br.eigenvalue[c.k].real(), f1 = br.eigenvalue[c.k + 1].real();
+  c.found.stabilising = f0 > 0;
+  std::vector<std::pair<double, RootAtSpeed>> seen;
+  auto f = [&](double v) {
+    seen.push_back({v, calcBranchRoot(m, out, br, c.k, v, fixed)});
+    return seen.back().second.lambda.real();
   };
+  try {
+    c.found.speed = findRoot(f, out.speeds[c.k], out.speeds[c.k + 1], f0, f1, opt.criticalSpeedTolerance);
+    auto at = std::find_if(seen.begin(), seen.end(), [&](const auto& e) { return e.first == c.found.speed; });
+    const RootAtSpeed root = at != seen.end() ? at->second : calcBranchRoot(m, out, br, c.k, c.found.speed, fixed);
+    c.found.mode = br.labels[c.k] == br.labels[c.k + 1] ? br.labels[c.k] : root.label;
+    c.found.frequency = std::abs(root.lambda.imag()) / (2 * M_PI);
+  } catch (const TrimError&) {
+    if (!opt.keepFailedSpeeds) throw;
+    c.found.speed = out.speeds[c.k] + (out.speeds[c.k + 1] - out.speeds[c.k]) * f0 / (f0 - f1);
+    c.found.mode = br.labels[f0 > 0 ? c.k : c.k + 1];
+    c.found.frequency = std::abs((f0 > 0 ? br.eigenvalue[c.k] : br.eigenvalue[c.k + 1]).imag()) / (2 * M_PI);
+    c.found.refined = false;
+  }
+}
+
+// Every crossing refined; crossings are independent, so workers share them (each with its own model
+// replica: the chains' where given, replicas[w] for worker w > 0, else a new one).
+void findCriticalSpeeds(const VehicleModel& model, const SweepOptions& opt, const SweepOptions& fixed, SweepResult& out,
+                        std::vector<std::unique_ptr<VehicleModel>>& replicas) {
+  std::vector<Crossing> crossings = listCrossings(out);
   const size_t refiners = std::max<size_t>(1, std::min<size_t>(static_cast<size_t>(std::max(1, opt.threads)), crossings.size()));
   if (refiners == 1) {
-    for (auto& c : crossings) refine(model, c);
+    for (auto& c : crossings) refineCrossing(model, opt, fixed, out, c);
   } else {
     replicas.resize(std::max(replicas.size(), refiners));
     runWorkers(refiners, [&](size_t w) {
       if (w > 0 && !replicas[w]) replicas[w] = model.makeReplica();
-      for (size_t i = w; i < crossings.size(); i += refiners) refine(w > 0 ? *replicas[w] : model, crossings[i]);
+      for (size_t i = w; i < crossings.size(); i += refiners) refineCrossing(w > 0 ? *replicas[w] : model, opt, fixed, out, crossings[i]);
     });
   }
   for (const auto& c : crossings) {
-    bool duplicate = false;  // both members of a complex pair cross together
+    bool duplicate = false;  // both members of a complex pair (or a pair forming at the crossing) cross together
     for (const auto& e : out.criticalSpeeds)
-      if (e.mode == c.branch->label && std::abs(e.speed - c.speed) < 1e-6) duplicate = true;
-    if (!duplicate) out.criticalSpeeds.push_back({c.branch->label, c.speed, c.branch->eigenvalue[c.k].real() > 0});
+      if (e.mode == c.found.mode && e.stabilising == c.found.stabilising && std::abs(e.speed - c.found.speed) < 1e-6)
+        duplicate = true;
+    if (!duplicate) out.criticalSpeeds.push_back(c.found);
   }
+  std::stable_sort(out.criticalSpeeds.begin(), out.criticalSpeeds.end(),
+                   [](const CriticalSpeed& a, const CriticalSpeed& b) { return a.speed < b.speed; });
 }
 
 }  // namespace
@@ -338,7 +436,8 @@ SweepResult runSweep(const VehicleModel& model, const std::vector<double>& speed
 
 void updateCriticalSpeeds(const VehicleModel& model, const SweepOptions& opt, SweepResult& sweep) {
   SweepOptions fixed = opt;
-  if (!sweep.models.empty()) fixed.linearize.removeYaw = sweep.models.front().findState("yaw") < 0 ? 1 : 0;
+  if (!sweep.models.empty())
+    fixed.linearize.removeYaw = sweep.models.front().findState(vehicle::StateRole::Yaw, vehicle::StateKind::Coordinate) < 0 ? 1 : 0;
   sweep.criticalSpeeds.clear();
   std::vector<std::unique_ptr<VehicleModel>> replicas;
   findCriticalSpeeds(model, opt, fixed, sweep, replicas);
@@ -348,7 +447,7 @@ namespace {
 
 bool isStableAt(const SweepResult& sweep, size_t k) {
   for (const auto& b : sweep.branches)
-    if (b.label != "neutral" && !(b.eigenvalue[k].real() < 0)) return false;
+    if (b.labels[k] != ModeLabel::Neutral && !(b.eigenvalue[k].real() < 0)) return false;
   return true;
 }
 

@@ -124,11 +124,30 @@ class NoTurnError : public std::runtime_error {
   double roll, low, high;  ///< rad; m/s, the speeds where turns were trimmed
 };
 
-/// The hands-free steady turn (steer torque options.steerTorque, normally 0) at roll options.roll:
-/// fixed-speed turns on `speeds` (m/s, ascending; trimmed from the top down, stopping below the first
-/// that fails) bracket a sign change of the steer torque, and TurnCondition::SteerTorque solves the
-/// turn from the bracket's linear interpolation. With several, the one nearest `preferredSpeed` (m/s;
-/// NaN: the lowest). Throws NoTurnError when none is bracketed, TrimError when the final trim fails.
+/// A hands-free steady turn (calcHandsFreeTurns).
+struct HandsFreeTurn {
+  TrimPoint trim;  ///< the turn (trim.speed: the rear contact point's speed, m/s)
+  /// On the branch of hands-free turns that leaves straight running where a real root of straight
+  /// running crosses zero (the capsize speed): reached by following that branch in roll.
+  bool continuesFromStraight = false;
+};
+
+/// Every hands-free steady turn (steer torque options.steerTorque, normally 0) at roll options.roll that
+/// the speed grid shows, sorted by speed (docs/cornering.md): fixed-speed turns on `speeds` (m/s,
+/// ascending; trimmed from the top down, stopping below the first that fails) bracket each sign change
+/// of the steer torque, and TurnCondition::SteerTorque solves the turn from the bracket's linear
+/// interpolation. The branch from straight running (a sweep of straight running on `speeds` finds where
+/// a real root crosses zero; the hands-free turn 0.5 deg from upright there is followed in roll) is
+/// marked, and added if the grid missed it. Throws NoTurnError when there is none, TrimError when none
+/// of the brackets could be solved.
+std::vector<HandsFreeTurn> calcHandsFreeTurns(const vehicle::VehicleModel& model, const std::vector<double>& speeds,
+                                              const TrimOptions& options);
+
+/// The index of the default turn of `turns` (not empty): the one nearest `preferredSpeed` (m/s); without
+/// one (NaN), the first that continues from straight running, else the first (the slowest).
+size_t chooseHandsFreeTurn(const std::vector<HandsFreeTurn>& turns, double preferredSpeed = NAN);
+
+/// The default hands-free turn (chooseHandsFreeTurn of calcHandsFreeTurns).
 TrimResult calcHandsFreeTrim(const vehicle::VehicleModel& model, const std::vector<double>& speeds, const TrimOptions& options,
                              double preferredSpeed = NAN);
 

@@ -8,7 +8,10 @@ namespace motostab::analysis::detail {
 // (trim.cpp).
 void solveTrim(const vehicle::VehicleModel& model, double speed, const TrimOptions& opt, TrimResult& res, bool warm);
 
-// A turn from `res` to opt.roll in roll steps, then the turn with opt's condition (steady_turn.cpp).
-void continueTurn(const vehicle::VehicleModel& model, double speed, const TrimOptions& opt, TrimResult& res);
+// A turn from `res` to opt.roll in roll steps at the fixed speed, then the turn with opt's condition; with
+// `stepWithCondition` every step keeps opt's condition (e.g. hands-free turns followed in roll)
+// (steady_turn.cpp).
+void continueTurn(const vehicle::VehicleModel& model, double speed, const TrimOptions& opt, TrimResult& res,
+                  bool stepWithCondition = false);
 
 }  // namespace motostab::analysis::detail

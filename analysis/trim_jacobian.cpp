@@ -12,9 +12,9 @@ Eigen::MatrixXd calcTrimJacobian(const VehicleModel& model, const LinearModel& l
   const bool hasB = lin.B.cols() == kNumInputs;
   if (s.getNQErr() + s.getNUErr() > 0) return {};
   std::vector<int> rows;  // residual rows: every udot, then every zdot
-  for (const auto* names : {&model.getUNames(), &model.getZNames()})
-    for (const auto& name : *names) {
-      rows.push_back(lin.findState(name));
+  for (Slot slot : {Slot::U, Slot::Z})
+    for (int i = 0; i < (slot == Slot::U ? model.getNumU() : model.getNumZ()); ++i) {
+      rows.push_back(lin.findState(StateEntry{slot, i}));
       if (rows.back() < 0) return {};
     }
   if (trimOptions.isTurn() != lin.headingFrame) return {};
@@ -32,8 +32,7 @@ Eigen::MatrixXd calcTrimJacobian(const VehicleModel& model, const LinearModel& l
       for (size_t i = 0; i < rows.size(); ++i) J(i, j) = hasB ? lin.B(rows[i], e.index) : previous(i, j);
       continue;
     }
-    const auto& names = e.slot == Slot::Q ? model.getQNames() : e.slot == Slot::U ? model.getUNames() : model.getZNames();
-    const int c = lin.findState(names[e.index]);
+    const int c = lin.findState(e);
     if (c >= 0)
       for (size_t i = 0; i < rows.size(); ++i) J(i, j) = lin.A(rows[i], c);
   }

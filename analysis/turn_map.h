@@ -1,6 +1,8 @@
 #pragma once
 // Stability map over speed x roll angle: one constant-roll sweep about steady turns per roll angle
-// (analysis/sweep.h with SweepOptions::trim.roll), and the modes tracked across roll as well as speed.
+// (analysis/sweep.h with SweepOptions::trim.roll). Labels come from each operating point's modes
+// (labelModes), so they follow the modes across roll as across speed.
+#include <string>
 #include <vector>
 
 #include "analysis/sweep.h"
@@ -15,21 +17,26 @@ struct TurnMapOptions {
   double criticalSpeedTolerance = 1e-6;
 };
 
-/// sweeps[j]: the sweep at rolls[j], every sweep over the same speeds, its branches labelled
-/// consistently across roll (trackModesAcrossRoll).
+/// A roll angle none of whose speeds trimmed.
+struct FailedRoll {
+  double roll = 0;       ///< rad
+  std::string message;   ///< the first failure's message
+};
+
+/// sweeps[j]: the sweep at rolls[j], each over the speeds of the grid that trimmed at that roll (the
+/// others listed in its failures); failedRolls: the roll angles where no speed trimmed.
 struct TurnMapResult {
   std::vector<double> rolls;
   std::vector<SweepResult> sweeps;
+  std::vector<FailedRoll> failedRolls;
+
+  /// Points of the grid (roll x speed) that did not trim.
+  size_t countFailedPoints() const;
 };
 
-/// Runs the sweep of every roll angle (each starting from straight running, stepped up in roll at its
-/// first speed), tracks the modes across roll, then brackets each sweep's critical speeds.
+/// Runs the sweep of every roll angle (each starting from its neighbour's trim, or from straight
+/// running stepped up in roll at its first speed) and brackets each sweep's critical speeds. Points that
+/// do not trim are left out and listed (SweepOptions::keepFailedSpeeds).
 TurnMapResult runTurnMap(const vehicle::VehicleModel& model, const TurnMapOptions& options);
-
-/// Mode identity across roll: starting from the roll angle nearest upright, whose labels come from the
-/// modes' content (labelBranches), each neighbouring roll's branches are matched to the branches of
-/// the roll before it (outwards in both directions) by the sum over speeds of calcMatchCost (MAC and
-/// eigenvalue distance), cheapest pairs first, and take their labels. The order of the branches is kept.
-void trackModesAcrossRoll(TurnMapResult& map);
 
 }  // namespace motostab::analysis

@@ -7,6 +7,7 @@
 #include "analysis/turn_map.h"
 #include "io/input_error.h"
 #include "io/output_folder.h"
+#include "io/result_error.h"
 #include "output/map_output.h"
 #include "output/study_output.h"
 #include "output/sweep_output.h"
@@ -15,20 +16,20 @@
 namespace motostab::cli {
 
 using analysis::LinearModel;
-using analysis::ModeBranch;
 using analysis::SweepOptions;
 using analysis::SweepResult;
 using analysis::TrimOptions;
 using analysis::TrimResult;
 using analysis::TurnMapOptions;
 using analysis::TurnMapResult;
+using analysis::calcModeContents;
 using analysis::calcTrim;
 using analysis::linearize;
 using analysis::runSweep;
 using analysis::runTurnMap;
-using analysis::trackModes;
 using io::InputError;
 using io::OutputFolder;
+using io::ResultError;
 using output::formatSweepTable;
 using output::formatTurnMapTable;
 using output::makeStudyReport;
@@ -47,6 +48,14 @@ using vehicle::VehicleModel;
 
 
 namespace {
+
+// After the outputs are written: exit 3 (io::ResultError) when points of the grid did not trim, so that
+// a script sees the map or sweep is partial (docs/commands.md, exit codes).
+void reportPartial(size_t failed, size_t total, const std::string& what, const std::string& out) {
+  if (failed == 0) return;
+  throw ResultError(std::to_string(failed) + " of " + std::to_string(total) + " " + what +
+                    " did not trim; the others are in " + out + " (the failed ones listed in its summary)");
+}
 
 // Turns need a positive speed: the slowest speed of a turn sweep or linearisation.
 void checkTurnSpeeds(double slowest, const std::string& key) {
@@ -87,6 +96,7 @@ void registerSweepCommand(CLI::App& app) {
     opt.step = scenario.speeds.step;
     if (!sweepArgs->speeds.empty()) parseSpeedRange(sweepArgs->speeds, opt.start, opt.stop, opt.step);
     opt.threads = sweepArgs->threads;
+    opt.keepFailedSpeeds = true;
     if (!sweepArgs->roll.empty()) {
       checkTurnSpeeds(opt.start, sweepArgs->speeds.empty() ? "speeds_mps (the scenario's; override with --speeds)" : "--speeds");
       const std::vector<double> rolls = parseRollAngles(sweepArgs->roll);
@@ -97,10 +107,11 @@ void registerSweepCommand(CLI::App& app) {
         const TurnMapResult map = runTurnMap(model, mo);
         writeTurnMapOutputs(folder.getPath(), scenario.name, map);
         folder.commit();
-        std::cout << "Scenario " << scenario.name << ": " << rolls.size() << " roll angles x "
-                  << map.sweeps.front().speeds.size() << " speeds\n"
+        const size_t grid = analysis::makeSpeedGrid(opt.start, opt.stop, opt.step).size();
+        std::cout << "Scenario " << scenario.name << ": " << rolls.size() << " roll angles x " << grid << " speeds\n"
                   << formatTurnMapTable(map) << "Wrote " << out
                   << "/{map.csv, map_summary.json, damping_map, root_loci, real_part_vs_speed (.gp/.png/.svg), roll_*/}\n";
+        reportPartial(map.countFailedPoints() + map.failedRolls.size() * grid, rolls.size() * grid, "points of the map", out);
         return;
       }
       opt.trim.roll = rolls.front();
@@ -111,6 +122,7 @@ void registerSweepCommand(CLI::App& app) {
     std::cout << "Scenario " << scenario.name << ": " << result.speeds.size() << " speeds\n"
               << formatSweepTable(result) << "Wrote " << out << "/{eigenvalues.csv, summary.json, root_locus.{png,svg,gp}, "
               << "real_part_vs_speed.{png,svg,gp}}\n";
+    reportPartial(result.failures.size(), result.failures.size() + result.speeds.size(), "speeds", out);
   });
 }
 
@@ -141,10 +153,8 @@ void registerLinearizeCommand(CLI::App& app) {
       trimOptions.roll = linArgs->rollDeg * M_PI / 180;
     }
     const TrimResult trim = calcTrim(model, linArgs->speed, trimOptions);
-    const LinearModel lm = linearize(model, trim);
-    std::vector<std::string> modes;  // each eigenvalue's mode, from its content at this one speed
-    for (const ModeBranch& b : trackModes({lm}, scenario.geometry.wheelbase)) modes.push_back(b.label);
-    writeLinearModel(folder.getPath(), lm, modes);
+    const LinearModel lm = linearize(model, trim);  // each eigenvalue labelled from its content at this speed
+    writeLinearModel(folder.getPath(), lm, calcModeContents(lm));
     folder.commit();
     std::cout << "Trim at " << linArgs->speed << " m/s: residual " << trim.residualNorm << " after " << trim.iterations
               << " iterations; " << lm.states.size() << " states. Wrote " << linArgs->out

@@ -11,15 +11,19 @@
 
 namespace motostab::cli {
 
+using analysis::HandsFreeTurn;
 using analysis::NoTurnError;
 using analysis::TrimOptions;
 using analysis::TrimResult;
-using analysis::calcHandsFreeTrim;
+using analysis::calcHandsFreeTurns;
+using analysis::chooseHandsFreeTurn;
 using analysis::calcTrim;
 using analysis::makeSpeedGrid;
 using io::InputError;
 using io::OutputFolder;
+using output::formatHandsFreeTable;
 using output::formatTrimTable;
+using output::writeHandsFreeJson;
 using output::writeTrimJson;
 using scenario::Scenario;
 using scenario::loadScenario;
@@ -37,12 +41,14 @@ void registerTurnCommands(CLI::App& app) {
   CLI::App* trim = app.add_subcommand("trim", "Steady turn at a speed and roll angle: steer, pitch, steer torque, tyre forces");
   trim->add_option("scenario", a->scenario, "Scenario YAML file")->required()->check(CLI::ExistingFile);
   trim->add_option("--speed", a->speed,
-                   "Speed of the rear contact point along its path, m/s (with --hands-free: the preferred speed)")
+                   "Speed of the rear contact point along its path, m/s (with --hands-free: the default turn is the one "
+                   "nearest this speed)")
       ->check(makeNumberCheck(0, 1e3, true));
   trim->add_option("--roll-deg", a->rollDeg, "Roll angle, deg (> 0 leans right), strictly between -89 and 89")
       ->check(makeRollCheck());
   trim->add_flag("--hands-free", a->handsFree,
-                 "Zero steer torque: the speed is solved, searched over --speeds (default: the scenario's speeds_mps)");
+                 "Zero steer torque: every such turn on --speeds (default: the scenario's speeds_mps), the one continuing "
+                 "from straight running marked");
   trim->add_option("--speeds", a->speeds, "START:STOP:STEP in m/s, the hands-free search range")->check(makeSpeedRangeCheck());
   trim->add_option("--out", a->out, "Output folder (default: SCENARIO-trim)");
   trim->add_option("--set", a->overrides, "Override a scenario value, e.g. --set geometry.trail_m=0.1");
@@ -55,7 +61,6 @@ void registerTurnCommands(CLI::App& app) {
     const VehicleModel model(scenario);
     TrimOptions opt;
     opt.roll = a->rollDeg * M_PI / 180;
-    TrimResult trim;
     if (a->handsFree) {
       double start = scenario.speeds.start, stop = scenario.speeds.stop, step = scenario.speeds.step;
       if (!a->speeds.empty()) parseSpeedRange(a->speeds, start, stop, step);
@@ -65,18 +70,24 @@ void registerTurnCommands(CLI::App& app) {
       if (speeds.size() < 2 || a->rollDeg == 0)
         throw InputError({"command line", 0, 0, a->rollDeg == 0 ? "--roll-deg" : "--speeds"},
                          "a hands-free turn needs a nonzero roll and at least two positive speeds to search");
+      std::vector<HandsFreeTurn> turns;
       try {
-        trim = calcHandsFreeTrim(model, speeds, opt, a->speed);
+        turns = calcHandsFreeTurns(model, speeds, opt);
       } catch (const NoTurnError& e) {
         throw InputError({"command line", 0, 0, "--speeds"}, std::string(e.what()) + "; widen --speeds or change --roll-deg");
       }
-    } else {
-      trim = calcTrim(model, a->speed, opt);
+      const size_t chosen = chooseHandsFreeTurn(turns, a->speed);
+      writeHandsFreeJson(folder.getPath(), model, turns, chosen);
+      folder.commit();
+      std::cout << "Scenario " << scenario.name << ": hands-free steady turns at roll " << a->rollDeg << " deg\n"
+                << formatHandsFreeTable(model, turns, chosen) << "The default turn:\n"
+                << formatTrimTable(model, analysis::restoreTrim(model, turns[chosen].trim)) << "Wrote " << out << "/trim.json\n";
+      return;
     }
+    const TrimResult trim = calcTrim(model, a->speed, opt);
     writeTrimJson(folder.getPath(), model, trim);
     folder.commit();
-    std::cout << "Scenario " << scenario.name << ": steady turn at roll " << a->rollDeg << " deg"
-              << (a->handsFree ? ", hands-free" : "") << "\n"
+    std::cout << "Scenario " << scenario.name << ": steady turn at roll " << a->rollDeg << " deg\n"
               << formatTrimTable(model, trim) << "Wrote " << out << "/trim.json\n";
   });
 }

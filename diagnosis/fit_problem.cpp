@@ -162,7 +162,7 @@ int FitProblem::addComponent(const std::string& name, bool known) {
 void FitProblem::addEigenvalueObservations() {
   for (size_t i = 0; i < data_.eigenvalues.size(); ++i) {
     const auto& e = data_.eigenvalues[i];
-    const std::string mode = e.mode.empty() ? "nearest" : e.mode;
+    const std::string mode = e.mode ? analysis::toString(*e.mode) : "nearest";
     for (int part = 0; part < (e.imag != 0 ? 2 : 1); ++part) {
       Observation o;
       o.value = part ? e.imag : e.real;

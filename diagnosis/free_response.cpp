@@ -11,18 +11,21 @@ using io::InputError;
 
 namespace {
 
-std::string getStateName(Quantity q) {
+// The state a quantity reads: role and kind.
+std::pair<vehicle::StateRole, vehicle::StateKind> getState(Quantity q) {
+  using vehicle::StateKind;
+  using vehicle::StateRole;
   switch (q) {
-    case Quantity::RollAngle: return "roll";
-    case Quantity::RollRate: return "roll_rate";
-    case Quantity::SteerAngle: return "steer";
-    case Quantity::SteerRate: return "steer_rate";
-    case Quantity::YawRate: return "yaw_rate";
+    case Quantity::RollAngle: return {StateRole::Roll, StateKind::Coordinate};
+    case Quantity::RollRate: return {StateRole::Roll, StateKind::Rate};
+    case Quantity::SteerAngle: return {StateRole::Steer, StateKind::Coordinate};
+    case Quantity::SteerRate: return {StateRole::Steer, StateKind::Rate};
+    case Quantity::YawRate: break;
   }
-  return "";
+  return {StateRole::Yaw, StateKind::Rate};
 }
 
-// Rows c_j of the outputs: signal j reads state getStateName(quantity); a yaw rate that is no state
+// Rows c_j of the outputs: signal j reads state getState(quantity); a yaw rate that is no state
 // (a model on rolling constraints, where it is a dependent speed) is the linearised rate of the yaw
 // coordinate, d(yaw)/dt = c x (LinearModel::getRateRow; for the Whipple bicycle
 // (v delta + c delta') cos(lambda) / w, Meijaard et al. 2007).
@@ -30,7 +33,8 @@ Eigen::MatrixXd calcOutputRows(const LinearModel& lin, const ResponseRun& run) {
   Eigen::MatrixXd C = Eigen::MatrixXd::Zero(static_cast<int>(run.signals.size()), lin.A.rows());
   for (size_t j = 0; j < run.signals.size(); ++j) {
     const Quantity q = run.signals[j].quantity;
-    const int k = lin.findState(getStateName(q));
+    const auto [role, kind] = getState(q);
+    const int k = lin.findState(role, kind);
     const Eigen::RowVectorXd yaw = q == Quantity::YawRate && k < 0 ? lin.getRateRow("yaw") : Eigen::RowVectorXd();
     if (k < 0 && yaw.size() != lin.A.cols())
       throw InputError(run.where, "quantity " + getQuantityName(q) + " is not a state of this model's linearisation");

@@ -111,7 +111,6 @@ MeasuredEigenvalue readEigenvalueRow(const CsvTable& t, size_t i) {
   auto opt = [&](const char* c) { const int j = findColumn(t, c); return j < 0 ? 0.0 : r[j]; };
   MeasuredEigenvalue e;
   e.speed = r[requireColumn(t, "speed_mps")];
-  e.mode = t.text[i][0];
   e.real = r[requireColumn(t, "real")];
   e.imag = r[requireColumn(t, "imag")];
   e.realStderr = opt("real_stderr");
@@ -128,9 +127,11 @@ MeasuredEigenvalue readEigenvalueRow(const CsvTable& t, size_t i) {
   if (e.imagStderr < 0) failRow(t, i, "imag_stderr", "stderr must be >= 0");
   if (e.hasRange && !(e.speedMin >= 0 && e.speedMin <= e.speed && e.speed <= e.speedMax))
     failRow(t, i, "speed_min_mps", "need 0 <= speed_min_mps <= speed_mps <= speed_max_mps");
-  const auto& labels = getModeLabels();
-  if (!e.mode.empty() && std::find(labels.begin(), labels.end(), e.mode) == labels.end())
-    failRow(t, i, "mode", "unknown mode label '" + e.mode + "'");
+  const std::string& mode = t.text[i][0];
+  if (!mode.empty()) {
+    e.mode = analysis::parseModeLabel(mode);
+    if (!e.mode) failRow(t, i, "mode", "unknown mode label '" + mode + "'");
+  }
   return e;
 }
 
@@ -287,10 +288,9 @@ std::string getQuantityName(Quantity q) {
   return "";
 }
 
-const std::vector<std::string>& getModeLabels() {
-  static const std::vector<std::string> labels{"weave", "capsize", "castor", "wobble", "swingarm_bending",
-                                               "swingarm_torsion", "swingarm_twist", "bounce", "pitch",
-                                               "rear_hop", "relaxation", "neutral", "other"};
+std::vector<std::string> getModeLabels() {
+  std::vector<std::string> labels;
+  for (int m = 0; m < analysis::kNumModeLabels; ++m) labels.push_back(analysis::toString(static_cast<analysis::ModeLabel>(m)));
   return labels;
 }
 

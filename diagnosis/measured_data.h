@@ -2,9 +2,11 @@
 // Measured data for `motostab diagnose` (format: docs/measured-data-format.md): eigenvalues of
 // labelled modes at measured speeds, and free-response runs with their signals. Signs are those of
 // the design frame (ISO 8855): roll > 0 leans right, steer > 0 steers left, yaw rate > 0 turns left.
+#include <optional>
 #include <string>
 #include <vector>
 
+#include "analysis/mode_label.h"
 #include "io/input_error.h"
 
 namespace motostab::diagnosis {
@@ -14,7 +16,7 @@ struct MeasuredEigenvalue {
   double speed = 0;            ///< m/s (the middle of the speed range when one is given)
   double speedMin = 0, speedMax = 0;  ///< m/s; equal to speed without a range
   bool hasRange = false;
-  std::string mode;            ///< motostab label (weave, capsize, ...) or empty: the nearest eigenvalue
+  std::optional<analysis::ModeLabel> mode;  ///< the row's mode (file: its name); none: the nearest eigenvalue
   double real = 0, imag = 0;   ///< 1/s, rad/s
   double realStderr = 0, imagStderr = 0;  ///< 0: unknown (estimated per model from its residuals)
   io::InputLocation where;         ///< file and line of the row
@@ -66,7 +68,7 @@ struct MeasuredData {
 /// line (and column for YAML).
 MeasuredData loadMeasuredData(const std::string& path);
 
-/// Mode labels accepted in eigenvalue files (those analysis/modes.h assigns).
-const std::vector<std::string>& getModeLabels();
+/// Mode labels accepted in eigenvalue files: the names of analysis::ModeLabel (analysis/modes.h assigns them).
+std::vector<std::string> getModeLabels();
 
 }  // namespace motostab::diagnosis

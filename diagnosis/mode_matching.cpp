@@ -9,6 +9,7 @@ namespace motostab::diagnosis {
 
 using analysis::LinearModel;
 using analysis::ModeBranch;
+using analysis::ModeLabel;
 using analysis::SweepResult;
 using analysis::calcMatchCost;
 using io::InputError;
@@ -17,7 +18,7 @@ ModeMatcher::ModeMatcher(const SweepResult& reference, const std::vector<Measure
     : reference_(reference), rows_(rows) {}
 
 // Eigenvalue indices at candidate speed k on branches labelled `mode`.
-std::vector<int> ModeMatcher::findLabelled(const SweepResult& candidate, const std::string& mode, size_t k) const {
+std::vector<int> ModeMatcher::findLabelled(const SweepResult& candidate, ModeLabel mode, size_t k) const {
   std::vector<int> out;
   for (const ModeBranch& b : candidate.branches)
     if (b.label == mode && k < b.index.size() && b.index[k] >= 0) out.push_back(b.index[k]);
@@ -27,7 +28,7 @@ std::vector<int> ModeMatcher::findLabelled(const SweepResult& candidate, const s
 // Cost of each eigenvalue at candidate speed k as `mode` (infinite off the mode's labelled branches
 // when it has any there): the base branch at the nearest reference speed plus, when prevIndex >= 0,
 // the mode's eigenvalue at the previous speed. Empty where the base sweep has no such branch.
-Eigen::VectorXd ModeMatcher::calcCosts(const std::string& mode, const SweepResult& candidate, size_t k,
+Eigen::VectorXd ModeMatcher::calcCosts(ModeLabel mode, const SweepResult& candidate, size_t k,
                                        int prevIndex) const {
   const LinearModel& lin = candidate.models[k];
   const size_t r = std::min_element(reference_.speeds.begin(), reference_.speeds.end(), [&](double a, double b) {
@@ -50,8 +51,8 @@ std::vector<ModeTrack> ModeMatcher::track(const SweepResult& candidate) const {
   const std::vector<LinearModel>& models = candidate.models;
   std::vector<ModeTrack> out;
   for (const auto& row : rows_)
-    if (!row.mode.empty() && std::none_of(out.begin(), out.end(), [&](const ModeTrack& t) { return t.mode == row.mode; }))
-      out.push_back({row.mode, std::vector<int>(models.size(), -1)});
+    if (row.mode && std::none_of(out.begin(), out.end(), [&](const ModeTrack& t) { return t.mode == *row.mode; }))
+      out.push_back({*row.mode, std::vector<int>(models.size(), -1)});
   for (size_t k = 0; k < models.size(); ++k) {
     std::vector<Eigen::VectorXd> costs;
     std::vector<size_t> order;
@@ -76,7 +77,7 @@ std::complex<double> ModeMatcher::pick(const SweepResult& candidate, size_t k, c
                                        const std::vector<ModeTrack>& tracks) const {
   const LinearModel& lin = candidate.models[k];
   std::complex<double> best;
-  if (row.mode.empty()) {
+  if (!row.mode) {
     double dmin = HUGE_VAL;
     for (int i = 0; i < lin.eigenvalues.size(); ++i) {
       const std::complex<double> l = lin.eigenvalues(i);
@@ -85,11 +86,12 @@ std::complex<double> ModeMatcher::pick(const SweepResult& candidate, size_t k, c
     }
     return {best.real(), std::abs(best.imag())};
   }
-  const auto t = std::find_if(tracks.begin(), tracks.end(), [&](const ModeTrack& m) { return m.mode == row.mode; });
+  const auto t = std::find_if(tracks.begin(), tracks.end(), [&](const ModeTrack& m) { return m.mode == *row.mode; });
   if (t->index[k] < 0)
-    throw InputError(row.where, "the scenario has no " + row.mode + " mode near " + std::to_string(lin.speed) + " m/s");
+    throw InputError(row.where, std::string("the scenario has no ") + toString(*row.mode) + " mode near " +
+                                    std::to_string(lin.speed) + " m/s");
   best = lin.eigenvalues(t->index[k]);
-  const std::vector<int> pair = findLabelled(candidate, row.mode, k);
+  const std::vector<int> pair = findLabelled(candidate, *row.mode, k);
   if (best.imag() == 0 && pair.size() == 2 && lin.eigenvalues(pair[0]).imag() == 0 && lin.eigenvalues(pair[1]).imag() == 0 &&
       pair[0] != pair[1])
     return {0.5 * (lin.eigenvalues(pair[0]).real() + lin.eigenvalues(pair[1]).real()), 0.0};  // a split pair

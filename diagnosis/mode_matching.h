@@ -24,7 +24,7 @@ namespace motostab::diagnosis {
 
 /// One labelled mode of the rows, followed through a candidate's sweep.
 struct ModeTrack {
-  std::string mode;
+  analysis::ModeLabel mode = analysis::ModeLabel::Other;
   std::vector<int> index;  ///< eigenvalue per candidate speed (-1: no such mode in the base sweep there)
 };
 
@@ -41,8 +41,8 @@ class ModeMatcher {
                             const std::vector<ModeTrack>& tracks) const;
 
  private:
-  Eigen::VectorXd calcCosts(const std::string& mode, const analysis::SweepResult& candidate, size_t k, int prevIndex) const;
-  std::vector<int> findLabelled(const analysis::SweepResult& candidate, const std::string& mode, size_t k) const;
+  Eigen::VectorXd calcCosts(analysis::ModeLabel mode, const analysis::SweepResult& candidate, size_t k, int prevIndex) const;
+  std::vector<int> findLabelled(const analysis::SweepResult& candidate, analysis::ModeLabel mode, size_t k) const;
 
   const analysis::SweepResult& reference_;
   const std::vector<MeasuredEigenvalue>& rows_;

@@ -102,14 +102,14 @@ void Predictor::chooseFastSpeeds() {
   double lo = HUGE_VAL, hi = -HUGE_VAL;
   for (const auto& row : data_.eigenvalues)
     for (double v : getEvaluationSpeeds(row))
-      if (!row.mode.empty()) lo = std::min(lo, v), hi = std::max(hi, v);
+      if (row.mode) lo = std::min(lo, v), hi = std::max(hi, v);
   if (hi > lo) exactModes_ = findBranchPointModes(lo, hi);
   std::vector<double> others;  // speeds predicted exactly inside the fast predictions
   int labelled = 0;            // evaluations of interpolated rows
   lo = HUGE_VAL, hi = -HUGE_VAL;
   for (const auto& row : data_.eigenvalues)
     for (double v : getEvaluationSpeeds(row)) {
-      if (row.mode.empty() || isExactMode(row.mode)) others.push_back(v);
+      if (!row.mode || isExactMode(*row.mode)) others.push_back(v);
       else lo = std::min(lo, v), hi = std::max(hi, v), ++labelled;
     }
   if (hi > lo) nodes_ = chooseNodes(lo, hi, labelled);
@@ -120,24 +120,24 @@ void Predictor::chooseFastSpeeds() {
   fastSpeeds_ = makeSortedUnique(fastSpeeds_);
 }
 
-bool Predictor::isExactMode(const std::string& mode) const {
+bool Predictor::isExactMode(analysis::ModeLabel mode) const {
   return std::find(exactModes_.begin(), exactModes_.end(), mode) != exactModes_.end();
 }
 
 // Labelled modes of the rows whose base branch is real at some reference speed in [lo, hi] and
 // complex at another (e.g. capsize and castor joining into a pair at low speed).
-std::vector<std::string> Predictor::findBranchPointModes(double lo, double hi) const {
+std::vector<analysis::ModeLabel> Predictor::findBranchPointModes(double lo, double hi) const {
   const SweepResult& ref = *reference_;
-  std::vector<std::string> out;
+  std::vector<analysis::ModeLabel> out;
   for (const auto& row : data_.eigenvalues) {
-    if (row.mode.empty() || std::find(out.begin(), out.end(), row.mode) != out.end()) continue;
-    const auto b = std::find_if(ref.branches.begin(), ref.branches.end(), [&](const ModeBranch& x) { return x.label == row.mode; });
+    if (!row.mode || std::find(out.begin(), out.end(), *row.mode) != out.end()) continue;
+    const auto b = std::find_if(ref.branches.begin(), ref.branches.end(), [&](const ModeBranch& x) { return x.label == *row.mode; });
     if (b == ref.branches.end()) continue;
     bool real = false, complex = false;
     for (size_t k = 0; k < ref.speeds.size(); ++k)
       if (ref.speeds[k] >= lo && ref.speeds[k] <= hi && b->index[k] >= 0)
         (std::abs(b->eigenvalue[k].imag()) > 0 ? complex : real) = true;
-    if (real && complex) out.push_back(row.mode);
+    if (real && complex) out.push_back(*row.mode);
   }
   return out;
 }
@@ -201,11 +201,11 @@ std::vector<std::complex<double>> Predictor::predictInterpolated(const SweepResu
     std::complex<double> sum = 0;
     const std::vector<double> vs = getEvaluationSpeeds(row);
     for (double v : vs) {
-      if (row.mode.empty() || isExactMode(row.mode)) {
+      if (!row.mode || isExactMode(*row.mode)) {
         sum += matcher_->pick(sweep, findSpeed(sweep.speeds, v), row, tracks);
         continue;
       }
-      const size_t m = std::find_if(tracks.begin(), tracks.end(), [&](const ModeTrack& t) { return t.mode == row.mode; }) -
+      const size_t m = std::find_if(tracks.begin(), tracks.end(), [&](const ModeTrack& t) { return t.mode == *row.mode; }) -
                        tracks.begin();
       if (atNodes[m].empty())
         for (double x : nodes_) atNodes[m].push_back(matcher_->pick(sweep, findSpeed(sweep.speeds, x), row, tracks));

@@ -91,8 +91,8 @@ class Predictor {
   std::vector<std::complex<double>> predictRows(const analysis::SweepResult& sweep, bool fast) const;
   std::vector<std::complex<double>> predictInterpolated(const analysis::SweepResult& sweep) const;
   std::vector<double> chooseNodes(double lo, double hi, int labelled) const;
-  bool isExactMode(const std::string& mode) const;
-  std::vector<std::string> findBranchPointModes(double lo, double hi) const;
+  bool isExactMode(analysis::ModeLabel mode) const;
+  std::vector<analysis::ModeLabel> findBranchPointModes(double lo, double hi) const;
   ResponseFit predictResponse(const analysis::SweepResult& sweep, size_t run, const std::vector<double>& sigma,
                               const std::vector<ArNoise>& noise) const;
 
@@ -104,7 +104,7 @@ class Predictor {
   std::vector<double> fastSpeeds_;  ///< speeds of the fast predictions (nodes, runs, rows not interpolated)
   /// Labelled modes whose base branch turns between real and complex over the rows' speeds (a
   /// branch point no polynomial follows): the fast predictions take them at the rows' own speeds.
-  std::vector<std::string> exactModes_;
+  std::vector<analysis::ModeLabel> exactModes_;
   std::shared_ptr<const analysis::SweepResult> reference_;
   std::shared_ptr<SweepCache> cache_;
   std::unique_ptr<ModeMatcher> matcher_;

@@ -19,9 +19,10 @@ bool findWeave(const Predictor& nominal, double v, std::complex<double>& lambda,
     if (std::abs(sweep.speeds[i] - v) < std::abs(sweep.speeds[s] - v)) s = i;
   const analysis::LinearModel& lin = sweep.models[s];
   for (const auto& b : sweep.branches) {
-    if (b.label != "weave" || s >= b.index.size() || b.index[s] < 0) continue;
+    if (b.label != analysis::ModeLabel::Weave || s >= b.index.size() || b.index[s] < 0) continue;
     lambda = lin.eigenvalues(b.index[s]);
-    const int steer = lin.findState("steer_rate"), roll = lin.findState("roll_rate");
+    const int steer = lin.findState(vehicle::StateRole::Steer, vehicle::StateKind::Rate);
+    const int roll = lin.findState(vehicle::StateRole::Roll, vehicle::StateKind::Rate);
     if (!(std::abs(lambda.imag()) > 0) || steer < 0 || roll < 0) return false;
     const double r = std::abs(lin.eigenvectors(roll, b.index[s]));
     if (!(r > 0)) return false;

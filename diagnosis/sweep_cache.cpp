@@ -95,7 +95,8 @@ size_t calcSweepBytes(const SweepResult& sweep) {
     for (const auto& r : m.removedRows) bytes += 32 + sizeof(double) * static_cast<size_t>(r.second.size());
   }
   for (const auto& t : sweep.trims) bytes += sizeof(t) + sizeof(double) * static_cast<size_t>(t.y.size() + t.inputs.size());
-  for (const auto& b : sweep.branches) bytes += sizeof(b) + b.label.size() + b.index.size() * (sizeof(int) + 2 * sizeof(double));
+  for (const auto& b : sweep.branches)
+    bytes += sizeof(b) + b.index.size() * (sizeof(int) + sizeof(analysis::ModeLabel) + 2 * sizeof(double));
   return bytes;
 }
 

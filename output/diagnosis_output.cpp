@@ -318,7 +318,7 @@ void writeEigenvaluePlots(const std::filesystem::path& dir, const DiagnosisResul
   const auto& rows = r.data->eigenvalues;
   std::vector<std::string> modes;
   for (const auto& e : rows) {
-    const std::string m = e.mode.empty() ? "nearest" : e.mode;
+    const std::string m = e.mode ? analysis::toString(*e.mode) : "nearest";
     if (std::find(modes.begin(), modes.end(), m) == modes.end()) modes.push_back(m);
   }
   for (const auto& mode : modes) {
@@ -337,7 +337,7 @@ void writeEigenvaluePlots(const std::filesystem::path& dir, const DiagnosisResul
     CsvWriter w({"speed_mps", "real", "frequency_hz", "real_sigma", "frequency_sigma", "real_before", "frequency_before",
                  "real_after", "frequency_after"});
     for (size_t i = 0; i < rows.size(); ++i)
-      if ((rows[i].mode.empty() ? "nearest" : rows[i].mode) == mode) {
+      if ((rows[i].mode ? analysis::toString(*rows[i].mode) : "nearest") == mode) {
         w.beginRow();
         for (int c = 0; c < 9; ++c) w.add(table[i][c]);
       }

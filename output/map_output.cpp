@@ -1,5 +1,6 @@
 #include "output/map_output.h"
 
+#include <algorithm>
 #include <cmath>
 #include <iomanip>
 #include <sstream>
@@ -10,12 +11,16 @@
 
 namespace motostab::output {
 
+using analysis::FailedRoll;
+using analysis::ModeBranch;
+using analysis::ModeLabel;
 using analysis::SweepResult;
 using analysis::TurnMapResult;
+using analysis::findLabelledBranch;
 
 namespace {
 
-const char* kMapModes[] = {"weave", "wobble"};
+const ModeLabel kMapModes[] = {ModeLabel::Weave, ModeLabel::Wobble};
 
 double toDegrees(double rad) { return rad * 180 / M_PI; }
 
@@ -27,35 +32,45 @@ std::string makeRollFolder(double roll) {
   return os.str();
 }
 
-// The eigenvalue of `label` at speed k: the branch member with the larger imaginary part (one of a
-// complex pair), or NaN when the sweep has no such branch.
-std::complex<double> findModeEigenvalue(const SweepResult& sweep, const std::string& label, size_t k) {
-  std::complex<double> best(NAN, NAN);
-  for (const auto& b : sweep.branches)
-    if (b.label == label && (std::isnan(best.real()) || b.eigenvalue[k].imag() > best.imag())) best = b.eigenvalue[k];
-  return best;
+// The root labelled `label` at speed k (the upper member of a complex pair), or NaN when none is.
+std::complex<double> findModeEigenvalue(const SweepResult& sweep, ModeLabel label, size_t k) {
+  const ModeBranch* b = findLabelledBranch(sweep.branches, label, k);
+  return b ? b->eigenvalue[k] : std::complex<double>(NAN, NAN);
 }
 
-void writeModeBlocks(const TurnMapResult& map, const std::string& mode, const std::string& separator, std::ostream& os);
+// Every speed of the map (each roll's sweep has those that trimmed), ascending.
+std::vector<double> listMapSpeeds(const TurnMapResult& map) {
+  std::vector<double> v;
+  for (const auto& s : map.sweeps) v.insert(v.end(), s.speeds.begin(), s.speeds.end());
+  std::sort(v.begin(), v.end());
+  v.erase(std::unique(v.begin(), v.end()), v.end());
+  return v;
+}
+
+void writeModeBlocks(const TurnMapResult& map, ModeLabel mode, const std::string& separator, std::ostream& os);
 
 // DIR/map_<mode>.dat: one block per roll (gnuplot `index`), rows speed roll_deg real imag freq damping;
 // DIR/grid_<mode>.dat the same as one data set of scans (single blank lines), for pm3d.
-void writeModeData(const std::filesystem::path& dir, const TurnMapResult& map, const std::string& mode) {
+void writeModeData(const std::filesystem::path& dir, const TurnMapResult& map, ModeLabel mode) {
   for (const char* kind : {"map_", "grid_"}) {
     std::ostringstream os;
     writeModeBlocks(map, mode, kind[0] == 'm' ? "\n\n" : "\n", os);
-    writeFileAtomically(dir / (kind + mode + ".dat"), os.str());
+    writeFileAtomically(dir / (kind + std::string(toString(mode)) + ".dat"), os.str());
   }
 }
 
-void writeModeBlocks(const TurnMapResult& map, const std::string& mode, const std::string& separator, std::ostream& os) {
+// Every speed of the map in every roll's block (NaN where the mode is absent or the point did not trim),
+// so that the scans form a grid.
+void writeModeBlocks(const TurnMapResult& map, ModeLabel mode, const std::string& separator, std::ostream& os) {
   os << std::setprecision(17) << "# speed_mps roll_deg real imag frequency_hz damping_ratio\n";
+  const std::vector<double> speeds = listMapSpeeds(map);
   for (size_t j = 0; j < map.rolls.size(); ++j) {
     const SweepResult& s = map.sweeps[j];
-    for (size_t k = 0; k < s.speeds.size(); ++k) {
-      const auto l = findModeEigenvalue(s, mode, k);
-      os << s.speeds[k] << " " << toDegrees(map.rolls[j]) << " " << l.real() << " " << l.imag() << " "
-         << calcFrequencyHz(l) << " " << calcDampingRatio(l) << "\n";
+    for (double v : speeds) {
+      const size_t k = std::find(s.speeds.begin(), s.speeds.end(), v) - s.speeds.begin();
+      const auto l = k < s.speeds.size() ? findModeEigenvalue(s, mode, k) : std::complex<double>(NAN, NAN);
+      os << v << " " << toDegrees(map.rolls[j]) << " " << l.real() << " " << l.imag() << " " << calcFrequencyHz(l) << " "
+         << calcDampingRatio(l) << "\n";
     }
     os << separator;
   }
@@ -77,7 +92,7 @@ void writeMapCsv(const std::filesystem::path& dir, const TurnMapResult& map) {
     for (const auto& b : map.sweeps[j].branches)
       for (size_t k = 0; k < map.sweeps[j].speeds.size(); ++k) {
         const auto l = b.eigenvalue[k];
-        csv.beginRow().add(toDegrees(map.rolls[j])).add(map.sweeps[j].speeds[k]).add(b.label).add(l.real()).add(l.imag())
+        csv.beginRow().add(toDegrees(map.rolls[j])).add(map.sweeps[j].speeds[k]).add(toString(b.labels[k])).add(l.real()).add(l.imag())
             .add(calcFrequencyHz(l)).add(calcDampingRatio(l));
       }
   writeFileAtomically(dir / "map.csv", csv.getText());
@@ -85,13 +100,13 @@ void writeMapCsv(const std::filesystem::path& dir, const TurnMapResult& map) {
 
 }  // namespace
 
-// The plotted modes (weave, wobble) that some roll's sweep has.
-std::vector<std::string> listPresentModes(const TurnMapResult& map) {
-  std::vector<std::string> out;
-  for (const char* m : kMapModes) {
+// The plotted modes (weave, wobble) that some roll's sweep has at some speed.
+std::vector<ModeLabel> listPresentModes(const TurnMapResult& map) {
+  std::vector<ModeLabel> out;
+  for (ModeLabel m : kMapModes) {
     bool present = false;
     for (const auto& s : map.sweeps)
-      for (const auto& b : s.branches) present = present || b.label == m;
+      for (const auto& b : s.branches) present = present || std::find(b.labels.begin(), b.labels.end(), m) != b.labels.end();
     if (present) out.push_back(m);
   }
   return out;
@@ -110,9 +125,13 @@ void writeTurnMapOutputs(const std::filesystem::path& dir, const std::string& na
     writeSweepOutputs(dir / makeRollFolder(map.rolls[j]), name + ", roll " + makeRollFolder(map.rolls[j]).substr(5),
                       map.sweeps[j]);
   }
+  summary["failed_rolls"] = nlohmann::json::array();  // roll angles where no speed trimmed
+  for (const FailedRoll& f : map.failedRolls) summary["failed_rolls"].push_back({{"roll_deg", toDegrees(f.roll)}, {"message", f.message}});
+  summary["failed_points"] = map.countFailedPoints();  // the rolls' failed_speeds, counted
   writeFileAtomically(dir / "map_summary.json", summary.dump(2) + "\n");
-  const std::vector<std::string> modes = listPresentModes(map);
-  for (const auto& m : modes) writeModeData(dir, map, m);
+  std::vector<std::string> modes;
+  for (ModeLabel m : listPresentModes(map)) modes.push_back(toString(m));
+  for (ModeLabel m : listPresentModes(map)) writeModeData(dir, map, m);
   if (modes.empty()) return;  // nothing to plot
   const std::string title = gnuplotQuote(name);
   std::ostringstream damping;
@@ -148,12 +167,17 @@ std::string formatTurnMapTable(const TurnMapResult& map) {
     for (size_t k = 0; k < s.speeds.size(); k += stride)
       os << std::fixed << std::setprecision(1) << std::setw(10) << toDegrees(map.rolls[j]) << std::setprecision(2)
          << std::setw(10) << s.speeds[k] << std::setprecision(4) << std::setw(16)
-         << calcDampingRatio(findModeEigenvalue(s, "weave", k)) << std::setw(16)
-         << calcDampingRatio(findModeEigenvalue(s, "wobble", k)) << "\n";
+         << calcDampingRatio(findModeEigenvalue(s, ModeLabel::Weave, k)) << std::setw(16)
+         << calcDampingRatio(findModeEigenvalue(s, ModeLabel::Wobble, k)) << "\n";
     for (const auto& c : s.criticalSpeeds)
-      os << "    critical: " << c.mode << " " << std::setprecision(4) << c.speed << " m/s ("
+      os << "    critical: " << toString(c.mode) << " " << std::setprecision(4) << c.speed << " m/s ("
          << (c.stabilising ? "stabilising" : "destabilising") << ")\n";
+    for (const auto& f : s.failures)
+      os << "    not trimmed: " << std::setprecision(4) << f.speed << " m/s (residual " << f.residual << ")\n";
   }
+  for (const FailedRoll& f : map.failedRolls)
+    os << std::fixed << std::setprecision(1) << std::setw(10) << toDegrees(f.roll) << "  no speed trimmed: " << f.message << "\n";
+  os << "(nan: the mode is absent at that speed)\n";
   return os.str();
 }
 

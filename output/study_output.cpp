@@ -66,7 +66,7 @@ void appendWeave(std::ostream& r, const StudyResult& st, const WeaveFindings& w)
       << fmt(w.mostStableSpeed, 1) << " m/s (real part " << fmt(w.mostStableRealPart) << " 1/s).\n";
   for (const auto& v : st.nominal)
     for (const auto& c : v.sweep.criticalSpeeds)
-      r << "- " << v.name << ": " << c.mode << " " << (c.stabilising ? "becomes stable" : "becomes unstable") << " at "
+      r << "- " << v.name << ": " << toString(c.mode) << " " << (c.stabilising ? "becomes stable" : "becomes unstable") << " at "
         << fmt(c.speed) << " m/s.\n";
   r << "- Paper: the enduro weave is stable over the whole range and the super-sport weave only at very low speed is not. "
        "Where this model's weave is unstable at low speed, the likely reasons are the tyre model (no carcass lateral "
@@ -115,10 +115,10 @@ void writeStudyModes(const std::filesystem::path& dir, const StudyResult& st) {
     for (const auto& v : *list) {
       writeSweepData(dir / (list == &st.nominal ? "nominal" : "halved") / v.name, st.scenario + "-" + v.name, v.sweep);
       for (const auto& b : v.sweep.branches) {
-        if (b.label != "weave" && b.label != "wobble") continue;
+        if (b.label != analysis::ModeLabel::Weave && b.label != analysis::ModeLabel::Wobble) continue;
         for (size_t k = 0; k < v.sweep.speeds.size(); ++k) {
           const auto l = b.eigenvalue[k];
-          modes.beginRow().add(v.name).add(stiffness).add(v.sweep.speeds[k]).add(b.label).add(l.real()).add(l.imag())
+          modes.beginRow().add(v.name).add(stiffness).add(v.sweep.speeds[k]).add(toString(b.label)).add(l.real()).add(l.imag())
               .add(calcFrequencyHz(l)).add(calcDampingRatio(l));
         }
       }

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <iomanip>
 #include <limits>
+#include <algorithm>
 #include <map>
 #include <sstream>
 #include <stdexcept>
@@ -11,8 +12,13 @@
 
 namespace motostab::output {
 
+using analysis::CriticalSpeed;
+using analysis::FailedSpeed;
 using analysis::LinearModel;
 using analysis::ModeBranch;
+using analysis::ModeContent;
+using analysis::ModeLabel;
+using analysis::findLabelledBranch;
 using analysis::StableRange;
 using analysis::SweepResult;
 using analysis::calcStableGridRanges;
@@ -27,7 +33,7 @@ double calcDampingRatio(std::complex<double> l) {
 
 namespace {
 
-const char* kPlottedModes[] = {"weave", "capsize", "castor", "wobble"};
+const ModeLabel kPlottedModes[] = {ModeLabel::Weave, ModeLabel::Capsize, ModeLabel::Castor, ModeLabel::Wobble};
 // Line colours of the plotted modes, in the order above.
 const char* kModeColours[] = {"#1f5fbf", "#c0392b", "#2e8b3e", "#8e44ad"};
 
@@ -35,12 +41,14 @@ const char* kModeColours[] = {"#1f5fbf", "#c0392b", "#2e8b3e", "#8e44ad"};
 std::string plotModes(const SweepResult& sweep, const std::string& xcol, const std::string& ycol) {
   std::string cmd = "  plot ";
   bool first = true;
-  for (const char* m : kPlottedModes) {
+  for (ModeLabel m : kPlottedModes) {
     bool present = false;
-    for (const auto& b : sweep.branches) present = present || b.label == m;
+    for (const auto& b : sweep.branches)
+      present = present || std::find(b.labels.begin(), b.labels.end(), m) != b.labels.end();
     if (!present) continue;
-    cmd += std::string(first ? "" : ", \\\n       ") + "'eigenvalues.csv' using " + xcol + ":(strcol(2) eq '" + m +
-           "' ? " + ycol + " : NaN) with points pt 7 ps 0.5 title '" + m + "'";
+    const std::string name = toString(m);
+    cmd += std::string(first ? "" : ", \\\n       ") + "'eigenvalues.csv' using " + xcol + ":(strcol(2) eq '" + name +
+           "' ? " + ycol + " : NaN) with points pt 7 ps 0.5 title '" + name + "'";
     first = false;
   }
   return cmd + "\n";
@@ -76,13 +84,13 @@ std::string markStableRanges(const SweepResult& sweep, const std::vector<StableR
 // A labelled vertical line at each critical speed (arrows and labels numbered after the ranges').
 std::string markCriticalSpeeds(const SweepResult& sweep, size_t firstTag) {
   std::ostringstream os;
-  os << "  # Critical speeds: sign changes of a labelled mode's real part.\n";
+  os << "  # Critical speeds: sign changes of a root's real part, named by the root's mode there.\n";
   for (size_t i = 0; i < sweep.criticalSpeeds.size(); ++i) {
     const auto& c = sweep.criticalSpeeds[i];
     const std::string v = formatSpeed(c.speed, -1);
     os << "  set arrow " << firstTag + i << " from " << v << ", graph 0 to " << v
        << ", graph 1 nohead front dashtype 3 linewidth 1.5 linecolor rgb '#303030'\n"
-       << "  set label " << firstTag + i << " '" << c.mode << " " << formatSpeed(c.speed, 3) << " m/s' at " << v
+       << "  set label " << firstTag + i << " '" << toString(c.mode) << " " << formatSpeed(c.speed, 3) << " m/s' at " << v
        << ", graph 0.98 rotate by 90 right offset -0.9,0 front boxed\n";
   }
   return os.str();
@@ -106,13 +114,13 @@ std::string plotBranches(const SweepResult& sweep) {
       const ModeBranch& br = sweep.branches[b];
       if (br.label != kPlottedModes[m]) continue;
       const std::string rows = "'eigenvalues.csv' every " + std::to_string(n) + "::" + std::to_string(b);
-      add(rows + " using 1:3 with lines " + colour + " dashtype 1 " +
-          (titled ? "notitle" : "title '" + br.label + ", real part'"));
+      const std::string name = toString(br.label);
+      add(rows + " using 1:3 with lines " + colour + " dashtype 1 " + (titled ? "notitle" : "title '" + name + ", real part'"));
       titled = true;
       bool complex = false;  // one dashed line per complex pair, |imag| in rad/s where it is complex
       for (const auto& l : br.eigenvalue) complex = complex || std::abs(l.imag()) > 1e-9;
       if (!complex || imagDrawn) continue;
-      add(rows + " using 1:(abs($4) > 1e-9 ? abs($4) : NaN) with lines " + colour + " dashtype 2 title '" + br.label +
+      add(rows + " using 1:(abs($4) > 1e-9 ? abs($4) : NaN) with lines " + colour + " dashtype 2 title '" + name +
           ", imaginary part'");
       imagDrawn = true;
     }
@@ -141,10 +149,14 @@ nlohmann::json makeSweepSummary(const std::string& name, const SweepResult& swee
   j["speeds_mps"] = {{"start", sweep.speeds.front()}, {"stop", sweep.speeds.back()}, {"count", sweep.speeds.size()}};
   nlohmann::json crit = nlohmann::json::array();
   std::map<std::string, nlohmann::json> byMode;
-  for (const char* m : kPlottedModes) byMode[m] = nlohmann::json::array();
-  for (const auto& c : sweep.criticalSpeeds) {
-    crit.push_back({{"mode", c.mode}, {"speed_mps", c.speed}, {"direction", c.stabilising ? "stabilising" : "destabilising"}});
-    byMode[c.mode].push_back(c.speed);
+  for (ModeLabel m : kPlottedModes) byMode[toString(m)] = nlohmann::json::array();
+  for (const CriticalSpeed& c : sweep.criticalSpeeds) {
+    crit.push_back({{"mode", toString(c.mode)},
+                    {"speed_mps", c.speed},
+                    {"direction", c.stabilising ? "stabilising" : "destabilising"},
+                    {"frequency_hz", c.frequency},
+                    {"refined", c.refined}});
+    byMode[toString(c.mode)].push_back(c.speed);
   }
   j["critical_speeds"] = crit;
   for (const auto& [mode, speeds] : byMode)
@@ -155,6 +167,10 @@ nlohmann::json makeSweepSummary(const std::string& name, const SweepResult& swee
   // The same ranges bounded by the critical speeds (calcStableSpeedRanges), as the plot shades them.
   j["stable_speed_ranges_mps"] = nlohmann::json::array();
   for (const StableRange& r : calcStableSpeedRanges(sweep)) j["stable_speed_ranges_mps"].push_back({r.start, r.stop});
+  // Speeds of the grid that did not trim (left out of everything above).
+  j["failed_speeds"] = nlohmann::json::array();
+  for (const FailedSpeed& f : sweep.failures)
+    j["failed_speeds"].push_back({{"speed_mps", f.speed}, {"residual", f.residual}, {"message", f.message}});
   return j;
 }
 
@@ -163,7 +179,7 @@ void writeSweepData(const std::filesystem::path& dir, const std::string& name, c
   for (size_t k = 0; k < sweep.speeds.size(); ++k)
     for (const auto& b : sweep.branches) {
       const auto l = b.eigenvalue[k];
-      csv.beginRow().add(sweep.speeds[k]).add(b.label).add(l.real()).add(l.imag()).add(calcFrequencyHz(l)).add(
+      csv.beginRow().add(sweep.speeds[k]).add(toString(b.labels[k])).add(l.real()).add(l.imag()).add(calcFrequencyHz(l)).add(
           calcDampingRatio(l));
     }
   writeFileAtomically(dir / "eigenvalues.csv", csv.getText());
@@ -179,53 +195,76 @@ void writeSweepOutputs(const std::filesystem::path& dir, const std::string& name
   renderGnuplot(dir, "real_part_vs_speed", makeEigenvaluePlot(name, sweep));
 }
 
+namespace {
+
+// The table's columns: the lateral modes, the compliance modes, and any other label that names a
+// critical speed, in label order, those present at some speed.
+std::vector<ModeLabel> listTableModes(const SweepResult& sweep) {
+  std::vector<bool> wanted(analysis::kNumModeLabels, false), present(analysis::kNumModeLabels, false);
+  for (ModeLabel m : {ModeLabel::Weave, ModeLabel::Wobble, ModeLabel::Capsize, ModeLabel::Castor, ModeLabel::SwingarmBending,
+                      ModeLabel::SwingarmTorsion, ModeLabel::SwingarmTwist, ModeLabel::ForkBending, ModeLabel::ForkTorsion,
+                      ModeLabel::RiderLean})
+    wanted[static_cast<int>(m)] = true;
+  for (const CriticalSpeed& c : sweep.criticalSpeeds) wanted[static_cast<int>(c.mode)] = true;
+  for (const auto& b : sweep.branches)
+    for (ModeLabel l : b.labels) present[static_cast<int>(l)] = true;
+  std::vector<ModeLabel> out;
+  for (int m = 0; m < analysis::kNumModeLabels; ++m)
+    if (wanted[m] && present[m]) out.push_back(static_cast<ModeLabel>(m));
+  return out;
+}
+
+// "real +/- imag i" of the root labelled m at speed k (the upper member of a pair), or "absent".
+std::string formatModeCell(const SweepResult& sweep, ModeLabel m, size_t k) {
+  const ModeBranch* b = findLabelledBranch(sweep.branches, m, k);
+  if (!b) return "absent";
+  const auto l = b->eigenvalue[k];
+  std::ostringstream cell;
+  cell << std::setprecision(4) << std::fixed << l.real();
+  if (std::abs(l.imag()) > 1e-9) cell << " +/- " << std::abs(l.imag()) << "i";
+  return cell.str();
+}
+
+}  // namespace
+
 std::string formatSweepTable(const SweepResult& sweep, int rows) {
   std::ostringstream os;
   os << std::setw(8) << "v (m/s)";
-  std::vector<const ModeBranch*> shown;
-  for (const auto& b : sweep.branches) {
-    // The table shows the handling and structural modes; eigenvalues.csv has every mode.
-    const bool shownLabel = b.label == "weave" || b.label == "wobble" || b.label == "capsize" || b.label == "castor" ||
-                            b.label.rfind("swingarm_", 0) == 0;
-    if (!shownLabel) continue;
-    bool pairSeen = false;  // show each complex pair once (positive imaginary part)
-    for (const auto* s : shown)
-      if (s->label == b.label && std::abs(s->eigenvalue.back() - std::conj(b.eigenvalue.back())) < 1e-9) pairSeen = true;
-    if (pairSeen) continue;
-    shown.push_back(&b);
-    os << std::setw(26) << b.label;
-  }
+  const std::vector<ModeLabel> shown = listTableModes(sweep);
+  for (ModeLabel m : shown) os << std::setw(26) << toString(m);
   os << "\n";
   const size_t n = sweep.speeds.size();
   const size_t stride = std::max<size_t>(1, (n - 1) / std::max(1, rows - 1));
   for (size_t k = 0; k < n; k += stride) {
     os << std::fixed << std::setprecision(2) << std::setw(8) << sweep.speeds[k];
-    for (const auto* b : shown) {
-      const auto l = b->eigenvalue[k];
-      std::ostringstream cell;
-      cell << std::setprecision(4) << std::fixed << l.real();
-      if (std::abs(l.imag()) > 1e-9) cell << " +/- " << std::abs(l.imag()) << "i";
-      os << std::setw(26) << cell.str();
-    }
+    for (ModeLabel m : shown) os << std::setw(26) << formatModeCell(sweep, m, k);
     os << "\n";
   }
+  os << "(absent: no root has that mode at that speed; eigenvalues.csv has every root at every speed)\n";
   os << "Critical speeds:\n";
   if (sweep.criticalSpeeds.empty()) os << "  none in the range\n";
-  for (const auto& c : sweep.criticalSpeeds)
-    os << "  " << std::setw(8) << c.mode << " " << std::setprecision(10) << std::fixed << c.speed << " m/s ("
-       << (c.stabilising ? "stabilising" : "destabilising") << ")\n";
+  for (const CriticalSpeed& c : sweep.criticalSpeeds) {
+    os << "  " << std::setw(8) << toString(c.mode) << " " << std::setprecision(10) << std::fixed << c.speed << " m/s ("
+       << (c.stabilising ? "stabilising" : "destabilising");
+    if (c.frequency > 0) os << ", " << std::setprecision(2) << c.frequency << " Hz";
+    if (!c.refined) os << ", interpolated: a speed near it did not trim";
+    os << ")\n";
+  }
   const std::vector<StableRange> stable = calcStableSpeedRanges(sweep);
   if (stable.empty())
     os << "No stable speed range in " << formatSpeed(sweep.speeds.front(), 2) << " - " << formatSpeed(sweep.speeds.back(), 2)
        << " m/s\n";
   for (const StableRange& r : stable)
     os << "Stable from " << formatSpeed(r.start, 4) << " to " << formatSpeed(r.stop, 4) << " m/s\n";
+  for (const FailedSpeed& f : sweep.failures)
+    os << "Not trimmed: " << formatSpeed(f.speed, 4) << " m/s (residual " << f.residual << ")\n";
   return os.str();
 }
 
-void writeLinearModel(const std::filesystem::path& dir, const LinearModel& lin, const std::vector<std::string>& modeLabels) {
-  if (modeLabels.size() != static_cast<size_t>(lin.eigenvalues.size()))
-    throw std::invalid_argument("writeLinearModel: one mode label per eigenvalue needed");
+void writeLinearModel(const std::filesystem::path& dir, const LinearModel& lin, const std::vector<ModeContent>& contents) {
+  if (lin.labels.size() != static_cast<size_t>(lin.eigenvalues.size()) ||
+      (!contents.empty() && contents.size() != lin.labels.size()))
+    throw std::invalid_argument("writeLinearModel: one mode label (and content, if any) per eigenvalue needed");
   std::vector<std::string> names;
   for (const auto& s : lin.states) names.push_back(s.name);
   auto matrixCsv = [&](const Eigen::MatrixXd& M, const std::vector<std::string>& cols) {
@@ -244,7 +283,7 @@ void writeLinearModel(const std::filesystem::path& dir, const LinearModel& lin, 
   std::vector<std::string> vecHeader{"state"};
   for (int k = 0; k < lin.eigenvalues.size(); ++k) {
     const auto l = lin.eigenvalues[k];
-    ev.beginRow().add(std::to_string(k)).add(modeLabels[k]).add(l.real()).add(l.imag()).add(calcFrequencyHz(l)).add(calcDampingRatio(l));
+    ev.beginRow().add(std::to_string(k)).add(toString(lin.labels[k])).add(l.real()).add(l.imag()).add(calcFrequencyHz(l)).add(calcDampingRatio(l));
     vecHeader.push_back("re_" + std::to_string(k));
     vecHeader.push_back("im_" + std::to_string(k));
   }
@@ -274,6 +313,17 @@ void writeLinearModel(const std::filesystem::path& dir, const LinearModel& lin, 
   j["B"] = rows(lin.B);
   j["eigenvalues"] = nlohmann::json::array();
   for (int k = 0; k < lin.eigenvalues.size(); ++k) j["eigenvalues"].push_back({lin.eigenvalues[k].real(), lin.eigenvalues[k].imag()});
+  j["modes"] = nlohmann::json::array();  // each eigenvalue's label and content shares (by state role)
+  for (int k = 0; k < lin.eigenvalues.size(); ++k) {
+    nlohmann::json m{{"index", k}, {"mode", toString(lin.labels[k])}};
+    if (!contents.empty()) {
+      nlohmann::json shares = nlohmann::json::object();
+      for (int r = 0; r < vehicle::kNumStateRoles; ++r)
+        if (contents[k].role[r] > 0) shares[plugins::toString(static_cast<vehicle::StateRole>(r))] = contents[k].role[r];
+      m["content"] = shares;
+    }
+    j["modes"].push_back(m);
+  }
   writeFileAtomically(dir / "linear_model.json", j.dump(2) + "\n");
 }
 

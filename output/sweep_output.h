@@ -16,25 +16,29 @@ double calcDampingRatio(std::complex<double> lambda);
 /// DIR/eigenvalues.csv and DIR/summary.json only.
 void writeSweepData(const std::filesystem::path& dir, const std::string& scenarioName, const analysis::SweepResult& sweep);
 
-/// DIR/eigenvalues.csv (speed_mps,mode,real,imag,frequency_hz,damping_ratio; 17 digits),
-/// DIR/summary.json (critical speeds, stable ranges), the root locus, and real_part_vs_speed: the
+/// DIR/eigenvalues.csv (speed_mps,mode,real,imag,frequency_hz,damping_ratio; 17 digits; mode: the
+/// root's label at that speed), DIR/summary.json (critical speeds, stable ranges, failed speeds), the root locus, and real_part_vs_speed: the
 /// eigenvalues against speed as in Meijaard et al. (2007) Fig. 3 (real parts solid, imaginary parts in
 /// rad/s dashed), each critical speed a labelled vertical line, the stable ranges shaded
 /// (calcStableSpeedRanges), or a note that there is none; each plot with its gnuplot script.
 void writeSweepOutputs(const std::filesystem::path& dir, const std::string& scenarioName, const analysis::SweepResult& sweep);
 
-/// The summary as JSON: critical speeds per mode and the speed ranges where all modes are stable, on the
-/// grid (stable_grid_ranges_mps) and bounded by the critical speeds (stable_speed_ranges_mps).
+/// The summary as JSON: every critical speed (mode, speed, direction, frequency, refined), the first of
+/// each lateral mode, the speed ranges where all modes are stable, on the grid (stable_grid_ranges_mps)
+/// and bounded by the critical speeds (stable_speed_ranges_mps), and the speeds that did not trim.
 nlohmann::json makeSweepSummary(const std::string& scenarioName, const analysis::SweepResult& sweep);
 
-/// A readable table of the labelled eigenvalues at about `rows` speeds, and the critical speeds.
+/// A readable table at about `rows` speeds: a column per named mode (the lateral and compliance modes
+/// and any mode with a critical speed), "absent" where no root has it; then the critical speeds, the
+/// stable ranges and the speeds that did not trim.
 std::string formatSweepTable(const analysis::SweepResult& sweep, int rows = 11);
 
 /// DIR/A.csv, DIR/B.csv (named rows and columns), DIR/eigenvalues.csv (index,mode,real,imag,
 /// frequency_hz,damping_ratio), DIR/eigenvectors.csv and DIR/linear_model.json (speed_mps, roll_rad,
-/// heading_frame: true about a steady turn, states, inputs, A, B, eigenvalues). modeLabels[k] names
-/// eigenvalue k's mode (e.g. the labels trackModes gives this one model); one per eigenvalue, else
-/// std::invalid_argument.
-void writeLinearModel(const std::filesystem::path& dir, const analysis::LinearModel& lin, const std::vector<std::string>& modeLabels);
+/// heading_frame: true about a steady turn, states, inputs, A, B, eigenvalues, modes: each eigenvalue's
+/// label and, given `contents` (calcModeContents of lin), its shares by state role). lin.labels names
+/// each eigenvalue's mode; one per eigenvalue, else std::invalid_argument.
+void writeLinearModel(const std::filesystem::path& dir, const analysis::LinearModel& lin,
+                      const std::vector<analysis::ModeContent>& contents = {});
 
 }  // namespace motostab::output

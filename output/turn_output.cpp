@@ -8,7 +8,9 @@
 
 namespace motostab::output {
 
+using analysis::HandsFreeTurn;
 using analysis::TrimResult;
+using analysis::restoreTrim;
 using analysis::TurnFigures;
 using analysis::calcTurnFigures;
 using vehicle::CoordinateIndices;
@@ -63,6 +65,41 @@ std::string formatTrimTable(const VehicleModel& model, const TrimResult& trim) {
   row("lateral acceleration", j["lateral_acceleration_mps2"], "m/s^2");
   for (const auto& [name, value] : j["tyres"].items()) row(name, value.get<double>(), "");
   row("residual", j["residual"], "");
+  return os.str();
+}
+
+nlohmann::json makeHandsFreeJson(const VehicleModel& model, const std::vector<HandsFreeTurn>& turns, size_t defaultIndex) {
+  nlohmann::json list = nlohmann::json::array();
+  for (size_t i = 0; i < turns.size(); ++i) {
+    nlohmann::json t = makeTrimJson(model, restoreTrim(model, turns[i].trim));
+    t["continues_from_straight_running"] = turns[i].continuesFromStraight;
+    t["default"] = i == defaultIndex;
+    list.push_back(t);
+  }
+  nlohmann::json j = makeTrimJson(model, restoreTrim(model, turns.at(defaultIndex).trim));
+  j["continues_from_straight_running"] = turns[defaultIndex].continuesFromStraight;
+  j["hands_free_turns"] = list;
+  return j;
+}
+
+void writeHandsFreeJson(const std::filesystem::path& dir, const VehicleModel& model, const std::vector<HandsFreeTurn>& turns,
+                        size_t defaultIndex) {
+  writeFileAtomically(dir / "trim.json", makeHandsFreeJson(model, turns, defaultIndex).dump(2) + "\n");
+}
+
+std::string formatHandsFreeTable(const VehicleModel& model, const std::vector<HandsFreeTurn>& turns, size_t defaultIndex) {
+  constexpr double kDeg = 180 / M_PI;
+  std::ostringstream os;
+  os << "  " << std::setw(12) << "speed (m/s)" << std::setw(12) << "steer (deg)" << std::setw(18) << "steer torque (N m)"
+     << std::setw(16) << "path radius (m)" << "  from straight running\n";
+  for (size_t i = 0; i < turns.size(); ++i) {
+    const nlohmann::json j = makeTrimJson(model, restoreTrim(model, turns[i].trim));
+    os << (i == defaultIndex ? "* " : "  ") << std::setprecision(6) << std::setw(12) << j["speed_mps"].get<double>()
+       << std::setw(12) << j["steer_rad"].get<double>() * kDeg << std::setw(18) << j["steer_torque_Nm"].get<double>()
+       << std::setw(16) << (j["path_radius_m"].is_null() ? INFINITY : j["path_radius_m"].get<double>()) << "  "
+       << (turns[i].continuesFromStraight ? "yes" : "no") << "\n";
+  }
+  os << "  (* the default: the turn continuing from straight running, or the one nearest --speed)\n";
   return os.str();
 }
 

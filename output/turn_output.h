@@ -2,6 +2,7 @@
 // Files written by `motostab trim` (docs/cornering.md).
 #include <filesystem>
 #include <string>
+#include <vector>
 
 #include "analysis/trim.h"
 #include "nlohmann/json.hpp"
@@ -20,5 +21,20 @@ void writeTrimJson(const std::filesystem::path& dir, const vehicle::VehicleModel
 
 /// A short table of the trim for the terminal (degrees where readable).
 std::string formatTrimTable(const vehicle::VehicleModel& model, const analysis::TrimResult& trim);
+
+/// trim.json of `trim --hands-free`: the keys of makeTrimJson for the default turn turns[defaultIndex],
+/// and `hands_free_turns`, every turn sorted by speed with the same keys and
+/// `continues_from_straight_running` (analysis::HandsFreeTurn) and `default`.
+nlohmann::json makeHandsFreeJson(const vehicle::VehicleModel& model, const std::vector<analysis::HandsFreeTurn>& turns,
+                                 size_t defaultIndex);
+
+/// DIR/trim.json (makeHandsFreeJson), written atomically.
+void writeHandsFreeJson(const std::filesystem::path& dir, const vehicle::VehicleModel& model,
+                        const std::vector<analysis::HandsFreeTurn>& turns, size_t defaultIndex);
+
+/// One row per hands-free turn: speed, steer, steer torque, path radius, whether it continues from
+/// straight running, the default marked.
+std::string formatHandsFreeTable(const vehicle::VehicleModel& model, const std::vector<analysis::HandsFreeTurn>& turns,
+                                 size_t defaultIndex);
 
 }  // namespace motostab::output

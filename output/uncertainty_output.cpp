@@ -118,7 +118,7 @@ nlohmann::json makeUncertaintyJson(const std::string& name, const UncertaintySet
 std::string makeSamplesCsv(const UncertaintySetup& s, const std::vector<TaskResult>& results) {
   std::vector<std::string> header{"task", "kind", "row", "status", "redraws"};
   for (const auto& p : s.params) header.push_back(p.path);
-  for (const char* m : kUncertainModes) header.push_back(std::string(m) + "_speed_mps");
+  for (analysis::ModeLabel m : kUncertainModes) header.push_back(std::string(analysis::toString(m)) + "_speed_mps");
   header.push_back("crossings");
   header.push_back("reason");
   CsvWriter csv(header);

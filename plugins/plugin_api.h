@@ -13,17 +13,19 @@
 #include "Simbody.h"
 
 #include "io/yaml_map.h"
+#include "plugins/state_role.h"
 
 /// Version of this interface. A library built against another version is refused at load; bump it
 /// whenever a type in this header changes layout or meaning.
-#define MOTOSTAB_PLUGIN_API_VERSION 3
+#define MOTOSTAB_PLUGIN_API_VERSION 4
 
 namespace motostab::plugins {
 
 /// One wheel as a contact model sees it. The wheel body's origin is the wheel centre and its
 /// spin axis is the body y axis.
 struct WheelSite {
-  std::string name;              ///< "rear_wheel" or "front_wheel"
+  std::string name;              ///< "rear_wheel" or "front_wheel" (for names of outputs and states)
+  WheelSide side = WheelSide::None;  ///< which wheel it is
   SimTK::MobilizedBody wheel;
   double radius = 0;             ///< outer rolling radius, m
   double crownRadius = 0;        ///< tyre crown (cross-section) radius, m; 0 = knife edge
@@ -44,8 +46,9 @@ class ContactModel {
   virtual ~ContactModel() = default;
   /// Adds the contact of one wheel with flat ground (z = 0) to the system.
   virtual void addWheel(BuildContext& context, const WheelSite& wheel) = 0;
-  /// Names of auxiliary states (z) this model allocates, in allocation order, per wheel.
-  virtual std::vector<std::string> getStateNames(const WheelSite& wheel) const { return {}; }
+  /// The auxiliary states (z) this model allocates for a wheel, in allocation order: name and role
+  /// (a tyre's relaxation state is StateRole::TyreLag with the wheel's side).
+  virtual std::vector<AuxiliaryState> getStates(const WheelSite& wheel) const { return {}; }
   /// Applies a step of the road's lateral position under `wheel` (m, towards +y) to the state, as
   /// at the instant the wheel meets it. Returns false if the model has no road input.
   virtual bool applyLateralRoadStep(SimTK::State& state, const WheelSite& wheel, double offset) const { return false; }
@@ -71,11 +74,12 @@ struct SwingarmSite {
 };
 
 /// What a swingarm model built: the body that carries the rear wheel, the hub frame in it (axes
-/// parallel to the design frame at the design pose), and its named one-DOF compliance mobilizers.
+/// parallel to the design frame at the design pose), and its one-DOF compliance mobilizers with the
+/// names and roles of their coordinates (StateRole::SwingarmBending, ..., or Compliance).
 struct SwingarmAssembly {
   SimTK::MobilizedBody hubCarrier;
   SimTK::Transform X_CH;
-  std::vector<std::pair<std::string, SimTK::MobilizedBody>> coordinates;
+  std::vector<NamedMobilizer> coordinates;
 };
 
 /// The common interface of swingarm compliance models (seed sec. 4: rigid, bending, torsion, twist).

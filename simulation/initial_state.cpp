@@ -23,7 +23,7 @@ void checkPerturbations(const VehicleModel& model, const std::vector<Perturbatio
   for (const auto& p : perturbations) {
     if (p.kind != PerturbationKind::RoadStep) continue;
     SimTK::State probe = model.getDefaultState();
-    if (model.applyLateralRoadStep(probe, p.body, p.amplitude)) continue;
+    if (model.applyLateralRoadStep(probe, p.wheel, p.amplitude)) continue;
     if (contact == "rolling_no_slip")
       throw InputError({"command line", 0, 0, "--perturb"}, "'" + p.spec + "': needs a force-based tyre model; the contact model "
                                                 "'rolling_no_slip' is a rolling constraint without lateral compliance");
@@ -80,7 +80,7 @@ namespace detail {
 // Applies the road steps that start at time t (s).
 void applyRoadSteps(const VehicleModel& model, State& s, const std::vector<Perturbation>& perturbations, double t) {
   for (const auto& p : perturbations)
-    if (p.kind == PerturbationKind::RoadStep && std::abs(p.start - t) < 1e-12) model.applyLateralRoadStep(s, p.body, p.amplitude);
+    if (p.kind == PerturbationKind::RoadStep && std::abs(p.start - t) < 1e-12) model.applyLateralRoadStep(s, p.wheel, p.amplitude);
 }
 
 // The trim of the bare model carried over to the model with the perturbation force: q, u, the

@@ -99,6 +99,7 @@ Perturbation parsePerturbation(const std::string& spec) {
     checkFieldCount(spec, f, 4, 4);
     p.body = f[1];
     if (p.body != "rear_wheel" && p.body != "front_wheel") fail(spec, "unknown wheel '" + p.body + "'");
+    p.wheel = p.body == "front_wheel" ? plugins::WheelSide::Front : plugins::WheelSide::Rear;
     p.amplitude = parseNumber(spec, f[2], "offset");
     p.start = parseNumber(spec, f[3], "start time");
     if (p.start < 0) fail(spec, "start time must be >= 0");

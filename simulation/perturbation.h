@@ -3,6 +3,8 @@
 #include <string>
 #include <vector>
 
+#include "plugins/state_role.h"
+
 namespace motostab::simulation {
 
 enum class PerturbationKind {
@@ -28,7 +30,8 @@ struct Perturbation {
   double start = 0;      ///< s (pulses, road step)
   double duration = 0;   ///< s (pulses)
   PulseShape shape = PulseShape::Rectangular;
-  std::string body;      ///< lateral-force body or road-step wheel
+  std::string body;      ///< lateral-force body or road-step wheel, as written
+  plugins::WheelSide wheel = plugins::WheelSide::None;  ///< the road-step wheel
   std::string spec;      ///< the text it was parsed from, for messages
 
   bool isPulse() const { return kind == PerturbationKind::SteerTorque || kind == PerturbationKind::LateralForce; }

@@ -110,7 +110,8 @@ SimulationResult runSimulation(const Scenario& scenario, PluginRegistry& registr
                                        trim.turn ? calcHeadingSpeed(trimModel, trim.state) : opt.speed);
     SimTK::Force::Custom(ctx.forces, impl);  // the subsystem owns impl
     force = impl;
-    return control ? std::vector<std::string>{"speed_control_integral"} : std::vector<std::string>{};
+    return control ? std::vector<vehicle::AuxiliaryState>{{"speed_control_integral", vehicle::StateRole::Controller}}
+                   : std::vector<vehicle::AuxiliaryState>{};
   };
   const VehicleModel model(scenario, registry, {extension});
 

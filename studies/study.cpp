@@ -25,14 +25,14 @@ using scenario::Scenario;
 using scenario::ScenarioSource;
 using vehicle::VehicleModel;
 
-const ModeBranch* findBranch(const SweepResult& sweep, const std::string& label) {
+const ModeBranch* findBranch(const SweepResult& sweep, analysis::ModeLabel label) {
   for (const auto& b : sweep.branches)
     if (b.label == label && b.eigenvalue.back().imag() >= 0) return &b;
   return nullptr;
 }
 
 ModeShape calcWeaveShape(const VehicleModel& model, const SweepResult& sweep, double speed, const SweepOptions& opt) {
-  const ModeBranch* weave = findBranch(sweep, "weave");
+  const ModeBranch* weave = findBranch(sweep, analysis::ModeLabel::Weave);
   if (!weave) throw std::runtime_error("no weave mode in the sweep");
   size_t k = 0;
   for (size_t i = 0; i < sweep.speeds.size(); ++i)
@@ -40,7 +40,7 @@ ModeShape calcWeaveShape(const VehicleModel& model, const SweepResult& sweep, do
   TrimResult trim = restoreTrim(model, sweep.trims[k]);
   updTrim(model, speed, opt.trim, trim);
   LinearizeOptions lo = opt.linearize;
-  lo.removeYaw = sweep.models[k].findState("yaw") < 0 ? 1 : 0;
+  lo.removeYaw = sweep.models[k].findState(vehicle::StateRole::Yaw, vehicle::StateKind::Coordinate) < 0 ? 1 : 0;
   const LinearModel lin = linearize(model, trim, lo);
   int e = findBestMatch(sweep.models[k], weave->index[k], lin);
   if (lin.eigenvalues[e].imag() < 0) {  // the conjugate member: take the upper one
@@ -51,16 +51,25 @@ ModeShape calcWeaveShape(const VehicleModel& model, const SweepResult& sweep, do
   shape.speed = speed;
   shape.eigenvalue = lin.eigenvalues[e];
   const double w = model.getScenario().geometry.wheelbase;
-  auto component = [&](const std::string& state) -> std::complex<double> {
-    const int i = lin.findState(state);
+  using vehicle::StateKind;
+  using vehicle::StateRole;
+  auto component = [&](StateRole role, StateKind kind) -> std::complex<double> {
+    const int i = lin.findState(role, kind);
     return i < 0 ? 0.0 : lin.eigenvectors(i, e);
   };
   std::vector<std::pair<std::string, std::complex<double>>> parts{
-      {"roll", component("roll")}, {"yaw", component("yaw")}, {"steer", component("steer")},
-      {"lateral", component("vy") / shape.eigenvalue / w}};  // lateral displacement of the rear hub / wheelbase
-  for (const auto& st : lin.states)
-    if (st.entry.slot == Slot::Q && st.name.rfind("swingarm_", 0) == 0) parts.push_back({st.name, component(st.name)});
-  const std::complex<double> steerPhase = std::polar(1.0, -std::arg(component("steer")));
+      {"roll", component(StateRole::Roll, StateKind::Coordinate)},
+      {"yaw", component(StateRole::Yaw, StateKind::Coordinate)},
+      {"steer", component(StateRole::Steer, StateKind::Coordinate)},
+      // lateral displacement of the rear hub / wheelbase
+      {"lateral", component(StateRole::Lateral, StateKind::Rate) / shape.eigenvalue / w}};
+  for (size_t i = 0; i < lin.states.size(); ++i) {
+    const auto& st = lin.states[i];
+    const bool swingarm = st.role == StateRole::SwingarmBending || st.role == StateRole::SwingarmTorsion ||
+                          st.role == StateRole::SwingarmTwist;
+    if (st.entry.slot == Slot::Q && swingarm) parts.push_back({st.name, lin.eigenvectors(i, e)});
+  }
+  const std::complex<double> steerPhase = std::polar(1.0, -std::arg(component(StateRole::Steer, StateKind::Coordinate)));
   double largest = 0;
   for (const auto& p : parts) largest = std::max(largest, std::abs(p.second));
   for (const auto& [name, value] : parts) {

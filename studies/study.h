@@ -55,7 +55,8 @@ StudyResult runStudy(const scenario::ScenarioSource& source, const StudyOptions&
 /// The weave shape of `model` at `speed`, continuing the weave of `sweep` (seed Fig. 12).
 ModeShape calcWeaveShape(const vehicle::VehicleModel& model, const analysis::SweepResult& sweep, double speed, const analysis::SweepOptions& options);
 
-/// The branch with `label` and a non-negative imaginary part at the last speed (nullptr if none).
-const analysis::ModeBranch* findBranch(const analysis::SweepResult& sweep, const std::string& label);
+/// The branch labelled `label` (at most speeds) with a non-negative imaginary part at the last speed
+/// (nullptr if none).
+const analysis::ModeBranch* findBranch(const analysis::SweepResult& sweep, analysis::ModeLabel label);
 
 }  // namespace motostab::studies

@@ -5,6 +5,7 @@
 namespace motostab::studies {
 
 using analysis::ModeBranch;
+using analysis::ModeLabel;
 
 namespace {
 
@@ -22,8 +23,8 @@ WobbleFindings calcWobbleFindings(const StudyResult& st) {
   out.minSpeed = kWobbleMinSpeed;
   double fMin = INFINITY, fMax = 0, reMax = -INFINITY, shift = 0;
   for (const auto& v : st.nominal) {
-    const ModeBranch* w = findBranch(v.sweep, "wobble");
-    const ModeBranch* w0 = rigid ? findBranch(rigid->sweep, "wobble") : nullptr;
+    const ModeBranch* w = findBranch(v.sweep, ModeLabel::Wobble);
+    const ModeBranch* w0 = rigid ? findBranch(rigid->sweep, ModeLabel::Wobble) : nullptr;
     if (!w) continue;
     for (size_t k = 0; k < w->eigenvalue.size(); ++k) {
       if (v.sweep.speeds[k] < kWobbleMinSpeed) continue;
@@ -39,7 +40,7 @@ WobbleFindings calcWobbleFindings(const StudyResult& st) {
 WeaveFindings calcWeaveFindings(const StudyResult& st) {
   WeaveFindings out;
   const StudyVariant* rigid = findVariant(st.nominal, "rigid");
-  const ModeBranch* w = rigid ? findBranch(rigid->sweep, "weave") : nullptr;
+  const ModeBranch* w = rigid ? findBranch(rigid->sweep, ModeLabel::Weave) : nullptr;
   if (!w) return out;
   double fLo = INFINITY, fHi = 0, best = INFINITY, bestV = 0;
   for (size_t k = 0; k < w->eigenvalue.size(); ++k) {
@@ -85,8 +86,9 @@ std::vector<SwingarmModeFinding> calcSwingarmModes(const StudyResult& st) {
   std::vector<SwingarmModeFinding> out;
   for (const auto& v : st.nominal)
     for (const auto& b : v.sweep.branches)
-      if (b.label.rfind("swingarm_", 0) == 0 && b.eigenvalue.back().imag() > 0)
-        out.push_back({v.name, b.label, v.sweep.speeds.front(), v.sweep.speeds.back(),
+      if ((b.label == ModeLabel::SwingarmBending || b.label == ModeLabel::SwingarmTorsion || b.label == ModeLabel::SwingarmTwist) &&
+          b.eigenvalue.back().imag() > 0)
+        out.push_back({v.name, analysis::toString(b.label), v.sweep.speeds.front(), v.sweep.speeds.back(),
                        b.eigenvalue.front().imag() / (2 * M_PI), b.eigenvalue.back().imag() / (2 * M_PI)});
   return out;
 }
@@ -94,7 +96,7 @@ std::vector<SwingarmModeFinding> calcSwingarmModes(const StudyResult& st) {
 }  // namespace
 
 double getWeaveRealPart(const StudyVariant& v, double speed) {
-  const ModeBranch* b = findBranch(v.sweep, "weave");
+  const ModeBranch* b = findBranch(v.sweep, ModeLabel::Weave);
   if (!b) return NAN;
   size_t k = 0;
   for (size_t i = 0; i < v.sweep.speeds.size(); ++i)

@@ -162,7 +162,7 @@ class MagicFormulaContact : public TyreContactModel {
   bool isLagged(const WheelSite& w) const override { return tyreFor(w).isLagged(); }
 
  private:
-  const MagicFormulaTyre& tyreFor(const WheelSite& w) const { return w.name == "front_wheel" ? front_ : rear_; }
+  const MagicFormulaTyre& tyreFor(const WheelSite& w) const { return w.side == plugins::WheelSide::Front ? front_ : rear_; }
   MagicFormulaTyre front_, rear_;
 };
 

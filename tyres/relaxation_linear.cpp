@@ -72,7 +72,7 @@ class RelaxationLinear : public TyreContactModel {
   bool isLagged(const WheelSite& w) const override { return paramsFor(w).relaxationLength > 0; }
 
  private:
-  const LinearTyreParameters& paramsFor(const WheelSite& w) const { return w.name == "front_wheel" ? front_ : rear_; }
+  const LinearTyreParameters& paramsFor(const WheelSite& w) const { return w.side == plugins::WheelSide::Front ? front_ : rear_; }
   LinearTyreParameters front_, rear_;
 };
 

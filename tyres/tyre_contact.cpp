@@ -94,7 +94,7 @@ SimTK::Real TyreForceElement::calcPotentialEnergy(const State& s) const {
 }
 
 namespace {
-std::string tyrePrefix(const WheelSite& w) { return w.name == "front_wheel" ? "front_tyre_" : "rear_tyre_"; }
+std::string tyrePrefix(const WheelSite& w) { return w.side == plugins::WheelSide::Front ? "front_tyre_" : "rear_tyre_"; }
 }  // namespace
 
 void TyreContactModel::addWheel(BuildContext& ctx, const WheelSite& w) {
@@ -129,9 +129,9 @@ bool TyreContactModel::applyLateralRoadStep(State& s, const WheelSite& w, double
   return it != forces_.end() && it->second->applyRoadStep(s, offset);
 }
 
-std::vector<std::string> TyreContactModel::getStateNames(const WheelSite& w) const {
+std::vector<plugins::AuxiliaryState> TyreContactModel::getStates(const WheelSite& w) const {
   if (!isLagged(w)) return {};
-  return {(w.name == "front_wheel" ? std::string("front") : std::string("rear")) + "_tyre_lagged_slip"};
+  return {{tyrePrefix(w) + "lagged_slip", plugins::StateRole::TyreLag, w.side}};
 }
 
 }  // namespace motostab::tyres

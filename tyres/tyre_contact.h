@@ -103,8 +103,8 @@ class TyreForceElement : public SimTK::Force::Custom::Implementation {
   mutable SimTK::ZIndex zIndex_;
 };
 
-/// The ContactModel side shared by the tyre plugins: one force element per wheel, its z state's
-/// name, the road step, and the outputs front_tyre_Fx_N ... (extended by Mx, My when
+/// The ContactModel side shared by the tyre plugins: one force element per wheel, its z state (name
+/// and role), the road step, and the outputs front_tyre_Fx_N ... (extended by Mx, My when
 /// `reportsMoments`).
 class TyreContactModel : public plugins::ContactModel {
  public:
@@ -113,7 +113,7 @@ class TyreContactModel : public plugins::ContactModel {
   std::vector<std::string> getOutputNames(const plugins::WheelSite& w) const override;
   std::vector<double> calcOutputs(const SimTK::State& s, const plugins::WheelSite& w) const override;
   bool applyLateralRoadStep(SimTK::State& s, const plugins::WheelSite& w, double offset) const override;
-  std::vector<std::string> getStateNames(const plugins::WheelSite& w) const override;
+  std::vector<plugins::AuxiliaryState> getStates(const plugins::WheelSite& w) const override;
 
  protected:
   /// A new force element for a wheel (the subsystem takes ownership).

@@ -103,14 +103,15 @@ void extractSweep(const SweepResult& sweep, TaskResult& r) {
   for (const auto& c : sweep.criticalSpeeds) {
     for (size_t m = 0; m < kUncertainModes.size(); ++m)
       if (c.mode == kUncertainModes[m] && !(c.speed >= r.firstCrossing[m])) r.firstCrossing[m] = c.speed;
-    r.crossings += (r.crossings.empty() ? "" : ";") + c.mode + "@" + formatNumber(c.speed) + (c.stabilising ? "-" : "+");
+    r.crossings += (r.crossings.empty() ? "" : ";") + std::string(toString(c.mode)) + "@" + formatNumber(c.speed) +
+                   (c.stabilising ? "-" : "+");
   }
   const size_t n = sweep.speeds.size();
   r.modeValues.assign(2 * kFanModes.size() * n, kNaN);
   for (size_t m = 0; m < kFanModes.size(); ++m)
     for (const auto& b : sweep.branches) {
-      if (b.label != kFanModes[m]) continue;
       for (size_t k = 0; k < n; ++k) {
+        if (b.labels[k] != kFanModes[m]) continue;
         const auto l = b.eigenvalue[k];
         double& re = r.modeValues[2 * (m * n + k)];
         if (l.imag() < 0 || l.real() <= re) continue;  // keep the least stable member with imag >= 0

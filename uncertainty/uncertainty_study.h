@@ -23,15 +23,18 @@
 #include <string>
 #include <vector>
 
+#include "analysis/mode_label.h"
 #include "scenario/scenario.h"
 #include "scenario/scenario_source.h"
 
 namespace motostab::uncertainty {
 
 /// Critical speeds reported per sample: the first crossing of each mode in the speed range.
-constexpr std::array<const char*, 3> kUncertainModes{"weave", "capsize", "wobble"};
+constexpr std::array<analysis::ModeLabel, 3> kUncertainModes{analysis::ModeLabel::Weave, analysis::ModeLabel::Capsize,
+                                                              analysis::ModeLabel::Wobble};
 /// Modes whose real part and frequency are kept per speed (fan charts).
-constexpr std::array<const char*, 4> kFanModes{"weave", "capsize", "wobble", "castor"};
+constexpr std::array<analysis::ModeLabel, 4> kFanModes{analysis::ModeLabel::Weave, analysis::ModeLabel::Capsize,
+                                                       analysis::ModeLabel::Wobble, analysis::ModeLabel::Castor};
 
 enum class SamplingMethod { MonteCarlo, Sobol };
 

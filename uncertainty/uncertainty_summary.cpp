@@ -94,7 +94,7 @@ void fillSobol(const UncertaintySetup& s, const std::vector<TaskResult>& r, size
 // Per-speed 5/50/95 % percentiles of one fan mode's real part and frequency.
 ModeQuantiles calcModeQuantiles(const std::vector<TaskResult>& samples, size_t m, size_t n) {
   ModeQuantiles q;
-  q.mode = kFanModes[m];
+  q.mode = analysis::toString(kFanModes[m]);
   q.count.assign(n, 0);
   q.real.assign(n, {kNaN, kNaN, kNaN});
   q.frequency = q.real;
@@ -133,7 +133,7 @@ UncertaintySummary summarizeUncertainty(const UncertaintySetup& s, const std::ve
   out.samples = samples.size();
   for (size_t m = 0; m < kUncertainModes.size(); ++m) {
     CriticalSpeedStats c;
-    c.mode = kUncertainModes[m];
+    c.mode = analysis::toString(kUncertainModes[m]);
     std::vector<double> v;
     for (const auto& t : samples)
       if (t.ok && !std::isnan(t.firstCrossing[m])) v.push_back(t.firstCrossing[m]);

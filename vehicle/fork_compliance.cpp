@@ -34,14 +34,14 @@ ForkAssembly addForkCompliance(BuildContext& ctx, SimTK::MobilizedBody& frontFra
   SimTK::MobilizedBody::Pin carrier =
       addPinAtDesignPose(frontFrame, SimTK::Transform(), makeBody(f.carrier, p_DF), p_FP, calcForkBendingAxis(s));
   addPinSpringDamper(ctx.forces, carrier, f.stiffness, f.damping);
-  out.coordinates.push_back({"fork_bending", carrier});
+  out.coordinates.push_back({"fork_bending", plugins::StateRole::ForkBending, carrier});
   out.hubCarrier = carrier;
   if (f.hasTorsion) {
     const double lambda = s.geometry.steerAxisTilt;
     SimTK::MobilizedBody::Pin link = addPinAtDesignPose(carrier, SimTK::Transform(), SimTK::Body::Massless(), p_FP,
                                                         SimTK::Vec3(-std::sin(lambda), 0, std::cos(lambda)));
     addPinSpringDamper(ctx.forces, link, f.torsionStiffness, f.torsionDamping);
-    out.coordinates.push_back({"fork_torsion", link});
+    out.coordinates.push_back({"fork_torsion", plugins::StateRole::ForkTorsion, link});
     out.hubCarrier = link;
   }
   return out;

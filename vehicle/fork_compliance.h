@@ -23,10 +23,10 @@
 
 namespace motostab::vehicle {
 
-/// The body that carries the front wheel and the named compliance mobilizers.
+/// The body that carries the front wheel and the compliance mobilizers (roles ForkBending, ForkTorsion).
 struct ForkAssembly {
   SimTK::MobilizedBody hubCarrier;  ///< body origin at the front hub, axes parallel to D at the design pose
-  std::vector<std::pair<std::string, SimTK::MobilizedBody>> coordinates;
+  std::vector<plugins::NamedMobilizer> coordinates;
 };
 
 /// Adds carrier (and torsion link) to `frontFrame`, whose body origin is the front hub at p_DF (D, m).

@@ -15,8 +15,8 @@
 namespace motostab::vehicle {
 
 /// Adds the upper body to `rearFrame`, whose body origin is at p_DR (design frame, m). Returns its
-/// one-DOF mobilizer (q = 0 upright).
-SimTK::MobilizedBody::Pin addRiderLean(plugins::BuildContext& context, SimTK::MobilizedBody& rearFrame, const SimTK::Vec3& p_DR,
+/// one-DOF mobilizer (q = 0 upright), coordinate `rider_lean` with role RiderLean.
+plugins::NamedMobilizer addRiderLean(plugins::BuildContext& context, SimTK::MobilizedBody& rearFrame, const SimTK::Vec3& p_DR,
                                        const scenario::RiderLeanSpec& spec);
 
 }  // namespace motostab::vehicle

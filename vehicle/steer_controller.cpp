@@ -65,8 +65,8 @@ void SteerController::allocateState(SimTK::State& s) const {
   if (spec_.delay > 0) zIndex_ = forces_.allocateZ(s, SimTK::Vector(1, 0.0));
 }
 
-std::vector<std::string> SteerController::getStateNames() const {
-  if (spec_.delay > 0) return {"steer_controller_delay"};
+std::vector<plugins::AuxiliaryState> SteerController::getStates() const {
+  if (spec_.delay > 0) return {{"steer_controller_delay", plugins::StateRole::Controller, plugins::WheelSide::None}};
   return {};
 }
 

@@ -57,8 +57,8 @@ class SteerController {
                   const SimTK::MobilizedBody& frontFrame, const scenario::SteerControllerSpec& spec);
   /// Allocates the delay state (if any); called from the force element's realizeTopology.
   void allocateState(SimTK::State& state) const;
-  /// Names of the z states allocated: {"steer_controller_delay"} (N m) with a delay, else none.
-  std::vector<std::string> getStateNames() const;
+  /// The z states allocated: {"steer_controller_delay"} (N m, role Controller) with a delay, else none.
+  std::vector<plugins::AuxiliaryState> getStates() const;
   /// The fed-back states of `state` (realized to Velocity).
   SteerControllerInputs getInputs(const SimTK::State& state) const;
   /// The applied torque T (N m) in `state` (realized to Velocity).

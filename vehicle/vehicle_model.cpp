@@ -58,8 +58,8 @@ MobilizedBody::Pin addSuspension(BuildContext& ctx, MobilizedBody& rearFrame, co
 }
 
 // What addRearAssembly and addFrontAssembly built: the mobilizers, the swingarm model, and the
-// named one-DOF mobilizers (swingarm compliance, rider_lean, fork_bending, fork_torsion).
-using NamedMobilizers = std::vector<std::pair<std::string, MobilizedBody>>;
+// named one-DOF mobilizers with their roles (swingarm compliance, rider_lean, fork_bending, fork_torsion).
+using NamedMobilizers = std::vector<NamedMobilizer>;
 struct RearAssembly {
   MobilizedBody rearFrame, rearWheel, suspension;
   std::unique_ptr<SwingarmModel> swingarm;
@@ -71,7 +71,7 @@ struct FrontAssembly {
 };
 struct CoordinateNames {
   CoordinateIndices idx;
-  std::vector<std::string> q, u;
+  std::vector<StateInfo> q, u;
 };
 
 // Rear frame on a Bushing whose frames are permuted (F.x = G.z, F.y = G.x, F.z = G.y) so that its
@@ -85,7 +85,7 @@ RearAssembly addRearAssembly(const Scenario& s, PluginRegistry& registry, BuildC
   const BodySpec rearBody = s.hasRiderLean ? calcBodyRemainder(s.rearFrame, s.riderLean.body) : s.rearFrame;
   out.rearFrame = MobilizedBody::Bushing(ctx.matter.Ground(), Transform(R_perm, Vec3(0)), makeBody(rearBody, pRearHub_D),
                                          Transform(R_perm, Vec3(0)));
-  if (s.hasRiderLean) out.extension.push_back({"rider_lean", addRiderLean(ctx, out.rearFrame, pRearHub_D, s.riderLean)});
+  if (s.hasRiderLean) out.extension.push_back(addRiderLean(ctx, out.rearFrame, pRearHub_D, s.riderLean));
   if (!s.hasSwingarm) {
     out.rearWheel = addPinAtDesignPose(out.rearFrame, Transform(), makeWheel(s.rearWheel), Vec3(0), Vec3(0, 1, 0));
     return out;
@@ -129,11 +129,11 @@ FrontAssembly addFrontAssembly(const Scenario& s, BuildContext& ctx, MobilizedBo
   return out;
 }
 
-// Indices and names of the coordinates (q) and speeds (u) of a realized-to-Model state.
+// Indices, names and roles of the coordinates (q) and speeds (u) of a realized-to-Model state.
 CoordinateNames nameCoordinates(const SimTK::State& state, const RearAssembly& rear, const FrontAssembly& front) {
   CoordinateNames out;
   CoordinateIndices& idx = out.idx;
-  std::vector<std::string>& names = out.q;
+  std::vector<StateInfo>& names = out.q;
   const int qR = rear.rearFrame.getFirstQIndex(state);
   idx.yaw = qR;
   idx.roll = qR + 1;
@@ -144,30 +144,37 @@ CoordinateNames nameCoordinates(const SimTK::State& state, const RearAssembly& r
   idx.steer = front.frontFrame.getFirstQIndex(state);
   idx.rearSpin = rear.rearWheel.getFirstQIndex(state);
   idx.frontSpin = front.frontWheel.getFirstQIndex(state);
-  names.assign(state.getNQ(), "");
-  const std::pair<int, const char*> fixed[] = {{idx.yaw, "yaw"}, {idx.roll, "roll"}, {idx.pitch, "pitch"},
-                                               {idx.height, "height"}, {idx.x, "x"}, {idx.y, "y"},
-                                               {idx.steer, "steer"}, {idx.rearSpin, "rear_wheel_angle"},
-                                               {idx.frontSpin, "front_wheel_angle"}};
-  for (const auto& [q, name] : fixed) names[q] = name;
+  names.assign(state.getNQ(), StateInfo{});
+  const std::pair<int, StateInfo> fixed[] = {
+      {idx.yaw, {"yaw", StateRole::Yaw}},         {idx.roll, {"roll", StateRole::Roll}},
+      {idx.pitch, {"pitch", StateRole::Pitch}},   {idx.height, {"height", StateRole::Height}},
+      {idx.x, {"x", StateRole::Forward}},         {idx.y, {"y", StateRole::Lateral}},
+      {idx.steer, {"steer", StateRole::Steer}},
+      {idx.rearSpin, {"rear_wheel_angle", StateRole::WheelSpin, StateKind::Coordinate, WheelSide::Rear}},
+      {idx.frontSpin, {"front_wheel_angle", StateRole::WheelSpin, StateKind::Coordinate, WheelSide::Front}}};
+  for (const auto& [q, info] : fixed) names[q] = info;
   if (!rear.suspension.isEmptyHandle()) {
     idx.suspension = rear.suspension.getFirstQIndex(state);
-    names[idx.suspension] = "suspension_pitch";
+    names[idx.suspension] = {"suspension_pitch", StateRole::Suspension};
   }
   auto addNames = [&](const NamedMobilizers& list, std::vector<int>& indices) {
-    for (const auto& [n, mobod] : list) {
-      const int q = mobod.getFirstQIndex(state);
-      names[q] = n;
+    for (const NamedMobilizer& m : list) {
+      const int q = m.mobilizer.getFirstQIndex(state);
+      names[q] = {m.name, m.role};
       indices.push_back(q);
     }
   };
   addNames(rear.compliance, idx.compliance);
   addNames(rear.extension, idx.extension);
   addNames(front.extension, idx.extension);
-  for (const auto& n : names) out.u.push_back(n + "_rate");
-  out.u[idx.x] = "vx";
-  out.u[idx.y] = "vy";
-  out.u[idx.height] = "vz";
+  for (StateInfo n : names) {
+    n.name += "_rate";
+    n.kind = StateKind::Rate;
+    out.u.push_back(n);
+  }
+  out.u[idx.x].name = "vx";
+  out.u[idx.y].name = "vy";
+  out.u[idx.height].name = "vz";
   return out;
 }
 
@@ -217,12 +224,16 @@ void VehicleModel::build(PluginRegistry& registry, const std::vector<ModelExtens
   SimTK::Force::Gravity(forces_, matter_, -SimTK::ZAxis, s.gravity);
   inputs_ = SimTK::Force::DiscreteForces(forces_, matter_);
   const auto loads = calcStaticWheelLoads(s);
-  const WheelSite rearSite{"rear_wheel", rearWheel_, s.rearWheel.radius, s.rearWheel.crownRadius, loads[0]};
-  const WheelSite frontSite{"front_wheel", frontWheel_, s.frontWheel.radius, s.frontWheel.crownRadius, loads[1]};
+  const WheelSite rearSite{"rear_wheel", WheelSide::Rear, rearWheel_, s.rearWheel.radius, s.rearWheel.crownRadius, loads[0]};
+  const WheelSite frontSite{"front_wheel", WheelSide::Front, frontWheel_, s.frontWheel.radius, s.frontWheel.crownRadius,
+                            loads[1]};
   wheelSites_ = {rearSite, frontSite};
+  auto addZ = [&](const std::vector<AuxiliaryState>& states) {
+    for (const AuxiliaryState& z : states) zStates_.push_back({z.name, z.role, StateKind::Auxiliary, z.wheel});
+  };
   for (const WheelSite* site : {&rearSite, &frontSite}) {
     contact->addWheel(ctx, *site);
-    for (const auto& n : contact->getStateNames(*site)) zNames_.push_back(n);
+    addZ(contact->getStates(*site));
   }
   contacts_.push_back(std::move(contact));
   const Vec3 pRearHub_D(0, 0, s.rearWheel.radius);
@@ -230,10 +241,10 @@ void VehicleModel::build(PluginRegistry& registry, const std::vector<ModelExtens
   if (s.hasSteerDamper) addSteerDamper(ctx, frontFrame_, s.steerDamper);
   if (s.hasSteerController) {
     steerController_ = addSteerController(ctx, rearFrame_, frontFrame_, s.steerController);
-    for (const auto& n : steerController_->getStateNames()) zNames_.push_back(n);
+    addZ(steerController_->getStates());
   }
-  for (const auto& extend : extensions)
-    for (const auto& n : extend(ctx, *this)) zNames_.push_back(n);
+  for (const auto& extend : extensions) addZ(extend(ctx, *this));
+  for (const StateInfo& z : zStates_) zNames_.push_back(z.name);
 
   defaultState_ = system_.realizeTopology();
   system_.realizeModel(defaultState_);
@@ -243,8 +254,10 @@ void VehicleModel::build(PluginRegistry& registry, const std::vector<ModelExtens
     throw std::logic_error("vehicle model: contact plugins allocated z states they did not name");
   CoordinateNames names = nameCoordinates(defaultState_, rear, front);
   idx_ = names.idx;
-  qNames_ = std::move(names.q);
-  uNames_ = std::move(names.u);
+  qStates_ = std::move(names.q);
+  uStates_ = std::move(names.u);
+  for (const StateInfo& q : qStates_) qNames_.push_back(q.name);
+  for (const StateInfo& u : uStates_) uNames_.push_back(u.name);
   defaultState_.updQ()[idx_.height] = s.rearWheel.radius;
   system_.realize(defaultState_, SimTK::Stage::Instance);
 }
@@ -253,9 +266,9 @@ double VehicleModel::calcSteerControllerTorque(const SimTK::State& state) const 
   return steerController_ ? steerController_->calcTorque(state) : 0.0;
 }
 
-bool VehicleModel::applyLateralRoadStep(SimTK::State& state, const std::string& wheel, double offset) const {
+bool VehicleModel::applyLateralRoadStep(SimTK::State& state, WheelSide wheel, double offset) const {
   for (const WheelSite& site : wheelSites_)
-    if (site.name == wheel) return contacts_.front()->applyLateralRoadStep(state, site, offset);
+    if (site.side == wheel) return contacts_.front()->applyLateralRoadStep(state, site, offset);
   return false;
 }
 

@@ -10,6 +10,8 @@
 //       a steer controller (vehicle/steer_controller.h) adds the z state `steer_controller_delay`
 //       when it has a delay.
 //       Every u is the corresponding qdot.
+// Every state has a role (plugins/state_role.h: roll, steer, tyre lag, swingarm twist, ...), reported
+// by the element that adds it; the analysis reads roles, names are for files and people.
 // Signs: roll > 0 leans right, yaw > 0 turns left, steer > 0 steers left, pitch > 0 nose down.
 #include <functional>
 #include <memory>
@@ -21,6 +23,22 @@
 #include "scenario/scenario.h"
 
 namespace motostab::vehicle {
+
+using plugins::AuxiliaryState;
+using plugins::NamedMobilizer;
+using plugins::StateKind;
+using plugins::StateRole;
+using plugins::WheelSide;
+using plugins::isComplianceRole;
+using plugins::kNumStateRoles;
+
+/// One state of the model (a q, u or z): its name, role, kind and wheel.
+struct StateInfo {
+  std::string name;
+  StateRole role = StateRole::Other;
+  StateKind kind = StateKind::Coordinate;
+  WheelSide wheel = WheelSide::None;
+};
 
 /// Generalized coordinates with a role in trim and linearisation (indices into q; u alike).
 struct CoordinateIndices {
@@ -39,9 +57,9 @@ class VehicleModel;
 class SteerController;
 
 /// Adds elements (perturbation forces, controllers) to a model while it is assembled, after the
-/// bodies and contacts and before Simbody's topology is realized. Returns the names of any z
-/// states it allocates, in allocation order.
-using ModelExtension = std::function<std::vector<std::string>(plugins::BuildContext& context, const VehicleModel& model)>;
+/// bodies and contacts and before Simbody's topology is realized. Returns any z states it
+/// allocates (name and role), in allocation order.
+using ModelExtension = std::function<std::vector<AuxiliaryState>(plugins::BuildContext& context, const VehicleModel& model)>;
 
 class VehicleModel {
  public:
@@ -68,6 +86,10 @@ class VehicleModel {
   const std::vector<std::string>& getQNames() const { return qNames_; }
   const std::vector<std::string>& getUNames() const { return uNames_; }
   const std::vector<std::string>& getZNames() const { return zNames_; }
+  /// Every q, u and z with its role (kind Coordinate, Rate, Auxiliary), in state order.
+  const std::vector<StateInfo>& getQStates() const { return qStates_; }
+  const std::vector<StateInfo>& getUStates() const { return uStates_; }
+  const std::vector<StateInfo>& getZStates() const { return zStates_; }
   const CoordinateIndices& getIndices() const { return idx_; }
   /// Coordinates that never enter the equations of straight running: x, y, wheel spin angles.
   std::vector<int> getCyclicQ() const { return {idx_.x, idx_.y, idx_.rearSpin, idx_.frontSpin}; }
@@ -78,9 +100,9 @@ class VehicleModel {
   void setInput(SimTK::State& state, Input which, double value) const;
   double getInput(const SimTK::State& state, Input which) const;
 
-  /// Steps the road's lateral position under "rear_wheel" or "front_wheel" by `offset` (m) in the
-  /// state; false when the contact model has no road input (e.g. a rolling constraint).
-  bool applyLateralRoadStep(SimTK::State& state, const std::string& wheel, double offset) const;
+  /// Steps the road's lateral position under a wheel by `offset` (m) in the state; false when the
+  /// contact model has no road input (e.g. a rolling constraint).
+  bool applyLateralRoadStep(SimTK::State& state, WheelSide wheel, double offset) const;
 
   /// Named contact outputs of both wheels (tyre forces, slips; none for rolling constraints).
   std::vector<std::string> getContactOutputNames() const;
@@ -119,6 +141,7 @@ class VehicleModel {
   int nq_ = 0;
   CoordinateIndices idx_;
   std::vector<std::string> qNames_, uNames_, zNames_;
+  std::vector<StateInfo> qStates_, uStates_, zStates_;
 };
 
 }  // namespace motostab::vehicle

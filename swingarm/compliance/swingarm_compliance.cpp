@@ -103,6 +103,14 @@ class RigidSwingarm : public SwingarmModel {
   }
 };
 
+// The role of a compliance axis by its key: bending, torsion or twist.
+plugins::StateRole getRole(const std::string& key) {
+  if (key == "bending") return plugins::StateRole::SwingarmBending;
+  if (key == "torsion") return plugins::StateRole::SwingarmTorsion;
+  if (key == "twist") return plugins::StateRole::SwingarmTwist;
+  return plugins::StateRole::Compliance;
+}
+
 // One or two compliance DOFs in series, from the rear frame to the hub.
 class CompliantSwingarm : public SwingarmModel {
  public:
@@ -115,7 +123,7 @@ class CompliantSwingarm : public SwingarmModel {
       // The first joint carries the swingarm's mass; later ones a massless hub carrier.
       const SimTK::Body body = i == 0 ? SimTK::Body(site.body) : SimTK::Body(SimTK::Body::Massless());
       MobilizedBody::Pin pin = addComplianceJoint(ctx, parent, X_PS, body, axes_[i].second.toAxis(site.p_SH));
-      out.coordinates.push_back({"swingarm_" + axes_[i].first, pin});
+      out.coordinates.push_back({"swingarm_" + axes_[i].first, getRole(axes_[i].first), pin});
       parent = pin;
       X_PS = Transform();
     }

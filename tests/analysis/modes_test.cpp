@@ -78,7 +78,7 @@ TEST(Modes, PrecomputedCostsGiveTheSameBranches) {
   const SweepResult r = sweepEnduro();
   std::vector<Eigen::MatrixXd> costs(r.models.size());
   for (size_t s = 1; s < r.models.size(); s += 2) costs[s] = calcMatchCosts(r.models[s - 1], r.models[s]);
-  const auto a = trackModes(r.models, 1.4, 1), b = trackModes(r.models, 1.4, 2, costs);
+  const auto a = trackModes(r.models, 1), b = trackModes(r.models, 2, costs);
   ASSERT_EQ(a.size(), b.size());
   for (size_t i = 0; i < a.size(); ++i) {
     EXPECT_EQ(a[i].label, b[i].label);
@@ -91,7 +91,7 @@ TEST(Modes, NonFiniteEigenvalueIsNamed) {
   SweepResult r = sweepEnduro();
   r.models[3].eigenvalues[2] = std::complex<double>(std::nan(""), 0);
   try {
-    trackModes(r.models, 1.4, 1);
+    trackModes(r.models, 1);
     FAIL() << "NaN must not be tracked";
   } catch (const std::runtime_error& e) {
     EXPECT_NE(std::string(e.what()).find("speed index 3"), std::string::npos) << e.what();

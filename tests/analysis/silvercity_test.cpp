@@ -23,7 +23,7 @@ namespace {
 const std::string kScenarios = std::string(MOTOSTAB_SOURCE_DIR) + "/scenarios/";
 const std::string kBicycles = std::string(MOTOSTAB_TEST_DATA_DIR) + "/measured-data/BicycleParameters/data/bicycles/";
 
-double criticalSpeed(const SweepResult& s, const std::string& mode) {
+double criticalSpeed(const SweepResult& s, ModeLabel mode) {
   for (const auto& c : s.criticalSpeeds)
     if (c.mode == mode) return c.speed;
   return NAN;
@@ -34,8 +34,8 @@ TEST(Silvercity, WeaveAndCapsizeSpeeds) {
   SweepOptions opt;
   opt.start = 2, opt.stop = 10, opt.step = 0.5;
   const SweepResult s = runSweep(model, opt);
-  EXPECT_NEAR(criticalSpeed(s, "weave"), 3.99, 0.01);
-  EXPECT_NEAR(criticalSpeed(s, "capsize"), 7.90, 0.01);
+  EXPECT_NEAR(criticalSpeed(s, ModeLabel::Weave), 3.99, 0.01);
+  EXPECT_NEAR(criticalSpeed(s, ModeLabel::Capsize), 7.90, 0.01);
 }
 
 // The imported parameter files give the same eigenvalues as the hand-written scenarios.

@@ -179,7 +179,7 @@ TEST(MirrorSymmetry, SecondOrderAsymmetryFailsTheCheck) {
   PluginRegistry registry = makeBuiltinRegistry();
   ModelExtension even = [c, x](BuildContext& ctx, const VehicleModel& m) {
     SimTK::Force::Custom(ctx.forces, new EvenSteerTorque(m.getFrontFrame(), x.entry, c));
-    return std::vector<std::string>{};
+    return std::vector<vehicle::AuxiliaryState>{};
   };
   const VehicleModel asymmetric(scenario, registry, {even});
   const SweepResult central = sweep(asymmetric, false);

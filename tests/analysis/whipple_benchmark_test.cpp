@@ -60,9 +60,9 @@ class WhippleBenchmark : public ::testing::Test {
     delete model_;
   }
   // One-to-one assignment at speed index k: the expected (label, eigenvalue) pairs are matched to
-  // branches of the same label greedily by distance, each branch used once (greedy with removal).
-  // Returns the branch of each expected entry (nullptr when none is left).
-  static std::vector<const ModeBranch*> assignOneToOne(const std::vector<std::pair<std::string, cd>>& expected, size_t k) {
+  // branches with the same label at that speed greedily by distance, each branch used once (greedy
+  // with removal). Returns the branch of each expected entry (nullptr when none is left).
+  static std::vector<const ModeBranch*> assignOneToOne(const std::vector<std::pair<ModeLabel, cd>>& expected, size_t k) {
     struct Pair {
       double distance;
       size_t e, b;
@@ -70,7 +70,7 @@ class WhippleBenchmark : public ::testing::Test {
     std::vector<Pair> pairs;
     for (size_t e = 0; e < expected.size(); ++e)
       for (size_t b = 0; b < sweep_->branches.size(); ++b)
-        if (sweep_->branches[b].label == expected[e].first)
+        if (sweep_->branches[b].labels[k] == expected[e].first)
           pairs.push_back({std::abs(sweep_->branches[b].eigenvalue[k] - expected[e].second), e, b});
     std::sort(pairs.begin(), pairs.end(), [](const Pair& x, const Pair& y) { return x.distance < y.distance; });
     std::vector<const ModeBranch*> out(expected.size(), nullptr);
@@ -90,20 +90,20 @@ TEST_F(WhippleBenchmark, EigenvaluesMatchTable2WithLabels) {
   for (const Row& r : kTable2) {
     const size_t k = static_cast<size_t>(std::lround(r.v / 0.5));
     ASSERT_NEAR(sweep_->speeds[k], r.v, 1e-12);
-    const std::vector<std::pair<std::string, cd>> expected = {
-        {"weave", r.weave}, {"weave", r.weave2}, {"capsize", r.capsize}, {"castor", r.castor}};
+    const std::vector<std::pair<ModeLabel, cd>> expected = {
+        {ModeLabel::Weave, r.weave}, {ModeLabel::Weave, r.weave2}, {ModeLabel::Capsize, r.capsize}, {ModeLabel::Castor, r.castor}};
     const auto assigned = assignOneToOne(expected, k);
     for (size_t e = 0; e < expected.size(); ++e) {
       const ModeBranch* b = assigned[e];
-      ASSERT_NE(b, nullptr) << expected[e].first << " at v=" << r.v << ": no branch of that label left";
+      ASSERT_NE(b, nullptr) << toString(expected[e].first) << " at v=" << r.v << ": no branch of that label left";
       EXPECT_LE(std::abs(b->eigenvalue[k] - expected[e].second), 1e-8)
-          << expected[e].first << " at v=" << r.v << ": " << b->eigenvalue[k];
+          << toString(expected[e].first) << " at v=" << r.v << ": " << b->eigenvalue[k];
       worst = std::max(worst, std::abs(b->eigenvalue[k] - expected[e].second));
     }
     // The fifth eigenvalue is the neutral forward-speed mode.
     int neutral = 0;
     for (const auto& b : sweep_->branches)
-      if (b.label == "neutral") {
+      if (b.labels[k] == ModeLabel::Neutral) {
         ++neutral;
         EXPECT_LT(std::abs(b.eigenvalue[k]), 1e-9);
       }
@@ -115,11 +115,11 @@ TEST_F(WhippleBenchmark, EigenvaluesMatchTable2WithLabels) {
 TEST_F(WhippleBenchmark, CriticalSpeedsMatchTable2) {
   double weave = NAN, capsize = NAN;
   for (const auto& c : sweep_->criticalSpeeds) {
-    if (c.mode == "weave") {
+    if (c.mode == analysis::ModeLabel::Weave) {
       weave = c.speed;
       EXPECT_TRUE(c.stabilising);
     }
-    if (c.mode == "capsize") {
+    if (c.mode == analysis::ModeLabel::Capsize) {
       capsize = c.speed;
       EXPECT_FALSE(c.stabilising);
     }

@@ -127,7 +127,7 @@ TEST(ControllerGroups, EachRowIsPredictedWithItsOwnSetting) {
   for (int i = 0; i < 9; ++i) {
     MeasuredEigenvalue e;
     e.speed = e.speedMin = e.speedMax = rng.drawUniform(2, 6);
-    e.mode = "weave";
+    e.mode = analysis::ModeLabel::Weave;
     e.controller = {formatOverride("steer_controller.roll_rate_Nms_per_rad", gains[i % 3])};
     data.eigenvalues.push_back(e);
   }

@@ -19,7 +19,7 @@ const std::string kBenchmark = std::string(MOTOSTAB_SOURCE_DIR) + "/scenarios/wh
 MeasuredEigenvalue makeRow(double v, const std::string& mode, double re, double im, double stderr_ = 0) {
   MeasuredEigenvalue e;
   e.speed = e.speedMin = e.speedMax = v;
-  e.mode = mode, e.real = re, e.imag = im, e.realStderr = e.imagStderr = stderr_;
+  e.mode = analysis::parseModeLabel(mode), e.real = re, e.imag = im, e.realStderr = e.imagStderr = stderr_;
   return e;
 }
 
@@ -52,7 +52,7 @@ TEST(FitProblem, PartsWithFewRowsShareTheirModesNoise) {
     ASSERT_GE(o.component, 0);
     ASSERT_LT(o.component, static_cast<int>(p.components.size()));
     const std::string& name = p.components[o.component];
-    const std::string& mode = data.eigenvalues[o.row].mode;
+    const std::string mode = analysis::toString(*data.eigenvalues[o.row].mode);
     EXPECT_EQ(name.substr(0, name.find('.')), mode);
     castor += name == "castor.real+imag";
   }
@@ -61,7 +61,7 @@ TEST(FitProblem, PartsWithFewRowsShareTheirModesNoise) {
   // near the real parts' level (the imaginary rows alone would give about 1e-9).
   Eigen::VectorXd r = Eigen::VectorXd::Ones(static_cast<Eigen::Index>(p.observations.size()));
   for (size_t i = 0; i < p.observations.size(); ++i)
-    if (p.observations[i].part == 1 && data.eigenvalues[p.observations[i].row].mode == "castor") r(i) = 1e-9;
+    if (p.observations[i].part == 1 && data.eigenvalues[p.observations[i].row].mode == analysis::ModeLabel::Castor) r(i) = 1e-9;
   p.updateSigma(r, 0);
   const auto c = std::find(p.components.begin(), p.components.end(), "castor.real+imag") - p.components.begin();
   EXPECT_GT(p.componentSigma[c], 0.5);

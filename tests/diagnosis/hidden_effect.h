@@ -59,7 +59,7 @@ inline std::string writeEigenvalueData(const HiddenEffect& h, const std::filesys
   std::string csv = h.withStderr ? "speed_mps,mode,real,imag,real_stderr,imag_stderr\n" : "speed_mps,mode,real,imag\n";
   for (const auto& mode : h.modes)
     for (const auto& b : sweep.branches) {
-      if (b.label != mode) continue;
+      if (analysis::toString(b.label) != mode) continue;
       double scaleRe = 0, scaleIm = 0;
       for (const auto& l : b.eigenvalue) scaleRe += l.real() * l.real() / b.eigenvalue.size(), scaleIm += l.imag() * l.imag() / b.eigenvalue.size();
       const double sr = h.relativeNoise * std::sqrt(scaleRe) + h.absoluteNoise, si = h.relativeNoise * std::sqrt(scaleIm) + h.absoluteNoise;

@@ -49,10 +49,10 @@ class MeasuredDataTest : public ::testing::Test {
 TEST_F(MeasuredDataTest, ReadsEigenvaluesAndRuns) {
   const MeasuredData d = loadMeasuredData(yaml("name: x\neigenvalues:\n  - file: weave.csv\n" + run_));
   ASSERT_EQ(d.eigenvalues.size(), 2u);
-  EXPECT_EQ(d.eigenvalues[0].mode, "weave");
+  EXPECT_EQ(d.eigenvalues[0].mode, analysis::ModeLabel::Weave);
   EXPECT_TRUE(d.eigenvalues[0].hasRange);
   EXPECT_DOUBLE_EQ(d.eigenvalues[0].speedMin, 3.8);
-  EXPECT_EQ(d.eigenvalues[1].mode, "");
+  EXPECT_FALSE(d.eigenvalues[1].mode.has_value());
   EXPECT_EQ(d.eigenvalues[1].where.line, 4);
   ASSERT_EQ(d.responses.size(), 1u);
   EXPECT_EQ(d.responses[0].time.size(), 31u);  // 0.05 ... 0.35 s at 0.01 s

@@ -124,7 +124,7 @@ TEST(PredictionSource, AWeaveSplitIntoTwoRealRootsIsPredictedByTheirMean) {
   for (double v : speeds) {
     MeasuredEigenvalue e;
     e.speed = e.speedMin = e.speedMax = v;
-    e.mode = "weave";
+    e.mode = analysis::ModeLabel::Weave;
     data.eigenvalues.push_back(e);
   }
   const Prediction p = Predictor(kBenchmark, {}, data).predict({}, {});

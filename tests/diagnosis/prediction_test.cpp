@@ -29,7 +29,7 @@ const std::string kBenchmark = std::string(MOTOSTAB_SOURCE_DIR) + "/scenarios/wh
 MeasuredEigenvalue makeRow(double v, const std::string& mode, double re, double im) {
   MeasuredEigenvalue e;
   e.speed = e.speedMin = e.speedMax = v;
-  e.mode = mode;
+  e.mode = analysis::parseModeLabel(mode);  // "" (none): the nearest eigenvalue
   e.real = re;
   e.imag = im;
   return e;
@@ -82,9 +82,9 @@ TEST(Prediction, FastPredictionsAgreeWithExactOnesAcrossABranchPoint) {
   const Predictor p(file, {}, data);
   const Prediction exact = p.predict({}, {}, true), fast = p.predict({}, {}, false);
   for (size_t i = 0; i < data.eigenvalues.size(); ++i) {
-    if (data.eigenvalues[i].mode == "weave") continue;
+    if (data.eigenvalues[i].mode == analysis::ModeLabel::Weave) continue;
     EXPECT_LT(std::abs(fast.eigenvalues[i] - exact.eigenvalues[i]), 1e-6 * (1 + std::abs(exact.eigenvalues[i])))
-        << data.eigenvalues[i].mode << " at " << data.eigenvalues[i].speed << " m/s";
+        << toString(*data.eigenvalues[i].mode) << " at " << data.eigenvalues[i].speed << " m/s";
   }
   EXPECT_FALSE(p.getNodes().empty()) << "the weave is interpolated";
   fs::remove(file);
@@ -129,7 +129,7 @@ TEST(Prediction, SpeedRangeIsTheMeanOverTheRange) {
   opt.start = a, opt.stop = b, opt.step = (b - a) / 40;
   const SweepResult s = runSweep(VehicleModel(loadScenario(kBenchmark)), opt);
   for (const auto& br : s.branches) {
-    if (br.label != "weave") continue;
+    if (br.label != analysis::ModeLabel::Weave) continue;
     std::complex<double> mean = 0;
     for (size_t k = 0; k < s.speeds.size(); ++k)
       mean += (k == 0 || k + 1 == s.speeds.size() ? 0.5 : 1.0) * std::complex<double>(br.eigenvalue[k].real(), std::abs(br.eigenvalue[k].imag())) / 40.0;
@@ -215,7 +215,7 @@ TEST(Prediction, SweepOfTheExtendedTreeReproducesPredictions) {
   fs::remove(file);
   bool found = false;
   for (const auto& b : s.branches)
-    if (b.label == "weave") {
+    if (b.label == analysis::ModeLabel::Weave) {
       found = true;
       EXPECT_NEAR(b.eigenvalue[0].real(), r.eigenvalues[0].real(), 1e-9);
       EXPECT_NEAR(std::abs(b.eigenvalue[0].imag()), r.eigenvalues[0].imag(), 1e-9);

@@ -15,7 +15,7 @@ MeasuredEigenvalue makeRow(const std::string& file, double lo, double hi) {
   MeasuredEigenvalue e;
   e.where.file = file;
   e.speedMin = lo, e.speedMax = hi, e.speed = 0.5 * (lo + hi), e.hasRange = hi > lo;
-  e.mode = "weave";
+  e.mode = analysis::ModeLabel::Weave;
   return e;
 }
 

@@ -54,7 +54,7 @@ Made makeResult(PortableRandom& rng, bool withRobustness) {
   for (double v : {4.0, 5.0}) {
     MeasuredEigenvalue e;
     e.speed = e.speedMin = e.speedMax = v;
-    e.mode = "weave";
+    e.mode = analysis::ModeLabel::Weave;
     e.real = rng.drawUniform(-2, 0), e.imag = rng.drawUniform(3, 6);
     m.data.eigenvalues.push_back(e);
   }

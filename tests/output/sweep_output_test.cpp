@@ -25,7 +25,7 @@ using analysis::SweepResult;
 using analysis::TrimOptions;
 using analysis::calcTrim;
 using analysis::linearize;
-using analysis::trackModes;
+using analysis::ModeLabel;
 using core::PortableRandom;
 using scenario::Scenario;
 using scenario::loadScenario;
@@ -42,22 +42,32 @@ SweepResult makeRandomSweep(PortableRandom& rng) {
   const int n = 5 + static_cast<int>(rng.drawUniform() * 8);
   const double start = rng.drawUniform(0, 3), step = rng.drawUniform(0.1, 1.5);
   for (int k = 0; k < n; ++k) s.speeds.push_back(start + k * step);
-  auto addPair = [&](const std::string& label) {
-    ModeBranch a{label, {}, {}}, b{label, {}, {}};
+  // Each speed's label at random among the branch's own and `other` (labels are per speed).
+  auto drawLabels = [&](ModeLabel label) {
+    std::vector<ModeLabel> l;
+    for (int k = 0; k < n; ++k) l.push_back(rng.drawUniform() < 0.8 ? label : ModeLabel::Other);
+    return l;
+  };
+  auto addPair = [&](ModeLabel label) {
+    ModeBranch a{label, drawLabels(label), {}, {}}, b = a;
     for (int k = 0; k < n; ++k) {
       const cd l(rng.drawNormal(-1.2, 1), std::abs(rng.drawNormal(0, 5)) + 0.1);
       a.eigenvalue.push_back(l), b.eigenvalue.push_back(std::conj(l));
     }
     s.branches.push_back(a), s.branches.push_back(b);
   };
-  auto addReal = [&](const std::string& label, double scale) {
-    ModeBranch b{label, {}, {}};
+  auto addReal = [&](ModeLabel label, double scale) {
+    ModeBranch b{label, drawLabels(label), {}, {}};
+    if (label == ModeLabel::Neutral) b.labels.assign(n, label);
     for (int k = 0; k < n; ++k) b.eigenvalue.push_back(cd(scale * rng.drawNormal(-1.2, 1), 0));
     s.branches.push_back(b);
   };
-  addPair("weave"), addReal("capsize", 1), addReal("castor", 10), addPair("wobble"), addReal("neutral", 0);
-  s.criticalSpeeds = {{"weave", rng.drawUniform(0, 10), true}, {"capsize", rng.drawUniform(0, 10), false},
-                      {"weave", rng.drawUniform(10, 20), false}};
+  addPair(ModeLabel::Weave), addReal(ModeLabel::Capsize, 1), addReal(ModeLabel::Castor, 10), addPair(ModeLabel::Wobble),
+      addReal(ModeLabel::Neutral, 0);
+  s.criticalSpeeds = {{ModeLabel::Weave, rng.drawUniform(0, 10), true, 1.5},
+                      {ModeLabel::Capsize, rng.drawUniform(0, 10), false, 0.0},
+                      {ModeLabel::Weave, rng.drawUniform(10, 20), false, 2.5}};
+  s.failures = {{rng.drawUniform(0, 20), rng.drawUniform(0, 1), "trim failed"}};
   return s;
 }
 
@@ -68,7 +78,7 @@ std::vector<std::pair<double, double>> calcStableRanges(const SweepResult& s) {
   bool open = false;
   for (size_t k = 0; k < s.speeds.size(); ++k) {
     bool stable = true;
-    for (const auto& b : s.branches) stable = stable && (b.label == "neutral" || b.eigenvalue[k].real() < 0);
+    for (const auto& b : s.branches) stable = stable && (b.labels[k] == ModeLabel::Neutral || b.eigenvalue[k].real() < 0);
     if (stable && open) out.back().second = s.speeds[k];
     if (stable && !open) out.push_back({s.speeds[k], s.speeds[k]});
     open = stable;
@@ -99,7 +109,7 @@ TEST(SweepOutput, EigenvaluesCsvAndSummaryJsonFollowTheReadme) {
       for (const auto& b : s.branches) {
         const auto& r = csv.rows[row++];
         EXPECT_EQ(parseCell(r[0]), s.speeds[k]);  // 17 digits: exact
-        EXPECT_EQ(r[1], b.label);
+        EXPECT_EQ(r[1], toString(b.labels[k]));  // each speed's own label
         EXPECT_EQ(parseCell(r[2]), b.eigenvalue[k].real());
         EXPECT_EQ(parseCell(r[3]), b.eigenvalue[k].imag());
         expectFrequencyAndDamping(b.eigenvalue[k], r[4], r[5]);
@@ -114,10 +124,15 @@ TEST(SweepOutput, EigenvaluesCsvAndSummaryJsonFollowTheReadme) {
     ASSERT_EQ(j.at("critical_speeds").size(), s.criticalSpeeds.size());
     for (size_t i = 0; i < s.criticalSpeeds.size(); ++i) {
       const auto& c = j["critical_speeds"][i];
-      EXPECT_EQ(c.at("mode"), s.criticalSpeeds[i].mode);
+      EXPECT_EQ(c.at("mode"), toString(s.criticalSpeeds[i].mode));
       EXPECT_EQ(c.at("speed_mps").get<double>(), s.criticalSpeeds[i].speed);
       EXPECT_EQ(c.at("direction"), s.criticalSpeeds[i].stabilising ? "stabilising" : "destabilising");
+      EXPECT_EQ(c.at("frequency_hz").get<double>(), s.criticalSpeeds[i].frequency);
+      EXPECT_TRUE(c.at("refined").get<bool>());
     }
+    ASSERT_EQ(j.at("failed_speeds").size(), 1u);
+    EXPECT_EQ(j["failed_speeds"][0].at("speed_mps").get<double>(), s.failures[0].speed);
+    EXPECT_EQ(j["failed_speeds"][0].at("residual").get<double>(), s.failures[0].residual);
     // First critical speed of each mode, null when it has none.
     EXPECT_EQ(j.at("weave_speed_mps").get<double>(), s.criticalSpeeds[0].speed);
     EXPECT_EQ(j.at("capsize_speed_mps").get<double>(), s.criticalSpeeds[1].speed);
@@ -131,17 +146,15 @@ TEST(SweepOutput, EigenvaluesCsvAndSummaryJsonFollowTheReadme) {
   }
 }
 
-// `motostab linearize` labels each eigenvalue from its content at the one speed (trackModes of one
-// model): the Whipple bicycle at 5 m/s has Meijaard et al. (2007) Table 2's weave pair
+// `motostab linearize` labels each eigenvalue from its content at the one speed (labelModes): the
+// Whipple bicycle at 5 m/s has Meijaard et al. (2007) Table 2's weave pair
 // -0.77534188219585 +/- 4.46486771378823i, capsize -0.32286642900409 and castor -14.07838969279820.
 TEST(SweepOutput, LinearModelEigenvaluesNameTheirModes) {
   const Scenario scenario = loadScenario(std::string(MOTOSTAB_SOURCE_DIR) + "/scenarios/whipple-benchmark.yaml");
   const VehicleModel model(scenario);
   const LinearModel lin = linearize(model, calcTrim(model, 5.0, TrimOptions()));
-  std::vector<std::string> modes;
-  for (const ModeBranch& b : trackModes({lin}, scenario.geometry.wheelbase)) modes.push_back(b.label);
   const auto dir = makeTempDir("linear_output_modes");
-  writeLinearModel(dir, lin, modes);
+  writeLinearModel(dir, lin);
   const TextCsv ev = readTextCsv(dir / "eigenvalues.csv");
   const std::vector<std::pair<std::string, cd>> table2{{"weave", {-0.77534188219585, 4.46486771378823}},
                                                        {"weave", {-0.77534188219585, -4.46486771378823}},
@@ -171,11 +184,13 @@ TEST(SweepOutput, LinearModelFilesFollowTheReadme) {
     for (int j = 0; j < m; ++j) lin.B(i, j) = rng.drawNormal();
     lin.eigenvalues[i] = i == 3 ? cd(0, 0) : cd(rng.drawNormal(), rng.drawNormal());
   }
-  std::vector<std::string> modes;
-  for (int k = 0; k < n; ++k) modes.push_back(std::vector<std::string>{"weave", "capsize", "castor", "other"}[rng.drawIndex(4)]);
   const auto dir = makeTempDir("linear_output");
-  EXPECT_THROW(writeLinearModel(dir, lin, std::vector<std::string>(n - 1, "weave")), std::invalid_argument);
-  writeLinearModel(dir, lin, modes);
+  lin.labels.assign(n - 1, ModeLabel::Weave);
+  EXPECT_THROW(writeLinearModel(dir, lin), std::invalid_argument);
+  lin.labels.clear();
+  for (int k = 0; k < n; ++k)
+    lin.labels.push_back(std::vector<ModeLabel>{ModeLabel::Weave, ModeLabel::Capsize, ModeLabel::Castor, ModeLabel::Other}[rng.drawIndex(4)]);
+  writeLinearModel(dir, lin);
 
   auto expectMatrix = [&](const std::string& file, const Eigen::MatrixXd& M, const std::vector<std::string>& cols) {
     const TextCsv t = readTextCsv(dir / file);
@@ -198,7 +213,7 @@ TEST(SweepOutput, LinearModelFilesFollowTheReadme) {
   ASSERT_EQ(ev.rows.size(), static_cast<size_t>(n));
   for (int k = 0; k < n; ++k) {
     EXPECT_EQ(ev.rows[k][0], std::to_string(k));
-    EXPECT_EQ(ev.rows[k][1], modes[k]);
+    EXPECT_EQ(ev.rows[k][1], toString(lin.labels[k]));
     EXPECT_EQ(parseCell(ev.rows[k][2]), lin.eigenvalues[k].real());
     EXPECT_EQ(parseCell(ev.rows[k][3]), lin.eigenvalues[k].imag());
     expectFrequencyAndDamping(lin.eigenvalues[k], ev.rows[k][4], ev.rows[k][5]);

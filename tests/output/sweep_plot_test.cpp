@@ -106,7 +106,7 @@ TEST(SweepPlot, WhippleBenchmarkMarksWeaveAndCapsizeAndShadesTheStableRange) {
   for (const auto& [text, v] : marks.lines) lineAt[text] = v;
   for (const auto& c : sweep.criticalSpeeds) {
     std::ostringstream text;
-    text << c.mode << " " << std::fixed << std::setprecision(3) << c.speed << " m/s";
+    text << toString(c.mode) << " " << std::fixed << std::setprecision(3) << c.speed << " m/s";
     ASSERT_TRUE(lineAt.count(text.str())) << text.str() << "\n" << script;
     EXPECT_EQ(lineAt[text.str()], c.speed);
   }

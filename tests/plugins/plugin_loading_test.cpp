@@ -142,7 +142,7 @@ TEST(Plugins, ModelExtensionsReachEverySweepWorker) {
   PluginRegistry registry = makeBuiltinRegistry();
   ModelExtension damper = [](BuildContext& ctx, const VehicleModel& m) {
     SimTK::Force::MobilityLinearDamper(ctx.forces, m.getFrontFrame(), SimTK::MobilizerUIndex(0), 0.5);
-    return std::vector<std::string>{};
+    return std::vector<vehicle::AuxiliaryState>{};
   };
   const VehicleModel damped(s, registry, {damper}), plain(s);
   const SweepResult serial = sweepWithThreads(damped, 1);
@@ -157,7 +157,7 @@ TEST(Plugins, ReplicaKeepsPluginsAndExtensions) {
   int calls = 0;
   ModelExtension extension = [&calls](BuildContext&, const VehicleModel&) {
     ++calls;
-    return std::vector<std::string>{};
+    return std::vector<vehicle::AuxiliaryState>{};
   };
   const VehicleModel model(s, registry, {extension});
   const auto replica = model.makeReplica();

@@ -60,7 +60,7 @@ TEST(BicycleTyres, PresetStiffnessesTimes1e4ReproduceTheWhippleBenchmark) {
 }
 
 // The first critical speed of `mode` in the given direction, NaN if none.
-double findCritical(const SweepResult& r, const std::string& mode, bool stabilising) {
+double findCritical(const SweepResult& r, analysis::ModeLabel mode, bool stabilising) {
   for (const auto& c : r.criticalSpeeds)
     if (c.mode == mode && c.stabilising == stabilising) return c.speed;
   return std::nan("");
@@ -80,9 +80,10 @@ TEST(BicycleTyres, PresetShiftsWeaveAndCapsizeSpeedsAsPublished) {
   const SweepResult noTwist = runSweep(
       VehicleModel(loadScenario(kTyres, {"contact.front={twisting_stiffness_m_per_rad: 0}",
                                          "contact.rear={twisting_stiffness_m_per_rad: 0}"})), o);
-  const double weave0 = findCritical(rigid, "weave", true), capsize0 = findCritical(rigid, "capsize", false);
-  const double weave1 = findCritical(tyres, "weave", true), capsize1 = findCritical(tyres, "capsize", false);
-  const double weave2 = findCritical(noTwist, "weave", true), capsize2 = findCritical(noTwist, "capsize", false);
+  using analysis::ModeLabel;
+  const double weave0 = findCritical(rigid, ModeLabel::Weave, true), capsize0 = findCritical(rigid, ModeLabel::Capsize, false);
+  const double weave1 = findCritical(tyres, ModeLabel::Weave, true), capsize1 = findCritical(tyres, ModeLabel::Capsize, false);
+  const double weave2 = findCritical(noTwist, ModeLabel::Weave, true), capsize2 = findCritical(noTwist, ModeLabel::Capsize, false);
   std::cout << "weave speed " << weave0 << " -> " << weave1 << " m/s (no twisting torque " << weave2
             << "), capsize speed " << capsize0 << " -> " << capsize1 << " m/s (no twisting torque " << capsize2 << ")\n";
   // Meijaard et al. (2007) sec. 6: 4.292 and 6.024 m/s without slip.

@@ -50,7 +50,7 @@ std::array<double, 2> calcCriticalSpeeds(const std::vector<std::string>& overrid
   const SweepResult r = runSweep(model, opt);
   std::array<double, 2> v{NAN, NAN};
   for (const auto& c : r.criticalSpeeds) {
-    const int m = c.mode == "weave" ? 0 : c.mode == "capsize" ? 1 : -1;
+    const int m = c.mode == analysis::ModeLabel::Weave ? 0 : c.mode == analysis::ModeLabel::Capsize ? 1 : -1;
     if (m >= 0 && !(c.speed >= v[m])) v[m] = c.speed;
   }
   return v;

@@ -47,11 +47,11 @@ inline double calcSpectrumDistance(const Eigen::VectorXcd& ref, const Eigen::Vec
   return worst;
 }
 
-/// The eigenvalue with positive imaginary part of the branch labelled `label` at sweep speed
-/// index k, or NaN if there is none.
+/// The eigenvalue with positive imaginary part labelled `label` at sweep speed index k, or NaN if there
+/// is none.
 inline cd findLabelled(const SweepResult& sweep, const std::string& label, size_t k) {
   for (const auto& b : sweep.branches)
-    if (b.label == label && b.eigenvalue[k].imag() >= 0) return b.eigenvalue[k];
+    if (analysis::toString(b.labels[k]) == label && b.eigenvalue[k].imag() >= 0) return b.eigenvalue[k];
   return {std::nan(""), std::nan("")};
 }
 

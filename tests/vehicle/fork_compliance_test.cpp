@@ -117,7 +117,7 @@ TEST(ForkCompliance, LabelsNameTheForkModeAndKeepWeaveAndWobble) {
   PortableRandom rng(44);
   const SweepResult r = runScenarioSweep(loadScenario(kEnduro, {toYaml(drawFork(rng, false))}), 5, 35, 1);
   std::set<std::string> labels;
-  for (const auto& b : r.branches) labels.insert(b.label);
+  for (const auto& b : r.branches) labels.insert(analysis::toString(b.label));
   EXPECT_TRUE(labels.count("weave"));
   EXPECT_TRUE(labels.count("wobble"));
   EXPECT_TRUE(labels.count("fork_bending"));

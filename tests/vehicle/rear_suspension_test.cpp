@@ -139,10 +139,10 @@ SweepResult sweepNear(const std::vector<std::string>& overrides, double v) {
   return runSweep(model, opt);
 }
 
-// The eigenvalue in the upper half plane (or on the real axis) of the branch labelled `label`.
+// The eigenvalue in the upper half plane (or on the real axis) labelled `label` at the last speed.
 std::complex<double> eigenvalueOf(const SweepResult& r, const std::string& label) {
   for (const auto& b : r.branches)
-    if (b.label == label && b.eigenvalue.back().imag() >= 0) return b.eigenvalue.back();
+    if (analysis::toString(b.labels.back()) == label && b.eigenvalue.back().imag() >= 0) return b.eigenvalue.back();
   ADD_FAILURE() << "no " << label << " mode";
   return 0;
 }
@@ -177,7 +177,7 @@ TEST(RearSuspension, ModeLabels) {
     const SweepResult r = sweepNear({suspensionOverride(rate, kWheelDamping), "swingarm.compliance=bending+torsion"}, 20.0);
     std::map<std::string, int> count;
     for (const auto& b : r.branches)
-      if (b.eigenvalue.back().imag() >= 0) ++count[b.label];
+      if (b.eigenvalue.back().imag() >= 0) ++count[analysis::toString(b.labels.back())];
     for (const char* label : {"rear_hop", "weave", "wobble", "capsize", "swingarm_bending", "swingarm_torsion"})
       EXPECT_EQ(count[label], 1) << label << " at " << rate << " N/m";
     EXPECT_EQ(count["bounce"] + count["pitch"], 2) << rate << " N/m";
@@ -187,7 +187,7 @@ TEST(RearSuspension, ModeLabels) {
     std::cout << rate << " N/m: rear_hop " << fModel << " Hz, held-frame hand calculation " << fHand << " Hz\n";
     for (const auto& b : r.branches)
       if (b.eigenvalue.back().imag() >= 0)
-        std::cout << "  " << b.label << " " << b.eigenvalue.back() << " (" << std::abs(b.eigenvalue.back()) / (2 * M_PI) << " Hz)\n";
+        std::cout << "  " << analysis::toString(b.labels.back()) << " " << b.eigenvalue.back() << " (" << std::abs(b.eigenvalue.back()) / (2 * M_PI) << " Hz)\n";
   }
 }
 

@@ -30,7 +30,7 @@ std::complex<double> weaveAt(const std::vector<std::string>& overrides, double v
   opt.start = v - 2, opt.stop = v, opt.step = 1;
   const SweepResult s = runSweep(model, opt);
   for (const auto& b : s.branches)
-    if (b.label == "weave" && b.eigenvalue.back().imag() > 0) return b.eigenvalue.back();
+    if (b.label == analysis::ModeLabel::Weave && b.eigenvalue.back().imag() > 0) return b.eigenvalue.back();
   ADD_FAILURE() << "no weave found";
   return 0;
 }

@@ -1,0 +1,172 @@
+// Mode labels and critical speeds on motorcycles nobody tuned for: seeded random variations (+/-20 %
+// on masses, inertias, geometry and tyre coefficients) of the bundled motorcycles, swept upright and in
+// 20 and 35 deg turns. Checks written here, apart from the labelling (analysis/modes.h):
+//   - among the roots of 4-15 Hz, the one whose eigenvector has the largest steer share (|steer|^2 over
+//     the sum of |angle|^2 of the angular coordinates, all in rad) is the wobble;
+//   - no root with a positive real part is `other`;
+//   - every sign change of a root's real part between neighbouring speeds (roots below 1e-6 1/s at
+//     both speeds excepted) has a critical speed between them.
+// The main suite draws a few vehicles; the `long` label (test_analysis_long) draws many.
+#include <gtest/gtest.h>
+
+#include <yaml-cpp/yaml.h>
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+#include "analysis/sweep.h"
+#include "core/portable_random.h"
+#include "scenario/scenario.h"
+
+#ifndef MOTOSTAB_RANDOM_VEHICLES
+#define MOTOSTAB_RANDOM_VEHICLES 1
+#endif
+
+namespace motostab::analysis {
+
+using core::PortableRandom;
+using scenario::Scenario;
+using scenario::loadScenario;
+using vehicle::StateKind;
+using vehicle::StateRole;
+using vehicle::VehicleModel;
+
+namespace {
+
+const std::string kScenarios = std::string(MOTOSTAB_SOURCE_DIR) + "/scenarios/";
+
+std::string formatOverride(const std::string& key, double value) {
+  std::ostringstream os;
+  os.precision(17);
+  os << key << "=" << value;
+  return os.str();
+}
+
+std::string formatVector(const std::string& key, double x, double z) {
+  std::ostringstream os;
+  os.precision(17);
+  os << key << "=[" << x << ", 0, " << z << "]";
+  return os.str();
+}
+
+// Overrides that scale the masses, inertias, geometry and linear-tyre coefficients of `s` by factors
+// drawn uniformly in [0.8, 1.2]. The front frame moves with the wheelbase; each pitch inertia is kept
+// within the triangle inequality of its body.
+std::vector<std::string> drawVariation(const Scenario& s, PortableRandom& g) {
+  auto f = [&]() { return g.drawUniform(0.8, 1.2); };
+  std::vector<std::string> o;
+  const double w = s.geometry.wheelbase * f(), dw = w - s.geometry.wheelbase;
+  o.push_back(formatOverride("geometry.wheelbase_m", w));
+  o.push_back(formatOverride("geometry.steer_axis_tilt_deg", s.geometry.steerAxisTilt * 180 / M_PI * f()));
+  // The trail under the key the file uses (normal trail = trail cos(tilt)).
+  const bool normal = YAML::LoadFile(s.sourceFile)["geometry"]["normal_trail_m"].IsDefined();
+  const double trail = s.geometry.trail * f();
+  o.push_back(normal ? formatOverride("geometry.normal_trail_m", trail * std::cos(s.geometry.steerAxisTilt))
+                     : formatOverride("geometry.trail_m", trail));
+  for (const char* body : {"rear_frame", "front_frame"}) {
+    const scenario::BodySpec& b = std::string(body) == "rear_frame" ? s.rearFrame : s.frontFrame;
+    const std::string p = std::string(body) + ".";
+    o.push_back(formatOverride(p + "mass_kg", b.mass * f()));
+    const double x = std::string(body) == "rear_frame" ? b.com[0] * f() : b.com[0] + dw;
+    o.push_back(formatVector(p + "com_m", x, b.com[2] * f()));
+    const double xx = b.inertia.xx * f(), zz = b.inertia.zz * f();
+    const double yy = std::clamp(b.inertia.yy * f(), std::abs(xx - zz) * 1.01, (xx + zz) * 0.99);
+    o.push_back(formatOverride(p + "inertia_kgm2.xx", xx));
+    o.push_back(formatOverride(p + "inertia_kgm2.yy", yy));
+    o.push_back(formatOverride(p + "inertia_kgm2.zz", zz));
+  }
+  for (const char* wheel : {"rear_wheel", "front_wheel"}) {
+    const scenario::WheelSpec& ws = std::string(wheel) == "rear_wheel" ? s.rearWheel : s.frontWheel;
+    o.push_back(formatOverride(std::string(wheel) + ".mass_kg", ws.mass * f()));
+  }
+  for (const char* tyre : {"front", "rear"})
+    for (const char* key : {"cornering_stiffness_per_rad", "camber_stiffness_per_rad", "relaxation_length_m"}) {
+      const std::string path = std::string("contact.") + tyre + "." + key;
+      o.push_back(formatOverride(path, s.contact.params[tyre][key].as<double>() * f()));
+    }
+  return o;
+}
+
+// |steer|^2 over the sum of |q|^2 of the angular coordinates of eigenvector k (all in rad).
+double calcSteerAngleShare(const LinearModel& lin, int k) {
+  double steer = 0, all = 0;
+  for (size_t i = 0; i < lin.states.size(); ++i) {
+    const LinearState& st = lin.states[i];
+    const bool angle = st.role == StateRole::Roll || st.role == StateRole::Yaw || st.role == StateRole::Pitch ||
+                       st.role == StateRole::Steer || st.role == StateRole::Suspension || vehicle::isComplianceRole(st.role);
+    if (st.getKind() != StateKind::Coordinate || !angle) continue;
+    all += std::norm(lin.eigenvectors(i, k));
+    if (st.role == StateRole::Steer) steer += std::norm(lin.eigenvectors(i, k));
+  }
+  return all > 0 ? steer / all : 0.0;
+}
+
+// The three checks of the file's header on one sweep; `what` names it in messages. Returns the number of
+// wobble checks made.
+int checkSweep(const SweepResult& s, const std::string& what) {
+  int wobbles = 0;
+  for (size_t k = 0; k < s.speeds.size(); ++k) {
+    const LinearModel& lin = s.models[k];
+    EXPECT_EQ(lin.labels.size(), static_cast<size_t>(lin.eigenvalues.size()));
+    if (lin.labels.size() != static_cast<size_t>(lin.eigenvalues.size())) continue;
+    int best = -1;
+    double bestShare = 0;
+    for (int e = 0; e < lin.eigenvalues.size(); ++e) {
+      const std::complex<double> l = lin.eigenvalues[e];
+      const double f = l.imag() / (2 * M_PI);
+      if (f >= 4 && f <= 15 && calcSteerAngleShare(lin, e) > bestShare) best = e, bestShare = calcSteerAngleShare(lin, e);
+      if (l.real() > 0)
+        EXPECT_NE(lin.labels[e], ModeLabel::Other) << what << " at " << s.speeds[k] << " m/s: unstable root " << l;
+    }
+    if (best >= 0) {
+      ++wobbles;
+      EXPECT_EQ(lin.labels[best], ModeLabel::Wobble)
+          << what << " at " << s.speeds[k] << " m/s: " << lin.eigenvalues[best] << " (steer share " << bestShare << ") is "
+          << toString(lin.labels[best]);
+    }
+  }
+  for (const ModeBranch& b : s.branches)
+    for (size_t k = 0; k + 1 < s.speeds.size(); ++k) {
+      const std::complex<double> l0 = b.eigenvalue[k], l1 = b.eigenvalue[k + 1];
+      if (!(l0.real() * l1.real() < 0) || (std::abs(l0) < 1e-6 && std::abs(l1) < 1e-6)) continue;
+      const bool found = std::any_of(s.criticalSpeeds.begin(), s.criticalSpeeds.end(), [&](const CriticalSpeed& c) {
+        return c.speed >= s.speeds[k] - 1e-9 && c.speed <= s.speeds[k + 1] + 1e-9;
+      });
+      EXPECT_TRUE(found) << what << ": " << l0 << " at " << s.speeds[k] << " m/s to " << l1 << " at " << s.speeds[k + 1]
+                         << " m/s has no critical speed";
+    }
+  return wobbles;
+}
+
+void checkRandomVariants(const std::string& scenario, std::uint64_t seed, int variants) {
+  const Scenario nominal = loadScenario(kScenarios + scenario + ".yaml");
+  PortableRandom g(seed);
+  int wobbles = 0;
+  for (int v = 0; v < variants; ++v) {
+    const std::vector<std::string> overrides = drawVariation(nominal, g);
+    const VehicleModel model(loadScenario(kScenarios + scenario + ".yaml", overrides));
+    for (double rollDeg : {0.0, 20.0, 35.0}) {
+      SweepOptions opt;
+      opt.start = 4, opt.stop = 48, opt.step = 4;
+      opt.keepFailedSpeeds = true;
+      if (rollDeg != 0) opt.trim.roll = rollDeg * M_PI / 180;
+      const SweepResult s = runSweep(model, opt);
+      std::ostringstream what;
+      what << scenario << " variant " << v << " (seed " << seed << ") at " << rollDeg << " deg";
+      wobbles += checkSweep(s, what.str());
+    }
+  }
+  EXPECT_GT(wobbles, 0) << "no root of 4-15 Hz in any sweep: the wobble check checked nothing";
+}
+
+TEST(RandomVehicles, EnduroVariantsHaveTheirModesNamedAndEveryCrossing) {
+  checkRandomVariants("enduro", 20261127, MOTOSTAB_RANDOM_VEHICLES);
+}
+
+TEST(RandomVehicles, SupersportVariantsHaveTheirModesNamedAndEveryCrossing) {
+  checkRandomVariants("supersport", 1971, MOTOSTAB_RANDOM_VEHICLES);
+}
+
+}  // namespace
+}  // namespace motostab::analysis
