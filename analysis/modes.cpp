@@ -7,6 +7,7 @@
 #include <Eigen/LU>
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <limits>
 #include <map>
 
@@ -67,6 +68,10 @@ struct ContentLayout {
   std::vector<MechanicalDof> dofs;
   Eigen::MatrixXd mass;        // over the rate states (identity without lin.massMatrix)
   std::vector<int> auxiliary;  // indices of the auxiliary (z) states
+  // Straight running with the yaw angle and the ground-frame lateral velocity as states: the lateral
+  // rate's dof and the yaw angle's state, to take the heading's turn out of the lateral velocity
+  // (as the heading frame of a turn does).
+  int lateralDof = -1, yaw = -1;
 };
 
 // The rate states with their coordinates, M, and |K_ii| with K = -M A_uq.
@@ -92,8 +97,10 @@ ContentLayout calcContentLayout(const LinearModel& lin) {
       for (Eigen::Index b = 0; b < nr; ++b) k += layout.mass(a, b) * lin.A(rates[b], d.coordinate);
       d.stiffness = std::abs(k);
     }
+    if (d.role == StateRole::Lateral && !lin.headingFrame) layout.lateralDof = static_cast<int>(layout.dofs.size());
     layout.dofs.push_back(d);
   }
+  layout.yaw = lin.findState(StateRole::Yaw, StateKind::Coordinate);
   return layout;
 }
 
@@ -132,6 +139,8 @@ ModeContent calcContent(const LinearModel& lin, const ContentLayout& layout, con
   const Eigen::Index nr = static_cast<Eigen::Index>(layout.dofs.size());
   Eigen::VectorXcd u(nr);
   for (Eigen::Index i = 0; i < nr; ++i) u[i] = lin.eigenvectors(layout.dofs[i].rate, k);
+  // The velocity across the heading: a yaw of the ground-frame velocity (lin.speed along x) is no sideslip.
+  if (layout.lateralDof >= 0 && layout.yaw >= 0) u[layout.lateralDof] -= lin.speed * lin.eigenvectors(layout.yaw, k);
   const Eigen::VectorXcd Mu = layout.mass * u;
   std::array<double, kNumStateRoles> energy{};
   for (Eigen::Index i = 0; i < nr; ++i) {
@@ -237,7 +246,7 @@ class Capacity {
  public:
   Capacity() {
     left_.fill(2);
-    left_[static_cast<int>(ModeLabel::Capsize)] = left_[static_cast<int>(ModeLabel::Castor)] = 1;
+    left_[static_cast<int>(ModeLabel::Castor)] = 1;  // capsize: a real root, or a slow pair in a turn
     for (ModeLabel unlimited : {ModeLabel::Neutral, ModeLabel::Controller, ModeLabel::Longitudinal, ModeLabel::Other})
       left_[static_cast<int>(unlimited)] = std::numeric_limits<int>::max();
   }
@@ -282,40 +291,56 @@ Root* pickBest(std::vector<Root>& roots, Eligible eligible, Better better) {
   return best;
 }
 
-// The lateral rigid-body modes (docs/methods.md): wobble (oscillation with more steer than roll), weave
-// (the other lateral oscillation), capsize (slowest roll-led real root), castor (most negative steer-led real root); below
-// the speed where the weave pair becomes complex, its two real roots.
+// The steer share below which an oscillation is not a wobble.
+constexpr double kWobbleSteer = 0.02;
+
+// The lateral rigid-body modes (docs/methods.md): capsize (slowest roll-led real root), castor (most
+// negative steer-led real root), weave (of the lateral oscillations the one with the most roll, or the
+// pair of real roots it splits into at low speed), wobble (of the other oscillations, the one with the
+// most steer, more steer than roll); in a turn, a slow pair for a capsize joined with another root.
 void labelLateralModes(std::vector<Root>& roots, Capacity& cap) {
-  auto lateral = [](const Root& r) { return r.rollYawLateral + r.steer; };
+  auto roll = [](const Root& r) { return r.c.get(StateRole::Roll); };
   auto moreSteer = [](const Root& a, const Root& b) { return a.steer > b.steer; };
-  auto moreLateral = [&](const Root& a, const Root& b) { return lateral(a) > lateral(b); };
+  auto moreRoll = [&](const Root& a, const Root& b) { return roll(a) > roll(b); };
   auto lateralFamily = [](const Root& r) { return findFamily(r) == Family::Lateral; };
-  if (Root* w = pickBest(
-          roots,
-          [](const Root& r) {
-            return r.oscillatory && r.auxiliary <= 0.5 && r.steer > r.c.get(StateRole::Roll) && r.steer >= 0.1 &&
-                   r.steer >= r.c.get(r.topCompliance);
-          },
-          moreSteer))
-    cap.take(*w, ModeLabel::Wobble);
-  if (Root* w = pickBest(roots, [&](const Root& r) { return r.oscillatory && lateralFamily(r); }, moreLateral))
-    cap.take(*w, ModeLabel::Weave);
+  auto rollLed = [&](const Root& r) { return roll(r) >= r.steer && roll(r) >= 0.1 * (r.rollYawLateral + r.steer); };
   // The slowest; of equal magnitudes (to 1e-6 relative: the +-lambda pairs at standstill) the lower real part.
   auto slower = [](const Root& a, const Root& b) {
     const double x = std::abs(a.lambda), y = std::abs(b.lambda);
     if (std::abs(x - y) > 1e-6 * std::max(x, y)) return x < y;
     return a.lambda.real() < b.lambda.real();
   };
-  if (Root* c = pickBest(roots, [&](const Root& r) { return !r.oscillatory && lateralFamily(r) && r.rollYawLateral >= r.steer; },
-                         slower))
+  if (Root* c = pickBest(roots, [&](const Root& r) { return !r.oscillatory && lateralFamily(r) && rollLed(r); }, slower))
     cap.take(*c, ModeLabel::Capsize);
   if (Root* c = pickBest(roots, [&](const Root& r) { return !r.oscillatory && lateralFamily(r) && r.steer > r.rollYawLateral; },
                          [](const Root& a, const Root& b) { return a.lambda.real() < b.lambda.real(); }))
     cap.take(*c, ModeLabel::Castor);
-  while (cap.isFree(ModeLabel::Weave)) {  // the weave pair split into two real roots
-    Root* w = pickBest(roots, [&](const Root& r) { return !r.oscillatory && lateralFamily(r); }, moreLateral);
-    if (!w || !cap.take(*w, ModeLabel::Weave)) break;
-  }
+  // The weave: of the lateral oscillations the one with the most roll, or the two real lateral roots
+  // with the most roll (below the speed where the weave pair becomes complex) when they have more.
+  Root* osc = pickBest(roots, [&](const Root& r) { return r.oscillatory && lateralFamily(r); }, moreRoll);
+  Root* split1 = pickBest(roots, [&](const Root& r) { return !r.oscillatory && lateralFamily(r); }, moreRoll);
+  Root* split2 = pickBest(roots, [&](const Root& r) { return !r.oscillatory && lateralFamily(r) && &r != split1; }, moreRoll);
+  if (split2 && (!osc || 0.5 * (roll(*split1) + roll(*split2)) > roll(*osc)))
+    cap.take(*split1, ModeLabel::Weave), cap.take(*split2, ModeLabel::Weave);
+  else if (osc)
+    cap.take(*osc, ModeLabel::Weave);
+  if (Root* w = pickBest(
+          roots,
+          [](const Root& r) {
+            return r.oscillatory && r.auxiliary <= 0.5 && r.steer > r.c.get(StateRole::Roll) && r.steer >= kWobbleSteer &&
+                   r.steer >= r.c.get(r.topCompliance);
+          },
+          moreSteer))
+    cap.take(*w, ModeLabel::Wobble);
+  // In a turn the capsize root may join another into a slow pair: at most half the weave's |lambda|.
+  const Root* weave = nullptr;
+  for (const Root& r : roots)
+    if (r.label == ModeLabel::Weave) weave = &r;
+  if (!std::any_of(roots.begin(), roots.end(), [](const Root& r) { return r.label == ModeLabel::Capsize; }))
+    if (Root* c = pickBest(roots, [&](const Root& r) {
+          return r.oscillatory && lateralFamily(r) && rollLed(r) && (!weave || std::abs(r.lambda) < 0.5 * std::abs(weave->lambda));
+        }, slower))
+      cap.take(*c, ModeLabel::Capsize);
 }
 
 // In-plane, compliance, auxiliary and longitudinal roots by their family, largest share first; a root
@@ -324,6 +349,14 @@ void labelOtherModes(std::vector<Root>& roots, Capacity& cap) {
   auto inPlaneLabel = [](const Root& r) {
     if (r.c.get(StateRole::Suspension) > 0.9 * r.inPlane) return ModeLabel::RearHop;
     return r.c.get(StateRole::Height) >= r.c.get(StateRole::Pitch) ? ModeLabel::Bounce : ModeLabel::Pitch;
+  };
+  // An in-plane label taken: the others, largest share first (rear_hop only with a suspension share).
+  auto takeInPlane = [&](Root& r) {
+    if (cap.take(r, inPlaneLabel(r))) return;
+    const bool bounceFirst = r.c.get(StateRole::Height) >= r.c.get(StateRole::Pitch);
+    for (ModeLabel l : {bounceFirst ? ModeLabel::Bounce : ModeLabel::Pitch, bounceFirst ? ModeLabel::Pitch : ModeLabel::Bounce})
+      cap.take(r, l);
+    if (r.c.get(StateRole::Suspension) > 0) cap.take(r, ModeLabel::RearHop);
   };
   auto auxiliaryLabel = [](const Root& r) {
     const double lag = r.c.frontLag + r.c.rearLag, controller = r.c.get(StateRole::Controller);
@@ -341,21 +374,25 @@ void labelOtherModes(std::vector<Root>& roots, Capacity& cap) {
   std::stable_sort(order.begin(), order.end(), [&](const Root* a, const Root* b) { return lead(*a) > lead(*b); });
   for (Root* r : order) {
     switch (findFamily(*r)) {
-      case Family::InPlane:
-        if (!cap.take(*r, inPlaneLabel(*r)))
-          for (ModeLabel l : {ModeLabel::Pitch, ModeLabel::Bounce, ModeLabel::RearHop}) cap.take(*r, l);
-        break;
+      case Family::InPlane: takeInPlane(*r); break;
       case Family::Compliance: cap.take(*r, getComplianceLabel(r->topCompliance)); break;
       case Family::Auxiliary: cap.take(*r, auxiliaryLabel(*r)); break;
       case Family::Longitudinal: cap.take(*r, ModeLabel::Longitudinal); break;
       case Family::Lateral: break;
     }
   }
-  // What is left: the label of its largest non-rigid share (compliance, tyre lag), else other.
+  // What is left (e.g. a second lateral oscillation in a turn): the free label of its largest other
+  // share of at least 0.05 (in-plane, compliance, tyre lag), else other.
   for (Root& r : roots) {
     if (r.label) continue;
-    if (r.compliance >= 0.05) cap.take(r, getComplianceLabel(r.topCompliance));
-    if (r.auxiliary >= 0.05) cap.take(r, auxiliaryLabel(r));
+    std::vector<std::pair<double, int>> shares{{r.inPlane, 0}, {r.compliance, 1}, {r.auxiliary, 2}};
+    std::sort(shares.begin(), shares.end(), std::greater<>());
+    for (const auto& [share, kind] : shares) {
+      if (share < 0.05) break;
+      if (kind == 0) takeInPlane(r);
+      if (kind == 1) cap.take(r, getComplianceLabel(r.topCompliance));
+      if (kind == 2) cap.take(r, auxiliaryLabel(r));
+    }
     cap.take(r, ModeLabel::Other);
   }
 }
