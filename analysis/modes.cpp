@@ -302,6 +302,10 @@ void labelLateralModes(std::vector<Root>& roots, Capacity& cap) {
   auto roll = [](const Root& r) { return r.c.get(StateRole::Roll); };
   auto moreSteer = [](const Root& a, const Root& b) { return a.steer > b.steer; };
   auto moreRoll = [&](const Root& a, const Root& b) { return roll(a) > roll(b); };
+  // Roll among the mechanical motion: a root that the tyre lags carry counts less.
+  auto moreMechanicalRoll = [&](const Root& a, const Root& b) {
+    return roll(a) * (1 - a.auxiliary) > roll(b) * (1 - b.auxiliary);
+  };
   auto lateralFamily = [](const Root& r) { return findFamily(r) == Family::Lateral; };
   auto rollLed = [&](const Root& r) { return roll(r) >= r.steer && roll(r) >= 0.1 * (r.rollYawLateral + r.steer); };
   // The slowest; of equal magnitudes (to 1e-6 relative: the +-lambda pairs at standstill) the lower real part.
@@ -315,14 +319,15 @@ void labelLateralModes(std::vector<Root>& roots, Capacity& cap) {
   if (Root* c = pickBest(roots, [&](const Root& r) { return !r.oscillatory && lateralFamily(r) && r.steer > r.rollYawLateral; },
                          [](const Root& a, const Root& b) { return a.lambda.real() < b.lambda.real(); }))
     cap.take(*c, ModeLabel::Castor);
-  // The weave: of the lateral oscillations the one with the most roll, or the two real lateral roots
-  // with the most roll (below the speed where the weave pair becomes complex) when they have more.
-  Root* osc = pickBest(roots, [&](const Root& r) { return r.oscillatory && lateralFamily(r); }, moreRoll);
-  Root* split1 = pickBest(roots, [&](const Root& r) { return !r.oscillatory && lateralFamily(r); }, moreRoll);
-  Root* split2 = pickBest(roots, [&](const Root& r) { return !r.oscillatory && lateralFamily(r) && &r != split1; }, moreRoll);
-  if (split2 && (!osc || 0.5 * (roll(*split1) + roll(*split2)) > roll(*osc)))
+  // The weave: below the speed where the weave pair becomes complex, its two real roots (unstable, as
+  // the bicycle's at standstill: the two unstable real lateral roots with the most roll); else the
+  // lateral oscillation with the most roll times (1 - auxiliary share).
+  auto splitRoot = [&](const Root& r) { return !r.oscillatory && lateralFamily(r) && r.lambda.real() > 0; };
+  Root* split1 = pickBest(roots, splitRoot, moreRoll);
+  Root* split2 = pickBest(roots, [&](const Root& r) { return splitRoot(r) && &r != split1; }, moreRoll);
+  if (split2)
     cap.take(*split1, ModeLabel::Weave), cap.take(*split2, ModeLabel::Weave);
-  else if (osc)
+  else if (Root* osc = pickBest(roots, [&](const Root& r) { return r.oscillatory && lateralFamily(r); }, moreMechanicalRoll))
     cap.take(*osc, ModeLabel::Weave);
   if (Root* w = pickBest(
           roots,

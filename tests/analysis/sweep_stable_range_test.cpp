@@ -31,8 +31,9 @@ DrawnSweep drawSweep(PortableRandom& rng, bool unstableOther) {
   d.a = rng.drawUniform(start - 2 * step, stop);
   d.b = rng.drawUniform(d.a, stop + 2 * step);
   const double s1 = rng.drawUniform(0.2, 3), s2 = rng.drawUniform(0.05, 1), w = rng.drawUniform(1, 6);
-  ModeBranch weave1{"weave", {}, {}}, weave2{"weave", {}, {}}, capsize{"capsize", {}, {}}, castor{"castor", {}, {}},
-      neutral{"neutral", {}, {}}, other{"other", {}, {}};
+  auto branch = [&](ModeLabel l) { return ModeBranch{l, std::vector<ModeLabel>(n, l), {}, {}}; };
+  ModeBranch weave1 = branch(ModeLabel::Weave), weave2 = branch(ModeLabel::Weave), capsize = branch(ModeLabel::Capsize),
+             castor = branch(ModeLabel::Castor), neutral = branch(ModeLabel::Neutral), other = branch(ModeLabel::Other);
   for (double v : d.sweep.speeds) {
     weave1.eigenvalue.push_back(cd(s1 * (d.a - v), w + v));
     weave2.eigenvalue.push_back(cd(s1 * (d.a - v), -w - v));
@@ -42,8 +43,8 @@ DrawnSweep drawSweep(PortableRandom& rng, bool unstableOther) {
     other.eigenvalue.push_back(cd(unstableOther ? 0.5 : -50, 0));
   }
   d.sweep.branches = {castor, weave1, neutral, capsize, weave2, other};
-  if (d.a > start && d.a < stop) d.sweep.criticalSpeeds.push_back({"weave", d.a, true});
-  if (d.b > start && d.b < stop) d.sweep.criticalSpeeds.push_back({"capsize", d.b, false});
+  if (d.a > start && d.a < stop) d.sweep.criticalSpeeds.push_back({ModeLabel::Weave, d.a, true});
+  if (d.b > start && d.b < stop) d.sweep.criticalSpeeds.push_back({ModeLabel::Capsize, d.b, false});
   return d;
 }
 

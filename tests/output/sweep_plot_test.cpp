@@ -163,13 +163,15 @@ TEST(SweepPlot, NoStableRangeIsNotShadedAndIsSaid) {
   for (int k = 0; k < 30; ++k) s.speeds.push_back(k * step);
   // A weave that stabilises at a random speed, and a capsize mode unstable everywhere.
   const double a = rng.drawUniform(2 * step, 20 * step);
-  ModeBranch w1{"weave", {}, {}}, w2{"weave", {}, {}}, capsize{"capsize", {}, {}};
+  using analysis::ModeLabel;
+  const std::vector<ModeLabel> weaves(s.speeds.size(), ModeLabel::Weave), capsizes(s.speeds.size(), ModeLabel::Capsize);
+  ModeBranch w1{ModeLabel::Weave, weaves, {}, {}}, w2{ModeLabel::Weave, weaves, {}, {}}, capsize{ModeLabel::Capsize, capsizes, {}, {}};
   for (double v : s.speeds) {
     w1.eigenvalue.push_back(cd(a - v, 2 + v)), w2.eigenvalue.push_back(cd(a - v, -2 - v));
     capsize.eigenvalue.push_back(cd(rng.drawUniform(0.01, 1), 0));
   }
   s.branches = {w1, capsize, w2};
-  s.criticalSpeeds = {{"weave", a, true}};
+  s.criticalSpeeds = {{ModeLabel::Weave, a, true}};
   const auto dir = makeTempDir("sweep_plot_unstable");
   writeSweepOutputs(dir, "always-capsizing", s);
   const std::string script = readText(dir / "real_part_vs_speed.gp");

@@ -21,7 +21,9 @@ StudyVariant makeVariant(const std::string& name, double base, double slope, std
   StudyVariant v;
   v.name = name;
   v.sweep.speeds = kSpeeds;
-  ModeBranch weave{"weave", {}, {}}, wob{"wobble", {}, {}};
+  using analysis::ModeLabel;
+  ModeBranch weave{ModeLabel::Weave, std::vector<ModeLabel>(kSpeeds.size(), ModeLabel::Weave), {}, {}};
+  ModeBranch wob{ModeLabel::Wobble, std::vector<ModeLabel>(kSpeeds.size(), ModeLabel::Wobble), {}, {}};
   for (double s : kSpeeds) {
     weave.eigenvalue.push_back({base + slope * s, 2 * M_PI * (1 + 0.05 * s)});
     wob.eigenvalue.push_back(wobble);
@@ -37,7 +39,7 @@ TEST(StudyFindings, FiguresFromTheBranches) {
   StudyResult st;
   st.nominal = {makeVariant("rigid", base, slope, wobble0), makeVariant("torsion", base - offset, slope, wobble1)};
   st.halved = {makeVariant("rigid", base, slope, wobble0), makeVariant("torsion", base - 2 * offset, slope, wobble1)};
-  ModeBranch swing{"swingarm_torsion", {{-5, 2 * M_PI * 60}, {-6, 2 * M_PI * 61}}, {}};
+  ModeBranch swing{analysis::ModeLabel::SwingarmTorsion, {}, {{-5, 2 * M_PI * 60}, {-6, 2 * M_PI * 61}}, {}};
   st.nominal[1].sweep.branches.push_back(swing);
   st.nominal[1].sweep.branches.back().eigenvalue.resize(kSpeeds.size(), {-6, 2 * M_PI * 61});
 
