@@ -14,6 +14,9 @@ using scenario::ScenarioSource;
 
 namespace {
 
+// A NumPy array (or the like) of one or more dimensions: a list, not a number.
+bool isArray(const py::handle& v) { return py::hasattr(v, "ndim") && py::hasattr(v, "tolist") && v.attr("ndim").cast<int>() > 0; }
+
 // A Python value as a YAML node: numbers in the shortest text that reads back to the same double,
 // mappings with string keys, sequences; anything else is an InputError naming `path`.
 YAML::Node toYaml(const py::handle& v, const std::string& path) {
@@ -36,10 +39,10 @@ YAML::Node toYaml(const py::handle& v, const std::string& path) {
     return seq;
   }
   const auto object = py::reinterpret_borrow<py::object>(v);
+  if (isArray(v)) return toYaml(object.attr("tolist")(), path);
   if (PyIndex_Check(v.ptr())) return YAML::Node(py::str(py::int_(object)).cast<std::string>());
   if (PyFloat_Check(v.ptr()) || py::hasattr(v, "__float__"))
     return YAML::Node(scenario::formatShortest(py::float_(object).cast<double>()));
-  if (py::hasattr(v, "tolist")) return toYaml(object.attr("tolist")(), path);  // NumPy arrays
   throw InputError({"", 0, 0, path}, "a " + py::str(v.get_type().attr("__name__")).cast<std::string>() +
                                          " cannot be a scenario value (numbers, strings, booleans, None, dicts and lists can)");
 }
@@ -89,7 +92,8 @@ ScenarioHandle ScenarioHandle::withChanges(const py::dict& values) const {
   ParameterOverrides added;
   for (const auto& [key, value] : values) {
     const std::string path = py::str(key);
-    const bool number = !py::isinstance<py::bool_>(value) && (PyIndex_Check(value.ptr()) || PyFloat_Check(value.ptr()));
+    const bool number = !py::isinstance<py::bool_>(value) && !isArray(value) &&
+                        (PyIndex_Check(value.ptr()) || PyFloat_Check(value.ptr()) || py::hasattr(value, "__float__"));
     if (number) added.set(path, py::float_(py::reinterpret_borrow<py::object>(value)).cast<double>());  // full precision
     else if (py::isinstance<py::str>(value)) added.set(path, value.cast<std::string>());            // a switch
     else added.setNode(path, toYaml(value, path));                                                   // a section
