@@ -15,7 +15,7 @@ namespace {
 // The exception classes of motostab/_errors.py (pure Python, importable before _core). Looked up at
 // the first error; kept for the life of the process.
 PyObject* getErrorClass(const char* name) {
-  return py::module_::import("motostab._errors").attr(name).release().ptr();
+  return py::object(py::module_::import("motostab._errors").attr(name)).release().ptr();
 }
 
 // The libraries name an option of the command line as file "command line", key "--fall-limit"; from
