@@ -24,7 +24,7 @@ const std::string kEnduro = std::string(MOTOSTAB_SOURCE_DIR) + "/scenarios/endur
 double secondsSince(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
 
 void BM_EnduroTwistSweep401PythonVsCpp(benchmark::State& st) {
-  py::scoped_interpreter python;
+  py::scoped_interpreter interpreter;  // once per process (NumPy cannot be initialised twice)
   py::module_::import("sys").attr("path").attr("insert")(0, MOTOSTAB_PYTHON_PATH);
   const py::module_ motostab = py::module_::import("motostab");
   const py::object pyScenario =
