@@ -1,6 +1,9 @@
 // motostab._core.Scenario: a scenario source (the file read once, or a tree from a Python dict) with
 // typed parameter changes, loaded and validated by the same strict reader as the command line.
+#include <dlfcn.h>
 #include <yaml-cpp/yaml.h>
+
+#include <mutex>
 
 #include "io/number.h"
 #include "python/bind_scenario.h"
@@ -80,10 +83,24 @@ py::object yamlToPython(const YAML::Node& node) {
   }
 }
 
+// Plugin libraries (docs/plugins.md) resolve motostab's symbols from the program that loads them; here
+// that is this extension, which Python opens with RTLD_LOCAL. Before the first scenario that names
+// plugins, the extension is opened again with RTLD_GLOBAL (RTLD_NOLOAD: the loaded copy), so that its
+// symbols resolve the plugins' and nothing changes for Python sessions without plugins.
+void exportSymbolsForPlugins() {
+  static std::once_flag once;
+  std::call_once(once, [] {
+    Dl_info info;
+    if (dladdr(reinterpret_cast<void*>(&exportSymbolsForPlugins), &info) && info.dli_fname)
+      dlopen(info.dli_fname, RTLD_NOW | RTLD_NOLOAD | RTLD_GLOBAL);
+  });
+}
+
 }  // namespace
 
 ScenarioHandle::ScenarioHandle(std::shared_ptr<const ScenarioSource> src, ParameterOverrides ch)
     : source(std::move(src)), changes(std::move(ch)) {
+  if (makeTree()["plugins"]) exportSymbolsForPlugins();
   scenario = std::make_shared<const scenario::Scenario>(callQuietly([&] { return source->load(changes); }));
 }
 

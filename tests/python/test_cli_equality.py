@@ -2,6 +2,7 @@
 `motostab` on the same scenario and values (drawn at random, seeded) and compares every number of its
 CSV and JSON files (17 significant digits, which read back to the same double) with what Python returns."""
 import math
+import os
 import random
 
 import numpy as np
@@ -170,3 +171,17 @@ def test_study_report_equals_the_command_line(motostab, tmp_path):
         for name, sweep in variants.items():
             check_sweep_csv(read_csv(tmp_path / "study" / stiffness / name / "eigenvalues.csv"), sweep)
             check_summary(read_json(tmp_path / "study" / stiffness / name / "summary.json"), sweep)
+
+
+def test_a_scenario_with_a_plugin_library_equals_the_command_line(motostab, tmp_path):
+    # The example contact plugin (plugins/examples/vertical_spring_contact.cpp), named by the scenario.
+    plugin = os.environ["MOTOSTAB_EXAMPLE_PLUGIN"]
+    text = WHIPPLE.read_text()
+    scenario = tmp_path / "sprung.yaml"
+    scenario.write_text(text + f"plugins: [{plugin}]\n")
+    changes = ["contact={model: example_vertical_spring, stiffness_N_per_m: 1.0e5}"]
+    run_cli("sweep", scenario, "--set", changes[0], "--speeds", "1:5:1", "--out", "out", cwd=tmp_path)
+    sprung = motostab.Scenario.load(scenario).with_(contact={"model": "example_vertical_spring", "stiffness_N_per_m": 1.0e5})
+    sweep = motostab.sweep(sprung, speeds=(1, 5, 1))
+    check_sweep_csv(read_csv(tmp_path / "out" / "eigenvalues.csv"), sweep)
+    assert "bounce" in set(sweep.labels[0])  # the springs let the bicycle bounce
