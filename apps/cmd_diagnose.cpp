@@ -6,6 +6,8 @@
 #include <iostream>
 
 #include "apps/commands.h"
+#include "apps/common_options.h"
+#include "apps/option_checks.h"
 #include "diagnosis/diagnosis.h"
 #include "output/diagnosis_output.h"
 #include "io/csv.h"
@@ -53,9 +55,9 @@ void registerDiagnoseCommands(CLI::App& app) {
   cmd->add_option("scenario", a->scenario, "Scenario YAML file")->required()->check(CLI::ExistingFile);
   cmd->add_option("measurements", a->measurements, "Measured-data YAML file (docs/measured-data-format.md)")->required();
   cmd->add_option("--candidates", a->candidates, "Comma list of candidate names or globs (default: all)");
-  cmd->add_option("--max-causes", a->maxCauses, "Causes named at most (forward stepwise)")->check(CLI::Range(0, 20));
-  cmd->add_option("--folds", a->folds, "Cross-validation folds (default 5, or one per run)")->check(CLI::Range(2, 1000));
-  cmd->add_option("--threads", a->threads, "Candidates fitted in parallel")->check(CLI::Range(1, 256));
+  cmd->add_option("--max-causes", a->maxCauses, "Causes named at most (forward stepwise)")->check(CLI::Range(kMaxCauses.low, kMaxCauses.high));
+  cmd->add_option("--folds", a->folds, "Cross-validation folds (default 5, or one per run)")->check(CLI::Range(kFolds.low, kFolds.high));
+  cmd->add_option("--threads", a->threads, "Candidates fitted in parallel")->check(makeThreadsCheck());
   cmd->add_flag("--no-robustness", a->noRobustness,
                 "Skip the reruns with each data source left out and speed ranges at mid speeds");
   cmd->add_option("--out", a->out, "Output folder (default: diagnosis-<scenario name>)");

@@ -9,6 +9,7 @@
 
 #include "apps/commands.h"
 #include "apps/common_options.h"
+#include "apps/option_checks.h"
 #include "io/input_error.h"
 #include "io/output_folder.h"
 #include "output/response_output.h"
@@ -67,15 +68,8 @@ nlohmann::json describeSettings(const SimulateArgs& a) {
 }
 
 void runSimulate(SimulateArgs a) {
+  a.options = makeSimulationOptions(a.options, a.perturb, a.speedControl, a.integrator, a.fallLimitDeg, a.rollDeg);
   auto& o = a.options;
-  for (const auto& spec : a.perturb) o.perturbations.push_back(simulation::parsePerturbation(spec));
-  o.speedControl = simulation::parseSpeedControl(a.speedControl);
-  o.integrator = simulation::parseIntegratorKind(a.integrator);
-  o.fallRollLimit = a.fallLimitDeg * M_PI / 180;
-  if (a.rollDeg != 0) {
-    if (!(o.speed > 0)) throw InputError({"command line", 0, 0, "--speed"}, "a steady turn (--roll-deg) needs a speed above 0 m/s");
-    o.trim.roll = a.rollDeg * M_PI / 180;
-  }
   const Scenario scenario = loadScenario(a.scenario, a.overrides);
   const std::filesystem::path target = a.out.empty() ? std::filesystem::path(scenario.name + "-simulation")
                                                        : std::filesystem::path(a.out);
@@ -116,7 +110,7 @@ void registerSimulateCommands(CLI::App& app) {
   cmd->add_option("scenario", a->scenario, "Scenario YAML file")->required()->check(CLI::ExistingFile);
   cmd->add_option("--speed", a->options.speed, "Trim and target forward speed, m/s")
       ->required()
-      ->check(makeNumberCheck(0, 1e3));
+      ->check(makeNumberCheck(kSpeedMps));
   cmd->add_option("--perturb", a->perturb,
                   "Perturbation (repeatable):\n" + simulation::getPerturbationSyntax());
   cmd->add_option("--duration", a->options.duration, "Simulated time, s")->required()->check(makeNumberCheck(0, 1e6, true));

@@ -4,6 +4,7 @@
 
 #include "apps/commands.h"
 #include "apps/common_options.h"
+#include "apps/option_checks.h"
 #include "analysis/turn_map.h"
 #include "io/input_error.h"
 #include "io/output_folder.h"
@@ -15,7 +16,6 @@
 namespace motostab::cli {
 
 using analysis::LinearModel;
-using analysis::ModeBranch;
 using analysis::SweepOptions;
 using analysis::SweepResult;
 using analysis::TrimOptions;
@@ -26,7 +26,6 @@ using analysis::calcTrim;
 using analysis::linearize;
 using analysis::runSweep;
 using analysis::runTurnMap;
-using analysis::trackModes;
 using io::InputError;
 using io::OutputFolder;
 using output::formatSweepTable;
@@ -48,11 +47,9 @@ using vehicle::VehicleModel;
 
 namespace {
 
-// Turns need a positive speed: the slowest speed of a turn sweep or linearisation.
-void checkTurnSpeeds(double slowest, const std::string& key) {
-  if (slowest > 0) return;
-  throw InputError({"command line", 0, 0, key},
-                   "steady turns (--roll-deg) need speeds above 0 m/s: start the speed grid above 0, e.g. --speeds 1:40:1");
+// Where the speeds of a turn come from: --speeds, or the scenario's speeds_mps.
+io::InputLocation getSpeedsLocation(bool fromOption) {
+  return {"command line", 0, 0, fromOption ? "--speeds" : "speeds_mps (the scenario's; override with --speeds)"};
 }
 
 // motostab sweep: eigenvalues over speed, or a speed x roll map of steady turns.
@@ -88,7 +85,7 @@ void registerSweepCommand(CLI::App& app) {
     if (!sweepArgs->speeds.empty()) parseSpeedRange(sweepArgs->speeds, opt.start, opt.stop, opt.step);
     opt.threads = sweepArgs->threads;
     if (!sweepArgs->roll.empty()) {
-      checkTurnSpeeds(opt.start, sweepArgs->speeds.empty() ? "speeds_mps (the scenario's; override with --speeds)" : "--speeds");
+      checkTurnSpeeds(opt.start, getSpeedsLocation(!sweepArgs->speeds.empty()));
       const std::vector<double> rolls = parseRollAngles(sweepArgs->roll);
       if (rolls.size() > 1) {
         TurnMapOptions mo;
@@ -124,7 +121,7 @@ void registerLinearizeCommand(CLI::App& app) {
   auto linArgs = std::make_shared<LinArgs>();
   CLI::App* lin = app.add_subcommand("linearize", "Trim at one speed and write A, B and the eigenvectors");
   lin->add_option("scenario", linArgs->scenario, "Scenario YAML file")->required()->check(CLI::ExistingFile);
-  lin->add_option("--speed", linArgs->speed, "Forward speed, m/s")->required()->check(makeNumberCheck(0, 1e3));
+  lin->add_option("--speed", linArgs->speed, "Forward speed, m/s")->required()->check(makeNumberCheck(kSpeedMps));
   lin->add_option("--out", linArgs->out, "Output folder")->required();
   lin->add_option("--set", linArgs->overrides, "Override a scenario value");
   lin->add_option("--roll-deg", linArgs->rollDeg,
@@ -137,14 +134,12 @@ void registerLinearizeCommand(CLI::App& app) {
     const VehicleModel model(scenario);
     TrimOptions trimOptions;
     if (!std::isnan(linArgs->rollDeg)) {
-      checkTurnSpeeds(linArgs->speed, "--speed");
+      checkTurnSpeeds(linArgs->speed, {"command line", 0, 0, "--speed"});
       trimOptions.roll = linArgs->rollDeg * M_PI / 180;
     }
     const TrimResult trim = calcTrim(model, linArgs->speed, trimOptions);
     const LinearModel lm = linearize(model, trim);
-    std::vector<std::string> modes;  // each eigenvalue's mode, from its content at this one speed
-    for (const ModeBranch& b : trackModes({lm}, scenario.geometry.wheelbase)) modes.push_back(b.label);
-    writeLinearModel(folder.getPath(), lm, modes);
+    writeLinearModel(folder.getPath(), lm, labelModesOfModel(lm, scenario.geometry.wheelbase));
     folder.commit();
     std::cout << "Trim at " << linArgs->speed << " m/s: residual " << trim.residualNorm << " after " << trim.iterations
               << " iterations; " << lm.states.size() << " states. Wrote " << linArgs->out
@@ -172,15 +167,15 @@ void registerStudyCommand(CLI::App& app) {
   study->add_option("--set", st->overrides, "Override a scenario value for every variant");
   study->add_option("--compare", st->variants, "Compliance variants to compare")->delimiter(',');
   study->add_option("--stiffness-scale", st->stiffnessScale, "Stiffness factor of the second set (seed Fig. 11: 0.5)")
-      ->check(makeNumberCheck(0, 1e6, true));
+      ->check(makeNumberCheck(kScaleFactor));
   CLI::Option* dampingOption =
       study->add_option("--damping-scale", st->dampingScale,
                         "Damping factor of the second set (default: the square root of the stiffness factor, which keeps "
                         "each damping ratio; seed: 1/sqrt(2))")
-          ->check(makeNumberCheck(0, 1e6));
+          ->check(makeNumberCheck(kDampingFactor));
   study->add_option("--shape-speeds", st->shapeSpeeds, "Speeds of the weave mode-shape compass plots, m/s")
       ->delimiter(',')
-      ->check(makeNumberCheck(0, 1e3));
+      ->check(makeNumberCheck(kSpeedMps));
   study->add_option("--threads", st->threads, "Variants swept in parallel")->check(makeThreadsCheck());
   study->add_option("--roll-deg", st->rollDeg, "Compare the variants about steady turns at this roll angle (deg)")
       ->check(makeRollCheck());
@@ -197,17 +192,10 @@ void registerStudyCommand(CLI::App& app) {
     opt.stiffnessScale = st->stiffnessScale;
     opt.dampingScale = dampingOption->count() > 0 ? st->dampingScale : std::sqrt(st->stiffnessScale);
     opt.shapeSpeeds = st->shapeSpeeds;
-    for (const double v : opt.shapeSpeeds)
-      if (v < opt.sweep.start || v > opt.sweep.stop)
-        throw InputError({"--shape-speeds", 0, 0, std::to_string(v)},
-                         "a mode-shape speed must lie within the swept speeds " + std::to_string(opt.sweep.start) +
-                             " to " + std::to_string(opt.sweep.stop) + " m/s");
     opt.overrides = changes;
     opt.threads = st->threads;
-    if (st->rollDeg != 0) {
-      checkTurnSpeeds(opt.sweep.start, st->speeds.empty() ? "speeds_mps (the scenario's; override with --speeds)" : "--speeds");
-      opt.sweep.trim.roll = st->rollDeg * M_PI / 180;
-    }
+    if (st->rollDeg != 0) opt.sweep.trim.roll = st->rollDeg * M_PI / 180;
+    checkStudyOptions(opt, {"--shape-speeds", 0, 0, ""}, getSpeedsLocation(!st->speeds.empty()));
     const std::string out = st->out.empty() ? scenario.name + "-study" : st->out;
     OutputFolder folder(out);
     const StudyResult result = runStudy(source, opt);

@@ -5,18 +5,16 @@
 #include "apps/commands.h"
 #include "analysis/sweep.h"
 #include "apps/common_options.h"
+#include "apps/option_checks.h"
 #include "io/input_error.h"
 #include "io/output_folder.h"
 #include "output/turn_output.h"
 
 namespace motostab::cli {
 
-using analysis::NoTurnError;
 using analysis::TrimOptions;
 using analysis::TrimResult;
-using analysis::calcHandsFreeTrim;
 using analysis::calcTrim;
-using analysis::makeSpeedGrid;
 using io::InputError;
 using io::OutputFolder;
 using output::formatTrimTable;
@@ -38,7 +36,7 @@ void registerTurnCommands(CLI::App& app) {
   trim->add_option("scenario", a->scenario, "Scenario YAML file")->required()->check(CLI::ExistingFile);
   trim->add_option("--speed", a->speed,
                    "Speed of the rear contact point along its path, m/s (with --hands-free: the preferred speed)")
-      ->check(makeNumberCheck(0, 1e3, true));
+      ->check(makeNumberCheck(kTurnSpeedMps));
   trim->add_option("--roll-deg", a->rollDeg, "Roll angle, deg (> 0 leans right), strictly between -89 and 89")
       ->check(makeRollCheck());
   trim->add_flag("--hands-free", a->handsFree,
@@ -59,17 +57,8 @@ void registerTurnCommands(CLI::App& app) {
     if (a->handsFree) {
       double start = scenario.speeds.start, stop = scenario.speeds.stop, step = scenario.speeds.step;
       if (!a->speeds.empty()) parseSpeedRange(a->speeds, start, stop, step);
-      std::vector<double> speeds;
-      for (double v : makeSpeedGrid(start, stop, step))
-        if (v > 0) speeds.push_back(v);
-      if (speeds.size() < 2 || a->rollDeg == 0)
-        throw InputError({"command line", 0, 0, a->rollDeg == 0 ? "--roll-deg" : "--speeds"},
-                         "a hands-free turn needs a nonzero roll and at least two positive speeds to search");
-      try {
-        trim = calcHandsFreeTrim(model, speeds, opt, a->speed);
-      } catch (const NoTurnError& e) {
-        throw InputError({"command line", 0, 0, "--speeds"}, std::string(e.what()) + "; widen --speeds or change --roll-deg");
-      }
+      trim = calcHandsFreeTurn(model, start, stop, step, opt, a->speed, {"command line", 0, 0, "--roll-deg"},
+                               {"command line", 0, 0, "--speeds"});
     } else {
       trim = calcTrim(model, a->speed, opt);
     }

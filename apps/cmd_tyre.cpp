@@ -8,6 +8,7 @@
 
 #include "apps/commands.h"
 #include "apps/common_options.h"
+#include "apps/option_checks.h"
 #include "io/csv.h"
 #include "io/input_error.h"
 #include "io/number.h"
@@ -23,11 +24,7 @@ using io::formatNumber;
 using io::parseFiniteNumber;
 using output::TyreCurvePoint;
 using output::writeTyreCurve;
-using tyres::MagicFormulaVariant;
 using tyres::TirFile;
-using tyres::makeTirSource;
-using tyres::makeTyreForceLaw;
-using tyres::warnUnused;
 
 namespace {
 
@@ -38,33 +35,23 @@ struct TyreArgs {
 
 // "A:B:STEP" in degrees: finite, A <= B, STEP > 0, at most 1e5 points.
 std::vector<double> parseSlipRange(const std::string& text) {
-  std::vector<std::optional<double>> v;
+  std::vector<double> v;
   std::stringstream ss(text);
   std::string part;
-  while (std::getline(ss, part, ':')) v.push_back(parseFiniteNumber(part));
-  const bool ok = v.size() == 3 && v[0] && v[1] && v[2] && *v[1] >= *v[0] && *v[2] > 0 && (*v[1] - *v[0]) / *v[2] <= 1e5;
-  if (!ok) throw InputError({"--slip-deg", 0, 0, text}, "expected A:B:STEP in degrees, finite, with A <= B, STEP > 0 and at most 1e5 points");
-  std::vector<double> out;
-  const int n = static_cast<int>(std::floor((*v[1] - *v[0]) / *v[2] + 1e-9));
-  for (int i = 0; i <= n; ++i) out.push_back(*v[0] + i * *v[2]);
-  return out;
+  while (std::getline(ss, part, ':')) v.push_back(parseFiniteNumber(part).value_or(NAN));
+  const io::InputLocation where{"--slip-deg", 0, 0, text};
+  if (v.size() != 3) return makeSlipAngles(NAN, NAN, NAN, where);
+  return makeSlipAngles(v[0], v[1], v[2], where);
 }
 
 void runTyre(const TyreArgs& a) {
   const std::vector<double> slips = parseSlipRange(a.slipRange);
-  const TirFile file = TirFile::load(a.file);
-  const auto source = makeTirSource(file, nullptr);
-  const auto law = makeTyreForceLaw(file.getFitType() == 62 ? MagicFormulaVariant::MF62 : MagicFormulaVariant::MF61, *source);
-  warnUnused(*source, a.file, std::cerr);
+  const TirForceLaw tir = loadTirForCurve(a.file, std::cerr);
+  const TirFile& file = tir.file;
+  const auto& law = tir.law;
   const double speed = std::isnan(a.speed) ? file.getNumber("LONGVL") : a.speed;
   const double camber = a.camberDeg * M_PI / 180;
-  std::vector<TyreCurvePoint> points;
-  for (double deg : slips) {
-    TyreCurvePoint p;
-    p.slip = {a.fz, a.slipRatio, deg * M_PI / 180, camber, speed};
-    p.forces = law->calcForces(p.slip);
-    points.push_back(p);
-  }
+  const std::vector<TyreCurvePoint> points = calcTyreCurve(*law, a.fz, slips, camber, a.slipRatio, speed);
   const std::filesystem::path target = a.out.empty() ? std::filesystem::path(std::filesystem::path(a.file).stem().string() + "-tyre")
                                                      : std::filesystem::path(a.out);
   OutputFolder folder(target);
@@ -90,14 +77,14 @@ void registerTyreCommands(CLI::App& app) {
   auto a = std::make_shared<TyreArgs>();
   CLI::App* cmd = app.add_subcommand("tyre", "Steady-state forces of a Magic Formula .tir file (MF 6.1/6.2) over slip angle");
   cmd->add_option("file", a->file, "Tyre property file (.tir, FITTYP 61 or 62)")->required()->check(CLI::ExistingFile);
-  cmd->add_option("--fz", a->fz, "Normal load, N")->required()->check(makeNumberCheck(0, 1e7, true));
+  cmd->add_option("--fz", a->fz, "Normal load, N")->required()->check(makeNumberCheck(kTyreLoadN));
   cmd->add_option("--slip-deg", a->slipRange, "Slip angles A:B:STEP, degrees (ISO sign)")->required();
   cmd->add_option("--camber-deg", a->camberDeg, "Camber (inclination) angle, degrees (ISO sign: top leaning right > 0)")
       ->required()
-      ->check(makeNumberCheck(-89, 89));
-  cmd->add_option("--slip-ratio", a->slipRatio, "Longitudinal slip ratio")->capture_default_str()->check(makeNumberCheck(-1, 1));
+      ->check(makeNumberCheck(kCamberDeg));
+  cmd->add_option("--slip-ratio", a->slipRatio, "Longitudinal slip ratio")->capture_default_str()->check(makeNumberCheck(kSlipRatio));
   cmd->add_option("--speed", a->speed, "Forward speed for the rolling resistance, m/s (default: the file's LONGVL)")
-      ->check(makeNumberCheck(0, 1e3));
+      ->check(makeNumberCheck(kSpeedMps));
   cmd->add_option("--out", a->out, "Output folder (default: <file stem>-tyre)");
   cmd->callback([a] { runTyre(*a); });
 }

@@ -11,6 +11,7 @@
 
 #include "apps/commands.h"
 #include "apps/common_options.h"
+#include "apps/option_checks.h"
 #include "io/input_error.h"
 #include "io/output_folder.h"
 #include "scenario/scenario_source.h"
@@ -27,7 +28,6 @@ using scenario::Scenario;
 using scenario::ScenarioSource;
 using scenario::ParameterOverrides;
 using uncertainty::DistributedSession;
-using uncertainty::SamplingMethod;
 using uncertainty::UncertaintyOptions;
 using uncertainty::UncertaintySetup;
 using uncertainty::UncertaintySummary;
@@ -82,8 +82,7 @@ class ProgressBar {
 
 UncertaintyOptions makeOptions(const UncertaintyArgs& a, const Scenario& scenario) {
   UncertaintyOptions o;
-  if (a.method != "mc" && a.method != "sobol") throw InputError({"--method", 0, 0, a.method}, "expected mc or sobol");
-  o.method = a.method == "sobol" ? SamplingMethod::Sobol : SamplingMethod::MonteCarlo;
+  o.method = parseSamplingMethod(a.method, {"--method", 0, 0, a.method});
   o.samples = parseCount("--samples", a.samples, 1);
   o.seed = parseCount("--seed", a.seed, 0);
   o.start = scenario.speeds.start, o.stop = scenario.speeds.stop, o.step = scenario.speeds.step;

@@ -6,27 +6,26 @@
 #include <sstream>
 #include <vector>
 
+#include "apps/option_checks.h"
 #include "io/input_error.h"
 #include "io/number.h"
-#include "scenario/scenario.h"
 
 namespace motostab::cli {
 
 using io::InputError;
+using io::InputLocation;
 using io::parseFiniteNumber;
 
 
 void parseSpeedRange(const std::string& text, double& start, double& stop, double& step) {
-  std::vector<std::optional<double>> v;
+  std::vector<double> v;
   std::stringstream ss(text);
   std::string part;
-  while (std::getline(ss, part, ':')) v.push_back(parseFiniteNumber(part));
-  const bool ok = v.size() == 3 && v[0] && v[1] && v[2] && *v[0] >= 0 && *v[1] >= *v[0] && *v[2] > 0 &&
-                  (*v[1] - *v[0]) / *v[2] <= scenario::SpeedRange::kMaxSteps;
-  if (!ok)
-    throw InputError({"--speeds", 0, 0, text},
-                     "expected START:STOP:STEP, finite, with 0 <= START <= STOP, STEP > 0 and at most 1e6 speeds");
-  start = *v[0], stop = *v[1], step = *v[2];
+  while (std::getline(ss, part, ':')) v.push_back(parseFiniteNumber(part).value_or(NAN));
+  const InputLocation where{"--speeds", 0, 0, text};
+  if (v.size() != 3) checkSpeedRange(NAN, NAN, NAN, where);
+  checkSpeedRange(v[0], v[1], v[2], where);
+  start = v[0], stop = v[1], step = v[2];
 }
 
 CLI::Validator makeNumberCheck(double low, double high, bool excludeLow) {
@@ -42,6 +41,8 @@ CLI::Validator makeNumberCheck(double low, double high, bool excludeLow) {
       desc);
 }
 
+CLI::Validator makeNumberCheck(const NumberRange& range) { return makeNumberCheck(range.low, range.high, range.excludeLow); }
+
 CLI::Validator makeSpeedRangeCheck() {
   return CLI::Validator(
       [](std::string& text) -> std::string {
@@ -56,11 +57,6 @@ CLI::Validator makeSpeedRangeCheck() {
       "START:STOP:STEP");
 }
 
-namespace {
-constexpr double kMaxRollDeg = 89;
-bool isRollInRange(double deg) { return std::abs(deg) < kMaxRollDeg; }
-}  // namespace
-
 CLI::Validator makeRollCheck() {
   return CLI::Validator(
       [](std::string& text) -> std::string {
@@ -73,23 +69,14 @@ CLI::Validator makeRollCheck() {
 }
 
 std::vector<double> parseRollAngles(const std::string& text) {
-  std::vector<std::optional<double>> v;
+  std::vector<double> v;
   std::stringstream ss(text);
   std::string part;
-  while (std::getline(ss, part, ':')) v.push_back(parseFiniteNumber(part));
-  const bool allFinite = !v.empty() && std::all_of(v.begin(), v.end(), [](const auto& x) { return x.has_value(); });
-  std::vector<double> out;
-  if (allFinite && v.size() == 1 && isRollInRange(*v[0])) out.push_back(*v[0] * M_PI / 180);
-  if (allFinite && v.size() == 3 && isRollInRange(*v[0]) && isRollInRange(*v[1]) && *v[1] >= *v[0] && *v[2] > 0 &&
-      (*v[1] - *v[0]) / *v[2] <= 1000) {
-    const long n = static_cast<long>(std::floor((*v[1] - *v[0]) / *v[2] + 1e-9));
-    for (long i = 0; i <= n; ++i) out.push_back((*v[0] + i * *v[2]) * M_PI / 180);
-  }
-  if (out.empty())
-    throw InputError({"--roll-deg", 0, 0, text},
-                     "expected PHI or A:B:STEP in degrees, each strictly between -89 and 89, with B >= A, STEP > 0 "
-                     "and at most 1000 angles");
-  return out;
+  while (std::getline(ss, part, ':')) v.push_back(parseFiniteNumber(part).value_or(NAN));
+  const InputLocation where{"--roll-deg", 0, 0, text};
+  if (v.size() == 1 && isRollInRange(v[0])) return {v[0] * M_PI / 180};
+  if (v.size() == 3) return makeRollAngles(v[0], v[1], v[2], where);
+  return makeRollAngles(NAN, NAN, NAN, where);
 }
 
 CLI::Validator makeRollAnglesCheck() {

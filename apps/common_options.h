@@ -9,12 +9,16 @@
 
 namespace motostab::cli {
 
+struct NumberRange;  // apps/option_checks.h
+
 /// Parses "START:STOP:STEP" (m/s; 0 <= START <= STOP, STEP > 0, finite, at most 1e6 speeds);
 /// throws InputError naming the option on bad input.
 void parseSpeedRange(const std::string& text, double& start, double& stop, double& step);
 
 /// A CLI11 check: a finite number in [low, high] (low itself excluded when `excludeLow`).
 CLI::Validator makeNumberCheck(double low, double high, bool excludeLow = false);
+/// The same for a range the Python module checks too (apps/option_checks.h).
+CLI::Validator makeNumberCheck(const NumberRange& range);
 /// A CLI11 check of "START:STOP:STEP" by parseSpeedRange.
 CLI::Validator makeSpeedRangeCheck();
 /// A CLI11 check of a roll angle in degrees: finite and strictly between -89 and 89.

@@ -11,7 +11,7 @@ shift || true
 seed="${MOTOSTAB_FUZZ_SEED:-1}"
 MOTOSTAB_FUZZ_DEPS=1 "$root/scripts/install-deps.sh"
 export MOTOSTAB_BUILD_DIR=build-fuzz
-export MOTOSTAB_CMAKE_ARGS="-DCMAKE_CXX_COMPILER=clang++-14 -DMOTOSTAB_FUZZ=ON -DMOTOSTAB_BUILD_BENCH=OFF -DMOTOSTAB_EIGEN_CHECKS=ON"
+export MOTOSTAB_CMAKE_ARGS="-DCMAKE_CXX_COMPILER=clang++-14 -DMOTOSTAB_FUZZ=ON -DMOTOSTAB_BUILD_BENCH=OFF -DMOTOSTAB_EIGEN_CHECKS=ON -DMOTOSTAB_PYTHON=OFF"
 export MOTOSTAB_CXX_FLAGS="-fsanitize=fuzzer-no-link,address,undefined -fno-sanitize-recover=undefined -fno-omit-frame-pointer -g"
 targets=("$@")
 if [ ${#targets[@]} -eq 0 ]; then
