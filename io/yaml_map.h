@@ -78,8 +78,18 @@ class YamlMap {
   std::shared_ptr<std::set<std::string>> used_;
 };
 
-/// Loads a YAML file as the root map. Syntax errors and duplicate keys anywhere in the document are
-/// InputErrors with line and column (a duplicate at its second occurrence).
+/// Nodes a YAML input may hold, each alias counted as the node it names.
+constexpr long kMaxYamlNodes = 100000;
+
+/// Parses YAML text (a file's content, or a --set value) within bounds: one document; an alias may name
+/// only a complete node that holds no alias itself (aliases expand at most once); at most kMaxYamlNodes
+/// nodes after expansion. A syntax error or a bound exceeded is an InputError at `file`, line, column,
+/// with `key` as the key path.
+YAML::Node parseYamlText(const std::string& text, const std::string& file, const std::string& key);
+
+/// Loads a YAML file as the root map: a regular file of bounded size (io/input_file.h), parsed by
+/// parseYamlText. Syntax errors and duplicate keys anywhere in the document are InputErrors with line and
+/// column (a duplicate at its second occurrence).
 YamlMap loadYamlFile(const std::string& file);
 
 /// `name` as named in `namingFile`: unchanged if absolute, else relative to namingFile's folder.
