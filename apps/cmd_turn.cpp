@@ -7,6 +7,7 @@
 #include "apps/common_options.h"
 #include "io/input_error.h"
 #include "io/output_folder.h"
+#include "io/result_error.h"
 #include "output/turn_output.h"
 
 namespace motostab::cli {
@@ -44,13 +45,13 @@ void registerTurnCommands(CLI::App& app) {
   trim->add_flag("--hands-free", a->handsFree,
                  "Zero steer torque: the speed is solved, searched over --speeds (default: the scenario's speeds_mps)");
   trim->add_option("--speeds", a->speeds, "START:STOP:STEP in m/s, the hands-free search range")->check(makeSpeedRangeCheck());
-  trim->add_option("--out", a->out, "Output folder (default: SCENARIO-trim)");
+  addOutOption(*trim, a->out, "the scenario's name");
   trim->add_option("--set", a->overrides, "Override a scenario value, e.g. --set geometry.trail_m=0.1");
   trim->callback([a]() {
     if (!a->handsFree && std::isnan(a->speed))
       throw InputError({"command line", 0, 0, "--speed"}, "required unless --hands-free: give the turn's speed in m/s");
     const Scenario scenario = loadScenario(a->scenario, a->overrides);
-    const std::string out = a->out.empty() ? scenario.name + "-trim" : a->out;
+    const std::string out = getOutputFolder(a->out, scenario.name, "trim");
     OutputFolder folder(out);
     const VehicleModel model(scenario);
     TrimOptions opt;
@@ -67,8 +68,8 @@ void registerTurnCommands(CLI::App& app) {
                          "a hands-free turn needs a nonzero roll and at least two positive speeds to search");
       try {
         trim = calcHandsFreeTrim(model, speeds, opt, a->speed);
-      } catch (const NoTurnError& e) {
-        throw InputError({"command line", 0, 0, "--speeds"}, std::string(e.what()) + "; widen --speeds or change --roll-deg");
+      } catch (const NoTurnError& e) {  // valid input, no turn: exit 3 with what to try
+        throw io::ResultError(std::string(e.what()) + "; widen --speeds or change --roll-deg");
       }
     } else {
       trim = calcTrim(model, a->speed, opt);

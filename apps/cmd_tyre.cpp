@@ -5,13 +5,14 @@
 #include <iostream>
 #include <memory>
 #include <sstream>
+#include <utility>
 
 #include "apps/commands.h"
 #include "apps/common_options.h"
 #include "io/csv.h"
 #include "io/input_error.h"
-#include "io/number.h"
 #include "io/output_folder.h"
+#include "io/result_error.h"
 #include "output/tyre_curve_output.h"
 #include "tyres/magic_formula.h"
 
@@ -20,7 +21,6 @@ namespace motostab::cli {
 using io::InputError;
 using io::OutputFolder;
 using io::formatNumber;
-using io::parseFiniteNumber;
 using output::TyreCurvePoint;
 using output::writeTyreCurve;
 using tyres::MagicFormulaVariant;
@@ -36,17 +36,15 @@ struct TyreArgs {
   double fz = 0, camberDeg = 0, slipRatio = 0, speed = NAN;
 };
 
-// "A:B:STEP" in degrees: finite, A <= B, STEP > 0, at most 1e5 points.
+// "A:B:STEP" in degrees: finite, A <= B, STEP > 0, at most kMaxSlipPoints points.
 std::vector<double> parseSlipRange(const std::string& text) {
-  std::vector<std::optional<double>> v;
-  std::stringstream ss(text);
-  std::string part;
-  while (std::getline(ss, part, ':')) v.push_back(parseFiniteNumber(part));
-  const bool ok = v.size() == 3 && v[0] && v[1] && v[2] && *v[1] >= *v[0] && *v[2] > 0 && (*v[1] - *v[0]) / *v[2] <= 1e5;
-  if (!ok) throw InputError({"--slip-deg", 0, 0, text}, "expected A:B:STEP in degrees, finite, with A <= B, STEP > 0 and at most 1e5 points");
+  const std::string expected = "A:B:STEP in degrees, finite, with A <= B, STEP > 0 and at most 1e5 points";
+  const std::vector<double> v = parseRangeFields(text, "--slip-deg", false, expected);
+  if (!(v[1] >= v[0] && v[2] > 0 && (v[1] - v[0]) / v[2] <= kMaxSlipPoints - 1))
+    throw InputError({"--slip-deg", 0, 0, text}, expected);
   std::vector<double> out;
-  const int n = static_cast<int>(std::floor((*v[1] - *v[0]) / *v[2] + 1e-9));
-  for (int i = 0; i <= n; ++i) out.push_back(*v[0] + i * *v[2]);
+  const int n = static_cast<int>(std::floor((v[1] - v[0]) / v[2] + 1e-9));
+  for (int i = 0; i <= n; ++i) out.push_back(v[0] + i * v[2]);
   return out;
 }
 
@@ -63,10 +61,14 @@ void runTyre(const TyreArgs& a) {
     TyreCurvePoint p;
     p.slip = {a.fz, a.slipRatio, deg * M_PI / 180, camber, speed};
     p.forces = law->calcForces(p.slip);
+    const auto& f = p.forces;
+    for (const auto& [name, v] : {std::pair{"Fx", f.Fx}, {"Fy", f.Fy}, {"Mx", f.Mx}, {"My", f.My}, {"Mz", f.Mz}})
+      if (!std::isfinite(v))  // outputs are checked before they are written
+        throw io::ResultError("the tyre law gives " + std::string(name) + " = " + formatNumber(v, 6) + " at slip angle " +
+                              formatNumber(deg, 6) + " deg: the file's coefficients give no finite force there");
     points.push_back(p);
   }
-  const std::filesystem::path target = a.out.empty() ? std::filesystem::path(std::filesystem::path(a.file).stem().string() + "-tyre")
-                                                     : std::filesystem::path(a.out);
+  const std::filesystem::path target = getOutputFolder(a.out, std::filesystem::path(a.file).stem().string(), "tyre");
   OutputFolder folder(target);
   std::ostringstream title;
   title << std::filesystem::path(a.file).filename().string() << ", Fz " << a.fz << " N, camber " << a.camberDeg
@@ -98,7 +100,7 @@ void registerTyreCommands(CLI::App& app) {
   cmd->add_option("--slip-ratio", a->slipRatio, "Longitudinal slip ratio")->capture_default_str()->check(makeNumberCheck(-1, 1));
   cmd->add_option("--speed", a->speed, "Forward speed for the rolling resistance, m/s (default: the file's LONGVL)")
       ->check(makeNumberCheck(0, 1e3));
-  cmd->add_option("--out", a->out, "Output folder (default: <file stem>-tyre)");
+  addOutOption(*cmd, a->out, "FILE's stem");
   cmd->callback([a] { runTyre(*a); });
 }
 

@@ -6,8 +6,10 @@
 #include <sstream>
 #include <vector>
 
+#include "io/csv.h"
 #include "io/input_error.h"
 #include "io/number.h"
+#include "io/output_folder.h"
 #include "scenario/scenario.h"
 
 namespace motostab::cli {
@@ -16,17 +18,44 @@ using io::InputError;
 using io::parseFiniteNumber;
 
 
+std::vector<double> parseRangeFields(const std::string& text, const std::string& option, bool allowSingle,
+                                     const std::string& expected) {
+  const std::vector<std::string> fields = io::splitFields(text, ':');
+  std::vector<double> out;
+  for (const std::string& f : fields) {
+    const auto v = parseFiniteNumber(f);
+    if (!v) break;
+    out.push_back(*v);
+  }
+  const bool complete = out.size() == fields.size() && (out.size() == 3 || (allowSingle && out.size() == 1));
+  if (!complete) {
+    const bool blank = std::any_of(fields.begin(), fields.end(), [](const std::string& f) {
+      return f.find_first_not_of(" \t") == std::string::npos;
+    });
+    throw InputError({option, 0, 0, text}, std::string(blank ? "a bound or step is missing: " : "") + "expected " + expected);
+  }
+  return out;
+}
+
 void parseSpeedRange(const std::string& text, double& start, double& stop, double& step) {
-  std::vector<std::optional<double>> v;
-  std::stringstream ss(text);
-  std::string part;
-  while (std::getline(ss, part, ':')) v.push_back(parseFiniteNumber(part));
-  const bool ok = v.size() == 3 && v[0] && v[1] && v[2] && *v[0] >= 0 && *v[1] >= *v[0] && *v[2] > 0 &&
-                  (*v[1] - *v[0]) / *v[2] <= scenario::SpeedRange::kMaxSteps;
-  if (!ok)
-    throw InputError({"--speeds", 0, 0, text},
-                     "expected START:STOP:STEP, finite, with 0 <= START <= STOP, STEP > 0 and at most 1e6 speeds");
-  start = *v[0], stop = *v[1], step = *v[2];
+  const std::string expected = "START:STOP:STEP, finite, with 0 <= START <= STOP, STEP > 0 and at most 1e6 speeds";
+  const std::vector<double> v = parseRangeFields(text, "--speeds", false, expected);
+  const bool ok = v[0] >= 0 && v[1] >= v[0] && v[2] > 0 && (v[1] - v[0]) / v[2] <= scenario::SpeedRange::kMaxSteps;
+  if (!ok) throw InputError({"--speeds", 0, 0, text}, expected);
+  start = v[0], stop = v[1], step = v[2];
+}
+
+std::string getOutputFolder(const std::string& out, const std::string& name, const std::string& command) {
+  if (!out.empty()) return out;
+  const std::string folder = name.empty() ? command : name + "-" + command;
+  if (const std::string why = io::describeBadFolderName(folder); !why.empty())
+    throw InputError({"command line", 0, 0, "--out"}, "the default output folder '" + folder + "' " + why + ": give --out");
+  return folder;
+}
+
+CLI::Option* addOutOption(CLI::App& command, std::string& out, const std::string& name) {
+  return command.add_option("--out", out, "Output folder (default: " + name + "-" + command.get_name() +
+                                              " in the working folder; replaced whole only if motostab wrote it)");
 }
 
 CLI::Validator makeNumberCheck(double low, double high, bool excludeLow) {
@@ -73,22 +102,17 @@ CLI::Validator makeRollCheck() {
 }
 
 std::vector<double> parseRollAngles(const std::string& text) {
-  std::vector<std::optional<double>> v;
-  std::stringstream ss(text);
-  std::string part;
-  while (std::getline(ss, part, ':')) v.push_back(parseFiniteNumber(part));
-  const bool allFinite = !v.empty() && std::all_of(v.begin(), v.end(), [](const auto& x) { return x.has_value(); });
+  const std::string expected =
+      "PHI or A:B:STEP in degrees, each strictly between -89 and 89, with B >= A, STEP > 0 and at most 1000 angles";
+  const std::vector<double> v = parseRangeFields(text, "--roll-deg", true, expected);
   std::vector<double> out;
-  if (allFinite && v.size() == 1 && isRollInRange(*v[0])) out.push_back(*v[0] * M_PI / 180);
-  if (allFinite && v.size() == 3 && isRollInRange(*v[0]) && isRollInRange(*v[1]) && *v[1] >= *v[0] && *v[2] > 0 &&
-      (*v[1] - *v[0]) / *v[2] <= 1000) {
-    const long n = static_cast<long>(std::floor((*v[1] - *v[0]) / *v[2] + 1e-9));
-    for (long i = 0; i <= n; ++i) out.push_back((*v[0] + i * *v[2]) * M_PI / 180);
+  if (v.size() == 1 && isRollInRange(v[0])) out.push_back(v[0] * M_PI / 180);
+  if (v.size() == 3 && isRollInRange(v[0]) && isRollInRange(v[1]) && v[1] >= v[0] && v[2] > 0 &&
+      (v[1] - v[0]) / v[2] <= kMaxRollAngles - 1) {
+    const long n = static_cast<long>(std::floor((v[1] - v[0]) / v[2] + 1e-9));
+    for (long i = 0; i <= n; ++i) out.push_back((v[0] + i * v[2]) * M_PI / 180);
   }
-  if (out.empty())
-    throw InputError({"--roll-deg", 0, 0, text},
-                     "expected PHI or A:B:STEP in degrees, each strictly between -89 and 89, with B >= A, STEP > 0 "
-                     "and at most 1000 angles");
+  if (out.empty()) throw InputError({"--roll-deg", 0, 0, text}, expected);
   return out;
 }
 

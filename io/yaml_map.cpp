@@ -2,6 +2,7 @@
 
 #include <yaml-cpp/eventhandler.h>
 
+#include <cmath>
 #include <filesystem>
 #include <map>
 #include <mutex>
@@ -181,12 +182,13 @@ void YamlMap::failElement(const std::string& key, size_t index, const std::strin
 
 double YamlMap::toFinite(const YAML::Node& n, const std::string& key, size_t index) const {
   const auto v = n.IsScalar() ? parseFiniteNumber(n.Scalar()) : std::nullopt;
-  if (!v) {
-    const std::string got = n.IsScalar() ? " (got '" + n.Scalar() + "')" : "";
-    if (index == static_cast<size_t>(-1)) fail(key, "expected a finite number" + got);
-    failElement(key, index, "expected a finite number" + got);
-  }
-  return *v;
+  const std::string got = n.IsScalar() ? " (got '" + n.Scalar() + "')" : "";
+  const std::string why = !v ? "expected a finite number" + got
+                             : std::abs(*v) > kMaxMagnitude ? "a magnitude above 1e12, beyond any physical parameter" + got
+                                                            : "";
+  if (why.empty()) return *v;
+  if (index == static_cast<size_t>(-1)) fail(key, why);
+  failElement(key, index, why);
 }
 
 bool YamlMap::has(const std::string& key) const { return static_cast<bool>(node_[key]); }
@@ -213,6 +215,8 @@ double YamlMap::getDouble(const std::string& key, double fallback) {
 double YamlMap::getPositive(const std::string& key) {
   const double v = getDouble(key);
   if (!(v > 0)) fail(key, "must be positive (got " + std::to_string(v) + ")");
+  if (v < kMinMagnitude)
+    fail(key, "must be positive and at least 1e-12 (got " + static_cast<const YAML::Node&>(node_)[key].Scalar() + ")");
   return v;
 }
 

@@ -17,7 +17,8 @@
 namespace motostab::io {
 
 /// A YAML mapping read strictly (Drake-style): a missing key, a wrong type, or a key that
-/// finish() finds unused is an InputError naming file:line:column and the dotted key path.
+/// finish() finds unused is an InputError naming file:line:column and the dotted key path. Every
+/// number is finite and at most kMaxMagnitude in magnitude (io/number.h).
 class YamlMap {
  public:
   /// `node` must be a mapping with unique scalar keys; else an InputError at it.
@@ -25,7 +26,7 @@ class YamlMap {
 
   bool has(const std::string& key) const;
   double getDouble(const std::string& key);
-  /// A value that must be > 0 (masses, radii, lengths).
+  /// A value that must be > 0 (masses, radii, lengths): at least kMinMagnitude (io/number.h).
   double getPositive(const std::string& key);
   /// A value that must be >= 0.
   double getNonNegative(const std::string& key);
