@@ -219,7 +219,8 @@ def option_case(rng, work):
 def measured_case(rng, work):
     src = rng.choice([(os.path.join(EX, "diagnosis", "kooijman2008.yaml"), os.path.join(EX, "diagnosis", "kooijman2008-weave.csv")),
                       (os.path.join(EX, "balance-assist", "weave.yaml"), os.path.join(EX, "balance-assist", "weave.csv"))])
-    yaml_text, csv_text = read(src[0]), read(src[1])
+    yaml_text = read(src[0]).replace("../../tests/data/", os.path.join(ROOT, "tests/data") + "/")
+    csv_text = read(src[1])
     if rng.random() < 0.5:
         yaml_text, what = rng.choice(TEXT_MUTATIONS + [lambda t, r: (t.replace("eigenvalues:", "eigenvalues:") +
                                                                       "\n", "none")])(yaml_text, rng)
@@ -302,11 +303,13 @@ def main():
     ap.add_argument("--motostab", default=os.path.join(ROOT, "build", "apps", "motostab"))
     ap.add_argument("--timeout", type=float, default=120)
     ap.add_argument("--keep", help="keep the work folders of findings here")
+    ap.add_argument("--log", help="write every trial (mutation, command, exit code, last message line) to this file")
     a = ap.parse_args()
     rng = random.Random(a.seed)
     codes = collections.Counter()
     by_kind = collections.defaultdict(collections.Counter)
     findings = []
+    log = open(a.log, "w") if a.log else None
     for trial in range(a.count):
         work = tempfile.mkdtemp(prefix="motostab_mutate_")
         case = rng.choice(CASES)
@@ -328,8 +331,10 @@ def main():
             problem = "exit 2 without a message"
         elif code not in (2, 3):
             problem = "exit %s" % code
+        last = out.strip().split("\n")[-1][:300] if out.strip() else ""
+        if log:
+            log.write("%d\t%s\t%s\t%s\t%s\n" % (trial, code, what, " ".join(cmd), last))
         if problem:
-            last = out.strip().split("\n")[-1][:300] if out.strip() else ""
             findings.append((trial, what, " ".join(cmd), problem, last))
             if a.keep:
                 shutil.copytree(work, os.path.join(a.keep, "trial%04d" % trial))
