@@ -1,6 +1,8 @@
 // motostab diagnose: measured data -> what the model gets wrong, its cause, the extended model, the gain.
 #include <unistd.h>
 
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
@@ -12,6 +14,7 @@
 #include "output/diagnosis_output.h"
 #include "io/csv.h"
 #include "io/output_folder.h"
+#include "io/result_error.h"
 #include "scenario/scenario.h"
 #include "scenario/scenario_source.h"
 
@@ -60,7 +63,7 @@ void registerDiagnoseCommands(CLI::App& app) {
   cmd->add_option("--threads", a->threads, "Candidates fitted in parallel")->check(makeThreadsCheck());
   cmd->add_flag("--no-robustness", a->noRobustness,
                 "Skip the reruns with each data source left out and speed ranges at mid speeds");
-  cmd->add_option("--out", a->out, "Output folder (default: diagnosis-<scenario name>)");
+  addOutOption(*cmd, a->out, "the scenario's name");
   cmd->add_option("--set", a->overrides, "Override a scenario value, e.g. --set geometry.trail_m=0.1");
   cmd->callback([a]() {
     const ParameterOverrides changes(a->overrides);  // the --set text, parsed once
@@ -75,14 +78,13 @@ void registerDiagnoseCommands(CLI::App& app) {
     opt.robustness = !a->noRobustness;
     const bool terminal = isatty(fileno(stderr));
     if (terminal) opt.progress = showProgress;
-    const std::string out = a->out.empty() ? "diagnosis-" + scenario.name : a->out;
+    const std::string out = getOutputFolder(a->out, scenario.name, "diagnose");
     OutputFolder folder(out);  // inputs read; from here an error or a kill leaves the old outputs whole
-    DiagnosisResult result;
-    try {
-      result = runDiagnosis(a->scenario, data, opt);
-    } catch (const std::invalid_argument& e) {
-      throw InputError({"--candidates", 0, 0, a->candidates}, e.what());
-    }
+    const DiagnosisResult result = runDiagnosis(a->scenario, data, opt);
+    const auto& fits = result.candidates;  // a failed fit has no score (diagnosis/model_fit.h, fitOrFail)
+    if (!fits.empty() && std::none_of(fits.begin(), fits.end(), [](const auto& f) { return std::isfinite(f.bic); }))
+      throw io::ResultError("every one of the " + std::to_string(fits.size()) + " candidates failed to fit (the first: " +
+                            (fits.front().failed.empty() ? std::string("no reason") : fits.front().failed.front()) + ")");
     if (terminal) std::fprintf(stderr, "\n");
     writeDiagnosisOutputs(folder.getPath(), result);
     folder.commit();

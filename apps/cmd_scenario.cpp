@@ -3,14 +3,11 @@
 #include <iostream>
 
 #include "apps/commands.h"
-#include "io/atomic_file.h"
 #include "scenario/bicycle_parameters.h"
-#include "scenario/bicycle_parameters_uncertainty.h"
 #include "vehicle/vehicle_model.h"
 
 namespace motostab::cli {
 
-using io::writeFileAtomically;
 using scenario::ForkComplianceSpec;
 using scenario::InertiaRepair;
 using scenario::MassSummary;
@@ -21,10 +18,8 @@ using scenario::calcNormalTrail;
 using scenario::calcStaticPivotMoment;
 using scenario::calcStaticWheelLoads;
 using scenario::calcSuspensionLever;
-using scenario::convertBicycleParametersToScenario;
-using scenario::formatBicycleParametersUncertainty;
 using scenario::loadScenario;
-using scenario::readBicycleParameterSigmas;
+using scenario::writeBicycleParametersScenario;
 using vehicle::VehicleModel;
 
 namespace {
@@ -120,11 +115,9 @@ void registerScenarioCommands(CLI::App& app) {
               "Move a frame's I_yy onto the triangle-inequality bound (unused by the linear Whipple model)");
   i->callback([imp]() {
     const std::string name = imp->name.empty() ? std::filesystem::path(imp->out).stem().string() : imp->name;
-    std::vector<InertiaRepair> repairs;
-    const std::string text = convertBicycleParametersToScenario(imp->file, name, {imp->repairInertia}, &repairs);
+    std::vector<InertiaRepair> repairs;  // written only once it loads; errors at the parameter file's lines
+    writeBicycleParametersScenario(imp->file, name, imp->out, {imp->repairInertia}, &repairs);
     printInertiaRepairs(repairs);
-    writeFileAtomically(imp->out, text + formatBicycleParametersUncertainty(readBicycleParameterSigmas(imp->file)));
-    loadScenario(imp->out);  // what we write must load
     std::cout << "Wrote " << imp->out << "\n";
   });
 }

@@ -12,6 +12,7 @@
 #include "apps/option_checks.h"
 #include "io/input_error.h"
 #include "io/output_folder.h"
+#include "io/result_error.h"
 #include "output/response_output.h"
 #include "apps/simulate_identify.h"
 #include "output/simulation_output.h"
@@ -71,8 +72,7 @@ void runSimulate(SimulateArgs a) {
   a.options = makeSimulationOptions(a.options, a.perturb, a.speedControl, a.integrator, a.fallLimitDeg, a.rollDeg);
   auto& o = a.options;
   const Scenario scenario = loadScenario(a.scenario, a.overrides);
-  const std::filesystem::path target = a.out.empty() ? std::filesystem::path(scenario.name + "-simulation")
-                                                       : std::filesystem::path(a.out);
+  const std::filesystem::path target = getOutputFolder(a.out, scenario.name, "simulate");
   OutputFolder folder(target);
   const std::filesystem::path& out = folder.getPath();
 
@@ -99,7 +99,7 @@ void runSimulate(SimulateArgs a) {
   }
   folder.commit();  // also after a fall or a failure: the samples up to it are the run's outputs
   // A failure is reported after the data up to it has been written.
-  if (result.status == simulation::SimulationStatus::Failed) throw std::runtime_error(result.message);
+  if (result.status == simulation::SimulationStatus::Failed) throw io::ResultError(result.message);
 }
 
 }  // namespace
@@ -114,7 +114,7 @@ void registerSimulateCommands(CLI::App& app) {
   cmd->add_option("--perturb", a->perturb,
                   "Perturbation (repeatable):\n" + simulation::getPerturbationSyntax());
   cmd->add_option("--duration", a->options.duration, "Simulated time, s")->required()->check(makeNumberCheck(0, 1e6, true));
-  cmd->add_option("--out", a->out, "Output folder (default: <scenario name>-simulation)");
+  addOutOption(*cmd, a->out, "the scenario's name");
   cmd->add_option("--speed-control", a->speedControl, "none (coast) or pi (drive-torque PI controller)")
       ->capture_default_str();
   cmd->add_option("--integrator", a->integrator, "auto (ROS34PW2 without constraints, else RungeKuttaMerson), ROS34PW2, RungeKuttaMerson, RungeKutta3, CPodes or Verlet")

@@ -64,7 +64,7 @@ void registerSweepCommand(CLI::App& app) {
   sweep->add_option("scenario", sweepArgs->scenario, "Scenario YAML file")->required()->check(CLI::ExistingFile);
   sweep->add_option("--speeds", sweepArgs->speeds, "START:STOP:STEP in m/s (default: the scenario's speeds_mps)")
       ->check(makeSpeedRangeCheck());
-  sweep->add_option("--out", sweepArgs->out, "Output folder (default: named after the scenario)");
+  addOutOption(*sweep, sweepArgs->out, "the scenario's name");
   sweep->add_option("--set", sweepArgs->overrides, "Override a scenario value, e.g. --set geometry.trail_m=0.1");
   sweep->add_option("--roll-deg", sweepArgs->roll,
                     "Steady turns at this roll angle (deg, > 0 right), or a speed x roll map over A:B:STEP")
@@ -75,7 +75,7 @@ void registerSweepCommand(CLI::App& app) {
       ->check(makeThreadsCheck());
   sweep->callback([sweepArgs]() {
     const Scenario scenario = loadScenario(sweepArgs->scenario, sweepArgs->overrides);
-    const std::string out = sweepArgs->out.empty() ? scenario.name : sweepArgs->out;
+    const std::string out = getOutputFolder(sweepArgs->out, scenario.name, "sweep");
     OutputFolder folder(out);  // first: a kill from here on leaves the old outputs whole
     const VehicleModel model(scenario);
     SweepOptions opt;
@@ -122,7 +122,7 @@ void registerLinearizeCommand(CLI::App& app) {
   CLI::App* lin = app.add_subcommand("linearize", "Trim at one speed and write A, B and the eigenvectors");
   lin->add_option("scenario", linArgs->scenario, "Scenario YAML file")->required()->check(CLI::ExistingFile);
   lin->add_option("--speed", linArgs->speed, "Forward speed, m/s")->required()->check(makeNumberCheck(kSpeedMps));
-  lin->add_option("--out", linArgs->out, "Output folder")->required();
+  addOutOption(*lin, linArgs->out, "the scenario's name");
   lin->add_option("--set", linArgs->overrides, "Override a scenario value");
   lin->add_option("--roll-deg", linArgs->rollDeg,
                   "Linearise about the steady turn at this roll angle (deg, > 0 right); --speed is then the rear "
@@ -130,7 +130,8 @@ void registerLinearizeCommand(CLI::App& app) {
       ->check(makeRollCheck());
   lin->callback([linArgs]() {
     const Scenario scenario = loadScenario(linArgs->scenario, linArgs->overrides);
-    OutputFolder folder(linArgs->out);
+    const std::string out = getOutputFolder(linArgs->out, scenario.name, "linearize");
+    OutputFolder folder(out);
     const VehicleModel model(scenario);
     TrimOptions trimOptions;
     if (!std::isnan(linArgs->rollDeg)) {
@@ -142,7 +143,7 @@ void registerLinearizeCommand(CLI::App& app) {
     writeLinearModel(folder.getPath(), lm, labelModesOfModel(lm, scenario.geometry.wheelbase));
     folder.commit();
     std::cout << "Trim at " << linArgs->speed << " m/s: residual " << trim.residualNorm << " after " << trim.iterations
-              << " iterations; " << lm.states.size() << " states. Wrote " << linArgs->out
+              << " iterations; " << lm.states.size() << " states. Wrote " << out
               << "/{A.csv, B.csv, eigenvalues.csv, eigenvectors.csv, linear_model.json}\n";
   });
 }
@@ -163,7 +164,7 @@ void registerStudyCommand(CLI::App& app) {
   study->add_option("scenario", st->scenario, "Motorcycle scenario with a swingarm section")->required()->check(CLI::ExistingFile);
   study->add_option("--speeds", st->speeds, "START:STOP:STEP in m/s (default: the scenario's speeds_mps)")
       ->check(makeSpeedRangeCheck());
-  study->add_option("--out", st->out, "Output folder (default: SCENARIO-study)");
+  addOutOption(*study, st->out, "the scenario's name");
   study->add_option("--set", st->overrides, "Override a scenario value for every variant");
   study->add_option("--compare", st->variants, "Compliance variants to compare")->delimiter(',');
   study->add_option("--stiffness-scale", st->stiffnessScale, "Stiffness factor of the second set (seed Fig. 11: 0.5)")
@@ -196,7 +197,7 @@ void registerStudyCommand(CLI::App& app) {
     opt.threads = st->threads;
     if (st->rollDeg != 0) opt.sweep.trim.roll = st->rollDeg * M_PI / 180;
     checkStudyOptions(opt, {"--shape-speeds", 0, 0, ""}, getSpeedsLocation(!st->speeds.empty()));
-    const std::string out = st->out.empty() ? scenario.name + "-study" : st->out;
+    const std::string out = getOutputFolder(st->out, scenario.name, "study");
     OutputFolder folder(out);
     const StudyResult result = runStudy(source, opt);
     const studies::StudyFindings findings = studies::calcStudyFindings(result);

@@ -42,13 +42,13 @@ void registerTurnCommands(CLI::App& app) {
   trim->add_flag("--hands-free", a->handsFree,
                  "Zero steer torque: the speed is solved, searched over --speeds (default: the scenario's speeds_mps)");
   trim->add_option("--speeds", a->speeds, "START:STOP:STEP in m/s, the hands-free search range")->check(makeSpeedRangeCheck());
-  trim->add_option("--out", a->out, "Output folder (default: SCENARIO-trim)");
+  addOutOption(*trim, a->out, "the scenario's name");
   trim->add_option("--set", a->overrides, "Override a scenario value, e.g. --set geometry.trail_m=0.1");
   trim->callback([a]() {
     if (!a->handsFree && std::isnan(a->speed))
       throw InputError({"command line", 0, 0, "--speed"}, "required unless --hands-free: give the turn's speed in m/s");
     const Scenario scenario = loadScenario(a->scenario, a->overrides);
-    const std::string out = a->out.empty() ? scenario.name + "-trim" : a->out;
+    const std::string out = getOutputFolder(a->out, scenario.name, "trim");
     OutputFolder folder(out);
     const VehicleModel model(scenario);
     TrimOptions opt;

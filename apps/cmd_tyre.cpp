@@ -7,13 +7,13 @@
 #include <iostream>
 #include <memory>
 #include <sstream>
+#include <utility>
 
 #include "apps/commands.h"
 #include "apps/common_options.h"
 #include "apps/option_checks.h"
 #include "io/csv.h"
 #include "io/input_error.h"
-#include "io/number.h"
 #include "io/output_folder.h"
 #include "io/yaml_map.h"
 #include "output/tyre_curve_output.h"
@@ -28,7 +28,6 @@ using io::InputError;
 using io::OutputFolder;
 using io::YamlMap;
 using io::formatNumber;
-using io::parseFiniteNumber;
 using output::TyreCurvePoint;
 using output::writeTyreCurve;
 using scenario::Scenario;
@@ -57,13 +56,9 @@ struct InspectedTyre {
 
 // "A:B:STEP" in degrees: finite, A <= B, STEP > 0, at most 1e5 points.
 std::vector<double> parseSlipRange(const std::string& text) {
-  std::vector<double> v;
-  std::stringstream ss(text);
-  std::string part;
-  while (std::getline(ss, part, ':')) v.push_back(parseFiniteNumber(part).value_or(NAN));
-  const io::InputLocation where{"--slip-deg", 0, 0, text};
-  if (v.size() != 3) return makeSlipAngles(NAN, NAN, NAN, where);
-  return makeSlipAngles(v[0], v[1], v[2], where);
+  const std::vector<double> v =
+      parseRangeFields(text, "--slip-deg", false, "A:B:STEP in degrees, finite, with A <= B, STEP > 0 and at most 1e5 points");
+  return makeSlipAngles(v[0], v[1], v[2], {"--slip-deg", 0, 0, text});
 }
 
 bool isScenarioPath(const std::string& path) {
@@ -164,7 +159,7 @@ void runTyre(const TyreArgs& a) {
   else if (std::isnan(tyre.relaxationLength)) speeds = {10, 20, 40};
   const double camber = a.camberDeg * M_PI / 180;
   const std::vector<TyreCurvePoint> points = calcTyreCurve(law, a.fz, slips, camber, a.slipRatio, speeds.front());
-  const std::filesystem::path target = a.out.empty() ? std::filesystem::path(tyre.outStem + "-tyre") : std::filesystem::path(a.out);
+  const std::filesystem::path target = getOutputFolder(a.out, tyre.outStem, "tyre");
   OutputFolder folder(target);
   std::ostringstream title;
   title << std::filesystem::path(tyre.name).filename().string() << ", Fz " << a.fz << " N, camber " << a.camberDeg
@@ -203,7 +198,7 @@ void registerTyreCommands(CLI::App& app) {
                   "Forward speed, m/s: rolling resistance and the relaxation length (default: the coefficients' LONGVL; "
                   "without one the relaxation length is shown at 10, 20 and 40 m/s)")
       ->check(makeNumberCheck(kSpeedMps));
-  cmd->add_option("--out", a->out, "Output folder (default: <file stem>-tyre, or <scenario name>-<wheel>-tyre)");
+  addOutOption(*cmd, a->out, "FILE's stem, or SCENARIO's name-WHEEL,");
   cmd->callback([a] { runTyre(*a); });
 }
 

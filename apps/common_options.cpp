@@ -7,8 +7,10 @@
 #include <vector>
 
 #include "apps/option_checks.h"
+#include "io/csv.h"
 #include "io/input_error.h"
 #include "io/number.h"
+#include "io/output_folder.h"
 
 namespace motostab::cli {
 
@@ -17,15 +19,43 @@ using io::InputLocation;
 using io::parseFiniteNumber;
 
 
+std::vector<double> parseRangeFields(const std::string& text, const std::string& option, bool allowSingle,
+                                     const std::string& expected) {
+  const std::vector<std::string> fields = io::splitFields(text, ':');
+  std::vector<double> out;
+  for (const std::string& f : fields) {
+    const auto v = parseFiniteNumber(f);
+    if (!v) break;
+    out.push_back(*v);
+  }
+  const bool complete = out.size() == fields.size() && (out.size() == 3 || (allowSingle && out.size() == 1));
+  if (!complete) {
+    const bool blank = std::any_of(fields.begin(), fields.end(), [](const std::string& f) {
+      return f.find_first_not_of(" \t") == std::string::npos;
+    });
+    throw InputError({option, 0, 0, text}, std::string(blank ? "a bound or step is missing: " : "") + "expected " + expected);
+  }
+  return out;
+}
+
 void parseSpeedRange(const std::string& text, double& start, double& stop, double& step) {
-  std::vector<double> v;
-  std::stringstream ss(text);
-  std::string part;
-  while (std::getline(ss, part, ':')) v.push_back(parseFiniteNumber(part).value_or(NAN));
-  const InputLocation where{"--speeds", 0, 0, text};
-  if (v.size() != 3) checkSpeedRange(NAN, NAN, NAN, where);
-  checkSpeedRange(v[0], v[1], v[2], where);
+  const std::string expected = "START:STOP:STEP, finite, with 0 <= START <= STOP, STEP > 0 and at most 1e6 speeds";
+  const std::vector<double> v = parseRangeFields(text, "--speeds", false, expected);
+  checkSpeedRange(v[0], v[1], v[2], {"--speeds", 0, 0, text});
   start = v[0], stop = v[1], step = v[2];
+}
+
+std::string getOutputFolder(const std::string& out, const std::string& name, const std::string& command) {
+  if (!out.empty()) return out;
+  const std::string folder = name.empty() ? command : name + "-" + command;
+  if (const std::string why = io::describeBadFolderName(folder); !why.empty())
+    throw InputError({"command line", 0, 0, "--out"}, "the default output folder '" + folder + "' " + why + ": give --out");
+  return folder;
+}
+
+CLI::Option* addOutOption(CLI::App& command, std::string& out, const std::string& name) {
+  return command.add_option("--out", out, "Output folder (default: " + name + "-" + command.get_name() +
+                                              " in the working folder; replaced whole only if motostab wrote it)");
 }
 
 CLI::Validator makeNumberCheck(double low, double high, bool excludeLow) {
@@ -69,14 +99,13 @@ CLI::Validator makeRollCheck() {
 }
 
 std::vector<double> parseRollAngles(const std::string& text) {
-  std::vector<double> v;
-  std::stringstream ss(text);
-  std::string part;
-  while (std::getline(ss, part, ':')) v.push_back(parseFiniteNumber(part).value_or(NAN));
+  const std::string expected =
+      "PHI or A:B:STEP in degrees, each strictly between -89 and 89, with B >= A, STEP > 0 and at most 1000 angles";
+  const std::vector<double> v = parseRangeFields(text, "--roll-deg", true, expected);
   const InputLocation where{"--roll-deg", 0, 0, text};
   if (v.size() == 1 && isRollInRange(v[0])) return {v[0] * M_PI / 180};
   if (v.size() == 3) return makeRollAngles(v[0], v[1], v[2], where);
-  return makeRollAngles(NAN, NAN, NAN, where);
+  throw InputError(where, "expected " + expected);
 }
 
 CLI::Validator makeRollAnglesCheck() {

@@ -3,6 +3,8 @@
 #include <cmath>
 #include <sstream>
 
+#include "io/number.h"
+#include "io/result_error.h"
 #include "scenario/scenario.h"
 
 namespace motostab::cli {
@@ -80,7 +82,8 @@ analysis::TrimResult calcHandsFreeTurn(const vehicle::VehicleModel& model, doubl
   try {
     return analysis::calcHandsFreeTrim(model, speeds, options, preferredSpeed);
   } catch (const analysis::NoTurnError& e) {
-    throw InputError(speedsWhere, std::string(e.what()) + "; widen --speeds or change --roll-deg");
+    // valid input, no turn: a result error (exit 3) with what to try
+    throw io::ResultError(std::string(e.what()) + "; widen " + speedsWhere.key + " or change " + rollWhere.key);
   }
 }
 
@@ -142,6 +145,11 @@ std::vector<output::TyreCurvePoint> calcTyreCurve(const tyres::TyreForceLaw& law
     output::TyreCurvePoint p;
     p.slip = {fz, slipRatio, deg * M_PI / 180, camber, speed};
     p.forces = law.calcForces(p.slip);
+    const auto& f = p.forces;
+    for (const auto& [name, v] : {std::pair{"Fx", f.Fx}, {"Fy", f.Fy}, {"Mx", f.Mx}, {"My", f.My}, {"Mz", f.Mz}})
+      if (!std::isfinite(v))  // outputs are checked before they are written
+        throw io::ResultError("the tyre law gives " + std::string(name) + " = " + io::formatNumber(v, 6) +
+                              " at slip angle " + io::formatNumber(deg, 6) + " deg: its coefficients give no finite force there");
     points.push_back(p);
   }
   return points;

@@ -63,7 +63,7 @@ std::vector<std::string> labelModesOfModel(const analysis::LinearModel& lin, dou
 /// The hands-free steady turn at `options.roll` searched over the positive speeds of the grid
 /// START:STOP:STEP (`motostab trim --hands-free`); `preferredSpeed` (m/s, NaN: none) picks among
 /// several. InputError at `rollWhere` for a zero roll, at `speedsWhere` for fewer than two positive
-/// speeds or when no turn is bracketed.
+/// speeds; ResultError when no turn is bracketed.
 analysis::TrimResult calcHandsFreeTurn(const vehicle::VehicleModel& model, double start, double stop, double step,
                                        const analysis::TrimOptions& options, double preferredSpeed,
                                        const io::InputLocation& rollWhere, const io::InputLocation& speedsWhere);
@@ -97,7 +97,7 @@ struct TirForceLaw {
 TirForceLaw loadTirForCurve(const std::string& path, std::ostream& warnings);
 
 /// The steady-state forces at load `fz` (N), each slip angle (deg), camber (rad), slip ratio and speed
-/// (m/s): the points of `motostab tyre`.
+/// (m/s): the points of `motostab tyre`; ResultError where the law gives a non-finite force.
 std::vector<output::TyreCurvePoint> calcTyreCurve(const tyres::TyreForceLaw& law, double fz,
                                                   const std::vector<double>& slipDeg, double camber, double slipRatio,
                                                   double speed);

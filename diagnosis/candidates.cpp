@@ -8,6 +8,7 @@
 #include "diagnosis/physical_candidates.h"
 #include "diagnosis/priors.h"
 #include "io/csv.h"
+#include "io/input_error.h"
 #include "scenario/parameter_paths.h"
 
 namespace motostab::diagnosis {
@@ -265,7 +266,7 @@ std::vector<Candidate> filterCandidates(const std::vector<Candidate>& all, const
     if (take) out.push_back(c);
   }
   for (size_t i = 0; i < patterns.size(); ++i)
-    if (!used[i]) throw std::invalid_argument("--candidates: '" + patterns[i] + "' matches no candidate of this scenario");
+    if (!used[i]) throw io::InputError({"--candidates", 0, 0, patterns[i]}, "matches no candidate of this scenario");
   return out;
 }
 

@@ -64,10 +64,10 @@ std::vector<Candidate> selectCandidates(const ScenarioSource& source, const Meas
       }
   try {
     return filterCandidates(listed, opt.candidates);
-  } catch (const std::invalid_argument& e) {  // say why a known candidate is missing
-    std::string why = e.what();
+  } catch (const InputError& e) {  // say why a known candidate is missing
+    std::string why = e.getReason();
     for (const auto& u : unavailable) why += "; " + u;
-    throw std::invalid_argument(why);
+    throw InputError(e.getLocation(), why);
   }
 }
 

@@ -110,7 +110,7 @@ void writeTurnMapOutputs(const std::filesystem::path& dir, const std::string& na
     writeSweepOutputs(dir / makeRollFolder(map.rolls[j]), name + ", roll " + makeRollFolder(map.rolls[j]).substr(5),
                       map.sweeps[j]);
   }
-  writeFileAtomically(dir / "map_summary.json", summary.dump(2) + "\n");
+  writeFileAtomically(dir / "map_summary.json", formatJson(summary, "map_summary.json"));
   const std::vector<std::string> modes = listPresentModes(map);
   for (const auto& m : modes) writeModeData(dir, map, m);
   if (modes.empty()) return;  // nothing to plot

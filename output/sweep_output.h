@@ -34,7 +34,7 @@ std::string formatSweepTable(const analysis::SweepResult& sweep, int rows = 11);
 /// frequency_hz,damping_ratio), DIR/eigenvectors.csv and DIR/linear_model.json (speed_mps, roll_rad,
 /// heading_frame: true about a steady turn, states, inputs, A, B, eigenvalues). modeLabels[k] names
 /// eigenvalue k's mode (e.g. the labels trackModes gives this one model); one per eigenvalue, else
-/// std::invalid_argument.
+/// std::logic_error.
 void writeLinearModel(const std::filesystem::path& dir, const analysis::LinearModel& lin, const std::vector<std::string>& modeLabels);
 
 }  // namespace motostab::output

@@ -180,8 +180,9 @@ py::dict diagnose(const ScenarioHandle& s, const std::string& measurements, cons
     diagnosis::DiagnosisResult r;
     try {
       r = diagnosis::runDiagnosis(s.source, data, opt);
-    } catch (const std::invalid_argument& e) {  // a candidate name or glob that matches none
-      throw io::InputError(argumentLocation("candidates"), e.what());
+    } catch (const io::InputError& e) {  // a candidate name or glob that matches none: the keyword's name
+      if (e.getLocation().key != "--candidates") throw;
+      throw io::InputError(argumentLocation("candidates"), "'" + e.getLocation().file + "' " + e.getReason());
     }
     Out o{output::makeDiagnosisJson(r), output::makeDiagnosisReport(r), {}, r.extendedOverrides,
           r.observed, r.sigma, r.predictedBefore, r.predictedAfter, r.observationSpeed, r.observationTime,

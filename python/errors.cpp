@@ -91,11 +91,7 @@ void registerErrors(py::module_& m) {
       if (p) std::rethrow_exception(p);
     } catch (const io::InputError& e) {
       raiseInputError(e);
-    } catch (const io::ResultError& e) {
-      raiseResultError(e);
-    } catch (const analysis::TrimError& e) {  // a computation without a result (exit code 3 on the command line)
-      raiseResultError(e);
-    } catch (const analysis::NoTurnError& e) {
+    } catch (const io::ResultError& e) {  // a computation without a result (TrimError, NoTurnError, ...)
       raiseResultError(e);
     }
   });

@@ -6,6 +6,7 @@
 #include "scenario/extension_specs.h"
 #include "scenario/parameter_paths.h"
 #include "scenario/scenario_source.h"
+#include "io/output_folder.h"
 #include "io/yaml_map.h"
 
 namespace motostab::scenario {
@@ -187,6 +188,8 @@ Scenario readScenario(const std::string& file, YamlMap& m) {
   Scenario s;
   s.sourceFile = file;
   s.name = m.getString("name");
+  if (const std::string why = io::describeBadFolderName(s.name); !why.empty())
+    m.fail("name", "the name becomes the output folder's name and " + why);
   s.description = m.getString("description", "");
   s.gravity = m.getNonNegative("gravity_mps2");
   if (m.has("speeds_mps")) {

@@ -113,7 +113,7 @@ class LinearTyreForceLaw : public TyreForceLaw {
 };
 
 LinearTyreParameters getRelaxationLinearPreset(const std::string& name) {
-  if (name != "bicycle") throw std::invalid_argument("unknown relaxation_linear preset '" + name + "'");
+  if (name != "bicycle") throw std::logic_error("unknown relaxation_linear preset '" + name + "'");
   // docs/scenario-format.md, "Bicycle tyre preset", gives each value's source.
   LinearTyreParameters p;
   p.corneringStiffness = 15.0;      // Dressel (2013): 0.15-0.35 /deg normalised, mean about 0.25 /deg

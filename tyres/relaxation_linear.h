@@ -34,7 +34,7 @@ struct LinearTyreParameters {
 
 /// A named parameter set for both tyres (per unit load where stated). `bicycle`: measured bicycle
 /// tyres (Dressel & Rahman 2012, Dressel 2013, VTI 2020; docs/scenario-format.md). Unknown names throw
-/// std::invalid_argument.
+/// std::logic_error.
 LinearTyreParameters getRelaxationLinearPreset(const std::string& name);
 std::vector<std::string> getRelaxationLinearPresetNames();
 
