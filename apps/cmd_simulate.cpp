@@ -12,6 +12,7 @@
 #include "io/input_error.h"
 #include "io/output_folder.h"
 #include "output/response_output.h"
+#include "output/scenario_output.h"
 #include "apps/simulate_identify.h"
 #include "output/simulation_output.h"
 
@@ -22,7 +23,6 @@ using io::OutputFolder;
 using output::writeResponsePlot;
 using output::writeTimeseries;
 using scenario::Scenario;
-using scenario::loadScenario;
 
 namespace {
 
@@ -30,7 +30,7 @@ struct SimulateArgs {
   std::string scenario, out, speedControl = "pi", integrator = "auto";
   std::vector<std::string> perturb, overrides;
   double fallLimitDeg = 60, rollDeg = 0;
-  bool identify = false;
+  bool identify = false, strict = false;
   simulation::SimulationOptions options;
 };
 
@@ -76,7 +76,7 @@ void runSimulate(SimulateArgs a) {
     if (!(o.speed > 0)) throw InputError({"command line", 0, 0, "--speed"}, "a steady turn (--roll-deg) needs a speed above 0 m/s");
     o.trim.roll = a.rollDeg * M_PI / 180;
   }
-  const Scenario scenario = loadScenario(a.scenario, a.overrides);
+  const Scenario scenario = loadScenarioReporting(a.scenario, a.overrides, a.strict);
   const std::filesystem::path target = a.out.empty() ? std::filesystem::path(scenario.name + "-simulation")
                                                        : std::filesystem::path(a.out);
   OutputFolder folder(target);
@@ -88,6 +88,7 @@ void runSimulate(SimulateArgs a) {
   bar.finish();
 
   writeTimeseries(out, result);  // complete, also after a fall or a failure
+  output::writeScenarioJson(out, scenario);
   std::cout << "Simulated " << result.endTime << " s of " << scenario.name << " at " << o.speed << " m/s in "
             << result.wallSeconds << " s wall (" << result.steps << " " << result.integrator << " steps, "
             << result.endTime / std::max(result.wallSeconds, 1e-9) << "x real time)\n";
@@ -140,6 +141,7 @@ void registerSimulateCommands(CLI::App& app) {
       ->check(makeRollCheck());
   cmd->add_flag("--identify", a->identify, "Identify modes from roll and steer rate after the last pulse: modes.json");
   cmd->add_option("--set", a->overrides, "Override a scenario value, e.g. --set geometry.trail_m=0.1");
+  addStrictOption(cmd, a->strict);
   cmd->callback([a]() { runSimulate(*a); });
 }
 

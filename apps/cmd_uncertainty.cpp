@@ -15,6 +15,7 @@
 #include "io/output_folder.h"
 #include "scenario/scenario_source.h"
 #include "uncertainty/distributed.h"
+#include "output/scenario_output.h"
 #include "output/uncertainty_output.h"
 
 namespace motostab::cli {
@@ -45,6 +46,7 @@ struct UncertaintyArgs {
   std::string scenario, samples = "1000", seed = "1", method = "mc", speeds, out;
   std::vector<std::string> overrides;
   int threads = 1;
+  bool strict = false;
 };
 
 // An unsigned integer option, all digits; InputError naming the option otherwise.
@@ -95,6 +97,7 @@ void runUncertainty(const UncertaintyArgs& a) {
   DistributedSession session;
   const ParameterOverrides changes(a.overrides);  // the --set text, parsed once
   const Scenario scenario = ScenarioSource(a.scenario).load(changes);
+  reportScenarioWarnings(scenario, a.strict, session.getRank() == 0);
   const UncertaintySetup setup = prepareUncertainty(a.scenario, changes, makeOptions(a, scenario));
   const std::string out = a.out.empty() ? scenario.name + "-uncertainty" : a.out;
   std::unique_ptr<OutputFolder> folder;  // rank 0 writes; inputs are all checked by now
@@ -107,6 +110,7 @@ void runUncertainty(const UncertaintyArgs& a) {
   if (session.getRank() != 0) return;
   const UncertaintySummary summary = summarizeUncertainty(setup, all);
   writeUncertaintyOutputs(folder->getPath(), scenario.name, setup, summary, all);
+  output::writeScenarioJson(folder->getPath(), scenario);
   folder->commit();
   std::cout << makeUncertaintyReport(scenario.name, setup, summary) << "\nWrote " << out
             << "/{summary.json, samples.csv, mode_quantiles.csv, sensitivity.csv, report.md, fan_*, histogram_*, "
@@ -128,6 +132,7 @@ void registerUncertaintyCommands(CLI::App& app) {
   u->add_option("--threads", a->threads, "Worker threads per process (results identical for any number)")->check(makeThreadsCheck());
   u->add_option("--out", a->out, "Output folder (default: SCENARIO-uncertainty)");
   u->add_option("--set", a->overrides, "Override a scenario value, e.g. --set geometry.trail_m=0.1");
+  addStrictOption(u, a->strict);
   u->callback([a]() { runUncertainty(*a); });
 }
 
