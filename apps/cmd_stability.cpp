@@ -92,7 +92,7 @@ void registerSweepCommand(CLI::App& app) {
     opt.step = scenario.speeds.step;
     if (!sweepArgs->speeds.empty()) parseSpeedRange(sweepArgs->speeds, opt.start, opt.stop, opt.step);
     opt.threads = sweepArgs->threads;
-    opt.linearize.computeB = true;  // for linear_models.mat (about 2 % of the sweep's time, docs/commands.md)
+    opt.linearize.computeB = true;  // for linear_models.mat (about 3 % of the sweep's time, docs/commands.md)
     writeScenarioJson(folder.getPath(), scenario);
     if (!sweepArgs->roll.empty()) {
       checkTurnSpeeds(opt.start, sweepArgs->speeds.empty() ? "speeds_mps (the scenario's; override with --speeds)" : "--speeds");

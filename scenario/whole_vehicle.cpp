@@ -18,7 +18,7 @@ InertiaSpec toInertia(const Eigen::Matrix3d& M) { return {M(0, 0), M(1, 1), M(2,
 }  // namespace
 
 const char* const kWholeVehicleDefaultSource =
-    "default for a sport motorcycle with 17-inch wheels (docs/scenario-format.md#whole-vehicle)";
+    "default for a sport motorcycle with 17-inch wheels (docs/scenario-format.md#whole-vehicle-total)";
 
 BodySpec makeWheelBody(const WheelSpec& w, const Vec3d& hub_D) {
   BodySpec b;
