@@ -12,6 +12,7 @@
 #include "apps/option_checks.h"
 #include "diagnosis/diagnosis.h"
 #include "output/diagnosis_output.h"
+#include "output/scenario_output.h"
 #include "io/csv.h"
 #include "io/output_folder.h"
 #include "io/result_error.h"
@@ -50,7 +51,7 @@ void registerDiagnoseCommands(CLI::App& app) {
   struct Args {
     std::string scenario, measurements, out, candidates;
     int maxCauses = 3, folds = 0, threads = 1;
-    bool noRobustness = false;
+    bool noRobustness = false, strict = false;
     std::vector<std::string> overrides;
   };
   auto a = std::make_shared<Args>();
@@ -65,9 +66,11 @@ void registerDiagnoseCommands(CLI::App& app) {
                 "Skip the reruns with each data source left out and speed ranges at mid speeds");
   addOutOption(*cmd, a->out, "the scenario's name");
   cmd->add_option("--set", a->overrides, "Override a scenario value, e.g. --set geometry.trail_m=0.1");
+  addStrictOption(cmd, a->strict);
   cmd->callback([a]() {
     const ParameterOverrides changes(a->overrides);  // the --set text, parsed once
     const Scenario scenario = ScenarioSource(a->scenario).load(changes);
+    reportScenarioWarnings(scenario, a->strict);
     const MeasuredData data = loadMeasuredData(a->measurements);
     DiagnosisOptions opt;
     if (!a->candidates.empty()) opt.candidates = splitFields(a->candidates, ',');
@@ -87,6 +90,7 @@ void registerDiagnoseCommands(CLI::App& app) {
                             (fits.front().failed.empty() ? std::string("no reason") : fits.front().failed.front()) + ")");
     if (terminal) std::fprintf(stderr, "\n");
     writeDiagnosisOutputs(folder.getPath(), result);
+    output::writeScenarioJson(folder.getPath(), scenario);
     folder.commit();
     std::cout << makeDiagnosisReport(result) << "\nWrote " << out
               << "/{diagnosis.json, report.md, residuals.csv, extended.yaml, plots}\n";

@@ -14,6 +14,7 @@
 #include "io/output_folder.h"
 #include "io/result_error.h"
 #include "output/response_output.h"
+#include "output/scenario_output.h"
 #include "apps/simulate_identify.h"
 #include "output/simulation_output.h"
 
@@ -24,7 +25,6 @@ using io::OutputFolder;
 using output::writeResponsePlot;
 using output::writeTimeseries;
 using scenario::Scenario;
-using scenario::loadScenario;
 
 namespace {
 
@@ -32,7 +32,7 @@ struct SimulateArgs {
   std::string scenario, out, speedControl = "pi", integrator = "auto";
   std::vector<std::string> perturb, overrides;
   double fallLimitDeg = 60, rollDeg = 0;
-  bool identify = false;
+  bool identify = false, strict = false;
   simulation::SimulationOptions options;
 };
 
@@ -71,7 +71,7 @@ nlohmann::json describeSettings(const SimulateArgs& a) {
 void runSimulate(SimulateArgs a) {
   a.options = makeSimulationOptions(a.options, a.perturb, a.speedControl, a.integrator, a.fallLimitDeg, a.rollDeg);
   auto& o = a.options;
-  const Scenario scenario = loadScenario(a.scenario, a.overrides);
+  const Scenario scenario = loadScenarioReporting(a.scenario, a.overrides, a.strict);
   const std::filesystem::path target = getOutputFolder(a.out, scenario.name, "simulate");
   OutputFolder folder(target);
   const std::filesystem::path& out = folder.getPath();
@@ -82,6 +82,7 @@ void runSimulate(SimulateArgs a) {
   bar.finish();
 
   writeTimeseries(out, result);  // complete, also after a fall or a failure
+  output::writeScenarioJson(out, scenario);
   std::cout << "Simulated " << result.endTime << " s of " << scenario.name << " at " << o.speed << " m/s in "
             << result.wallSeconds << " s wall (" << result.steps << " " << result.integrator << " steps, "
             << result.endTime / std::max(result.wallSeconds, 1e-9) << "x real time)\n";
@@ -134,6 +135,7 @@ void registerSimulateCommands(CLI::App& app) {
       ->check(makeRollCheck());
   cmd->add_flag("--identify", a->identify, "Identify modes from roll and steer rate after the last pulse: modes.json");
   cmd->add_option("--set", a->overrides, "Override a scenario value, e.g. --set geometry.trail_m=0.1");
+  addStrictOption(cmd, a->strict);
   cmd->callback([a]() { runSimulate(*a); });
 }
 

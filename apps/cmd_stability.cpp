@@ -8,7 +8,9 @@
 #include "analysis/turn_map.h"
 #include "io/input_error.h"
 #include "io/output_folder.h"
+#include "output/linear_models_mat.h"
 #include "output/map_output.h"
+#include "output/scenario_output.h"
 #include "output/study_output.h"
 #include "output/sweep_output.h"
 #include "scenario/scenario_source.h"
@@ -32,13 +34,14 @@ using output::formatSweepTable;
 using output::formatTurnMapTable;
 using output::makeStudyReport;
 using output::writeLinearModel;
+using output::writeLinearModelsMat;
+using output::writeScenarioJson;
 using output::writeStudyOutputs;
 using output::writeSweepOutputs;
 using output::writeTurnMapOutputs;
 using scenario::Scenario;
 using scenario::ScenarioSource;
 using scenario::ParameterOverrides;
-using scenario::loadScenario;
 using studies::StudyOptions;
 using studies::StudyResult;
 using studies::runStudy;
@@ -58,6 +61,7 @@ void registerSweepCommand(CLI::App& app) {
     std::string scenario, speeds, out, roll;
     std::vector<std::string> overrides;
     int threads = 1;
+    bool strict = false;
   };
   auto sweepArgs = std::make_shared<SweepArgs>();
   CLI::App* sweep = app.add_subcommand("sweep", "Linear stability sweep over speed: eigenvalues, modes, critical speeds, plots");
@@ -73,8 +77,9 @@ void registerSweepCommand(CLI::App& app) {
                     "Worker threads (2: about 1.8x faster; results then agree with one thread to the trim "
                     "tolerance, not to the bit)")
       ->check(makeThreadsCheck());
+  addStrictOption(sweep, sweepArgs->strict);
   sweep->callback([sweepArgs]() {
-    const Scenario scenario = loadScenario(sweepArgs->scenario, sweepArgs->overrides);
+    const Scenario scenario = loadScenarioReporting(sweepArgs->scenario, sweepArgs->overrides, sweepArgs->strict);
     const std::string out = getOutputFolder(sweepArgs->out, scenario.name, "sweep");
     OutputFolder folder(out);  // first: a kill from here on leaves the old outputs whole
     const VehicleModel model(scenario);
@@ -84,6 +89,8 @@ void registerSweepCommand(CLI::App& app) {
     opt.step = scenario.speeds.step;
     if (!sweepArgs->speeds.empty()) parseSpeedRange(sweepArgs->speeds, opt.start, opt.stop, opt.step);
     opt.threads = sweepArgs->threads;
+    opt.linearize.computeB = true;  // for linear_models.mat (about 3 % of the sweep's time, docs/commands.md)
+    writeScenarioJson(folder.getPath(), scenario);
     if (!sweepArgs->roll.empty()) {
       checkTurnSpeeds(opt.start, getSpeedsLocation(!sweepArgs->speeds.empty()));
       const std::vector<double> rolls = parseRollAngles(sweepArgs->roll);
@@ -93,21 +100,26 @@ void registerSweepCommand(CLI::App& app) {
         mo.rolls = rolls;
         const TurnMapResult map = runTurnMap(model, mo);
         writeTurnMapOutputs(folder.getPath(), scenario.name, map);
+        std::vector<LinearModel> models;  // every speed of every roll, roll-major
+        for (const SweepResult& s : map.sweeps) models.insert(models.end(), s.models.begin(), s.models.end());
+        writeLinearModelsMat(folder.getPath() / "linear_models.mat", models);
         folder.commit();
         std::cout << "Scenario " << scenario.name << ": " << rolls.size() << " roll angles x "
                   << map.sweeps.front().speeds.size() << " speeds\n"
                   << formatTurnMapTable(map) << "Wrote " << out
-                  << "/{map.csv, map_summary.json, damping_map, root_loci, real_part_vs_speed (.gp/.png/.svg), roll_*/}\n";
+                  << "/{map.csv, map_summary.json, linear_models.mat, scenario.json, damping_map, root_loci, "
+                     "real_part_vs_speed (.gp/.png/.svg), roll_*/}\n";
         return;
       }
       opt.trim.roll = rolls.front();
     }
     const SweepResult result = runSweep(model, opt);
     writeSweepOutputs(folder.getPath(), scenario.name, result);
+    writeLinearModelsMat(folder.getPath() / "linear_models.mat", result.models);
     folder.commit();
     std::cout << "Scenario " << scenario.name << ": " << result.speeds.size() << " speeds\n"
-              << formatSweepTable(result) << "Wrote " << out << "/{eigenvalues.csv, summary.json, root_locus.{png,svg,gp}, "
-              << "real_part_vs_speed.{png,svg,gp}}\n";
+              << formatSweepTable(result) << "Wrote " << out << "/{eigenvalues.csv, summary.json, linear_models.mat, "
+              << "scenario.json, root_locus.{png,svg,gp}, real_part_vs_speed.{png,svg,gp}}\n";
   });
 }
 
@@ -117,6 +129,7 @@ void registerLinearizeCommand(CLI::App& app) {
     std::string scenario, out;
     double speed = 0, rollDeg = NAN;
     std::vector<std::string> overrides;
+    bool strict = false;
   };
   auto linArgs = std::make_shared<LinArgs>();
   CLI::App* lin = app.add_subcommand("linearize", "Trim at one speed and write A, B and the eigenvectors");
@@ -128,8 +141,9 @@ void registerLinearizeCommand(CLI::App& app) {
                   "Linearise about the steady turn at this roll angle (deg, > 0 right); --speed is then the rear "
                   "contact point's speed along its path")
       ->check(makeRollCheck());
+  addStrictOption(lin, linArgs->strict);
   lin->callback([linArgs]() {
-    const Scenario scenario = loadScenario(linArgs->scenario, linArgs->overrides);
+    const Scenario scenario = loadScenarioReporting(linArgs->scenario, linArgs->overrides, linArgs->strict);
     const std::string out = getOutputFolder(linArgs->out, scenario.name, "linearize");
     OutputFolder folder(out);
     const VehicleModel model(scenario);
@@ -141,10 +155,12 @@ void registerLinearizeCommand(CLI::App& app) {
     const TrimResult trim = calcTrim(model, linArgs->speed, trimOptions);
     const LinearModel lm = linearize(model, trim);
     writeLinearModel(folder.getPath(), lm, labelModesOfModel(lm, scenario.geometry.wheelbase));
+    writeLinearModelsMat(folder.getPath() / "linear_models.mat", {lm});
+    writeScenarioJson(folder.getPath(), scenario);
     folder.commit();
     std::cout << "Trim at " << linArgs->speed << " m/s: residual " << trim.residualNorm << " after " << trim.iterations
               << " iterations; " << lm.states.size() << " states. Wrote " << out
-              << "/{A.csv, B.csv, eigenvalues.csv, eigenvectors.csv, linear_model.json}\n";
+              << "/{A.csv, B.csv, eigenvalues.csv, eigenvectors.csv, linear_model.json, linear_models.mat, scenario.json}\n";
   });
 }
 
@@ -158,6 +174,7 @@ void registerStudyCommand(CLI::App& app) {
     std::vector<double> shapeSpeeds{10.0, 18.5, 30.0};
     int threads = 2;
     double rollDeg = 0;
+    bool strict = false;
   };
   auto st = std::make_shared<StudyArgs>();
   CLI::App* study = app.add_subcommand("study", "Swingarm study of seed sec. 4: rigid/bending/torsion/twist sweeps, Figs. 9-12, report");
@@ -180,10 +197,12 @@ void registerStudyCommand(CLI::App& app) {
   study->add_option("--threads", st->threads, "Variants swept in parallel")->check(makeThreadsCheck());
   study->add_option("--roll-deg", st->rollDeg, "Compare the variants about steady turns at this roll angle (deg)")
       ->check(makeRollCheck());
+  addStrictOption(study, st->strict);
   study->callback([st, dampingOption]() {
     const ParameterOverrides changes(st->overrides);  // the --set text, parsed once
     const ScenarioSource source(st->scenario);        // the file, read once for every variant
     const Scenario scenario = source.load(changes);
+    reportScenarioWarnings(scenario, st->strict);
     StudyOptions opt;
     opt.sweep.start = scenario.speeds.start;
     opt.sweep.stop = scenario.speeds.stop;
@@ -202,6 +221,7 @@ void registerStudyCommand(CLI::App& app) {
     const StudyResult result = runStudy(source, opt);
     const studies::StudyFindings findings = studies::calcStudyFindings(result);
     writeStudyOutputs(folder.getPath(), result, findings, opt);
+    writeScenarioJson(folder.getPath(), scenario);
     folder.commit();
     std::cout << makeStudyReport(result, findings, opt) << "\nWrote " << out
               << "/{report.md, study_modes.csv, weave_shapes.csv, fig09..fig12 (.gp/.png/.svg), nominal/, halved/}\n";
@@ -214,6 +234,7 @@ void registerStabilityCommands(CLI::App& app) {
   registerSweepCommand(app);
   registerLinearizeCommand(app);
   registerStudyCommand(app);
+  registerCompareCommands(app);
 }
 
 }  // namespace motostab::cli

@@ -8,6 +8,7 @@
 #include "apps/option_checks.h"
 #include "io/input_error.h"
 #include "io/output_folder.h"
+#include "output/scenario_output.h"
 #include "output/turn_output.h"
 
 namespace motostab::cli {
@@ -20,7 +21,6 @@ using io::OutputFolder;
 using output::formatTrimTable;
 using output::writeTrimJson;
 using scenario::Scenario;
-using scenario::loadScenario;
 using vehicle::VehicleModel;
 
 
@@ -28,7 +28,7 @@ void registerTurnCommands(CLI::App& app) {
   struct TrimArgs {
     std::string scenario, out, speeds;
     double speed = NAN, rollDeg = 0;
-    bool handsFree = false;
+    bool handsFree = false, strict = false;
     std::vector<std::string> overrides;
   };
   auto a = std::make_shared<TrimArgs>();
@@ -44,10 +44,11 @@ void registerTurnCommands(CLI::App& app) {
   trim->add_option("--speeds", a->speeds, "START:STOP:STEP in m/s, the hands-free search range")->check(makeSpeedRangeCheck());
   addOutOption(*trim, a->out, "the scenario's name");
   trim->add_option("--set", a->overrides, "Override a scenario value, e.g. --set geometry.trail_m=0.1");
+  addStrictOption(trim, a->strict);
   trim->callback([a]() {
     if (!a->handsFree && std::isnan(a->speed))
       throw InputError({"command line", 0, 0, "--speed"}, "required unless --hands-free: give the turn's speed in m/s");
-    const Scenario scenario = loadScenario(a->scenario, a->overrides);
+    const Scenario scenario = loadScenarioReporting(a->scenario, a->overrides, a->strict);
     const std::string out = getOutputFolder(a->out, scenario.name, "trim");
     OutputFolder folder(out);
     const VehicleModel model(scenario);
@@ -63,10 +64,11 @@ void registerTurnCommands(CLI::App& app) {
       trim = calcTrim(model, a->speed, opt);
     }
     writeTrimJson(folder.getPath(), model, trim);
+    output::writeScenarioJson(folder.getPath(), scenario);
     folder.commit();
     std::cout << "Scenario " << scenario.name << ": steady turn at roll " << a->rollDeg << " deg"
               << (a->handsFree ? ", hands-free" : "") << "\n"
-              << formatTrimTable(model, trim) << "Wrote " << out << "/trim.json\n";
+              << formatTrimTable(model, trim) << "Wrote " << out << "/{trim.json, scenario.json}\n";
   });
 }
 

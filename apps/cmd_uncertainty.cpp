@@ -19,6 +19,7 @@
 #include "io/result_error.h"
 #include "scenario/scenario_source.h"
 #include "uncertainty/distributed.h"
+#include "output/scenario_output.h"
 #include "output/uncertainty_output.h"
 
 namespace motostab::cli {
@@ -48,6 +49,7 @@ struct UncertaintyArgs {
   std::string scenario, samples = "1000", seed = "1", method = "mc", speeds, out;
   std::vector<std::string> overrides;
   int threads = 1;
+  bool strict = false;
 };
 
 // An unsigned integer option, all digits, in [minimum, maximum]; InputError naming the option otherwise.
@@ -111,6 +113,7 @@ void runUncertainty(const UncertaintyArgs& a) {
   DistributedSession session;
   const ParameterOverrides changes(a.overrides);  // the --set text, parsed once
   const Scenario scenario = ScenarioSource(a.scenario).load(changes);
+  reportScenarioWarnings(scenario, a.strict, session.getRank() == 0);
   const UncertaintySetup setup = prepareUncertainty(a.scenario, changes, makeOptions(a, scenario));
   checkResultSize(a, setup);
   const std::string out = getOutputFolder(a.out, scenario.name, "uncertainty");
@@ -129,6 +132,7 @@ void runUncertainty(const UncertaintyArgs& a) {
                           (failed == all.rend() ? std::string() : " (the last: " + failed->reason + ")"));
   }
   writeUncertaintyOutputs(folder->getPath(), scenario.name, setup, summary, all);
+  output::writeScenarioJson(folder->getPath(), scenario);
   folder->commit();
   std::cout << makeUncertaintyReport(scenario.name, setup, summary) << "\nWrote " << out
             << "/{summary.json, samples.csv, mode_quantiles.csv, sensitivity.csv, report.md, fan_*, histogram_*, "
@@ -150,6 +154,7 @@ void registerUncertaintyCommands(CLI::App& app) {
   u->add_option("--threads", a->threads, "Worker threads per process (results identical for any number)")->check(makeThreadsCheck());
   addOutOption(*u, a->out, "the scenario's name");
   u->add_option("--set", a->overrides, "Override a scenario value, e.g. --set geometry.trail_m=0.1");
+  addStrictOption(u, a->strict);
   u->callback([a]() { runUncertainty(*a); });
 }
 

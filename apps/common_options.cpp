@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iostream>
 #include <limits>
 #include <sstream>
 #include <vector>
@@ -11,6 +12,8 @@
 #include "io/input_error.h"
 #include "io/number.h"
 #include "io/output_folder.h"
+#include "scenario/plausibility.h"
+#include "scenario/scenario.h"
 
 namespace motostab::cli {
 
@@ -122,5 +125,23 @@ CLI::Validator makeRollAnglesCheck() {
 }
 
 CLI::Validator makeThreadsCheck() { return CLI::Range(1, 256); }
+
+void addStrictOption(CLI::App* command, bool& strict) {
+  command->add_flag("--strict", strict,
+                    "Plausibility warnings (likely unit slips or swapped quantities, docs/scenario-format.md) are errors");
+}
+
+void reportScenarioWarnings(const scenario::Scenario& s, bool strict, bool print) {
+  for (const scenario::ScenarioWarning& w : s.warnings) {
+    if (strict) throw InputError(w.where, w.message + " (a plausibility warning; --strict makes it an error)");
+    if (print) std::cerr << "motostab: warning: " << scenario::formatWarning(w) << "\n";
+  }
+}
+
+scenario::Scenario loadScenarioReporting(const std::string& file, const std::vector<std::string>& overrides, bool strict) {
+  scenario::Scenario s = scenario::loadScenario(file, overrides);
+  reportScenarioWarnings(s, strict);
+  return s;
+}
 
 }  // namespace motostab::cli

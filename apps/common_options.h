@@ -7,6 +7,8 @@
 #include <string>
 #include <vector>
 
+#include "scenario/scenario.h"
+
 namespace motostab::cli {
 
 struct NumberRange;  // apps/option_checks.h
@@ -51,5 +53,14 @@ CLI::Validator makeRollAnglesCheck();
 
 /// The worker-thread option range, 1..256.
 CLI::Validator makeThreadsCheck();
+
+/// Adds `--strict` (plausibility warnings are errors, exit 2) to a command that reads a scenario.
+void addStrictOption(CLI::App* command, bool& strict);
+/// Prints each plausibility warning of `scenario` (scenario/plausibility.h) to stderr as
+/// "motostab: warning: FILE:LINE:COL: KEY: ..." (when `print`), or with `strict` throws an InputError
+/// at the first one.
+void reportScenarioWarnings(const scenario::Scenario& scenario, bool strict, bool print = true);
+/// loadScenario(file, overrides), then reportScenarioWarnings.
+scenario::Scenario loadScenarioReporting(const std::string& file, const std::vector<std::string>& overrides, bool strict);
 
 }  // namespace motostab::cli

@@ -138,6 +138,8 @@ std::string makeEigenvaluePlot(const std::string& name, const SweepResult& sweep
 
 }  // namespace
 
+std::vector<std::string> getPlottedModes() { return {std::begin(kPlottedModes), std::end(kPlottedModes)}; }
+
 nlohmann::json makeSweepSummary(const std::string& name, const SweepResult& sweep) {
   nlohmann::json j;
   j["scenario"] = name;

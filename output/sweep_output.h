@@ -13,6 +13,9 @@ namespace motostab::output {
 double calcFrequencyHz(std::complex<double> lambda);
 double calcDampingRatio(std::complex<double> lambda);
 
+/// The modes the sweep plots draw, in their order (weave, capsize, castor, wobble).
+std::vector<std::string> getPlottedModes();
+
 /// DIR/eigenvalues.csv and DIR/summary.json only.
 void writeSweepData(const std::filesystem::path& dir, const std::string& scenarioName, const analysis::SweepResult& sweep);
 
