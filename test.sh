@@ -12,7 +12,8 @@ mode="${1:-}"
 case "$mode" in
   --sanitize)
     shift
-    export MOTOSTAB_BUILD_DIR=build-asan MOTOSTAB_CMAKE_ARGS="-DMOTOSTAB_BUILD_BENCH=OFF -DMOTOSTAB_EIGEN_CHECKS=ON"
+    # Without the Python module: an instrumented extension cannot load into the plain interpreter.
+    export MOTOSTAB_BUILD_DIR=build-asan MOTOSTAB_CMAKE_ARGS="-DMOTOSTAB_BUILD_BENCH=OFF -DMOTOSTAB_EIGEN_CHECKS=ON -DMOTOSTAB_PYTHON=OFF"
     export MOTOSTAB_CXX_FLAGS="-fsanitize=address,undefined -fno-sanitize-recover=undefined -fno-omit-frame-pointer"
     export ASAN_OPTIONS="${ASAN_OPTIONS:-detect_leaks=1:abort_on_error=1:strict_string_checks=1}"
     export UBSAN_OPTIONS="${UBSAN_OPTIONS:-print_stacktrace=1:halt_on_error=1}"
@@ -22,7 +23,7 @@ case "$mode" in
   --tsan)
     shift
     # Without the precompiled header and unity groups, so a missing #include is caught here.
-    export MOTOSTAB_BUILD_DIR=build-tsan MOTOSTAB_CMAKE_ARGS="-DMOTOSTAB_BUILD_BENCH=OFF -DMOTOSTAB_EIGEN_CHECKS=ON -DMOTOSTAB_PCH=OFF -DMOTOSTAB_UNITY_GROUPS=OFF"
+    export MOTOSTAB_BUILD_DIR=build-tsan MOTOSTAB_CMAKE_ARGS="-DMOTOSTAB_BUILD_BENCH=OFF -DMOTOSTAB_EIGEN_CHECKS=ON -DMOTOSTAB_PCH=OFF -DMOTOSTAB_UNITY_GROUPS=OFF -DMOTOSTAB_PYTHON=OFF"
     export MOTOSTAB_CXX_FLAGS="-fsanitize=thread -fno-omit-frame-pointer"
     export TSAN_OPTIONS="${TSAN_OPTIONS:-halt_on_error=1:second_deadlock_stack=1}"
     "$root/scripts/build.sh" test_core test_analysis test_apps test_plugins test_uncertainty test_diagnosis motostab

@@ -145,7 +145,7 @@ void continueTurn(const VehicleModel& model, double speed, const TrimOptions& op
 }  // namespace detail
 
 NoTurnError::NoTurnError(double phi, double lo, double hi, double tLo, double tHi)
-    : std::runtime_error([&] {
+    : io::ResultError([&] {
         std::ostringstream os;
         os << "no hands-free turn at roll " << phi * 180 / M_PI << " deg between " << lo << " and " << hi
            << " m/s: the steer torque of steady turns is " << tLo << " N m at " << lo << " m/s and " << tHi

@@ -29,7 +29,7 @@ std::string trimMessage(double speed, double residual, int iterations, double ro
 }  // namespace
 
 TrimError::TrimError(double v, double r, int it, double phi, const std::string& detail)
-    : std::runtime_error(trimMessage(v, r, it, phi, detail)), speed(v), residual(r), roll(phi) {}
+    : io::ResultError(trimMessage(v, r, it, phi, detail)), speed(v), residual(r), roll(phi) {}
 
 std::vector<StateEntry> getTrimUnknowns(const VehicleModel& model) {
   std::vector<StateEntry> out;

@@ -16,6 +16,7 @@
 #include <string>
 
 #include "analysis/state_function.h"
+#include "io/result_error.h"
 
 namespace motostab::analysis {
 
@@ -79,8 +80,9 @@ struct TrimPoint : TrimSummary {
   Eigen::VectorXd inputs;
 };
 
-/// A trim that did not converge: names the speed, the roll (turns) and the residual.
-class TrimError : public std::runtime_error {
+/// A trim that did not converge: names the speed, the roll (turns) and the residual. Valid input
+/// without a result: exit code 3 (io/result_error.h).
+class TrimError : public io::ResultError {
  public:
   /// `detail`, if any, is appended in parentheses (e.g. the continuation step that failed).
   TrimError(double speed, double residual, int iterations, double roll = NAN, const std::string& detail = "");
@@ -117,8 +119,9 @@ TrimResult calcTrim(const vehicle::VehicleModel& model, double speed, const Trim
 /// iterate and the Jacobian it used, without the predictor data (slopes, curvature).
 void updTrim(const vehicle::VehicleModel& model, double speed, const TrimOptions& options, TrimResult& trim);
 
-/// No hands-free turn was found: the steer torque of the fixed-speed turns kept its sign over the speeds.
-class NoTurnError : public std::runtime_error {
+/// No hands-free turn was found: the steer torque of the fixed-speed turns kept its sign over the speeds
+/// (a result error, exit code 3).
+class NoTurnError : public io::ResultError {
  public:
   NoTurnError(double roll, double low, double high, double torqueLow, double torqueHigh);
   double roll, low, high;  ///< rad; m/s, the speeds where turns were trimmed

@@ -1,15 +1,21 @@
 // motostab diagnose: measured data -> what the model gets wrong, its cause, the extended model, the gain.
 #include <unistd.h>
 
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
 
 #include "apps/commands.h"
+#include "apps/common_options.h"
+#include "apps/option_checks.h"
 #include "diagnosis/diagnosis.h"
 #include "output/diagnosis_output.h"
+#include "output/scenario_output.h"
 #include "io/csv.h"
 #include "io/output_folder.h"
+#include "io/result_error.h"
 #include "scenario/scenario.h"
 #include "scenario/scenario_source.h"
 
@@ -45,7 +51,7 @@ void registerDiagnoseCommands(CLI::App& app) {
   struct Args {
     std::string scenario, measurements, out, candidates;
     int maxCauses = 3, folds = 0, threads = 1;
-    bool noRobustness = false;
+    bool noRobustness = false, strict = false;
     std::vector<std::string> overrides;
   };
   auto a = std::make_shared<Args>();
@@ -53,16 +59,18 @@ void registerDiagnoseCommands(CLI::App& app) {
   cmd->add_option("scenario", a->scenario, "Scenario YAML file")->required()->check(CLI::ExistingFile);
   cmd->add_option("measurements", a->measurements, "Measured-data YAML file (docs/measured-data-format.md)")->required();
   cmd->add_option("--candidates", a->candidates, "Comma list of candidate names or globs (default: all)");
-  cmd->add_option("--max-causes", a->maxCauses, "Causes named at most (forward stepwise)")->check(CLI::Range(0, 20));
-  cmd->add_option("--folds", a->folds, "Cross-validation folds (default 5, or one per run)")->check(CLI::Range(2, 1000));
-  cmd->add_option("--threads", a->threads, "Candidates fitted in parallel")->check(CLI::Range(1, 256));
+  cmd->add_option("--max-causes", a->maxCauses, "Causes named at most (forward stepwise)")->check(CLI::Range(kMaxCauses.low, kMaxCauses.high));
+  cmd->add_option("--folds", a->folds, "Cross-validation folds (default 5, or one per run)")->check(CLI::Range(kFolds.low, kFolds.high));
+  cmd->add_option("--threads", a->threads, "Candidates fitted in parallel")->check(makeThreadsCheck());
   cmd->add_flag("--no-robustness", a->noRobustness,
                 "Skip the reruns with each data source left out and speed ranges at mid speeds");
-  cmd->add_option("--out", a->out, "Output folder (default: diagnosis-<scenario name>)");
+  addOutOption(*cmd, a->out, "the scenario's name");
   cmd->add_option("--set", a->overrides, "Override a scenario value, e.g. --set geometry.trail_m=0.1");
+  addStrictOption(cmd, a->strict);
   cmd->callback([a]() {
     const ParameterOverrides changes(a->overrides);  // the --set text, parsed once
     const Scenario scenario = ScenarioSource(a->scenario).load(changes);
+    reportScenarioWarnings(scenario, a->strict);
     const MeasuredData data = loadMeasuredData(a->measurements);
     DiagnosisOptions opt;
     if (!a->candidates.empty()) opt.candidates = splitFields(a->candidates, ',');
@@ -73,16 +81,16 @@ void registerDiagnoseCommands(CLI::App& app) {
     opt.robustness = !a->noRobustness;
     const bool terminal = isatty(fileno(stderr));
     if (terminal) opt.progress = showProgress;
-    const std::string out = a->out.empty() ? "diagnosis-" + scenario.name : a->out;
+    const std::string out = getOutputFolder(a->out, scenario.name, "diagnose");
     OutputFolder folder(out);  // inputs read; from here an error or a kill leaves the old outputs whole
-    DiagnosisResult result;
-    try {
-      result = runDiagnosis(a->scenario, data, opt);
-    } catch (const std::invalid_argument& e) {
-      throw InputError({"--candidates", 0, 0, a->candidates}, e.what());
-    }
+    const DiagnosisResult result = runDiagnosis(a->scenario, data, opt);
+    const auto& fits = result.candidates;  // a failed fit has no score (diagnosis/model_fit.h, fitOrFail)
+    if (!fits.empty() && std::none_of(fits.begin(), fits.end(), [](const auto& f) { return std::isfinite(f.bic); }))
+      throw io::ResultError("every one of the " + std::to_string(fits.size()) + " candidates failed to fit (the first: " +
+                            (fits.front().failed.empty() ? std::string("no reason") : fits.front().failed.front()) + ")");
     if (terminal) std::fprintf(stderr, "\n");
     writeDiagnosisOutputs(folder.getPath(), result);
+    output::writeScenarioJson(folder.getPath(), scenario);
     folder.commit();
     std::cout << makeDiagnosisReport(result) << "\nWrote " << out
               << "/{diagnosis.json, report.md, residuals.csv, extended.yaml, plots}\n";

@@ -4,6 +4,7 @@
 #include <memory>
 
 #include "apps/commands.h"
+#include "apps/common_options.h"
 #include "io/output_folder.h"
 #include "output/response_output.h"
 #include "response/response_csv.h"
@@ -32,8 +33,7 @@ void runResponseIdentify(ResponseArgs args) {
   response::ResponseRecord record;
   const auto result = response::identifyModesFromCsv(request, &record);
   const std::filesystem::path out =
-      args.out.empty() ? std::filesystem::path(std::filesystem::path(args.csv).stem().string() + "-modes")
-                       : std::filesystem::path(args.out);
+      getOutputFolder(args.out, std::filesystem::path(args.csv).stem().string(), "identify-response");
   std::cout << output::formatModesTable(result, record.signalColumns);
   OutputFolder folder(out);
   output::writeResponseReport(folder.getPath(), record, result);
@@ -53,7 +53,9 @@ void registerResponseIdentifyCommands(CLI::App& identify) {
       ->required();
   cmd->add_option("--time", args->request.timeColumn, "Time column in s (default: the first column)");
   cmd->add_option("--window", args->window, "Fit window T0:T1 in s (default: the whole record)");
-  cmd->add_option("--out", args->out, "Output folder (default: <csv stem>-modes)");
+  cmd->add_option("--out", args->out,
+                  "Output folder (default: CSV's stem-identify-response in the working folder; replaced whole only if "
+                  "motostab wrote it)");
   cmd->add_option("--max-order", args->request.options.maxOrder,
                   "Largest model order tried (complex pair = 2, real exponential = 1)")
       ->capture_default_str()

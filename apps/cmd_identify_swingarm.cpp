@@ -139,6 +139,16 @@ void runVirtualRig(const Args& args) {
               folder.getTarget().c_str());
 }
 
+// `args` with the output folder of the convention (apps/common_options.h): NAME the first input's stem.
+Args withOutputFolder(Args args, const std::string& command) {
+  const std::string stem = args.first.empty() ? "" : std::filesystem::path(args.first).stem().string();
+  args.out = getOutputFolder(args.out, stem, "identify-" + command);
+  return args;
+}
+
+const char* const kOutHelp = "output folder (default: NAME-identify-COMMAND in the working folder, NAME the first input's "
+                             "stem; replaced whole only if motostab wrote it)";
+
 }  // namespace
 
 void registerSwingarmIdentifyCommands(CLI::App& identify) {
@@ -146,8 +156,8 @@ void registerSwingarmIdentifyCommands(CLI::App& identify) {
   auto addTest = [&](const char* name, const char* help, const char* what, void (*run)(const Args&)) {
     CLI::App* c = identify.add_subcommand(name, help);
     c->add_option("test", args->first, what)->required()->check(CLI::ExistingFile);
-    c->add_option("--out", args->out, "output folder")->required();
-    c->callback([args, run] { run(*args); });
+    c->add_option("--out", args->out, kOutHelp);
+    c->callback([args, run, name] { run(withOutputFolder(*args, name)); });
     return c;
   };
   addTest("static", "Static twist axis, k_lat, a_tw, k_tw (seed eq. 1-4)", "static test YAML", runStatic);
@@ -159,15 +169,15 @@ void registerSwingarmIdentifyCommands(CLI::App& identify) {
   CLI::App* sw = identify.add_subcommand("swingarm", "Whole chain: bending/torsion/twist stiffness and damping (seed eq. 1-25)");
   sw->add_option("static", args->first, "static test YAML")->required()->check(CLI::ExistingFile);
   sw->add_option("frf", args->second, "hammer test YAML")->required()->check(CLI::ExistingFile);
-  sw->add_option("--out", args->out, "output folder")->required();
+  sw->add_option("--out", args->out, kOutHelp);
   sw->add_flag("--verbose", args->verbose, "print the stabilisation summary");
-  sw->callback([args] { runSwingarm(*args); });
+  sw->callback([args] { runSwingarm(withOutputFolder(*args, "swingarm")); });
 
   CLI::App* vr = identify.add_subcommand("virtual-rig", "Write synthetic test inputs from the virtual rig (known truth)");
-  vr->add_option("--out", args->out, "output folder")->required();
+  vr->add_option("--out", args->out, "output folder (default: identify-virtual-rig in the working folder)");
   vr->add_option("--noise-factor", args->noiseFactor, "scale every noise figure (1 = realistic)")->check(makeNumberCheck(0, 1e6, true));
   vr->add_option("--seed", args->seed, "random seed");
-  vr->callback([args] { runVirtualRig(*args); });
+  vr->callback([args] { runVirtualRig(withOutputFolder(*args, "virtual-rig")); });
 }
 
 }  // namespace motostab::cli

@@ -3,28 +3,24 @@
 #include <iostream>
 
 #include "apps/commands.h"
+#include "apps/common_options.h"
 #include "io/atomic_file.h"
+#include "output/scenario_output.h"
 #include "scenario/bicycle_parameters.h"
-#include "scenario/bicycle_parameters_uncertainty.h"
 #include "vehicle/vehicle_model.h"
 
 namespace motostab::cli {
 
 using io::writeFileAtomically;
+using output::formatVehicleTable;
 using scenario::ForkComplianceSpec;
 using scenario::InertiaRepair;
-using scenario::MassSummary;
 using scenario::Scenario;
 using scenario::SteerControllerSpec;
-using scenario::calcMassSummary;
-using scenario::calcNormalTrail;
 using scenario::calcStaticPivotMoment;
-using scenario::calcStaticWheelLoads;
 using scenario::calcSuspensionLever;
-using scenario::convertBicycleParametersToScenario;
-using scenario::formatBicycleParametersUncertainty;
 using scenario::loadScenario;
-using scenario::readBicycleParameterSigmas;
+using scenario::writeBicycleParametersScenario;
 using vehicle::VehicleModel;
 
 namespace {
@@ -75,22 +71,22 @@ void printInertiaRepairs(const std::vector<InertiaRepair>& repairs) {
 }  // namespace
 
 void registerScenarioCommands(CLI::App& app) {
-  auto check = std::make_shared<std::pair<std::string, std::vector<std::string>>>();
-  CLI::App* c = app.add_subcommand("check", "Validate a scenario and print derived quantities");
-  c->add_option("scenario", check->first, "Scenario YAML file")->required()->check(CLI::ExistingFile);
-  c->add_option("--set", check->second, "Override a scenario value");
+  struct CheckArgs {
+    std::string scenario;
+    std::vector<std::string> overrides;
+    bool strict = false;
+  };
+  auto check = std::make_shared<CheckArgs>();
+  CLI::App* c = app.add_subcommand("check", "Validate a scenario; print the whole vehicle (Table 6 form), its bodies and warnings");
+  c->add_option("scenario", check->scenario, "Scenario YAML file")->required()->check(CLI::ExistingFile);
+  c->add_option("--set", check->overrides, "Override a scenario value");
+  addStrictOption(c, check->strict);
   c->callback([check]() {
-    const Scenario s = loadScenario(check->first, check->second);
+    const Scenario s = loadScenarioReporting(check->scenario, check->overrides, check->strict);
     const VehicleModel model(s);  // also validates the plugins
-    const MassSummary ms = calcMassSummary(s);
-    const auto loads = calcStaticWheelLoads(s);
-    std::cout << std::fixed << std::setprecision(4) << "Scenario " << s.name << " is valid.\n"
-              << "  total mass            " << ms.mass << " kg\n"
-              << "  centre of mass        x " << ms.com[0] << " m, y " << ms.com[1] << " m, z " << ms.com[2]
-              << " m (from the rear contact, z up)\n"
-              << "  normal trail          " << calcNormalTrail(s.geometry) << " m\n"
-              << "  static wheel loads    rear " << loads[0] << " N, front " << loads[1] << " N\n"
-              << "  contact model         " << s.contact.model << "\n"
+    std::cout << "Scenario " << s.name << " is valid" << (s.warnings.empty() ? "" : " (plausibility warnings above)")
+              << ".\n" << formatVehicleTable(s) << std::fixed << std::setprecision(4)
+              << "Model\n  contact model         " << s.contact.model << "\n"
               << "  degrees of freedom    " << model.getNumQ() << " coordinates, " << model.getNumZ() << " auxiliary states\n";
     if (s.hasSwingarm) {
       std::cout << "  swingarm              compliance " << s.swingarm.compliance << ", pivot "
@@ -120,11 +116,9 @@ void registerScenarioCommands(CLI::App& app) {
               "Move a frame's I_yy onto the triangle-inequality bound (unused by the linear Whipple model)");
   i->callback([imp]() {
     const std::string name = imp->name.empty() ? std::filesystem::path(imp->out).stem().string() : imp->name;
-    std::vector<InertiaRepair> repairs;
-    const std::string text = convertBicycleParametersToScenario(imp->file, name, {imp->repairInertia}, &repairs);
+    std::vector<InertiaRepair> repairs;  // written only once it loads; errors at the parameter file's lines
+    writeBicycleParametersScenario(imp->file, name, imp->out, {imp->repairInertia}, &repairs);
     printInertiaRepairs(repairs);
-    writeFileAtomically(imp->out, text + formatBicycleParametersUncertainty(readBicycleParameterSigmas(imp->file)));
-    loadScenario(imp->out);  // what we write must load
     std::cout << "Wrote " << imp->out << "\n";
   });
 }

@@ -9,9 +9,12 @@
 
 #include "apps/commands.h"
 #include "apps/common_options.h"
+#include "apps/option_checks.h"
 #include "io/input_error.h"
 #include "io/output_folder.h"
+#include "io/result_error.h"
 #include "output/response_output.h"
+#include "output/scenario_output.h"
 #include "apps/simulate_identify.h"
 #include "output/simulation_output.h"
 
@@ -22,7 +25,6 @@ using io::OutputFolder;
 using output::writeResponsePlot;
 using output::writeTimeseries;
 using scenario::Scenario;
-using scenario::loadScenario;
 
 namespace {
 
@@ -30,7 +32,7 @@ struct SimulateArgs {
   std::string scenario, out, speedControl = "pi", integrator = "auto";
   std::vector<std::string> perturb, overrides;
   double fallLimitDeg = 60, rollDeg = 0;
-  bool identify = false;
+  bool identify = false, strict = false;
   simulation::SimulationOptions options;
 };
 
@@ -67,18 +69,10 @@ nlohmann::json describeSettings(const SimulateArgs& a) {
 }
 
 void runSimulate(SimulateArgs a) {
+  a.options = makeSimulationOptions(a.options, a.perturb, a.speedControl, a.integrator, a.fallLimitDeg, a.rollDeg);
   auto& o = a.options;
-  for (const auto& spec : a.perturb) o.perturbations.push_back(simulation::parsePerturbation(spec));
-  o.speedControl = simulation::parseSpeedControl(a.speedControl);
-  o.integrator = simulation::parseIntegratorKind(a.integrator);
-  o.fallRollLimit = a.fallLimitDeg * M_PI / 180;
-  if (a.rollDeg != 0) {
-    if (!(o.speed > 0)) throw InputError({"command line", 0, 0, "--speed"}, "a steady turn (--roll-deg) needs a speed above 0 m/s");
-    o.trim.roll = a.rollDeg * M_PI / 180;
-  }
-  const Scenario scenario = loadScenario(a.scenario, a.overrides);
-  const std::filesystem::path target = a.out.empty() ? std::filesystem::path(scenario.name + "-simulation")
-                                                       : std::filesystem::path(a.out);
+  const Scenario scenario = loadScenarioReporting(a.scenario, a.overrides, a.strict);
+  const std::filesystem::path target = getOutputFolder(a.out, scenario.name, "simulate");
   OutputFolder folder(target);
   const std::filesystem::path& out = folder.getPath();
 
@@ -88,6 +82,7 @@ void runSimulate(SimulateArgs a) {
   bar.finish();
 
   writeTimeseries(out, result);  // complete, also after a fall or a failure
+  output::writeScenarioJson(out, scenario);
   std::cout << "Simulated " << result.endTime << " s of " << scenario.name << " at " << o.speed << " m/s in "
             << result.wallSeconds << " s wall (" << result.steps << " " << result.integrator << " steps, "
             << result.endTime / std::max(result.wallSeconds, 1e-9) << "x real time)\n";
@@ -105,7 +100,7 @@ void runSimulate(SimulateArgs a) {
   }
   folder.commit();  // also after a fall or a failure: the samples up to it are the run's outputs
   // A failure is reported after the data up to it has been written.
-  if (result.status == simulation::SimulationStatus::Failed) throw std::runtime_error(result.message);
+  if (result.status == simulation::SimulationStatus::Failed) throw io::ResultError(result.message);
 }
 
 }  // namespace
@@ -116,11 +111,11 @@ void registerSimulateCommands(CLI::App& app) {
   cmd->add_option("scenario", a->scenario, "Scenario YAML file")->required()->check(CLI::ExistingFile);
   cmd->add_option("--speed", a->options.speed, "Trim and target forward speed, m/s")
       ->required()
-      ->check(makeNumberCheck(0, 1e3));
+      ->check(makeNumberCheck(kSpeedMps));
   cmd->add_option("--perturb", a->perturb,
                   "Perturbation (repeatable):\n" + simulation::getPerturbationSyntax());
   cmd->add_option("--duration", a->options.duration, "Simulated time, s")->required()->check(makeNumberCheck(0, 1e6, true));
-  cmd->add_option("--out", a->out, "Output folder (default: <scenario name>-simulation)");
+  addOutOption(*cmd, a->out, "the scenario's name");
   cmd->add_option("--speed-control", a->speedControl, "none (coast) or pi (drive-torque PI controller)")
       ->capture_default_str();
   cmd->add_option("--integrator", a->integrator, "auto (ROS34PW2 without constraints, else RungeKuttaMerson), ROS34PW2, RungeKuttaMerson, RungeKutta3, CPodes or Verlet")
@@ -140,6 +135,7 @@ void registerSimulateCommands(CLI::App& app) {
       ->check(makeRollCheck());
   cmd->add_flag("--identify", a->identify, "Identify modes from roll and steer rate after the last pulse: modes.json");
   cmd->add_option("--set", a->overrides, "Override a scenario value, e.g. --set geometry.trail_m=0.1");
+  addStrictOption(cmd, a->strict);
   cmd->callback([a]() { runSimulate(*a); });
 }
 

@@ -4,11 +4,14 @@
 
 #include "apps/commands.h"
 #include "apps/common_options.h"
+#include "apps/option_checks.h"
 #include "analysis/turn_map.h"
 #include "io/input_error.h"
 #include "io/output_folder.h"
 #include "io/result_error.h"
+#include "output/linear_models_mat.h"
 #include "output/map_output.h"
+#include "output/scenario_output.h"
 #include "output/study_output.h"
 #include "output/sweep_output.h"
 #include "scenario/scenario_source.h"
@@ -34,13 +37,14 @@ using output::formatSweepTable;
 using output::formatTurnMapTable;
 using output::makeStudyReport;
 using output::writeLinearModel;
+using output::writeLinearModelsMat;
+using output::writeScenarioJson;
 using output::writeStudyOutputs;
 using output::writeSweepOutputs;
 using output::writeTurnMapOutputs;
 using scenario::Scenario;
 using scenario::ScenarioSource;
 using scenario::ParameterOverrides;
-using scenario::loadScenario;
 using studies::StudyOptions;
 using studies::StudyResult;
 using studies::runStudy;
@@ -57,11 +61,9 @@ void reportPartial(size_t failed, size_t total, const std::string& what, const s
                     " did not trim; the others are in " + out + " (the failed ones listed in its summary)");
 }
 
-// Turns need a positive speed: the slowest speed of a turn sweep or linearisation.
-void checkTurnSpeeds(double slowest, const std::string& key) {
-  if (slowest > 0) return;
-  throw InputError({"command line", 0, 0, key},
-                   "steady turns (--roll-deg) need speeds above 0 m/s: start the speed grid above 0, e.g. --speeds 1:40:1");
+// Where the speeds of a turn come from: --speeds, or the scenario's speeds_mps.
+io::InputLocation getSpeedsLocation(bool fromOption) {
+  return {"command line", 0, 0, fromOption ? "--speeds" : "speeds_mps (the scenario's; override with --speeds)"};
 }
 
 // motostab sweep: eigenvalues over speed, or a speed x roll map of steady turns.
@@ -70,13 +72,14 @@ void registerSweepCommand(CLI::App& app) {
     std::string scenario, speeds, out, roll;
     std::vector<std::string> overrides;
     int threads = 1;
+    bool strict = false;
   };
   auto sweepArgs = std::make_shared<SweepArgs>();
   CLI::App* sweep = app.add_subcommand("sweep", "Linear stability sweep over speed: eigenvalues, modes, critical speeds, plots");
   sweep->add_option("scenario", sweepArgs->scenario, "Scenario YAML file")->required()->check(CLI::ExistingFile);
   sweep->add_option("--speeds", sweepArgs->speeds, "START:STOP:STEP in m/s (default: the scenario's speeds_mps)")
       ->check(makeSpeedRangeCheck());
-  sweep->add_option("--out", sweepArgs->out, "Output folder (default: named after the scenario)");
+  addOutOption(*sweep, sweepArgs->out, "the scenario's name");
   sweep->add_option("--set", sweepArgs->overrides, "Override a scenario value, e.g. --set geometry.trail_m=0.1");
   sweep->add_option("--roll-deg", sweepArgs->roll,
                     "Steady turns at this roll angle (deg, > 0 right), or a speed x roll map over A:B:STEP")
@@ -85,9 +88,10 @@ void registerSweepCommand(CLI::App& app) {
                     "Worker threads (2: about 1.8x faster; results then agree with one thread to the trim "
                     "tolerance, not to the bit)")
       ->check(makeThreadsCheck());
+  addStrictOption(sweep, sweepArgs->strict);
   sweep->callback([sweepArgs]() {
-    const Scenario scenario = loadScenario(sweepArgs->scenario, sweepArgs->overrides);
-    const std::string out = sweepArgs->out.empty() ? scenario.name : sweepArgs->out;
+    const Scenario scenario = loadScenarioReporting(sweepArgs->scenario, sweepArgs->overrides, sweepArgs->strict);
+    const std::string out = getOutputFolder(sweepArgs->out, scenario.name, "sweep");
     OutputFolder folder(out);  // first: a kill from here on leaves the old outputs whole
     const VehicleModel model(scenario);
     SweepOptions opt;
@@ -97,8 +101,10 @@ void registerSweepCommand(CLI::App& app) {
     if (!sweepArgs->speeds.empty()) parseSpeedRange(sweepArgs->speeds, opt.start, opt.stop, opt.step);
     opt.threads = sweepArgs->threads;
     opt.keepFailedSpeeds = true;
+    opt.linearize.computeB = true;  // for linear_models.mat (about 3 % of the sweep's time, docs/commands.md)
+    writeScenarioJson(folder.getPath(), scenario);
     if (!sweepArgs->roll.empty()) {
-      checkTurnSpeeds(opt.start, sweepArgs->speeds.empty() ? "speeds_mps (the scenario's; override with --speeds)" : "--speeds");
+      checkTurnSpeeds(opt.start, getSpeedsLocation(!sweepArgs->speeds.empty()));
       const std::vector<double> rolls = parseRollAngles(sweepArgs->roll);
       if (rolls.size() > 1) {
         TurnMapOptions mo;
@@ -106,11 +112,15 @@ void registerSweepCommand(CLI::App& app) {
         mo.rolls = rolls;
         const TurnMapResult map = runTurnMap(model, mo);
         writeTurnMapOutputs(folder.getPath(), scenario.name, map);
+        std::vector<LinearModel> models;  // every speed of every roll, roll-major
+        for (const SweepResult& s : map.sweeps) models.insert(models.end(), s.models.begin(), s.models.end());
+        writeLinearModelsMat(folder.getPath() / "linear_models.mat", models);
         folder.commit();
         const size_t grid = analysis::makeSpeedGrid(opt.start, opt.stop, opt.step).size();
         std::cout << "Scenario " << scenario.name << ": " << rolls.size() << " roll angles x " << grid << " speeds\n"
                   << formatTurnMapTable(map) << "Wrote " << out
-                  << "/{map.csv, map_summary.json, damping_map, root_loci, real_part_vs_speed (.gp/.png/.svg), roll_*/}\n";
+                  << "/{map.csv, map_summary.json, linear_models.mat, scenario.json, damping_map, root_loci, "
+                     "real_part_vs_speed (.gp/.png/.svg), roll_*/}\n";
         reportPartial(map.countFailedPoints() + map.failedRolls.size() * grid, rolls.size() * grid, "points of the map", out);
         return;
       }
@@ -118,10 +128,11 @@ void registerSweepCommand(CLI::App& app) {
     }
     const SweepResult result = runSweep(model, opt);
     writeSweepOutputs(folder.getPath(), scenario.name, result);
+    writeLinearModelsMat(folder.getPath() / "linear_models.mat", result.models);
     folder.commit();
     std::cout << "Scenario " << scenario.name << ": " << result.speeds.size() << " speeds\n"
-              << formatSweepTable(result) << "Wrote " << out << "/{eigenvalues.csv, summary.json, root_locus.{png,svg,gp}, "
-              << "real_part_vs_speed.{png,svg,gp}}\n";
+              << formatSweepTable(result) << "Wrote " << out << "/{eigenvalues.csv, summary.json, linear_models.mat, "
+              << "scenario.json, root_locus.{png,svg,gp}, real_part_vs_speed.{png,svg,gp}}\n";
     reportPartial(result.failures.size(), result.failures.size() + result.speeds.size(), "speeds", out);
   });
 }
@@ -132,33 +143,38 @@ void registerLinearizeCommand(CLI::App& app) {
     std::string scenario, out;
     double speed = 0, rollDeg = NAN;
     std::vector<std::string> overrides;
+    bool strict = false;
   };
   auto linArgs = std::make_shared<LinArgs>();
   CLI::App* lin = app.add_subcommand("linearize", "Trim at one speed and write A, B and the eigenvectors");
   lin->add_option("scenario", linArgs->scenario, "Scenario YAML file")->required()->check(CLI::ExistingFile);
-  lin->add_option("--speed", linArgs->speed, "Forward speed, m/s")->required()->check(makeNumberCheck(0, 1e3));
-  lin->add_option("--out", linArgs->out, "Output folder")->required();
+  lin->add_option("--speed", linArgs->speed, "Forward speed, m/s")->required()->check(makeNumberCheck(kSpeedMps));
+  addOutOption(*lin, linArgs->out, "the scenario's name");
   lin->add_option("--set", linArgs->overrides, "Override a scenario value");
   lin->add_option("--roll-deg", linArgs->rollDeg,
                   "Linearise about the steady turn at this roll angle (deg, > 0 right); --speed is then the rear "
                   "contact point's speed along its path")
       ->check(makeRollCheck());
+  addStrictOption(lin, linArgs->strict);
   lin->callback([linArgs]() {
-    const Scenario scenario = loadScenario(linArgs->scenario, linArgs->overrides);
-    OutputFolder folder(linArgs->out);
+    const Scenario scenario = loadScenarioReporting(linArgs->scenario, linArgs->overrides, linArgs->strict);
+    const std::string out = getOutputFolder(linArgs->out, scenario.name, "linearize");
+    OutputFolder folder(out);
     const VehicleModel model(scenario);
     TrimOptions trimOptions;
     if (!std::isnan(linArgs->rollDeg)) {
-      checkTurnSpeeds(linArgs->speed, "--speed");
+      checkTurnSpeeds(linArgs->speed, {"command line", 0, 0, "--speed"});
       trimOptions.roll = linArgs->rollDeg * M_PI / 180;
     }
     const TrimResult trim = calcTrim(model, linArgs->speed, trimOptions);
     const LinearModel lm = linearize(model, trim);  // each eigenvalue labelled from its content at this speed
     writeLinearModel(folder.getPath(), lm, calcModeContents(lm));
+    writeLinearModelsMat(folder.getPath() / "linear_models.mat", {lm});
+    writeScenarioJson(folder.getPath(), scenario);
     folder.commit();
     std::cout << "Trim at " << linArgs->speed << " m/s: residual " << trim.residualNorm << " after " << trim.iterations
-              << " iterations; " << lm.states.size() << " states. Wrote " << linArgs->out
-              << "/{A.csv, B.csv, eigenvalues.csv, eigenvectors.csv, linear_model.json}\n";
+              << " iterations; " << lm.states.size() << " states. Wrote " << out
+              << "/{A.csv, B.csv, eigenvalues.csv, eigenvectors.csv, linear_model.json, linear_models.mat, scenario.json}\n";
   });
 }
 
@@ -172,32 +188,35 @@ void registerStudyCommand(CLI::App& app) {
     std::vector<double> shapeSpeeds{10.0, 18.5, 30.0};
     int threads = 2;
     double rollDeg = 0;
+    bool strict = false;
   };
   auto st = std::make_shared<StudyArgs>();
   CLI::App* study = app.add_subcommand("study", "Swingarm study of seed sec. 4: rigid/bending/torsion/twist sweeps, Figs. 9-12, report");
   study->add_option("scenario", st->scenario, "Motorcycle scenario with a swingarm section")->required()->check(CLI::ExistingFile);
   study->add_option("--speeds", st->speeds, "START:STOP:STEP in m/s (default: the scenario's speeds_mps)")
       ->check(makeSpeedRangeCheck());
-  study->add_option("--out", st->out, "Output folder (default: SCENARIO-study)");
+  addOutOption(*study, st->out, "the scenario's name");
   study->add_option("--set", st->overrides, "Override a scenario value for every variant");
   study->add_option("--compare", st->variants, "Compliance variants to compare")->delimiter(',');
   study->add_option("--stiffness-scale", st->stiffnessScale, "Stiffness factor of the second set (seed Fig. 11: 0.5)")
-      ->check(makeNumberCheck(0, 1e6, true));
+      ->check(makeNumberCheck(kScaleFactor));
   CLI::Option* dampingOption =
       study->add_option("--damping-scale", st->dampingScale,
                         "Damping factor of the second set (default: the square root of the stiffness factor, which keeps "
                         "each damping ratio; seed: 1/sqrt(2))")
-          ->check(makeNumberCheck(0, 1e6));
+          ->check(makeNumberCheck(kDampingFactor));
   study->add_option("--shape-speeds", st->shapeSpeeds, "Speeds of the weave mode-shape compass plots, m/s")
       ->delimiter(',')
-      ->check(makeNumberCheck(0, 1e3));
+      ->check(makeNumberCheck(kSpeedMps));
   study->add_option("--threads", st->threads, "Variants swept in parallel")->check(makeThreadsCheck());
   study->add_option("--roll-deg", st->rollDeg, "Compare the variants about steady turns at this roll angle (deg)")
       ->check(makeRollCheck());
+  addStrictOption(study, st->strict);
   study->callback([st, dampingOption]() {
     const ParameterOverrides changes(st->overrides);  // the --set text, parsed once
     const ScenarioSource source(st->scenario);        // the file, read once for every variant
     const Scenario scenario = source.load(changes);
+    reportScenarioWarnings(scenario, st->strict);
     StudyOptions opt;
     opt.sweep.start = scenario.speeds.start;
     opt.sweep.stop = scenario.speeds.stop;
@@ -207,22 +226,16 @@ void registerStudyCommand(CLI::App& app) {
     opt.stiffnessScale = st->stiffnessScale;
     opt.dampingScale = dampingOption->count() > 0 ? st->dampingScale : std::sqrt(st->stiffnessScale);
     opt.shapeSpeeds = st->shapeSpeeds;
-    for (const double v : opt.shapeSpeeds)
-      if (v < opt.sweep.start || v > opt.sweep.stop)
-        throw InputError({"--shape-speeds", 0, 0, std::to_string(v)},
-                         "a mode-shape speed must lie within the swept speeds " + std::to_string(opt.sweep.start) +
-                             " to " + std::to_string(opt.sweep.stop) + " m/s");
     opt.overrides = changes;
     opt.threads = st->threads;
-    if (st->rollDeg != 0) {
-      checkTurnSpeeds(opt.sweep.start, st->speeds.empty() ? "speeds_mps (the scenario's; override with --speeds)" : "--speeds");
-      opt.sweep.trim.roll = st->rollDeg * M_PI / 180;
-    }
-    const std::string out = st->out.empty() ? scenario.name + "-study" : st->out;
+    if (st->rollDeg != 0) opt.sweep.trim.roll = st->rollDeg * M_PI / 180;
+    checkStudyOptions(opt, {"--shape-speeds", 0, 0, ""}, getSpeedsLocation(!st->speeds.empty()));
+    const std::string out = getOutputFolder(st->out, scenario.name, "study");
     OutputFolder folder(out);
     const StudyResult result = runStudy(source, opt);
     const studies::StudyFindings findings = studies::calcStudyFindings(result);
     writeStudyOutputs(folder.getPath(), result, findings, opt);
+    writeScenarioJson(folder.getPath(), scenario);
     folder.commit();
     std::cout << makeStudyReport(result, findings, opt) << "\nWrote " << out
               << "/{report.md, study_modes.csv, weave_shapes.csv, fig09..fig12 (.gp/.png/.svg), nominal/, halved/}\n";
@@ -235,6 +248,7 @@ void registerStabilityCommands(CLI::App& app) {
   registerSweepCommand(app);
   registerLinearizeCommand(app);
   registerStudyCommand(app);
+  registerCompareCommands(app);
 }
 
 }  // namespace motostab::cli

@@ -2,7 +2,9 @@
 // one process (threads) or MPI ranks (docs/uncertainty.md, docs/distributed.md).
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
+#include <cstdint>
 #include <cstdio>
 #include <cstdlib>
 #include <iostream>
@@ -11,10 +13,13 @@
 
 #include "apps/commands.h"
 #include "apps/common_options.h"
+#include "apps/option_checks.h"
 #include "io/input_error.h"
 #include "io/output_folder.h"
+#include "io/result_error.h"
 #include "scenario/scenario_source.h"
 #include "uncertainty/distributed.h"
+#include "output/scenario_output.h"
 #include "output/uncertainty_output.h"
 
 namespace motostab::cli {
@@ -27,7 +32,6 @@ using scenario::Scenario;
 using scenario::ScenarioSource;
 using scenario::ParameterOverrides;
 using uncertainty::DistributedSession;
-using uncertainty::SamplingMethod;
 using uncertainty::UncertaintyOptions;
 using uncertainty::UncertaintySetup;
 using uncertainty::UncertaintySummary;
@@ -45,16 +49,18 @@ struct UncertaintyArgs {
   std::string scenario, samples = "1000", seed = "1", method = "mc", speeds, out;
   std::vector<std::string> overrides;
   int threads = 1;
+  bool strict = false;
 };
 
-// An unsigned integer option, all digits; InputError naming the option otherwise.
-uint64_t parseCount(const std::string& option, const std::string& text, uint64_t minimum) {
+// An unsigned integer option, all digits, in [minimum, maximum]; InputError naming the option otherwise.
+uint64_t parseCount(const std::string& option, const std::string& text, uint64_t minimum, uint64_t maximum) {
   char* end = nullptr;
   errno = 0;
   const unsigned long long v = std::strtoull(text.c_str(), &end, 10);
   if (text.empty() || text.find_first_not_of("0123456789") != std::string::npos || *end != '\0' || errno == ERANGE)
     throw InputError({option, 0, 0, text}, "expected a non-negative integer");
   if (v < minimum) throw InputError({option, 0, 0, text}, "must be at least " + std::to_string(minimum));
+  if (v > maximum) throw InputError({option, 0, 0, text}, "must be at most " + std::to_string(maximum));
   return v;
 }
 
@@ -82,21 +88,35 @@ class ProgressBar {
 
 UncertaintyOptions makeOptions(const UncertaintyArgs& a, const Scenario& scenario) {
   UncertaintyOptions o;
-  if (a.method != "mc" && a.method != "sobol") throw InputError({"--method", 0, 0, a.method}, "expected mc or sobol");
-  o.method = a.method == "sobol" ? SamplingMethod::Sobol : SamplingMethod::MonteCarlo;
-  o.samples = parseCount("--samples", a.samples, 1);
-  o.seed = parseCount("--seed", a.seed, 0);
+  o.method = parseSamplingMethod(a.method, {"--method", 0, 0, a.method});
+  o.samples = parseCount("--samples", a.samples, 1, kMaxSamples);
+  o.seed = parseCount("--seed", a.seed, 0, UINT64_MAX);
   o.start = scenario.speeds.start, o.stop = scenario.speeds.stop, o.step = scenario.speeds.step;
   if (!a.speeds.empty()) parseSpeedRange(a.speeds, o.start, o.stop, o.step);
   return o;
+}
+
+// The study keeps every task's results (mode values at every speed) in memory: refused above
+// kMaxResultBytes, naming the options that set it, rather than running out of memory hours later.
+void checkResultSize(const UncertaintyArgs& a, const UncertaintySetup& setup) {
+  constexpr double kMaxResultBytes = 4.0 * (1ull << 30);
+  const double bytes = static_cast<double>(getTaskCount(setup)) *
+                       static_cast<double>(getModeValueCount(setup) + setup.params.size() + 16) * sizeof(double);
+  if (bytes > kMaxResultBytes)
+    throw InputError({"--samples", 0, 0, a.samples},
+                     std::to_string(getTaskCount(setup)) + " sweeps of " + std::to_string(getModeValueCount(setup) / 2) +
+                         " mode values would keep " + std::to_string(static_cast<long>(bytes / (1 << 20))) +
+                         " MiB of results (at most 4096): lower --samples or coarsen --speeds");
 }
 
 void runUncertainty(const UncertaintyArgs& a) {
   DistributedSession session;
   const ParameterOverrides changes(a.overrides);  // the --set text, parsed once
   const Scenario scenario = ScenarioSource(a.scenario).load(changes);
+  reportScenarioWarnings(scenario, a.strict, session.getRank() == 0);
   const UncertaintySetup setup = prepareUncertainty(a.scenario, changes, makeOptions(a, scenario));
-  const std::string out = a.out.empty() ? scenario.name + "-uncertainty" : a.out;
+  checkResultSize(a, setup);
+  const std::string out = getOutputFolder(a.out, scenario.name, "uncertainty");
   std::unique_ptr<OutputFolder> folder;  // rank 0 writes; inputs are all checked by now
   if (session.getRank() == 0) folder = std::make_unique<OutputFolder>(out);
   const size_t count = getTaskCount(setup);
@@ -106,7 +126,13 @@ void runUncertainty(const UncertaintyArgs& a) {
   const auto all = gatherResults(session, local, count, setup.params.size(), getModeValueCount(setup));
   if (session.getRank() != 0) return;
   const UncertaintySummary summary = summarizeUncertainty(setup, all);
+  if (summary.succeeded == 0) {  // valid input, no result: no sample to summarise
+    const auto failed = std::find_if(all.rbegin(), all.rend(), [](const auto& r) { return !r.reason.empty(); });
+    throw io::ResultError("every one of the " + std::to_string(summary.samples) + " samples failed" +
+                          (failed == all.rend() ? std::string() : " (the last: " + failed->reason + ")"));
+  }
   writeUncertaintyOutputs(folder->getPath(), scenario.name, setup, summary, all);
+  output::writeScenarioJson(folder->getPath(), scenario);
   folder->commit();
   std::cout << makeUncertaintyReport(scenario.name, setup, summary) << "\nWrote " << out
             << "/{summary.json, samples.csv, mode_quantiles.csv, sensitivity.csv, report.md, fan_*, histogram_*, "
@@ -120,14 +146,15 @@ void registerUncertaintyCommands(CLI::App& app) {
   auto a = std::make_shared<UncertaintyArgs>();
   CLI::App* u = app.add_subcommand("uncertainty", "Critical-speed distributions and sensitivities from the scenario's uncertainty section (mc or sobol; threads; MPI)");
   u->add_option("scenario", a->scenario, "Scenario YAML file with an uncertainty section")->required()->check(CLI::ExistingFile);
-  u->add_option("--samples", a->samples, "mc: samples; sobol: base rows N (N (P + 2) sweeps); default 1000");
+  u->add_option("--samples", a->samples, "mc: samples; sobol: base rows N (N (P + 2) sweeps); default 1000, at most 100000");
   u->add_option("--seed", a->seed, "Random seed, a non-negative integer (default 1); sample i depends only on (seed, i)");
   u->add_option("--method", a->method, "mc (Monte Carlo, regression sensitivities) or sobol (Saltelli design, first-order Sobol indices)");
   u->add_option("--speeds", a->speeds, "START:STOP:STEP in m/s (default: the scenario's speeds_mps)")
       ->check(makeSpeedRangeCheck());
   u->add_option("--threads", a->threads, "Worker threads per process (results identical for any number)")->check(makeThreadsCheck());
-  u->add_option("--out", a->out, "Output folder (default: SCENARIO-uncertainty)");
+  addOutOption(*u, a->out, "the scenario's name");
   u->add_option("--set", a->overrides, "Override a scenario value, e.g. --set geometry.trail_m=0.1");
+  addStrictOption(u, a->strict);
   u->callback([a]() { runUncertainty(*a); });
 }
 

@@ -5,7 +5,8 @@
 namespace motostab::cli {
 
 void registerScenarioCommands(CLI::App& app);   ///< check, import (apps/cmd_scenario.cpp)
-void registerStabilityCommands(CLI::App& app);  ///< sweep, linearize (apps/cmd_stability.cpp)
+void registerStabilityCommands(CLI::App& app);  ///< sweep, linearize, study (apps/cmd_stability.cpp); compare
+void registerCompareCommands(CLI::App& app);    ///< compare (apps/cmd_compare.cpp), registered by registerStabilityCommands
 void registerTurnCommands(CLI::App& app);       ///< trim (apps/cmd_turn.cpp)
 void registerSimulateCommands(CLI::App& app);   ///< simulate (apps/cmd_simulate.cpp)
 void registerUncertaintyCommands(CLI::App& app);  ///< uncertainty (apps/cmd_uncertainty.cpp)

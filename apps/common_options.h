@@ -7,7 +7,31 @@
 #include <string>
 #include <vector>
 
+#include "scenario/scenario.h"
+
 namespace motostab::cli {
+
+struct NumberRange;  // apps/option_checks.h
+
+/// Upper bounds of the count options (docs/commands.md, "Limits"): speeds of a sweep (also the
+/// scenario's speeds_mps, scenario::SpeedRange::kMaxSteps), roll angles of a map, slip angles of `tyre`,
+/// samples of `uncertainty`.
+constexpr long kMaxRollAngles = 1000;
+constexpr long kMaxSlipPoints = 100000;
+constexpr long kMaxSamples = 100000;
+
+/// The numbers of a range option "A:B:STEP" (or "A" alone when `allowSingle`): every field present and
+/// a finite number, else an InputError naming `option` and saying what is `expected` ("5:" lacks a bound).
+std::vector<double> parseRangeFields(const std::string& text, const std::string& option, bool allowSingle,
+                                     const std::string& expected);
+
+/// The output folder of a command, the one convention of every command (docs/commands.md): `out` when
+/// given, else "NAME-COMMAND" in the working folder (NAME the scenario's name, or the input file's stem;
+/// just COMMAND when `name` is empty). InputError (key --out) if that is not a plain folder name.
+std::string getOutputFolder(const std::string& out, const std::string& name, const std::string& command);
+
+/// Adds the --out option of that convention to `command`; `name` says what NAME is in the help text.
+CLI::Option* addOutOption(CLI::App& command, std::string& out, const std::string& name);
 
 /// Parses "START:STOP:STEP" (m/s; 0 <= START <= STOP, STEP > 0, finite, at most 1e6 speeds);
 /// throws InputError naming the option on bad input.
@@ -15,6 +39,8 @@ void parseSpeedRange(const std::string& text, double& start, double& stop, doubl
 
 /// A CLI11 check: a finite number in [low, high] (low itself excluded when `excludeLow`).
 CLI::Validator makeNumberCheck(double low, double high, bool excludeLow = false);
+/// The same for a range the Python module checks too (apps/option_checks.h).
+CLI::Validator makeNumberCheck(const NumberRange& range);
 /// A CLI11 check of "START:STOP:STEP" by parseSpeedRange.
 CLI::Validator makeSpeedRangeCheck();
 /// A CLI11 check of a roll angle in degrees: finite and strictly between -89 and 89.
@@ -27,5 +53,14 @@ CLI::Validator makeRollAnglesCheck();
 
 /// The worker-thread option range, 1..256.
 CLI::Validator makeThreadsCheck();
+
+/// Adds `--strict` (plausibility warnings are errors, exit 2) to a command that reads a scenario.
+void addStrictOption(CLI::App* command, bool& strict);
+/// Prints each plausibility warning of `scenario` (scenario/plausibility.h) to stderr as
+/// "motostab: warning: FILE:LINE:COL: KEY: ..." (when `print`), or with `strict` throws an InputError
+/// at the first one.
+void reportScenarioWarnings(const scenario::Scenario& scenario, bool strict, bool print = true);
+/// loadScenario(file, overrides), then reportScenarioWarnings.
+scenario::Scenario loadScenarioReporting(const std::string& file, const std::vector<std::string>& overrides, bool strict);
 
 }  // namespace motostab::cli

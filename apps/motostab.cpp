@@ -4,9 +4,14 @@
 #include "apps/commands.h"
 #include "io/input_error.h"
 #include "io/result_error.h"
+#include "plugins/plugin_api.h"
 
+// Exit codes (docs/commands.md): 0 done; 2 bad input (io::InputError, CLI11's parse errors); 3 valid input
+// without a result (io::ResultError, or memory exhausted by a valid request); 1 a bug.
 int main(int argc, char** argv) {
   CLI::App app{"motostab: stability of motorcycles and bicycles (Simbody multibody models from YAML scenarios)"};
+  app.set_version_flag("--version", std::string("motostab ") + MOTOSTAB_VERSION + " (plugin API " +
+                                        std::to_string(MOTOSTAB_PLUGIN_API_VERSION) + ")");
   app.require_subcommand(1);
   motostab::cli::registerScenarioCommands(app);
   motostab::cli::registerStabilityCommands(app);
@@ -30,8 +35,12 @@ int main(int argc, char** argv) {
   } catch (const motostab::io::ResultError& e) {
     std::cerr << "motostab: no result: " << e.what() << "\n";
     return 3;
+  } catch (const std::bad_alloc&) {
+    std::cerr << "motostab: no result: the computation ran out of memory; ask for less (fewer speeds, samples or "
+                 "candidates)\n";
+    return 3;
   } catch (const std::exception& e) {
-    std::cerr << "motostab: error: " << e.what() << "\n";
+    std::cerr << "motostab: internal error (a bug; please report it with the command line): " << e.what() << "\n";
     return 1;
   }
   return 0;

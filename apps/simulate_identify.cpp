@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "io/input_error.h"
+#include "io/result_error.h"
 #include "output/response_output.h"
 
 namespace motostab::cli {
@@ -24,7 +26,12 @@ response::IdentificationResult identifySimulatedModes(const simulation::Simulati
                                                       response::IdentificationOptions options) {
   const auto record = makeRecord(result, signals);
   options.windowStart = std::max(options.windowStart, windowStart);
-  return response::identifyModes(record.time, record.signals, options);
+  try {
+    return response::identifyModes(record.time, record.signals, options);
+  } catch (const io::InputError& e) {  // the simulated response, not the user's input, cannot be fitted
+    throw io::ResultError("--identify: the simulated free response from " + std::to_string(options.windowStart) +
+                          " s cannot be fitted: " + e.getReason() + " (lengthen --duration or enlarge the perturbation)");
+  }
 }
 
 response::IdentificationResult writeSimulatedModes(const std::filesystem::path& dir,

@@ -14,7 +14,7 @@
 namespace motostab::cli {
 
 /// Identifies the modes of `signals` (column names; default roll_rate and steer_rate, fitted jointly)
-/// of `result` from `windowStart` (s) on. Throws std::invalid_argument if the window is too short.
+/// of `result` from `windowStart` (s) on. Throws io::ResultError if the response after `windowStart` cannot be fitted (too short, constant).
 response::IdentificationResult identifySimulatedModes(
     const simulation::SimulationResult& result, double windowStart,
     const std::vector<std::string>& signals = {"roll_rate", "steer_rate"},

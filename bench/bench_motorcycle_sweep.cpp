@@ -91,6 +91,33 @@ void BM_EnduroTwistSweepSpeedup(benchmark::State& st) {
 }
 BENCHMARK(BM_EnduroTwistSweepSpeedup)->Unit(benchmark::kMillisecond)->Iterations(15)->UseRealTime();
 
+// The input matrix B in a sweep (SweepOptions::linearize.computeB, off by default; the sweep command
+// turns it on for linear_models.mat): sweeps with and without it alternated on the enduro `twist` model
+// (401 speeds, one thread), so that both see the same machine state. Counters: ratio = median over
+// pairs of (with B) / (without B) wall time, without_ms and with_ms their medians.
+void BM_EnduroTwistSweepInputMatrix(benchmark::State& st) {
+  const motostab::vehicle::VehicleModel model(motostab::scenario::loadScenario(kEnduro, {"swingarm.compliance=twist"}));
+  auto seconds = [&](bool computeB) {
+    motostab::analysis::SweepOptions opt;
+    opt.start = 0, opt.stop = 40, opt.step = 0.1;
+    opt.linearize.computeB = computeB;
+    const auto t0 = std::chrono::steady_clock::now();
+    auto r = motostab::analysis::runSweep(model, opt);
+    benchmark::DoNotOptimize(r.criticalSpeeds.data());
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  };
+  std::vector<double> without, with, ratio;
+  for (auto _ : st) {
+    without.push_back(seconds(false));
+    with.push_back(seconds(true));
+    ratio.push_back(with.back() / without.back());
+  }
+  st.counters["ratio"] = median(ratio);
+  st.counters["without_ms"] = median(without) * 1e3;
+  st.counters["with_ms"] = median(with) * 1e3;
+}
+BENCHMARK(BM_EnduroTwistSweepInputMatrix)->Unit(benchmark::kMillisecond)->Iterations(5)->UseRealTime();
+
 void BM_EnduroTwistRealize(benchmark::State& st) {
   const motostab::vehicle::VehicleModel model(motostab::scenario::loadScenario(kEnduro, {"swingarm.compliance=twist"}));
   motostab::bench::runRealizeLoop(st, model, motostab::analysis::calcTrim(model, 20.0).state, motostab::analysis::Slot::Q, model.getIndices().roll);

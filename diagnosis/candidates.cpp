@@ -3,12 +3,15 @@
 #include <fnmatch.h>
 
 #include <cmath>
+#include <optional>
 #include <stdexcept>
 
 #include "diagnosis/physical_candidates.h"
 #include "diagnosis/priors.h"
 #include "io/csv.h"
+#include "io/input_error.h"
 #include "scenario/parameter_paths.h"
+#include "scenario/scenario.h"
 
 namespace motostab::diagnosis {
 
@@ -27,6 +30,16 @@ double getScalar(const YAML::Node& tree, const char* section, const char* key, d
     return s[key].as<double>();
   } catch (const YAML::Exception&) {
     return fallback;
+  }
+}
+
+// The rear frame (with rider) of a scenario tree: as given, or as the loader derives it from `total`
+// (none when the tree does not load: the loader reports that).
+std::optional<scenario::BodySpec> getRearFrame(const YAML::Node& tree) {
+  try {
+    return scenario::readScenarioTree(tree, "", {}).rearFrame;
+  } catch (const io::InputError&) {
+    return std::nullopt;
   }
 }
 
@@ -102,7 +115,8 @@ CandidateParameter makeStiffness(const std::string& name, const std::string& pat
 
 Candidate makeForkCompliance(const YAML::Node& tree) {
   // Start: a fork bending stiffness whose wheel-load deflection is ~1 mrad per kg of vehicle.
-  const double m = getScalar(tree, "rear_frame", "mass_kg", 50) + getScalar(tree, "front_frame", "mass_kg", 5);
+  const auto rear = tree["total"] ? getRearFrame(tree) : std::nullopt;
+  const double m = (rear ? rear->mass : getScalar(tree, "rear_frame", "mass_kg", 50)) + getScalar(tree, "front_frame", "mass_kg", 5);
   const double k = std::max(1e3, 200.0 * m);
   return {"fork_compliance",
           {"fork_compliance={stiffness_Nm_per_rad: " + formatNumber(k) + ", damping_Nms_per_rad: 0}"},
@@ -137,22 +151,22 @@ void addRiderLeanCandidate(const YAML::Node& tree, std::vector<Candidate>& out, 
     unavailable.push_back("rider_lean: the scenario has one already (its stiffness and damping are parameter candidates)");
     return;
   }
-  const YAML::Node rf = tree["rear_frame"];
-  const double mB = getScalar(tree, "rear_frame", "mass_kg", 0);
+  const auto rf = getRearFrame(tree);  // with `total:` the derived one
+  const double mB = rf ? rf->mass : getScalar(tree, "rear_frame", "mass_kg", 0);
   if (!(mB > kRiderMass_kg)) {
     unavailable.push_back("rider_lean: the rear frame (" + formatNumber(mB) + " kg) is lighter than a " +
                           formatNumber(kRiderMass_kg) + " kg rider: a riderless vehicle has no upper body to lean");
     return;
   }
-  const YAML::Node com = rf["com_m"], inertia = rf["inertia_kgm2"];
-  if (!com || !com.IsSequence() || com.size() != 3 || !inertia || !inertia.IsMap()) return;  // the loader reports it
+  if (!rf) return;  // the loader reports it
+  const scenario::InertiaSpec& I = rf->inertia;
   const double mU = 0.678 * kRiderMass_kg, share = mU / mB, d = 0.25, g = 9.81;
-  const double zU = com[2].as<double>(), ixx = share * inertia["xx"].as<double>();
+  const double zU = rf->com[2], ixx = share * I.xx;
   std::string body = "hinge_height_m: " + formatNumber(zU - d) + ", mass_kg: " + formatNumber(mU) + ", com_m: [" +
-                     formatNumber(com[0].as<double>()) + ", 0, " + formatNumber(zU) + "], inertia_kgm2: {";
+                     formatNumber(rf->com[0]) + ", 0, " + formatNumber(zU) + "], inertia_kgm2: {";
   const char* keys[] = {"xx", "yy", "zz", "xy", "xz", "yz"};
-  for (int i = 0; i < 6; ++i)
-    body += std::string(i ? ", " : "") + keys[i] + ": " + formatNumber(share * inertia[keys[i]].as<double>(0.0));
+  const double values[] = {I.xx, I.yy, I.zz, I.xy, I.xz, I.yz};
+  for (int i = 0; i < 6; ++i) body += std::string(i ? ", " : "") + keys[i] + ": " + formatNumber(share * values[i]);
   const double gravity = mU * g * d, k = 4 * gravity, damping = 2 * 0.3 * std::sqrt(k * (ixx + mU * d * d));
   CandidateParameter p = makeStiffness("stiffness_Nm_per_rad", "rider_lean.stiffness_Nm_per_rad", k);
   p.lower = 1.1 * gravity;
@@ -265,7 +279,7 @@ std::vector<Candidate> filterCandidates(const std::vector<Candidate>& all, const
     if (take) out.push_back(c);
   }
   for (size_t i = 0; i < patterns.size(); ++i)
-    if (!used[i]) throw std::invalid_argument("--candidates: '" + patterns[i] + "' matches no candidate of this scenario");
+    if (!used[i]) throw io::InputError({"--candidates", 0, 0, patterns[i]}, "matches no candidate of this scenario");
   return out;
 }
 

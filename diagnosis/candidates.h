@@ -68,7 +68,7 @@ std::vector<Candidate> listCandidates(const YAML::Node& scenarioTree,
 constexpr double kRiderMass_kg = 75;
 
 /// Candidates whose name matches one of the comma-separated names or globs (fnmatch); all when
-/// `patterns` is empty. An entry that matches nothing is an error (std::invalid_argument naming it).
+/// `patterns` is empty. An entry that matches nothing is an InputError (key --candidates) naming it.
 std::vector<Candidate> filterCandidates(const std::vector<Candidate>& all, const std::vector<std::string>& patterns);
 
 }  // namespace motostab::diagnosis

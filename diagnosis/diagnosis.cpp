@@ -64,10 +64,10 @@ std::vector<Candidate> selectCandidates(const ScenarioSource& source, const Meas
       }
   try {
     return filterCandidates(listed, opt.candidates);
-  } catch (const std::invalid_argument& e) {  // say why a known candidate is missing
-    std::string why = e.what();
+  } catch (const InputError& e) {  // say why a known candidate is missing
+    std::string why = e.getReason();
     for (const auto& u : unavailable) why += "; " + u;
-    throw std::invalid_argument(why);
+    throw InputError(e.getLocation(), why);
   }
 }
 
@@ -142,11 +142,15 @@ bool DiagnosisResult::isFragile() const {
 }
 
 DiagnosisResult runDiagnosis(const std::string& scenarioFile, const MeasuredData& data, const DiagnosisOptions& options) {
+  return runDiagnosis(ScenarioSource::open(scenarioFile), data, options);  // read once for every prediction
+}
+
+DiagnosisResult runDiagnosis(std::shared_ptr<const ScenarioSource> source, const MeasuredData& data,
+                             const DiagnosisOptions& options) {
   DiagnosisOptions opt = options;  // every predictor below (reruns too) shares one store of chains
   if (!opt.reuseLinearModels) opt.sweepCache = nullptr;
   else if (!opt.sweepCache) opt.sweepCache = std::make_shared<SweepCache>();
   if (opt.progress) opt.progress("reference sweep", 0, 1);
-  const auto source = ScenarioSource::open(scenarioFile);  // read once for every prediction
   const Predictor predictor(source, opt.overrides, data, opt.sweepCache);
   const FitProblem problem(predictor, data, opt.folds);
   std::vector<std::string> unavailable;
@@ -156,7 +160,7 @@ DiagnosisResult runDiagnosis(const std::string& scenarioFile, const MeasuredData
   state.pool = pool;
   DiagnosisResult result;
   runStepwiseSearch(problem, state, opt, result, true);
-  result.scenarioFile = scenarioFile;
+  result.scenarioFile = source->getFile();
   result.data = &data;
   result.unavailable = unavailable;
   result.extendedOverrides = opt.overrides.format();

@@ -175,6 +175,9 @@ struct DiagnosisResult {
 
 /// Runs the whole diagnosis.
 DiagnosisResult runDiagnosis(const std::string& scenarioFile, const MeasuredData& data, const DiagnosisOptions& options);
+/// The same from a scenario source already read (its getFile() names it).
+DiagnosisResult runDiagnosis(std::shared_ptr<const scenario::ScenarioSource> source, const MeasuredData& data,
+                             const DiagnosisOptions& options);
 
 /// The base scenario's YAML tree with `overrides` applied (what extended.yaml holds).
 YAML::Node makeScenarioTree(const std::string& scenarioFile, const std::vector<std::string>& overrides);

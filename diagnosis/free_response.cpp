@@ -95,7 +95,7 @@ std::vector<Eigen::MatrixXd> calcVaryingSpeedBasis(const std::vector<LinearModel
   const int n = static_cast<int>(models[0].A.rows()), m = static_cast<int>(run.time.size());
   for (const auto& lin : models)
     if (lin.A.rows() != n || lin.states.size() != models[0].states.size())
-      throw std::invalid_argument("fitFreeResponse: the linear models along a speed trace differ in their states");
+      throw std::logic_error("fitFreeResponse: the linear models along a speed trace differ in their states");
   std::vector<Eigen::MatrixXd> basis(run.signals.size(), Eigen::MatrixXd(m, n));
   Eigen::MatrixXd Phi = Eigen::MatrixXd::Identity(n, n);
   for (int i = 0; i < m; ++i) {
@@ -249,7 +249,7 @@ ResponseFit fitFreeResponse(const std::vector<LinearModel>& models, const Respon
                             const std::vector<double>& sigma, const std::vector<ArNoise>& noise) {
   if (models.size() == 1) return fitFreeResponse(models[0], run, sigma, noise);
   if (run.speeds.size() != run.time.size())
-    throw std::invalid_argument("fitFreeResponse: several linear models need the run's speed trace");
+    throw std::logic_error("fitFreeResponse: several linear models need the run's speed trace");
   return fitBasis(calcVaryingSpeedBasis(models, run), run, sigma, noise);
 }
 

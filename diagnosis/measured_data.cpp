@@ -20,6 +20,7 @@ using io::loadYamlFile;
 using io::readCsv;
 using scenario::formatOverride;
 using scenario::getSteerControllerScalarKeys;
+using scenario::readSteerController;
 
 namespace {
 
@@ -55,6 +56,22 @@ fs::path resolve(const YamlMap& m, const std::string& key, const std::string& na
   throw InputError({t.source, t.lineNumbers[i], 0, column}, msg);
 }
 
+// Why a measured speed (m/s) is refused, or "": speeds lie in [0, kMaxMeasuredSpeed].
+std::string checkSpeed(double v) {
+  if (v >= 0 && v <= kMaxMeasuredSpeed) return "";
+  return "a measured speed must lie between 0 and " + formatNumber(kMaxMeasuredSpeed, 6) + " m/s (got " +
+         formatNumber(v, 6) + ")";
+}
+
+// Why a standard deviation (noise, stderr) is refused, or "": 0 (unknown, where allowed) or within
+// [kMinStd, kMaxStd], so that its square and inverse square, which weight the fits, stay finite.
+std::string checkStd(double s, bool zeroAllowed) {
+  if ((zeroAllowed && s == 0) || (s >= kMinStd && s <= kMaxStd)) return "";
+  return std::string("a standard deviation must be ") + (zeroAllowed ? "0 (unknown) or " : "") + "between " +
+         formatNumber(kMinStd, 3) + " and " + formatNumber(kMaxStd, 3) + " (got " + formatNumber(s, 6) +
+         "): its square weights the fit";
+}
+
 int requireColumn(const CsvTable& t, const std::string& name) {
   for (size_t j = 0; j < t.header.size(); ++j)
     if (t.header[j] == name) return static_cast<int>(j);
@@ -75,11 +92,14 @@ std::string getControllerKey(const std::string& column) {
   return std::find(keys.begin(), keys.end(), key) == keys.end() ? "" : key;
 }
 
-// `controller: {key: value, ...}` of an eigenvalue file or a response run: steer_controller overrides.
+// `controller: {key: value, ...}` of an eigenvalue file or a response run: steer_controller overrides,
+// each checked here as the scenario's steer_controller section is (a negative delay, a non-positive gain
+// factor, an unsorted schedule are errors at this file's line and column).
 std::vector<std::string> readController(YamlMap& m) {
   std::vector<std::string> out;
   if (!m.has("controller")) return out;
   YamlMap c = m.getMap("controller");
+  readSteerController(YamlMap(c.getNode(), c.getFile(), c.getPath()));
   const auto& keys = getSteerControllerScalarKeys();
   for (const auto& kv : c.getNode()) {
     const std::string key = kv.first.Scalar();
@@ -116,17 +136,28 @@ MeasuredEigenvalue readEigenvalueRow(const CsvTable& t, size_t i) {
   e.realStderr = opt("real_stderr");
   e.imagStderr = opt("imag_stderr");
   e.where = {t.source, t.lineNumbers[i], 0, ""};
-  for (size_t j = 0; j < t.header.size(); ++j)
-    if (!getControllerKey(t.header[j]).empty()) e.controller.push_back(formatOverride(t.header[j], r[j]));
+  for (size_t j = 0; j < t.header.size(); ++j) {
+    const std::string key = getControllerKey(t.header[j]);
+    if (key.empty()) continue;
+    YAML::Node cell(YAML::NodeType::Map);  // checked as the scenario's steer_controller.<key> is
+    cell[key] = formatNumber(r[j]);
+    try {
+      readSteerController(YamlMap(cell, t.source, "steer_controller"));
+    } catch (const InputError& bad) {
+      failRow(t, i, t.header[j], bad.getReason());
+    }
+    e.controller.push_back(formatOverride(t.header[j], r[j]));
+  }
   e.hasRange = findColumn(t, "speed_min_mps") >= 0;
   e.speedMin = e.hasRange ? opt("speed_min_mps") : e.speed;
   e.speedMax = e.hasRange ? opt("speed_max_mps") : e.speed;
-  if (e.speed < 0) failRow(t, i, "speed_mps", "speed must be >= 0");
+  if (const std::string why = checkSpeed(e.speed); !why.empty()) failRow(t, i, "speed_mps", why);
   if (e.imag < 0) failRow(t, i, "imag", "one row per complex pair, with imag >= 0");
-  if (e.realStderr < 0) failRow(t, i, "real_stderr", "stderr must be >= 0");
-  if (e.imagStderr < 0) failRow(t, i, "imag_stderr", "stderr must be >= 0");
+  if (const std::string why = checkStd(e.realStderr, true); !why.empty()) failRow(t, i, "real_stderr", why);
+  if (const std::string why = checkStd(e.imagStderr, true); !why.empty()) failRow(t, i, "imag_stderr", why);
   if (e.hasRange && !(e.speedMin >= 0 && e.speedMin <= e.speed && e.speed <= e.speedMax))
     failRow(t, i, "speed_min_mps", "need 0 <= speed_min_mps <= speed_mps <= speed_max_mps");
+  if (const std::string why = checkSpeed(e.speedMax); e.hasRange && !why.empty()) failRow(t, i, "speed_max_mps", why);
   const std::string& mode = t.text[i][0];
   if (!mode.empty()) {
     e.mode = analysis::parseModeLabel(mode);
@@ -170,13 +201,18 @@ ResponseSignal readSignal(YamlMap s, const CsvTable& t, const std::vector<bool>&
       s.markUsed("scale");
     } else {
       sig.scale = s.getDouble("scale");
-      if (sig.scale == 0) s.fail("scale", "must be 'free' or a nonzero factor to rad or rad/s");
+      if (!(std::abs(sig.scale) >= kMinStd && std::abs(sig.scale) <= kMaxStd))
+        s.fail("scale", "must be 'free' or a factor to rad or rad/s of magnitude between " + formatNumber(kMinStd, 3) +
+                            " and " + formatNumber(kMaxStd, 3));
     }
   }
   s.finish();
   const int j = findColumn(t, sig.column);
   if (j < 0) s.fail("column", "no column '" + sig.column + "' in " + t.source + " (line " + std::to_string(t.headerLine) + ")");
   sig.values = cut(t, j, keep);
+  for (size_t i = 0, k = 0; i < t.rows.size(); ++i)  // in rad or rad/s, each sample squared by the fit
+    if (keep[i] && !(std::abs(sig.values[k++] * sig.scale) <= kMaxStd))
+      failRow(t, i, sig.column, "a sample of magnitude above " + formatNumber(kMaxStd, 3) + " rad or rad/s");
   return sig;
 }
 
@@ -184,7 +220,10 @@ void readNoise(YamlMap& run, ResponseRun& r) {
   if (!run.has("noise_std")) return;
   YamlMap noise = run.getMap("noise_std");
   for (auto& sig : r.signals)
-    if (noise.has(sig.column)) sig.noiseStd = noise.getPositive(sig.column);
+    if (noise.has(sig.column)) {
+      sig.noiseStd = noise.getPositive(sig.column);
+      if (const std::string why = checkStd(sig.noiseStd, false); !why.empty()) noise.fail(sig.column, why);
+    }
   noise.finish();
 }
 
@@ -235,7 +274,7 @@ std::vector<double> readSpeedTrace(YamlMap& run, const std::vector<double>& time
     const size_t k = std::min<size_t>(std::upper_bound(ts.begin(), ts.end(), x) - ts.begin(), ts.size() - 1);
     const double w = (x - ts[k - 1]) / (ts[k] - ts[k - 1]);
     out.push_back((1 - w) * vs[k - 1] + w * vs[k]);
-    if (out.back() < 0) m.fail("speed_column", "speeds must not be negative");
+    if (const std::string why = checkSpeed(out.back()); !why.empty()) m.fail("speed_column", why);
   }
   return out;
 }
@@ -256,6 +295,7 @@ ResponseRun readRun(YamlMap run) {
     run.fail("", "give exactly one of speed_mps, speed_column and speed_trace");
   if (run.has("speed_mps")) {
     r.speed = run.getNonNegative("speed_mps");
+    if (const std::string why = checkSpeed(r.speed); !why.empty()) run.fail("speed_mps", why);
   } else if (run.has("speed_trace")) {
     r.speeds = readSpeedTrace(run, r.time);
     for (double x : r.speeds) r.speed += x / r.speeds.size();
@@ -264,6 +304,8 @@ ResponseRun readRun(YamlMap run) {
     const int j = findColumn(t, sc);
     if (j < 0) run.fail("speed_column", "no column '" + sc + "' in " + t.source);
     r.speeds = cut(t, j, keep);
+    for (size_t i = 0; i < t.rows.size(); ++i)
+      if (const std::string why = checkSpeed(t.rows[i][j]); keep[i] && !why.empty()) failRow(t, i, sc, why);
     for (double x : r.speeds) r.speed += x / r.speeds.size();
   }
   auto signals = getMapList(run, "signals");

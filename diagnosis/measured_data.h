@@ -8,6 +8,7 @@
 
 #include "analysis/mode_label.h"
 #include "io/input_error.h"
+#include "io/number.h"
 
 namespace motostab::diagnosis {
 
@@ -62,10 +63,19 @@ struct MeasuredData {
   double steerRateAmplitude = 0;
 };
 
+/// Measured speeds lie in [0, kMaxMeasuredSpeed] m/s (540 km/h, beyond any measured two-wheeler: the
+/// reference sweep spans the measured speeds in 0.1 m/s steps).
+constexpr double kMaxMeasuredSpeed = 150;
+/// Standard deviations (noise_std, stderr columns), signal scales and samples (in rad or rad/s) lie
+/// within the magnitudes motostab computes with (io/number.h), so that the squares and inverse squares
+/// weighting the fits stay finite.
+constexpr double kMinStd = io::kMinMagnitude, kMaxStd = io::kMaxMagnitude;
+
 /// Reads a measurement YAML file and every CSV it names (paths relative to it). Strict: an unknown
-/// key, a missing file or column, a bad or non-finite cell, a negative stderr, an unknown mode label
-/// or quantity, or a response window with fewer than 20 samples is an InputError naming the file and
-/// line (and column for YAML).
+/// key, a missing file or column, a bad or non-finite cell, a speed outside [0, kMaxMeasuredSpeed], a
+/// standard deviation outside [kMinStd, kMaxStd], a controller setting the scenario's steer_controller
+/// section would refuse, an unknown mode label or quantity, or a response window with fewer than 20
+/// samples is an InputError naming the file and line (and column for YAML).
 MeasuredData loadMeasuredData(const std::string& path);
 
 /// Mode labels accepted in eigenvalue files: the names of analysis::ModeLabel (analysis/modes.h assigns them).

@@ -42,7 +42,7 @@ Predictor::Predictor(std::shared_ptr<const ScenarioSource> source, ParameterOver
                      std::shared_ptr<SweepCache> cache)
     : source_(std::move(source)), baseChanges_(std::move(baseChanges)), data_(data), cache_(std::move(cache)) {
   if (data_.eigenvalues.empty() && data_.responses.empty())
-    throw std::invalid_argument("Predictor: the measured data hold no eigenvalue rows and no response runs: nothing to predict");
+    throw std::logic_error("Predictor: the measured data hold no eigenvalue rows and no response runs: nothing to predict");
   makeControllerParts();
   if (!parts_.empty()) return;
   speeds_ = collectSpeeds();

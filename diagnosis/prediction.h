@@ -52,7 +52,7 @@ class Predictor {
   /// several controller settings is predicted group by group (diagnosis/controller_groups.h), each
   /// group by a predictor of its own whose base changes end with the group's. `cache` (optional, for
   /// predictors of one `source` only) keeps and shares the chains computed. Data without eigenvalue
-  /// rows and response runs: std::invalid_argument (there is nothing to sweep for).
+  /// rows and response runs: std::logic_error (there is nothing to sweep for).
   Predictor(std::shared_ptr<const scenario::ScenarioSource> source, scenario::ParameterOverrides baseChanges, const MeasuredData& data,
             std::shared_ptr<SweepCache> cache = nullptr);
   /// The same, reading `scenarioFile` (once).

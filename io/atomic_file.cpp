@@ -1,6 +1,7 @@
 #include "io/atomic_file.h"
 
 #include <fcntl.h>
+#include <signal.h>
 #include <unistd.h>
 
 #include <cerrno>
@@ -36,16 +37,50 @@ void syncFolder(const std::filesystem::path& folder) {
   ::close(fd);
 }
 
+// The process id in a temporary sibling's name ".NAME.tmp-PID-RANDOM", or -1 if `entry` is not one
+// of `path`'s temporaries.
+long parseTemporaryPid(const std::string& entry, const std::filesystem::path& path) {
+  const std::string prefix = "." + path.filename().string() + ".tmp-";
+  if (entry.rfind(prefix, 0) != 0) return -1;
+  const std::string rest = entry.substr(prefix.size());
+  const auto dash = rest.find('-');
+  const std::string pid = rest.substr(0, dash), random = dash == std::string::npos ? "" : rest.substr(dash + 1);
+  auto digits = [](const std::string& t) { return !t.empty() && t.size() <= 9 && t.find_first_not_of("0123456789") == std::string::npos; };
+  return digits(pid) && digits(random) ? std::stol(pid) : -1;
+}
+
+// Removes the temporaries of `path` that killed writers left behind (their process is gone).
+void removeKilledTemporaries(const std::filesystem::path& path) {
+  const std::filesystem::path dir = path.parent_path().empty() ? std::filesystem::path(".") : path.parent_path();
+  std::error_code ec;
+  for (const auto& entry : std::filesystem::directory_iterator(dir, ec)) {
+    const long pid = parseTemporaryPid(entry.path().filename().string(), path);
+    if (pid < 0 || isProcessAlive(pid)) continue;
+    if (entry.is_regular_file(ec)) std::filesystem::remove(entry.path(), ec);
+  }
+}
+
 }  // namespace
+
+bool isProcessAlive(long pid) {
+  return pid == ::getpid() || ::kill(static_cast<pid_t>(pid), 0) == 0 || errno == EPERM;
+}
 
 std::string makeTemporarySibling(const std::filesystem::path& path) {
   static thread_local std::mt19937_64 rng{std::random_device{}()};
-  return (path.parent_path() / ("." + path.filename().string() + ".tmp" + std::to_string(rng() % 1000000)))
+  return (path.parent_path() / ("." + path.filename().string() + ".tmp-" + std::to_string(::getpid()) + "-" +
+                                std::to_string(rng() % 1000000)))
       .string();
 }
 
 void writeFileAtomically(const std::filesystem::path& path, const std::string& content) {
+  writeFileAtomically(path, content, nullptr);
+}
+
+void writeFileAtomically(const std::filesystem::path& path, const std::string& content,
+                         const std::function<void(const std::filesystem::path&)>& check) {
   if (!path.parent_path().empty()) std::filesystem::create_directories(path.parent_path());
+  removeKilledTemporaries(path);
   std::string tmp;
   const int fd = openFreshSibling(path, tmp);
   if (fd < 0) failWith("cannot write " + tmp, "", -1);
@@ -57,6 +92,14 @@ void writeFileAtomically(const std::filesystem::path& path, const std::string& c
   }
   if (::fsync(fd) != 0) failWith("failed writing " + path.string(), tmp, fd);
   if (::close(fd) != 0) failWith("failed closing " + path.string(), tmp, -1);
+  if (check) {
+    try {
+      check(tmp);
+    } catch (...) {
+      ::unlink(tmp.c_str());
+      throw;
+    }
+  }
   if (::rename(tmp.c_str(), path.c_str()) != 0) failWith("cannot rename into " + path.string(), tmp, -1);
   syncFolder(path.parent_path());
 }

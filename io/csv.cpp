@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "io/input_error.h"
+#include "io/input_file.h"
 #include "io/number.h"
 
 namespace motostab::io {
@@ -49,8 +50,7 @@ std::vector<double> CsvTable::getColumn(const std::string& name) const { return 
 CsvTable readCsv(const std::filesystem::path& path, const std::vector<std::string>& textColumns) {
   CsvTable table;
   table.source = path.string();
-  std::ifstream in(path);
-  if (!in) throw InputError({table.source, 0, 0, ""}, "cannot open CSV file");
+  std::istringstream in{std::string(stripByteOrderMark(readInputFile(path, kMaxTableFileBytes)))};
   std::string line;
   int lineNo = 0;
   std::vector<int> textIndex;  // per column: its index among the text columns, or -1
@@ -60,7 +60,15 @@ CsvTable readCsv(const std::filesystem::path& path, const std::vector<std::strin
     if (t.empty() || t[0] == '#') continue;
     auto cells = splitFields(t, ',');
     if (table.header.empty()) {
-      for (auto& c : cells) table.header.push_back(trim(c));
+      for (size_t j = 0; j < cells.size(); ++j) {
+        const std::string name = trim(cells[j]);
+        for (size_t k = 0; k < j; ++k)
+          if (table.header[k] == name)
+            throw InputError({table.source, lineNo, static_cast<int>(j + 1), name},
+                             "column '" + name + "' is given twice (columns " + std::to_string(k + 1) + " and " +
+                                 std::to_string(j + 1) + ")");
+        table.header.push_back(name);
+      }
       table.headerLine = lineNo;
       textIndex.assign(cells.size(), -1);
       for (size_t k = 0; k < textColumns.size(); ++k)

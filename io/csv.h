@@ -27,7 +27,8 @@ struct CsvTable {
   std::vector<double> getColumn(const std::string& name) const;
 };
 
-/// Reads a CSV file. Every non-comment row must have as many numeric cells as the header; a bad
+/// Reads a CSV file: a regular file of at most kMaxTableFileBytes (io/input_file.h); a leading UTF-8
+/// byte order mark is skipped; a column name given twice is an InputError. Every non-comment row must have as many numeric cells as the header; a bad
 /// cell is an InputError naming the file, line and column name. Columns named in `textColumns`
 /// (if present) are kept as text (CsvTable::text) instead.
 CsvTable readCsv(const std::filesystem::path& path, const std::vector<std::string>& textColumns = {});

@@ -10,4 +10,10 @@ namespace motostab::io {
 /// The finite number `text` spells, or nothing (empty, trailing characters, nan, inf, 1e999, hex).
 std::optional<double> parseFiniteNumber(std::string_view text);
 
+/// The magnitudes motostab computes with: every number of a YAML input is at most kMaxMagnitude in
+/// magnitude, and a quantity that must be positive (a mass, a length, a stiffness) at least
+/// kMinMagnitude. Beyond them (a mass of 1e300 kg, a radius of 1e-300 m) no parameter is physical and the
+/// double-precision computation overflows (io/yaml_map.h applies them).
+constexpr double kMaxMagnitude = 1e12, kMinMagnitude = 1e-12;
+
 }  // namespace motostab::io

@@ -8,10 +8,13 @@
 #include <algorithm>
 #include <cerrno>
 #include <cstring>
+#include <fstream>
 #include <stdexcept>
 #include <string>
 
+#include "io/atomic_file.h"
 #include "io/input_error.h"
+#include "io/input_file.h"
 
 namespace motostab::io {
 namespace fs = std::filesystem;
@@ -31,8 +34,6 @@ long parseSiblingPid(const std::string& entry, const std::string& prefix) {
   return std::stol(digits);
 }
 
-bool isProcessAlive(long pid) { return pid == getpid() || kill(static_cast<pid_t>(pid), 0) == 0 || errno == EPERM; }
-
 // Removes what killed runs into `target` left behind: their partial folders, and restores a backup
 // when the target itself is missing (a kill between the two renames of the fallback commit).
 void cleanUpAfterKilledRuns(const fs::path& target) {
@@ -50,7 +51,61 @@ void cleanUpAfterKilledRuns(const fs::path& target) {
   }
 }
 
+[[noreturn]] void refuse(const fs::path& target, const std::string& why) {
+  throw InputError({"command line", 0, 0, "--out"}, "'" + target.string() + "' " + why);
+}
+
+// `inside` lies in folder `folder` (or is it); both absolute and normalised.
+bool isWithin(const fs::path& inside, const fs::path& folder) {
+  return std::mismatch(folder.begin(), folder.end(), inside.begin(), inside.end()).first == folder.end();
+}
+
+bool isEmptyFolder(const fs::path& folder) {
+  std::error_code ec;
+  return fs::directory_iterator(folder, ec) == fs::directory_iterator() && !ec;
+}
+
 }  // namespace
+
+std::string describeBadFolderName(const std::string& name) {
+  if (name.empty()) return "is empty";
+  if (name == "." || name == "..") return "is '" + name + "', which names a folder that exists already, not a name";
+  if (name.size() > 200) return "is longer than 200 characters";
+  if (name.find('/') != std::string::npos) return "holds a path separator '/': a name is not a path";
+  for (const char c : name)
+    if (static_cast<unsigned char>(c) < 0x20 || c == 0x7f) return "holds a control character";
+  return "";
+}
+
+void checkFileReplaceable(const fs::path& file, const std::string& header) {
+  std::error_code ec;
+  const fs::path whole = fs::weakly_canonical(fs::absolute(file), ec);
+  for (const fs::path& input : getInputFiles())
+    if (input == whole) refuse(file, "is an input of this run: write the output to another file");
+  const fs::file_status status = fs::symlink_status(file, ec);
+  if (!fs::exists(status)) return;
+  if (!fs::is_regular_file(status)) refuse(file, "exists and is not a regular file");
+  std::ifstream in(file);
+  std::string first;
+  std::getline(in, first);
+  if (first.rfind(header, 0) != 0)
+    refuse(file, "exists and was not written by motostab (its first line is not '" + header +
+                     "...'): name another output file, or move it away yourself");
+}
+
+void checkReplaceable(const fs::path& target) {
+  std::error_code ec;
+  const fs::path whole = fs::weakly_canonical(fs::absolute(target), ec);
+  for (const fs::path& input : getInputFiles())
+    if (!whole.empty() && isWithin(input, whole))
+      refuse(target, "holds " + input.string() + ", an input of this run: write the outputs to another folder");
+  const fs::file_status status = fs::symlink_status(target, ec);
+  if (!fs::exists(status)) return;
+  if (!fs::is_directory(status)) refuse(target, fs::is_symlink(status) ? "is a symbolic link; name a folder" : "exists and is not a folder");
+  if (!fs::is_regular_file(target / kOutputMarker) && !isEmptyFolder(target))
+    refuse(target, "exists and was not written by motostab (it has no " + std::string(kOutputMarker) +
+                       " file): the run would replace it whole. Name another --out, or move the folder away yourself");
+}
 
 OutputFolder::OutputFolder(fs::path target) : target_(std::move(target)) {
   if (target_.empty()) throw InputError({"command line", 0, 0, "--out"}, "the output folder name is empty");
@@ -65,8 +120,7 @@ OutputFolder::OutputFolder(fs::path target) : target_(std::move(target)) {
   const fs::file_status status = fs::status(target_, ec);
   if (ec && status.type() != fs::file_type::not_found)
     throw InputError({"command line", 0, 0, "--out"}, "'" + target_.string() + "': " + ec.message());
-  if (fs::exists(status) && !fs::is_directory(status))
-    throw InputError({"command line", 0, 0, "--out"}, "'" + target_.string() + "' exists and is not a folder");
+  checkReplaceable(target_);
   if (!target_.parent_path().empty() && (fs::create_directories(target_.parent_path(), ec), ec))
     throw InputError({"command line", 0, 0, "--out"},
                      "cannot create '" + target_.parent_path().string() + "': " + ec.message());
@@ -75,6 +129,9 @@ OutputFolder::OutputFolder(fs::path target) : target_(std::move(target)) {
   fs::remove_all(temporary_, ec);
   if (!fs::create_directory(temporary_, ec) || ec)
     throw std::runtime_error("cannot create the output folder " + temporary_.string() + ": " + ec.message());
+  writeFileAtomically(temporary_ / kOutputMarker,
+                      "This folder was written by motostab. The next motostab run that writes into it replaces it "
+                      "whole;\nmotostab replaces only folders that hold this file.\n");
 }
 
 OutputFolder::~OutputFolder() {
@@ -85,6 +142,7 @@ OutputFolder::~OutputFolder() {
 
 void OutputFolder::commit() {
   if (committed_) throw std::logic_error("OutputFolder::commit called twice for " + target_.string());
+  checkReplaceable(target_);  // inputs read since the constructor, or a folder put in its place
   std::error_code ec;
   if (!fs::exists(target_)) {
     fs::rename(temporary_, target_, ec);

@@ -1,6 +1,8 @@
 #include "io/plot.h"
 
 #include <cstdlib>
+#include <fstream>
+#include <iterator>
 #include <stdexcept>
 
 #include "io/atomic_file.h"
@@ -36,9 +38,12 @@ void renderGnuplot(const std::filesystem::path& dir, const std::string& name, co
   const std::string cmd = "cd " + shellQuote(dir.string()) + " && gnuplot -e \"outstem='" + stem + "'\" " +
                           shellQuote(name + ".gp") + " 2>" + shellQuote(stem + ".log");
   const int rc = std::system(cmd.c_str());
-  if (rc != 0) {
-    throw std::runtime_error("gnuplot failed on " + (dir / (name + ".gp")).string() + " (see " +
-                             (dir / (stem + ".log")).string() + ")");
+  if (rc != 0) {  // the log's text, not its path: the folder is a temporary one, removed on the error
+    std::ifstream log(dir / (stem + ".log"));
+    std::string text((std::istreambuf_iterator<char>(log)), std::istreambuf_iterator<char>());
+    if (text.size() > 2000) text = "..." + text.substr(text.size() - 2000);
+    throw std::runtime_error("gnuplot failed on the plot script " + name + ".gp" +
+                             (text.empty() ? std::string(" (is gnuplot installed?)") : ":\n" + text));
   }
   for (const char* ext : {".png", ".svg"})
     std::filesystem::rename(dir / (stem + ext), dir / (name + ext));

@@ -8,7 +8,7 @@ namespace motostab::io {
 /// Writes DIR/NAME.gp and renders DIR/NAME.png and DIR/NAME.svg by running gnuplot in DIR.
 /// `body` holds the gnuplot commands after the terminal and output are set (data files are named
 /// relative to DIR). The images appear only when gnuplot succeeds. Throws std::runtime_error if
-/// gnuplot is missing or fails, naming the script.
+/// gnuplot is missing or fails, naming the script and quoting gnuplot's messages.
 void renderGnuplot(const std::filesystem::path& dir, const std::string& name, const std::string& body);
 
 /// Quotes a string for use inside a gnuplot single-quoted literal.

@@ -1,9 +1,14 @@
 #include "io/yaml_map.h"
 
+#include <yaml-cpp/eventhandler.h>
+
+#include <cmath>
 #include <filesystem>
 #include <map>
 #include <mutex>
+#include <sstream>
 
+#include "io/input_file.h"
 #include "io/number.h"
 
 // yaml-cpp 0.7 has no public setter of a node's mark: YAML::as_if is a friend of YAML::Node, and
@@ -49,7 +54,99 @@ void checkKeys(const YAML::Node& node, const std::string& file, const std::strin
   }
 }
 
+// The bounds of a YAML text, checked on the parser's events before any tree is built: one document,
+// each alias naming a complete node that holds no alias itself (so an alias expands at most once, never
+// into further aliases), and at most kMaxYamlNodes nodes with every alias counted as the node it names.
+class YamlBoundsCheck : public YAML::EventHandler {
+ public:
+  YamlBoundsCheck(std::string file, std::string key) : file_(std::move(file)), key_(std::move(key)) {}
+
+  void OnDocumentStart(const YAML::Mark& mark) override {
+    if (++documents_ > 1) fail(mark, "a second YAML document ('---'): a file holds one document");
+  }
+  void OnDocumentEnd() override {}
+  void OnNull(const YAML::Mark& mark, YAML::anchor_t anchor) override { leaf(mark, anchor); }
+  void OnScalar(const YAML::Mark& mark, const std::string&, YAML::anchor_t anchor, const std::string&) override {
+    leaf(mark, anchor);
+  }
+  void OnAlias(const YAML::Mark& mark, YAML::anchor_t anchor) override {
+    const auto it = anchors_.find(anchor);
+    if (it == anchors_.end()) fail(mark, "an alias inside the node it names (a recursive alias)");
+    if (it->second.holdsAlias)
+      fail(mark, "an alias to a node that holds aliases itself: an alias is expanded at most once");
+    add(mark, it->second.nodes, true);
+  }
+  void OnSequenceStart(const YAML::Mark& mark, const std::string&, YAML::anchor_t anchor, YAML::EmitterStyle::value) override {
+    open(mark, anchor);
+  }
+  void OnSequenceEnd() override { close(); }
+  void OnMapStart(const YAML::Mark& mark, const std::string&, YAML::anchor_t anchor, YAML::EmitterStyle::value) override {
+    open(mark, anchor);
+  }
+  void OnMapEnd() override { close(); }
+
+ private:
+  struct Open {
+    YAML::anchor_t anchor;
+    long nodes;
+    bool holdsAlias;
+  };
+  struct Anchored {
+    long nodes;
+    bool holdsAlias;
+  };
+
+  [[noreturn]] void fail(const YAML::Mark& mark, const std::string& why) const {
+    throw InputError({file_, mark.line + 1, mark.column + 1, key_}, why);
+  }
+  void add(const YAML::Mark& mark, long nodes, bool alias) {
+    total_ += nodes;
+    if (total_ > kMaxYamlNodes)
+      fail(mark, "more than " + std::to_string(kMaxYamlNodes) + " YAML nodes (aliases counted as the nodes they name)");
+    if (!stack_.empty()) {
+      stack_.back().nodes += nodes;
+      stack_.back().holdsAlias = stack_.back().holdsAlias || alias;
+    }
+  }
+  void leaf(const YAML::Mark& mark, YAML::anchor_t anchor) {
+    add(mark, 1, false);
+    if (anchor) anchors_[anchor] = {1, false};
+  }
+  void open(const YAML::Mark& mark, YAML::anchor_t anchor) {
+    add(mark, 1, false);
+    stack_.push_back({anchor, 0, false});
+  }
+  void close() {
+    const Open done = stack_.back();
+    stack_.pop_back();
+    if (!stack_.empty()) {
+      stack_.back().nodes += done.nodes;
+      stack_.back().holdsAlias = stack_.back().holdsAlias || done.holdsAlias;
+    }
+    if (done.anchor) anchors_[done.anchor] = {done.nodes + 1, done.holdsAlias};
+  }
+
+  std::string file_, key_;
+  int documents_ = 0;
+  long total_ = 0;
+  std::vector<Open> stack_;
+  std::map<YAML::anchor_t, Anchored> anchors_;
+};
+
 }  // namespace
+
+YAML::Node parseYamlText(const std::string& text, const std::string& file, const std::string& key) {
+  try {
+    std::istringstream events{text};
+    YAML::Parser parser(events);
+    YamlBoundsCheck bounds(file, key);
+    while (parser.HandleNextDocument(bounds)) {
+    }
+    return YAML::Load(text);
+  } catch (const YAML::ParserException& e) {
+    throw InputError({file, e.mark.line + 1, e.mark.column + 1, key}, "YAML syntax error: " + e.msg);
+  }
+}
 
 YamlMap::YamlMap(const YAML::Node& node, std::string file, std::string path)
     : node_(node), file_(std::move(file)), path_(std::move(path)),
@@ -85,12 +182,13 @@ void YamlMap::failElement(const std::string& key, size_t index, const std::strin
 
 double YamlMap::toFinite(const YAML::Node& n, const std::string& key, size_t index) const {
   const auto v = n.IsScalar() ? parseFiniteNumber(n.Scalar()) : std::nullopt;
-  if (!v) {
-    const std::string got = n.IsScalar() ? " (got '" + n.Scalar() + "')" : "";
-    if (index == static_cast<size_t>(-1)) fail(key, "expected a finite number" + got);
-    failElement(key, index, "expected a finite number" + got);
-  }
-  return *v;
+  const std::string got = n.IsScalar() ? " (got '" + n.Scalar() + "')" : "";
+  const std::string why = !v ? "expected a finite number" + got
+                             : std::abs(*v) > kMaxMagnitude ? "a magnitude above 1e12, beyond any physical parameter" + got
+                                                            : "";
+  if (why.empty()) return *v;
+  if (index == static_cast<size_t>(-1)) fail(key, why);
+  failElement(key, index, why);
 }
 
 bool YamlMap::has(const std::string& key) const { return static_cast<bool>(node_[key]); }
@@ -117,6 +215,8 @@ double YamlMap::getDouble(const std::string& key, double fallback) {
 double YamlMap::getPositive(const std::string& key) {
   const double v = getDouble(key);
   if (!(v > 0)) fail(key, "must be positive (got " + std::to_string(v) + ")");
+  if (v < kMinMagnitude)
+    fail(key, "must be positive and at least 1e-12 (got " + static_cast<const YAML::Node&>(node_)[key].Scalar() + ")");
   return v;
 }
 
@@ -247,14 +347,7 @@ YamlMap loadYamlFile(const std::string& file) {
     std::lock_guard<std::mutex> guard(gOpenCountLock);
     ++gOpenCounts[file];
   }
-  YAML::Node root;
-  try {
-    root = YAML::LoadFile(file);
-  } catch (const YAML::BadFile&) {
-    throw InputError({file, 0, 0, ""}, "cannot open file");
-  } catch (const YAML::ParserException& e) {
-    throw InputError({file, e.mark.line + 1, e.mark.column + 1, ""}, "YAML syntax error: " + e.msg);
-  }
+  const YAML::Node root = parseYamlText(readInputFile(file), file, "");
   checkKeys(root, file, "", true);
   return YamlMap(root, file, "");
 }
@@ -309,9 +402,9 @@ ParsedOverride parseOverride(const std::string& assignment) {
   ParsedOverride out;
   out.path = assignment.substr(0, eq);
   try {
-    out.value = YAML::Load(assignment.substr(eq + 1));
-  } catch (const YAML::Exception& e) {
-    throw InputError({"--set", 0, 0, assignment}, "the value is not valid YAML: " + e.msg);
+    out.value = parseYamlText(assignment.substr(eq + 1), "--set", assignment);
+  } catch (const InputError& e) {
+    throw InputError({"--set", 0, 0, assignment}, "the value is not valid YAML: " + e.getReason());
   }
   checkKeys(out.value, "--set " + assignment, out.path, true);
   try {

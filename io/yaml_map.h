@@ -17,7 +17,8 @@
 namespace motostab::io {
 
 /// A YAML mapping read strictly (Drake-style): a missing key, a wrong type, or a key that
-/// finish() finds unused is an InputError naming file:line:column and the dotted key path.
+/// finish() finds unused is an InputError naming file:line:column and the dotted key path. Every
+/// number is finite and at most kMaxMagnitude in magnitude (io/number.h).
 class YamlMap {
  public:
   /// `node` must be a mapping with unique scalar keys; else an InputError at it.
@@ -25,7 +26,7 @@ class YamlMap {
 
   bool has(const std::string& key) const;
   double getDouble(const std::string& key);
-  /// A value that must be > 0 (masses, radii, lengths).
+  /// A value that must be > 0 (masses, radii, lengths): at least kMinMagnitude (io/number.h).
   double getPositive(const std::string& key);
   /// A value that must be >= 0.
   double getNonNegative(const std::string& key);
@@ -78,8 +79,18 @@ class YamlMap {
   std::shared_ptr<std::set<std::string>> used_;
 };
 
-/// Loads a YAML file as the root map. Syntax errors and duplicate keys anywhere in the document are
-/// InputErrors with line and column (a duplicate at its second occurrence).
+/// Nodes a YAML input may hold, each alias counted as the node it names.
+constexpr long kMaxYamlNodes = 100000;
+
+/// Parses YAML text (a file's content, or a --set value) within bounds: one document; an alias may name
+/// only a complete node that holds no alias itself (aliases expand at most once); at most kMaxYamlNodes
+/// nodes after expansion. A syntax error or a bound exceeded is an InputError at `file`, line, column,
+/// with `key` as the key path.
+YAML::Node parseYamlText(const std::string& text, const std::string& file, const std::string& key);
+
+/// Loads a YAML file as the root map: a regular file of bounded size (io/input_file.h), parsed by
+/// parseYamlText. Syntax errors and duplicate keys anywhere in the document are InputErrors with line and
+/// column (a duplicate at its second occurrence).
 YamlMap loadYamlFile(const std::string& file);
 
 /// `name` as named in `namingFile`: unchanged if absolute, else relative to namingFile's folder.

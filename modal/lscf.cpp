@@ -6,6 +6,8 @@
 #include <map>
 #include <stdexcept>
 
+#include "io/result_error.h"
+
 namespace motostab::modal {
 namespace {
 
@@ -42,12 +44,12 @@ LscfEstimator::LscfEstimator(const std::vector<double>& frequency, const std::ve
                              const LscfOptions& options)
     : options_(options) {
   if (!(options.fMax > options.fMin && options.fMin >= 0))
-    throw std::invalid_argument("LSCF: the band must satisfy 0 <= fMin < fMax");
+    throw std::logic_error("LSCF: the band must satisfy 0 <= fMin < fMax");
   if (options.minOrder < 2 || options.maxOrder < options.minOrder)
-    throw std::invalid_argument("LSCF: orders must satisfy 2 <= minOrder <= maxOrder");
+    throw std::logic_error("LSCF: orders must satisfy 2 <= minOrder <= maxOrder");
   const auto bins = getBandBins(frequency, options.fMin, options.fMax);
   const int n = options.maxOrder;
-  if (bins.size() < static_cast<size_t>(n + 2)) throw std::invalid_argument("LSCF: too few frequency bins in the band");
+  if (bins.size() < static_cast<size_t>(n + 2)) throw io::ResultError("LSCF: too few frequency bins in the band: widen processing.band_hz or record longer hits");
   dt_ = 1.0 / (2 * options.fMax);
   r_ = Eigen::VectorXd::Zero(n + 1);
   for (size_t k : bins) {
@@ -76,7 +78,7 @@ LscfEstimator::LscfEstimator(const std::vector<double>& frequency, const std::ve
 
 std::vector<cd> LscfEstimator::calcRawPoles(int p) const {
   const int n = options_.maxOrder;
-  if (p < 1 || p > n) throw std::invalid_argument("LSCF: order out of range");
+  if (p < 1 || p > n) throw std::logic_error("LSCF: order out of range");
   Eigen::MatrixXd R(p + 1, p + 1);
   for (int j = 0; j <= p; ++j)
     for (int l = 0; l <= p; ++l) R(j, l) = r_[std::abs(l - j)];
@@ -267,7 +269,7 @@ ModalModel fitModalModel(const std::vector<double>& frequency, const std::vector
                          const std::vector<cd>& rawPoles, bool relativeWeighting) {
   const auto bins = getBandBins(frequency, fMin, fMax);
   const int np = static_cast<int>(rawPoles.size()), nc = 2 * np + 2;
-  if (bins.size() * 2 < static_cast<size_t>(nc)) throw std::invalid_argument("LSFD: too few bins for the poles");
+  if (bins.size() * 2 < static_cast<size_t>(nc)) throw io::ResultError("LSFD: too few frequency bins in the band for the poles: widen processing.band_hz or record longer hits");
   Eigen::MatrixXd A(2 * bins.size(), nc);
   Eigen::VectorXd b(2 * bins.size());
   for (size_t i = 0; i < bins.size(); ++i) {

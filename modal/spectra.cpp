@@ -40,7 +40,7 @@ double getMaxAbs(const std::vector<double>& x) {
 HitCheck checkHit(const ImpactRecord& hit, const HitCheckOptions& options) {
   HitCheck c;
   const auto& f = hit.force;
-  if (f.empty()) throw std::invalid_argument("checkHit: empty force record");
+  if (f.empty()) throw std::logic_error("checkHit: empty force record");
   for (size_t k = 0; k < f.size(); ++k)
     if (std::abs(f[k]) > std::abs(c.peakForce)) c.peakForce = f[k], c.peakIndex = k;
   const double peak = std::abs(c.peakForce), edge = options.pulseEdgeFraction * peak;
@@ -85,7 +85,7 @@ std::vector<double> calcForceWindow(size_t n, size_t pulseStart, size_t pulseEnd
 
 double calcExponentialDecayRate(double duration, double endValue) {
   if (!(endValue > 0 && endValue <= 1) || !(duration > 0))
-    throw std::invalid_argument("exponential window: end value must be in (0, 1] and duration > 0");
+    throw std::logic_error("exponential window: end value must be in (0, 1] and duration > 0");
   return std::log(1.0 / endValue) / duration;
 }
 
@@ -113,7 +113,7 @@ std::vector<std::complex<double>> calcRealDft(const std::vector<double>& x) {
 }
 
 FrfEstimate estimateH1(const std::vector<ImpactRecord>& hits, const WindowOptions& window) {
-  if (hits.empty()) throw std::invalid_argument("estimateH1: no hits");
+  if (hits.empty()) throw std::logic_error("estimateH1: no hits");
   const size_t n = hits[0].force.size(), nc = hits[0].responses.size();
   const double dt = hits[0].dt;
   FrfEstimate e;
@@ -124,7 +124,7 @@ FrfEstimate estimateH1(const std::vector<ImpactRecord>& hits, const WindowOption
   for (size_t k = 0; k < n; ++k) expo[k] = std::exp(-e.windowDecayRate * k * dt);
   for (const auto& hit : hits) {
     if (hit.force.size() != n || hit.responses.size() != nc || std::abs(hit.dt - dt) > 1e-9 * dt)
-      throw std::invalid_argument("estimateH1: hits differ in length, sampling interval or channel count");
+      throw std::logic_error("estimateH1: hits differ in length, sampling interval or channel count");
     std::vector<double> f = hit.force;
     if (window.forceWindow) {
       const HitCheck c = checkHit(hit);
@@ -135,7 +135,7 @@ FrfEstimate estimateH1(const std::vector<ImpactRecord>& hits, const WindowOption
     e.forceSpectra.push_back(calcRealDft(f));
     std::vector<std::vector<std::complex<double>>> xs;
     for (const auto& r : hit.responses) {
-      if (r.size() != n) throw std::invalid_argument("estimateH1: response length differs from force length");
+      if (r.size() != n) throw std::logic_error("estimateH1: response length differs from force length");
       std::vector<double> x(n);
       for (size_t k = 0; k < n; ++k) x[k] = r[k] * expo[k];
       xs.push_back(calcRealDft(x));

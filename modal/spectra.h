@@ -64,7 +64,7 @@ struct FrfEstimate {
 std::vector<std::complex<double>> calcRealDft(const std::vector<double>& x);
 
 /// H1 = S_fx / S_ff and coherence |S_fx|^2/(S_ff S_xx) averaged over hits, after windowing.
-/// All hits must have the same length, dt and channel count (std::invalid_argument otherwise).
+/// All hits must have the same length, dt and channel count (std::logic_error otherwise: the readers check them).
 FrfEstimate estimateH1(const std::vector<ImpactRecord>& hits, const WindowOptions& window = {});
 
 /// H1 and coherence from the kept per-hit spectra of `estimate`, using only hits with use[i] true

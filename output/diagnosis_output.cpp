@@ -37,8 +37,11 @@ json makeParameters(const std::vector<ParameterEstimate>& ps) {
 }
 
 json makeFit(const FitSummary& f) {
-  json j{{"name", f.name}, {"parameters", makeParameters(f.parameters)}, {"rms", f.rms}, {"chi2", f.chi2},
-         {"bic", f.bic}, {"delta_bic", f.deltaBic}, {"at_bound", f.atBound}, {"p_value", f.pValue},
+  // A fit that failed (diagnosis/model_fit.h, fitOrFail) has no scores: null, its reason in failed_criteria.
+  const bool fitFailed = !f.failed.empty() && f.failed.front().rfind("fit failed", 0) == 0;
+  auto score = [&](double v) { return fitFailed ? json(nullptr) : json(v); };
+  json j{{"name", f.name}, {"parameters", makeParameters(f.parameters)}, {"rms", score(f.rms)}, {"chi2", score(f.chi2)},
+         {"bic", score(f.bic)}, {"delta_bic", score(f.deltaBic)}, {"at_bound", f.atBound}, {"p_value", score(f.pValue)},
          {"num_parameters", f.numParameters}, {"failed_criteria", f.failed}};
   j["cv_rms"] = f.hasCv ? json(f.cvRms) : json(nullptr);
   if (f.hasCv)  // cv_folds: the folds the CV RMS covers (a failed fold has no held-out score)
@@ -383,7 +386,7 @@ void writeDiagnosisOutputs(const std::filesystem::path& dir, const DiagnosisResu
   YAML::Emitter yaml;
   yaml << makeScenarioTree(r.scenarioFile, r.extendedOverrides);
   writeFileAtomically(dir / "extended.yaml", std::string("# motostab diagnose: ") + r.scenarioFile + " with the named causes\n" + yaml.c_str() + "\n");
-  writeFileAtomically(dir / "diagnosis.json", makeDiagnosisJson(r).dump(2) + "\n");
+  writeFileAtomically(dir / "diagnosis.json", formatJson(makeDiagnosisJson(r), "diagnosis.json"));
   writeFileAtomically(dir / "report.md", makeDiagnosisReport(r));
   writeFileAtomically(dir / "residuals.csv", makeResidualCsv(r));
   writeEigenvaluePlots(dir, r);

@@ -128,7 +128,7 @@ void writeTurnMapOutputs(const std::filesystem::path& dir, const std::string& na
   summary["failed_rolls"] = nlohmann::json::array();  // roll angles where no speed trimmed
   for (const FailedRoll& f : map.failedRolls) summary["failed_rolls"].push_back({{"roll_deg", toDegrees(f.roll)}, {"message", f.message}});
   summary["failed_points"] = map.countFailedPoints();  // the rolls' failed_speeds, counted
-  writeFileAtomically(dir / "map_summary.json", summary.dump(2) + "\n");
+  writeFileAtomically(dir / "map_summary.json", formatJson(summary, "map_summary.json"));
   std::vector<std::string> modes;
   for (ModeLabel m : listPresentModes(map)) modes.push_back(toString(m));
   for (ModeLabel m : listPresentModes(map)) writeModeData(dir, map, m);

@@ -14,7 +14,7 @@ using response::calcModelResponse;
 
 nlohmann::json makeModesJson(const IdentificationResult& result, const std::vector<std::string>& signalNames) {
   if (signalNames.size() != result.offset.size())
-    throw std::invalid_argument("makeModesJson: " + std::to_string(signalNames.size()) + " names for " +
+    throw std::logic_error("makeModesJson: " + std::to_string(signalNames.size()) + " names for " +
                                 std::to_string(result.offset.size()) + " signals");
   nlohmann::json modes = nlohmann::json::array();
   for (const auto& m : result.modes) {
@@ -88,7 +88,7 @@ void writeResponseReport(const std::filesystem::path& dir, const ResponseRecord&
   nlohmann::json json = makeModesJson(result, record.signalColumns);
   json["source"] = {{"file", record.source}, {"time_column", record.timeColumn}};
   json.update(extra);
-  writeFileAtomically(dir / "modes.json", json.dump(2) + "\n");
+  writeFileAtomically(dir / "modes.json", formatJson(json, "modes.json"));
 
   std::vector<std::string> header{record.timeColumn};
   header.insert(header.end(), record.signalColumns.begin(), record.signalColumns.end());

@@ -107,6 +107,7 @@ std::string plotBranches(const SweepResult& sweep) {
     cmd += (first ? "" : ", \\\n       ") + series;
     first = false;
   };
+  const std::string style = sweep.speeds.size() > 1 ? "lines" : "linespoints pointtype 7";  // one speed: a point
   for (size_t m = 0; m < std::size(kPlottedModes); ++m) {
     const std::string colour = std::string("linecolor rgb '") + kModeColours[m] + "' linewidth 2";
     bool titled = false, imagDrawn = false;
@@ -115,12 +116,13 @@ std::string plotBranches(const SweepResult& sweep) {
       if (br.label != kPlottedModes[m]) continue;
       const std::string rows = "'eigenvalues.csv' every " + std::to_string(n) + "::" + std::to_string(b);
       const std::string name = toString(br.label);
-      add(rows + " using 1:3 with lines " + colour + " dashtype 1 " + (titled ? "notitle" : "title '" + name + ", real part'"));
+      add(rows + " using 1:3 with " + style + " " + colour + " dashtype 1 " +
+          (titled ? "notitle" : "title '" + name + ", real part'"));
       titled = true;
       bool complex = false;  // one dashed line per complex pair, |imag| in rad/s where it is complex
       for (const auto& l : br.eigenvalue) complex = complex || std::abs(l.imag()) > 1e-9;
       if (!complex || imagDrawn) continue;
-      add(rows + " using 1:(abs($4) > 1e-9 ? abs($4) : NaN) with lines " + colour + " dashtype 2 title '" + name +
+      add(rows + " using 1:(abs($4) > 1e-9 ? abs($4) : NaN) with " + style + " " + colour + " dashtype 2 title '" + name +
           ", imaginary part'");
       imagDrawn = true;
     }
@@ -130,18 +132,26 @@ std::string plotBranches(const SweepResult& sweep) {
 
 std::string makeEigenvaluePlot(const std::string& name, const SweepResult& sweep) {
   const std::vector<StableRange> stable = calcStableSpeedRanges(sweep);
+  // One speed: a range of 1 m/s around it (gnuplot cannot draw an empty range).
+  const double first = sweep.speeds.front(), last = sweep.speeds.back(), pad = first < last ? 0 : 0.5;
   return "  set datafile separator ','\n  set datafile columnheaders\n  set grid\n"
          "  set key below\n  set style textbox opaque noborder\n"
          "  set title " + gnuplotQuote("Eigenvalues against speed: " + name) + "\n"
          "  set xlabel 'forward speed v (m/s)'\n"
          "  set ylabel 'eigenvalue: real part (1/s, solid), imaginary part (rad/s, dashed)'\n"
          "  set xzeroaxis linetype -1\n"
-         "  set xrange [" + formatSpeed(sweep.speeds.front(), -1) + ":" + formatSpeed(sweep.speeds.back(), -1) + "]\n" +
+         "  set xrange [" + formatSpeed(std::max(0.0, first - pad), -1) + ":" + formatSpeed(last + pad, -1) + "]\n" +
          markStableRanges(sweep, stable) + markCriticalSpeeds(sweep, std::max<size_t>(stable.size(), 1) + 1) +
          plotBranches(sweep);
 }
 
 }  // namespace
+
+std::vector<std::string> getPlottedModes() {
+  std::vector<std::string> names;
+  for (ModeLabel m : kPlottedModes) names.push_back(toString(m));
+  return names;
+}
 
 nlohmann::json makeSweepSummary(const std::string& name, const SweepResult& sweep) {
   nlohmann::json j;
@@ -183,7 +193,7 @@ void writeSweepData(const std::filesystem::path& dir, const std::string& name, c
           calcDampingRatio(l));
     }
   writeFileAtomically(dir / "eigenvalues.csv", csv.getText());
-  writeFileAtomically(dir / "summary.json", makeSweepSummary(name, sweep).dump(2) + "\n");
+  writeFileAtomically(dir / "summary.json", formatJson(makeSweepSummary(name, sweep), "summary.json"));
 }
 
 void writeSweepOutputs(const std::filesystem::path& dir, const std::string& name, const SweepResult& sweep) {
@@ -264,7 +274,7 @@ std::string formatSweepTable(const SweepResult& sweep, int rows) {
 void writeLinearModel(const std::filesystem::path& dir, const LinearModel& lin, const std::vector<ModeContent>& contents) {
   if (lin.labels.size() != static_cast<size_t>(lin.eigenvalues.size()) ||
       (!contents.empty() && contents.size() != lin.labels.size()))
-    throw std::invalid_argument("writeLinearModel: one mode label (and content, if any) per eigenvalue needed");
+    throw std::logic_error("writeLinearModel: one mode label (and content, if any) per eigenvalue needed");
   std::vector<std::string> names;
   for (const auto& s : lin.states) names.push_back(s.name);
   auto matrixCsv = [&](const Eigen::MatrixXd& M, const std::vector<std::string>& cols) {
@@ -324,7 +334,7 @@ void writeLinearModel(const std::filesystem::path& dir, const LinearModel& lin, 
     }
     j["modes"].push_back(m);
   }
-  writeFileAtomically(dir / "linear_model.json", j.dump(2) + "\n");
+  writeFileAtomically(dir / "linear_model.json", formatJson(j, "linear_model.json"));
 }
 
 }  // namespace motostab::output

@@ -13,6 +13,9 @@ namespace motostab::output {
 double calcFrequencyHz(std::complex<double> lambda);
 double calcDampingRatio(std::complex<double> lambda);
 
+/// The modes the sweep plots draw, in their order (weave, capsize, castor, wobble).
+std::vector<std::string> getPlottedModes();
+
 /// DIR/eigenvalues.csv and DIR/summary.json only.
 void writeSweepData(const std::filesystem::path& dir, const std::string& scenarioName, const analysis::SweepResult& sweep);
 
@@ -37,7 +40,7 @@ std::string formatSweepTable(const analysis::SweepResult& sweep, int rows = 11);
 /// frequency_hz,damping_ratio), DIR/eigenvectors.csv and DIR/linear_model.json (speed_mps, roll_rad,
 /// heading_frame: true about a steady turn, states, inputs, A, B, eigenvalues, modes: each eigenvalue's
 /// label and, given `contents` (calcModeContents of lin), its shares by state role). lin.labels names
-/// each eigenvalue's mode; one per eigenvalue, else std::invalid_argument.
+/// each eigenvalue's mode; one per eigenvalue, else std::logic_error.
 void writeLinearModel(const std::filesystem::path& dir, const analysis::LinearModel& lin,
                       const std::vector<analysis::ModeContent>& contents = {});
 

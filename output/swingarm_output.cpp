@@ -199,7 +199,7 @@ void writeFrfJson(const FrfTest& test, const FrfResult& r, const std::filesystem
   j["bending_mode"] = r.bendingIndex;
   j["torsion_mode"] = r.torsionIndex;
   j["diagnostics"] = r.diagnostics;
-  writeFileAtomically(dir / "frf.json", j.dump(2) + "\n");
+  writeFileAtomically(dir / "frf.json", formatJson(j, "frf.json"));
 }
 
 // Plot: measured H1 (points) and modal model (lines), magnitude over phase.
@@ -313,7 +313,7 @@ void writeStaticOutputs(const StaticTest& test, const StaticResult& r, const std
   j["conventions"] =
       "axis point = foot of the perpendicular from the force point, in (x, y, z) with y = 0 the plate plane; "
       "axis_direction is oriented so that a_tw > 0 (y at the force point = theta * a_tw); beta_deg = atan2(e_z, e_x)";
-  writeFileAtomically(dir / "static.json", j.dump(2) + "\n");
+  writeFileAtomically(dir / "static.json", formatJson(j, "static.json"));
   std::vector<PlotMarker> sensors;
   for (const auto& s : test.sensors) sensors.push_back({s.name, s.position});
   char title[160];
@@ -365,7 +365,7 @@ void writeCogOutputs(const CogTest& t, const CogResult& r, const std::filesystem
   j["cog_m_stderr"] = {r.cogStderr[0], r.cogStderr[1], r.cogStderr[2]};
   j["centre_of_pressure_fit_rms_m"] = r.residualRms;
   j["method"] = "x_p = x_G - z_G tan(tilt), least squares over all tilt angles (seed section 2.4)";
-  writeFileAtomically(dir / "cog.json", j.dump(2) + "\n");
+  writeFileAtomically(dir / "cog.json", formatJson(j, "cog.json"));
   CsvWriter w({"tilt_deg", "tan_tilt", "centre_of_pressure_x_m", "fit_m"});
   const Eigen::Vector3d g = r.cog + t.partOrigin;
   for (size_t i = 0; i < t.tiltDeg.size(); ++i) {
@@ -404,7 +404,7 @@ void writeInertiaOutputs(const InertiaTest& t, const InertiaResult& r, const std
                   {"model_kg_m2", model}});
   }
   j["setups"] = js;
-  writeFileAtomically(dir / "inertia.json", j.dump(2) + "\n");
+  writeFileAtomically(dir / "inertia.json", formatJson(j, "inertia.json"));
   writeFileAtomically(dir / "inertia_setups.csv", w.getText());
   renderGnuplot(dir, "inertia_setups",
                 "set datafile separator ','\nset grid\nset xlabel 'set-up'\nset ylabel 'moment of inertia about CoG (kg m^2)'\n"

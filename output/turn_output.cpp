@@ -42,7 +42,7 @@ nlohmann::json makeTrimJson(const VehicleModel& model, const TrimResult& trim) {
 }
 
 void writeTrimJson(const std::filesystem::path& dir, const VehicleModel& model, const TrimResult& trim) {
-  writeFileAtomically(dir / "trim.json", makeTrimJson(model, trim).dump(2) + "\n");
+  writeFileAtomically(dir / "trim.json", formatJson(makeTrimJson(model, trim), "trim.json"));
 }
 
 std::string formatTrimTable(const VehicleModel& model, const TrimResult& trim) {

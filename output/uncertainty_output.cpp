@@ -262,7 +262,7 @@ std::string makeSensitivityBody(const std::string& mode, std::pair<size_t, size_
 void writeUncertaintyOutputs(const std::filesystem::path& dir, const std::string& name, const UncertaintySetup& s,
                              const UncertaintySummary& sum, const std::vector<TaskResult>& results) {
   std::vector<std::pair<size_t, size_t>> rows;
-  writeFileAtomically(dir / "summary.json", makeUncertaintyJson(name, s, sum).dump(2) + "\n");
+  writeFileAtomically(dir / "summary.json", formatJson(makeUncertaintyJson(name, s, sum), "summary.json"));
   writeFileAtomically(dir / "samples.csv", makeSamplesCsv(s, results));
   writeFileAtomically(dir / "mode_quantiles.csv", makeModeQuantilesCsv(sum));
   writeFileAtomically(dir / "sensitivity.csv", makeSensitivityCsv(s, sum, rows));

@@ -9,7 +9,7 @@ PencilDecomposition calcPencilDecomposition(const Eigen::MatrixXd& samples, int 
   const int n = static_cast<int>(samples.rows());
   const int k = static_cast<int>(samples.cols());
   const int l = pencilParameter > 0 ? pencilParameter : n / 3;
-  if (l < 1 || n - l < 1) throw std::invalid_argument("matrix pencil: too few samples");
+  if (l < 1 || n - l < 1) throw std::logic_error("matrix pencil: too few samples");
   const int rowsPerSignal = n - l;
   Eigen::MatrixXd hankel(rowsPerSignal * k, l + 1);
   for (int s = 0; s < k; ++s)
@@ -26,7 +26,7 @@ std::vector<std::complex<double>> calcPencilPoles(const PencilDecomposition& pen
   const auto& v = pencil.rightVectors;
   const int l = static_cast<int>(v.rows()) - 1;
   if (order < 1 || order > std::min<int>(l, static_cast<int>(v.cols())))
-    throw std::invalid_argument("matrix pencil: order " + std::to_string(order) + " too large for the samples");
+    throw std::logic_error("matrix pencil: order " + std::to_string(order) + " too large for the samples");
   const Eigen::MatrixXd vt = v.leftCols(order);
   const Eigen::MatrixXd shift = vt.topRows(l).colPivHouseholderQr().solve(vt.bottomRows(l));
   Eigen::EigenSolver<Eigen::MatrixXd> eig(shift, false);

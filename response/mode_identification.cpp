@@ -7,6 +7,8 @@
 #include <string>
 
 #include "io/csv.h"
+#include "io/input_error.h"
+#include "io/result_error.h"
 #include "response/exponential_fit.h"
 #include "response/matrix_pencil.h"
 
@@ -15,6 +17,10 @@ namespace motostab::response {
 using io::formatNumber;
 
 namespace {
+
+// Bad samples or window: an InputError the caller locates (response_csv.cpp names the file and columns).
+io::InputError badData(const std::string& why) { return io::InputError({}, why); }
+
 
 constexpr double kPi = 3.14159265358979323846;
 // Residual ratio by which a fit without the allowed offset must beat the fit with it.
@@ -87,34 +93,34 @@ bool removeOffsetPole(std::vector<ContinuousPole>& poles) {
 
 int getOrder(const std::vector<ContinuousPole>& poles) { return getBasisSize(poles, false); }
 
-// Throws std::invalid_argument unless the samples and the window can be fitted.
+// Throws InputError (no location: the caller knows the data's source) unless the samples and the window can be fitted.
 void checkInput(const std::vector<double>& time, const std::vector<std::vector<double>>& signals,
                 const IdentificationOptions& options) {
-  if (signals.empty()) throw std::invalid_argument("no signal to identify");
+  if (signals.empty()) throw badData("no signal to identify");
   for (size_t k = 0; k < signals.size(); ++k) {
     if (signals[k].size() != time.size())
-      throw std::invalid_argument("signal " + std::to_string(k) + " has " + std::to_string(signals[k].size()) +
+      throw badData("signal " + std::to_string(k) + " has " + std::to_string(signals[k].size()) +
                                   " samples but time has " + std::to_string(time.size()));
     for (size_t i = 0; i < time.size(); ++i)
       if (!std::isfinite(signals[k][i]))
-        throw std::invalid_argument("signal " + std::to_string(k) + " sample " + std::to_string(i) + " is not finite");
+        throw badData("signal " + std::to_string(k) + " sample " + std::to_string(i) + " is not finite");
   }
-  if (time.empty()) throw std::invalid_argument("no samples");
+  if (time.empty()) throw badData("no samples");
   for (size_t i = 0; i < time.size(); ++i) {
-    if (!std::isfinite(time[i])) throw std::invalid_argument("time sample " + std::to_string(i) + " is not finite");
+    if (!std::isfinite(time[i])) throw badData("time sample " + std::to_string(i) + " is not finite");
     if (i > 0 && !(time[i] > time[i - 1]))
-      throw std::invalid_argument("time is not strictly increasing at sample " + std::to_string(i) + " (t = " +
+      throw badData("time is not strictly increasing at sample " + std::to_string(i) + " (t = " +
                                   formatTime(time[i]) + " s)");
   }
   if (!(options.windowStart < options.windowEnd))
-    throw std::invalid_argument("window start " + formatTime(options.windowStart) + " s is not before its end " +
+    throw badData("window start " + formatTime(options.windowStart) + " s is not before its end " +
                                 formatTime(options.windowEnd) + " s");
-  if (options.maxOrder < 1) throw std::invalid_argument("maximum order must be at least 1");
+  if (options.maxOrder < 1) throw badData("maximum order must be at least 1");
   // A window reaching beyond the data is an error (infinite ends mean "from the start" / "to the end").
   const double slack = 1e-9 * std::max(1.0, std::abs(time.back() - time.front()));
   if ((std::isfinite(options.windowStart) && options.windowStart < time.front() - slack) ||
       (std::isfinite(options.windowEnd) && options.windowEnd > time.back() + slack))
-    throw std::invalid_argument("window " + formatTime(options.windowStart) + ":" + formatTime(options.windowEnd) +
+    throw badData("window " + formatTime(options.windowStart) + ":" + formatTime(options.windowEnd) +
                                 " s is outside the data (" + formatTime(time.front()) + " to " +
                                 formatTime(time.back()) + " s)");
 }
@@ -159,7 +165,7 @@ struct WindowSamples {
 };
 
 // The window's samples; its first and last times and sample count go into `result`. Throws
-// std::invalid_argument when the window has too few samples for `maxOrder` or a constant signal.
+// InputError when the window has too few samples for `maxOrder` or a constant signal.
 WindowSamples selectWindow(const std::vector<double>& time, const std::vector<std::vector<double>>& signals,
                            const IdentificationOptions& options, int maxOrder, IdentificationResult& result) {
   std::vector<int> index;
@@ -169,7 +175,7 @@ WindowSamples selectWindow(const std::vector<double>& time, const std::vector<st
   const int k = static_cast<int>(signals.size());
   const int needed = std::max(12, 3 * (maxOrder + 2));
   if (n < needed)
-    throw std::invalid_argument("window has " + std::to_string(n) + " samples; order " + std::to_string(maxOrder) +
+    throw badData("window has " + std::to_string(n) + " samples; order " + std::to_string(maxOrder) +
                                 " needs at least " + std::to_string(needed) + " (lower the maximum order)");
 
   result.referenceTime = time[index.front()];
@@ -190,7 +196,7 @@ WindowSamples selectWindow(const std::vector<double>& time, const std::vector<st
   for (int s = 0; s < k; ++s) {
     const double mean = y.col(s).mean();
     scale(s) = std::sqrt((y.col(s).array() - mean).square().sum() / n);
-    if (!(scale(s) > 0)) throw std::invalid_argument("signal " + std::to_string(s) + " is constant in the window");
+    if (!(scale(s) > 0)) throw badData("signal " + std::to_string(s) + " is constant in the window");
     y.col(s) /= scale(s);
   }
   return w;
@@ -304,7 +310,7 @@ IdentificationResult identifyModes(const std::vector<double>& time, const std::v
   const int extra = options.fitOffset ? 1 : 0;
   const int pencilParameter = static_cast<int>(uniform.rows()) / 3;
   if (pencilParameter < maxOrder + extra + 1)
-    throw std::invalid_argument("too few samples in the window for order " + std::to_string(maxOrder));
+    throw badData("too few samples in the window for order " + std::to_string(maxOrder));
   const PencilDecomposition pencil = calcPencilDecomposition(uniform, pencilParameter);
   for (int i = 0; i < std::min<int>(static_cast<int>(pencil.singularValues.size()), 2 * (maxOrder + extra) + 2); ++i)
     result.singularValues.push_back(pencil.singularValues(i));
@@ -312,7 +318,7 @@ IdentificationResult identifyModes(const std::vector<double>& time, const std::v
   // Candidates of every pencil size scored by BIC; the chosen one is polished to convergence.
   const std::vector<ExponentialFit> fits = fitCandidates(pencil, w, options, maxOrder, result);
   const int chosen = chooseCandidate(result.candidates, options);
-  if (chosen < 0) throw std::invalid_argument("no model could be fitted to the window");
+  if (chosen < 0) throw io::ResultError("no model could be fitted to the window");
   const double maxOmega = kPi / result.pencilStep;
   const ExponentialFit best = options.polish ? polishPoles(fits[chosen], w.tau, w.y, maxOmega) : fits[chosen];
 
@@ -324,7 +330,7 @@ IdentificationResult identifyModes(const std::vector<double>& time, const std::v
 std::vector<double> calcModelResponse(const IdentificationResult& result, int signalIndex,
                                       const std::vector<double>& time) {
   if (signalIndex < 0 || signalIndex >= static_cast<int>(result.offset.size()))
-    throw std::invalid_argument("signal index " + std::to_string(signalIndex) + " out of range");
+    throw std::logic_error("calcModelResponse: signal index " + std::to_string(signalIndex) + " out of range");
   std::vector<double> out;
   out.reserve(time.size());
   for (double t : time) {

@@ -62,8 +62,9 @@ struct IdentificationResult {
 };
 
 /// Identifies the modes of `signals` (each sampled at `time`, s, strictly increasing, same length) inside
-/// the options' window. Throws std::invalid_argument on bad input (lengths, non-increasing time, empty
-/// window, too few samples for the order).
+/// the options' window. Throws io::InputError without a location on bad data (lengths, non-increasing
+/// time, empty window, too few samples for the order, a constant signal: the caller names the source),
+/// io::ResultError when no model fits the window.
 IdentificationResult identifyModes(const std::vector<double>& time, const std::vector<std::vector<double>>& signals,
                                    const IdentificationOptions& options = {});
 

@@ -70,9 +70,9 @@ IdentificationResult identifyModesFromCsv(const CsvIdentificationRequest& reques
   IdentificationResult result;
   try {
     result = identifyModes(record.time, record.signals, request.options);
-  } catch (const std::invalid_argument& e) {
+  } catch (const InputError& e) {  // bad samples or window: located in the CSV file
     throw InputError({record.source, 0, 0, joinColumns(record.signalColumns)},
-                     std::string(e.what()) + " (time column '" + record.timeColumn + "')");
+                     e.getReason() + " (time column '" + record.timeColumn + "')");
   }
   if (recordOut) *recordOut = std::move(record);
   return result;

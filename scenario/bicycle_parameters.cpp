@@ -3,14 +3,19 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <fstream>
+#include <set>
 #include <sstream>
 
 #include <Eigen/Dense>
 
+#include "io/atomic_file.h"
 #include "io/csv.h"
 #include "io/input_error.h"
+#include "io/input_file.h"
 #include "io/number.h"
+#include "io/output_folder.h"
+#include "scenario/bicycle_parameters_uncertainty.h"
+#include "scenario/scenario.h"
 
 namespace motostab::scenario {
 
@@ -19,10 +24,47 @@ using io::formatNumber;
 using io::parseFiniteNumber;
 
 
-std::map<std::string, double> readBicycleParameters(const std::string& file) {
-  std::ifstream in(file);
-  if (!in) throw InputError({file, 0, 0, ""}, "cannot open parameter file");
-  std::map<std::string, double> out;
+namespace {
+
+// The first words of every scenario `import` writes: a file that starts so may be replaced by an import.
+constexpr const char* kImportHeader = "# Written by motostab import from ";
+
+// The names of the benchmark parameter files (Moore et al. 2010; BicycleParameters' data/*/Parameters):
+// g, w, c, lam; per wheel (R rear, F front) r, m and inertias; per body (B rear frame, H front frame,
+// and G, S, the parts of H some data sets add) m, x, y, z and the six inertias.
+bool isBicycleParameterName(const std::string& name) {
+  static const std::set<std::string> known = [] {
+    std::set<std::string> k{"g", "w", "c", "lam"};
+    for (const std::string wheel : {"R", "F"})
+      for (const std::string q : {"r", "m", "I@xx", "I@yy", "I@zz"}) k.insert(q[0] == 'I' ? "I" + wheel + q.substr(2) : q + wheel);
+    for (const std::string body : {"B", "H", "G", "S"}) {
+      for (const std::string q : {"m", "x", "y", "z"}) k.insert(q + body);
+      for (const std::string axes : {"xx", "yy", "zz", "xy", "xz", "yz"}) k.insert("I" + body + axes);
+    }
+    return k;
+  }();
+  return known.count(name) > 0;
+}
+
+// One `value[+/-sigma]` item of a line; InputError at `where` if malformed.
+std::pair<double, double> parseItem(const std::string& item, const io::InputLocation& where) {
+  const auto pm = item.find("+/-");
+  const std::string v = item.substr(0, pm);
+  const auto x = parseFiniteNumber(v);
+  if (!x) throw InputError(where, "not a finite number: '" + v + "'");
+  if (pm == std::string::npos) return {*x, 0.0};
+  const std::string sigmaText = item.substr(pm + 3);
+  const auto sigma = parseFiniteNumber(sigmaText);
+  if (!sigma || *sigma < 0)
+    throw InputError(where, "the standard deviation after '+/-' must be a finite number >= 0 (got '" + sigmaText + "')");
+  return {*x, *sigma};
+}
+
+}  // namespace
+
+std::map<std::string, BicycleParameter> readBicycleParameterFile(const std::string& file) {
+  std::istringstream in{std::string(io::stripByteOrderMark(io::readInputFile(file)))};
+  std::map<std::string, BicycleParameter> out;
   std::string line;
   int lineNo = 0;
   while (std::getline(in, line)) {
@@ -33,20 +75,28 @@ std::map<std::string, double> readBicycleParameters(const std::string& file) {
     key.erase(0, key.find_first_not_of(" \t"));
     key.erase(key.find_last_not_of(" \t") + 1);
     if (key.empty()) throw InputError({file, lineNo, 0, ""}, "expected 'name = value+/-sigma'");
-    std::stringstream values(line.substr(eq + 1));
-    std::string item;
-    double sum = 0;
-    int count = 0;
-    while (std::getline(values, item, ',')) {
-      const std::string v = item.substr(0, item.find("+/-"));
-      const auto x = parseFiniteNumber(v);
-      if (!x) throw InputError({file, lineNo, 0, key}, "not a finite number: '" + v + "'");
-      sum += *x;
-      ++count;
+    if (!isBicycleParameterName(key))
+      throw InputError({file, lineNo, 0, key}, "unknown parameter name (the benchmark names: g, w, c, lam; rR, mR, "
+                                               "IRxx, IRyy, rF, mF, IFxx, IFyy; mB, xB, yB, zB, IBxx, IByy, IBzz, IBxy, "
+                                               "IBxz, IByz and the same for H, G and S)");
+    if (const auto it = out.find(key); it != out.end())
+      throw InputError({file, lineNo, 0, key}, "given twice (first on line " + std::to_string(it->second.line) + ")");
+    const std::vector<std::string> items = io::splitFields(line.substr(eq + 1), ',');
+    double sum = 0, sumSquares = 0;
+    for (const std::string& item : items) {
+      const auto [value, sigma] = parseItem(item, {file, lineNo, 0, key});
+      sum += value;
+      sumSquares += sigma * sigma;
     }
-    if (count == 0) throw InputError({file, lineNo, 0, key}, "no value");
-    out[key] = sum / count;
+    const double n = static_cast<double>(items.size());
+    out[key] = {sum / n, std::sqrt(sumSquares) / n, lineNo};
   }
+  return out;
+}
+
+std::map<std::string, double> readBicycleParameters(const std::string& file) {
+  std::map<std::string, double> out;
+  for (const auto& [name, p] : readBicycleParameterFile(file)) out[name] = p.value;
   return out;
 }
 
@@ -165,7 +215,7 @@ std::string convertBicycleParametersToScenario(const std::string& file, const st
   auto opt = [&](const std::string& k, double fallback) { return p.count(k) ? p.at(k) : fallback; };
   auto num = [](double v) { return formatNumber(v, 15); };
   std::ostringstream y;
-  y << "# Imported from " << file << " (BicycleParameters benchmark format, Moore et al. 2010).\n"
+  y << kImportHeader << file << " (BicycleParameters benchmark format, Moore et al. 2010).\n"
     << "# Benchmark frame (y right, z down) converted to the design frame (y left, z up): z and I_xz change sign.\n"
     << formatRepairComments(changes) << "name: " << quoteYamlString(name) << "\n"
     << "description: imported benchmark parameters\n"
@@ -202,6 +252,45 @@ std::string convertBicycleParametersToScenario(const std::string& file, const st
   wheel("front_wheel", "F");
   y << "contact: {model: rolling_no_slip}\n";
   return y.str();
+}
+
+namespace {
+
+// `e`, an error in the scenario converted from the parameter file `file`, at the parameters behind its
+// key path (getScenarioPathOfBicycleParameter): the file's line of the first, and their names.
+InputError locateInParameterFile(const InputError& e, const std::string& file,
+                                 const std::map<std::string, BicycleParameter>& parameters) {
+  const std::string key = e.getLocation().key;
+  std::string names;
+  int line = 0;
+  for (const auto& [name, p] : parameters) {
+    const std::string path = getScenarioPathOfBicycleParameter(name).first;
+    const bool behind = !key.empty() && (path == key || path.rfind(key + ".", 0) == 0 || path.rfind(key + "[", 0) == 0);
+    if (!behind) continue;
+    names += (names.empty() ? "" : ", ") + name;
+    if (line == 0 || p.line < line) line = p.line;
+  }
+  return InputError({file, line, 0, names}, e.getReason() + " (in the converted scenario at " +
+                                                (key.empty() ? std::string("its top level") : key) + ")");
+}
+
+}  // namespace
+
+void writeBicycleParametersScenario(const std::string& file, const std::string& name, const std::filesystem::path& out,
+                                    const BicycleImportOptions& options, std::vector<InertiaRepair>* repairs) {
+  const auto parameters = readBicycleParameterFile(file);
+  if (const std::string why = io::describeBadFolderName(name); !why.empty())
+    throw InputError({"command line", 0, 0, "--name"}, "the scenario name '" + name + "' " + why);
+  io::checkFileReplaceable(out, kImportHeader);
+  const std::string text = convertBicycleParametersToScenario(file, name, options, repairs) +
+                           formatBicycleParametersUncertainty(readBicycleParameterSigmas(file));
+  io::writeFileAtomically(out, text, [&](const std::filesystem::path& temporary) {
+    try {
+      loadScenario(temporary.string());
+    } catch (const InputError& e) {
+      throw locateInParameterFile(e, file, parameters);
+    }
+  });
 }
 
 }  // namespace motostab::scenario

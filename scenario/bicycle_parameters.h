@@ -1,14 +1,27 @@
 #pragma once
 // Import of BicycleParameters benchmark parameter files (Moore et al. 2010; `name = value+/-sigma`),
 // given in the Meijaard et al. (2007) frame: x forward, y right, z down, origin at the rear contact.
+#include <filesystem>
 #include <map>
 #include <string>
 #include <vector>
 
 namespace motostab::scenario {
 
-/// Reads `name = value+/-sigma` lines (several comma-separated repeats are averaged).
-/// A malformed line is an InputError naming file and line.
+/// One parameter of a benchmark file: its value (the file's unit; lam in rad), its standard deviation
+/// (0 without `+/-`) and its line.
+struct BicycleParameter {
+  double value = 0, sigma = 0;
+  int line = 0;  ///< 1-based
+};
+
+/// Reads `name = value+/-sigma` lines (`+/-sigma` optional; several comma-separated repeats are averaged,
+/// their sigma is sqrt(sum sigma_k^2) / n). Strict: an unknown name, a name given twice, a value or sigma
+/// that is not a finite decimal number (a negative sigma, `+/-abc`, `+/-0x10`) or an empty repeat is an
+/// InputError naming file, line and parameter. The file must be a regular file (io/input_file.h).
+std::map<std::string, BicycleParameter> readBicycleParameterFile(const std::string& file);
+
+/// The values of readBicycleParameterFile.
 std::map<std::string, double> readBicycleParameters(const std::string& file);
 
 /// Import settings.
@@ -46,6 +59,14 @@ std::vector<InertiaRepair> repairFrameInertias(std::map<std::string, double>& pa
 std::string convertBicycleParametersToScenario(const std::string& file, const std::string& name,
                                                const BicycleImportOptions& options = {},
                                                std::vector<InertiaRepair>* repairs = nullptr);
+
+/// Writes the scenario of `file` (convertBicycleParametersToScenario, with the `uncertainty:` section of
+/// its sigmas) to `out`, atomically and only once it loads as a scenario: an error in the converted
+/// scenario is an InputError at the parameter file's line of the parameters behind it, and `out` is
+/// left as it was.
+void writeBicycleParametersScenario(const std::string& file, const std::string& name, const std::filesystem::path& out,
+                                    const BicycleImportOptions& options = {},
+                                    std::vector<InertiaRepair>* repairs = nullptr);
 
 /// `text` as a double-quoted YAML scalar (backslash, quote and control characters escaped).
 std::string quoteYamlString(const std::string& text);

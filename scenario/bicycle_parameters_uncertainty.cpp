@@ -1,7 +1,6 @@
 #include "scenario/bicycle_parameters_uncertainty.h"
 
 #include <cmath>
-#include <fstream>
 #include <sstream>
 
 #include "io/csv.h"
@@ -13,28 +12,9 @@ using io::formatNumber;
 
 
 std::map<std::string, double> readBicycleParameterSigmas(const std::string& file) {
-  readBicycleParameters(file);  // the same checks and errors as the values
-  std::ifstream in(file);
   std::map<std::string, double> out;
-  std::string line;
-  while (std::getline(in, line)) {
-    const auto eq = line.find('=');
-    if (line.empty() || line[0] == '#' || eq == std::string::npos || line.find("+/-") == std::string::npos) continue;
-    std::string key = line.substr(0, eq);
-    key.erase(0, key.find_first_not_of(" \t"));
-    key.erase(key.find_last_not_of(" \t") + 1);
-    std::stringstream items(line.substr(eq + 1));
-    std::string item;
-    double sumSquares = 0;
-    int count = 0;
-    while (std::getline(items, item, ',')) {
-      const auto pm = item.find("+/-");
-      const double s = pm == std::string::npos ? 0.0 : std::strtod(item.c_str() + pm + 3, nullptr);
-      sumSquares += s * s;
-      ++count;
-    }
-    out[key] = std::sqrt(sumSquares) / count;
-  }
+  for (const auto& [name, p] : readBicycleParameterFile(file))
+    if (p.sigma > 0) out[name] = p.sigma;
   return out;
 }
 

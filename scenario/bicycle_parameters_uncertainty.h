@@ -8,7 +8,7 @@ namespace motostab::scenario {
 
 /// Standard deviation of each parameter that states one (`name = value+/-sigma`), in the file's
 /// units (lam in rad). Several comma-separated repeats are averaged by readBicycleParameters, so
-/// their sigma is sqrt(sum sigma_k^2) / n. Parameters without `+/-` are absent.
+/// their sigma is sqrt(sum sigma_k^2) / n. Parameters without a positive `+/-` sigma are absent.
 std::map<std::string, double> readBicycleParameterSigmas(const std::string& file);
 
 /// Scenario key path and factor (scenario unit per file unit) of a benchmark parameter name, e.g.

@@ -64,7 +64,7 @@ ParameterKind getParameterKind(const std::string& path) {
 
 std::vector<ScalarParameter> listScalarParameters(const YAML::Node& tree) {
   std::vector<ScalarParameter> out;
-  for (const char* section : {"geometry", "rear_frame", "front_frame", "rear_wheel", "front_wheel"}) {
+  for (const char* section : {"geometry", "total", "rear_frame", "front_frame", "rear_wheel", "front_wheel"}) {
     const YAML::Node n = findKeyPath(tree, section);
     if (n && n.IsMap()) collect(n, section, out);
   }

@@ -22,8 +22,8 @@ struct ScalarParameter {
   double scale = 0;
 };
 
-/// Every scalar of the vehicle's measured description present in a scenario tree: geometry, the
-/// rear and front frames (mass, each CoM coordinate, each inertia entry), both wheels, the
+/// Every scalar of the vehicle's measured description present in a scenario tree: geometry, the whole
+/// vehicle (`total`), the rear and front frames (mass, each CoM coordinate, each inertia entry), both wheels, the
 /// swingarm's pivot and mass properties, and when present the leaning rider's hinge height, upper
 /// body, lean stiffness and damping (`rider_lean`) and an explicit fork hub carrier
 /// (`fork_compliance.carrier`), and a steer controller's gains, gain factor, delay and `below_mps`

@@ -2,10 +2,14 @@
 
 #include <Eigen/Eigenvalues>
 #include <cmath>
+#include <sstream>
 
 #include "scenario/extension_specs.h"
 #include "scenario/parameter_paths.h"
+#include "scenario/plausibility.h"
 #include "scenario/scenario_source.h"
+#include "io/output_folder.h"
+#include "scenario/whole_vehicle.h"
 #include "io/yaml_map.h"
 
 namespace motostab::scenario {
@@ -47,14 +51,28 @@ BodySpec readBody(YamlMap m) {
   return b;
 }
 
-WheelSpec readWheel(YamlMap m) {
+std::string formatAssumed(double value, const std::string& unit) {
+  std::ostringstream os;
+  os << value << " " << unit;
+  return os.str();
+}
+
+// A wheel. With `assumed` (a scenario with `total:`) its mass and inertias may be left out: the
+// defaults of getDefaultWheel, each recorded in `assumed`.
+WheelSpec readWheel(YamlMap m, bool front, std::vector<AssumedValue>* assumed) {
+  const WheelDefaults d = getDefaultWheel(front);
+  auto readOrAssume = [&](const std::string& key, double fallback, const std::string& unit) {
+    if (!assumed || m.has(key)) return m.getPositive(key);
+    assumed->push_back({m.getPath() + "." + key, formatAssumed(fallback, unit), kWholeVehicleDefaultSource});
+    return fallback;
+  };
   WheelSpec w;
   w.radius = m.getPositive("radius_m");
   w.crownRadius = m.getNonNegative("crown_radius_m");
   if (w.crownRadius >= w.radius) m.fail("crown_radius_m", "must be smaller than radius_m");
-  w.mass = m.getPositive("mass_kg");
-  w.axialInertia = m.getPositive("spin_inertia_kgm2");
-  w.diametralInertia = m.getPositive("diametral_inertia_kgm2");
+  w.mass = readOrAssume("mass_kg", d.mass, "kg");
+  w.axialInertia = readOrAssume("spin_inertia_kgm2", d.axialInertia, "kg m^2");
+  w.diametralInertia = readOrAssume("diametral_inertia_kgm2", d.diametralInertia, "kg m^2");
   // A wheel is a body of revolution: principal moments (A, D, D) need A <= 2D.
   if (w.axialInertia > 2 * w.diametralInertia)
     m.fail("spin_inertia_kgm2", "violates the triangle inequality: spin inertia exceeds twice the diametral inertia");
@@ -173,6 +191,7 @@ Scenario readScenarioTree(const YAML::Node& tree, const std::string& file, const
   YamlMap m(tree, file, "");
   Scenario s = readScenario(file, m);
   s.overrides = overrides;
+  s.warnings = checkPlausibility(s, tree, file);
   return s;
 }
 
@@ -183,10 +202,58 @@ Scenario loadScenario(const std::string& file, const std::vector<std::string>& o
 
 namespace {
 
+// The rear frame, or the whole vehicle (`total`, read by readTotal once the other bodies are known);
+// the front frame and the wheels, whose mass properties may be left out beside `total`.
+void readFramesAndWheels(YamlMap& m, Scenario& s) {
+  s.hasTotal = m.has("total");
+  if (s.hasTotal && m.has("rear_frame"))
+    m.fail("rear_frame", "give only one of rear_frame and total (with total the rear frame is derived from it)");
+  if (!s.hasTotal && !m.has("rear_frame"))
+    m.fail("", "missing key 'rear_frame' (or 'total': the whole vehicle with rider, the rear frame then derived)");
+  std::vector<AssumedValue>* assumed = s.hasTotal ? &s.assumed : nullptr;
+  if (!s.hasTotal) s.rearFrame = readBody(m.getMap("rear_frame"));
+  if (m.has("front_frame")) s.frontFrame = readBody(m.getMap("front_frame"));
+  s.rearWheel = readWheel(m.getMap("rear_wheel"), false, assumed);
+  s.frontWheel = readWheel(m.getMap("front_wheel"), true, assumed);
+  if (m.has("front_frame")) return;
+  if (!s.hasTotal) m.getMap("front_frame");  // the missing-key error
+  s.frontFrame = makeDefaultFrontFrame(s.geometry, s.frontWheel.radius);
+  const BodySpec& f = s.frontFrame;
+  std::ostringstream os;
+  os << f.mass << " kg, CoM [" << f.com[0] << ", 0, " << f.com[2] << "] m, inertia xx " << f.inertia.xx << ", yy "
+     << f.inertia.yy << ", zz " << f.inertia.zz << ", xz " << f.inertia.xz << " kg m^2";
+  s.assumed.push_back({"front_frame", os.str(), kWholeVehicleDefaultSource});
+}
+
+// `total: {mass_kg, com_m, inertia_kgm2}`: the whole vehicle with rider about its own CoM. The rear
+// frame is what is left of it without the other bodies; it must be a physical body.
+void readTotal(YamlMap& root, Scenario& s) {
+  YamlMap m = root.getMap("total");
+  s.total = readBodyKeys(m);
+  m.finish();
+  const double x = s.total.com[0], w = s.geometry.wheelbase;
+  if (!(x > 0 && x < w))
+    m.fail("com_m", "the centre of mass must lie between the contact points (0 < x < wheelbase_m = " +
+                        formatAssumed(w, "m") + "), else a wheel load is negative");
+  s.rearFrame = calcRearFrameFromTotal(s, s.total);
+  const BodySpec& r = s.rearFrame;
+  double others = 0;
+  for (const NamedBody& b : listOtherBodies(s)) others += b.body.mass;
+  if (!(r.mass > 0))
+    root.fail("total", "the other bodies (front frame, wheels, swingarm) weigh " + formatAssumed(others, "kg") +
+                   ", no less than the total: nothing is left for the rear frame");
+  const std::string why = checkInertia(r.inertia);
+  if (!why.empty())
+    root.fail("total", "the rear frame left by the total without the other bodies (" + formatAssumed(r.mass, "kg") +
+                   ") is not a physical body: its " + why);
+}
+
 Scenario readScenario(const std::string& file, YamlMap& m) {
   Scenario s;
   s.sourceFile = file;
   s.name = m.getString("name");
+  if (const std::string why = io::describeBadFolderName(s.name); !why.empty())
+    m.fail("name", "the name becomes the output folder's name and " + why);
   s.description = m.getString("description", "");
   s.gravity = m.getNonNegative("gravity_mps2");
   if (m.has("speeds_mps")) {
@@ -211,10 +278,7 @@ Scenario readScenario(const std::string& file, YamlMap& m) {
                                         : g.getDouble("normal_trail_m") / std::cos(s.geometry.steerAxisTilt);
     g.finish();
   }
-  s.rearFrame = readBody(m.getMap("rear_frame"));
-  s.frontFrame = readBody(m.getMap("front_frame"));
-  s.rearWheel = readWheel(m.getMap("rear_wheel"));
-  s.frontWheel = readWheel(m.getMap("front_wheel"));
+  readFramesAndWheels(m, s);
   {
     YamlMap c = m.getMap("contact");
     s.contact.model = c.getString("model");
@@ -241,6 +305,7 @@ Scenario readScenario(const std::string& file, YamlMap& m) {
     for (const auto& k : getSwingarmLoaderKeys()) sw.markUsed(k);
     // The compliance plugin reads and checks the rest of this mapping.
   }
+  if (s.hasTotal) readTotal(m, s);
   if (m.has("aerodynamics")) {
     YamlMap a = m.getMap("aerodynamics");
     s.hasAerodynamics = true;

@@ -149,6 +149,26 @@ struct ParameterUncertainty {
   io::InputLocation where;  ///< where the scenario states it
 };
 
+/// A value a scenario with `total:` left out and the loader assumed (scenario/whole_vehicle.h): the
+/// key path, the value as text with its unit, and its source.
+struct AssumedValue {
+  std::string key;
+  std::string value;
+  std::string source;
+};
+
+/// A likely unit slip or swapped quantity found at load (scenario/plausibility.h): the check that
+/// found it, where the value is given, and what it means.
+struct ScenarioWarning {
+  enum class Check {
+    SteerAxisTilt, Wheelbase, Trail, ForkOffset, CentreOfMass, TotalMass, InertiaOrder, RadiusOfGyration,
+    WheelRadius, WheelInertia, DefaultWheel, Gravity, TyreSign, CorneringStiffness, RelaxationLength
+  };
+  Check check = Check::SteerAxisTilt;
+  io::InputLocation where;
+  std::string message;
+};
+
 struct Scenario {
   std::string name;
   std::string description;
@@ -156,7 +176,9 @@ struct Scenario {
   double gravity = 9.81;                ///< m/s^2, acting along -z
   SpeedRange speeds;
   GeometrySpec geometry;
-  BodySpec rearFrame;                   ///< rear frame with rigid rider
+  BodySpec rearFrame;                   ///< rear frame with rigid rider (derived from `total` when given)
+  bool hasTotal = false;                ///< the whole vehicle was given (`total:`), the rear frame derived
+  BodySpec total;                       ///< whole vehicle with rider about its own CoM, in D (hasTotal)
   BodySpec frontFrame;                  ///< fork and handlebar
   WheelSpec rearWheel, frontWheel;
   PluginSpec contact;                   ///< contact/tyre model for both wheels
@@ -175,6 +197,8 @@ struct Scenario {
   std::vector<std::string> plugins;     ///< shared libraries to load before building
   std::vector<std::string> overrides;   ///< the --set assignments applied, for messages
   std::vector<ParameterUncertainty> uncertainty;  ///< stated parameter uncertainties (may be empty)
+  std::vector<AssumedValue> assumed;    ///< values left out beside `total:` and taken from defaults
+  std::vector<ScenarioWarning> warnings;  ///< plausibility warnings found at load (never printed by a library)
 };
 
 /// Loads and validates a scenario file. `overrides` are "a.b=value" assignments applied first.

@@ -10,6 +10,8 @@ using io::loadYamlFile;
 
 ScenarioSource::ScenarioSource(std::string file) : file_(std::move(file)), tree_(loadYamlFile(file_).getNode()) {}
 
+ScenarioSource::ScenarioSource(YAML::Node tree, std::string name) : file_(std::move(name)), tree_(copyTree(tree)) {}
+
 std::shared_ptr<const ScenarioSource> ScenarioSource::open(const std::string& file) {
   return std::make_shared<const ScenarioSource>(file);
 }

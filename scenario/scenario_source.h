@@ -17,6 +17,9 @@ class ScenarioSource {
  public:
   /// Reads and parses `file`; InputError on a missing file, a syntax error or a duplicate key.
   explicit ScenarioSource(std::string file);
+  /// A tree built in memory (e.g. from a Python dict); `name` stands for the file in messages, and
+  /// relative paths in it resolve against the working folder.
+  ScenarioSource(YAML::Node tree, std::string name);
   /// Shared, for objects that outlive the caller's scope (predictors, study jobs).
   static std::shared_ptr<const ScenarioSource> open(const std::string& file);
 

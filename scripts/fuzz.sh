@@ -2,7 +2,8 @@
 # Builds the libFuzzer targets of tests/fuzz with clang (ASan + UBSan, ./build-fuzz) and runs each for
 # SECONDS (default 60) from its seed corpus. A finding stops with the crashing input saved as
 # build-fuzz/findings/<target>/crash-*; fix it and copy the input to tests/fuzz/<target>/regressions/.
-#   scripts/fuzz.sh [SECONDS] [TARGET...]    targets: scenario bicycle_parameters csv identification (+ measured_data)
+#   scripts/fuzz.sh [SECONDS] [TARGET...]    targets: scenario bicycle_parameters csv identification measured_data
+#                                            tir overrides steer_controller yaml (default: all)
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 seconds="${1:-60}"
@@ -11,12 +12,11 @@ shift || true
 seed="${MOTOSTAB_FUZZ_SEED:-1}"
 MOTOSTAB_FUZZ_DEPS=1 "$root/scripts/install-deps.sh"
 export MOTOSTAB_BUILD_DIR=build-fuzz
-export MOTOSTAB_CMAKE_ARGS="-DCMAKE_CXX_COMPILER=clang++-14 -DMOTOSTAB_FUZZ=ON -DMOTOSTAB_BUILD_BENCH=OFF -DMOTOSTAB_EIGEN_CHECKS=ON"
+export MOTOSTAB_CMAKE_ARGS="-DCMAKE_CXX_COMPILER=clang++-14 -DMOTOSTAB_FUZZ=ON -DMOTOSTAB_BUILD_BENCH=OFF -DMOTOSTAB_EIGEN_CHECKS=ON -DMOTOSTAB_PYTHON=OFF"
 export MOTOSTAB_CXX_FLAGS="-fsanitize=fuzzer-no-link,address,undefined -fno-sanitize-recover=undefined -fno-omit-frame-pointer -g"
 targets=("$@")
 if [ ${#targets[@]} -eq 0 ]; then
-  targets=(scenario bicycle_parameters csv identification)
-  [ -f "$root/diagnosis/measured_data.h" ] && targets+=(measured_data)
+  targets=(scenario bicycle_parameters csv identification measured_data tir overrides steer_controller yaml)
 fi
 "$root/scripts/build.sh" "${targets[@]/#/fuzz_}"
 export ASAN_OPTIONS="${ASAN_OPTIONS:-detect_leaks=1}" UBSAN_OPTIONS="${UBSAN_OPTIONS:-print_stacktrace=1:halt_on_error=1}"

@@ -31,8 +31,8 @@ const RosenbrockTableau& getRos34pw2Tableau() {
 }
 
 RosenbrockStepper::RosenbrockStepper(Rhs rhs, RosenbrockOptions options) : rhs_(std::move(rhs)), opt_(std::move(options)) {
-  if (!(opt_.relativeTolerance > 0)) throw std::invalid_argument("Rosenbrock: relative tolerance must be > 0");
-  if (!(opt_.maxStep > 0 && opt_.initialStep > 0)) throw std::invalid_argument("Rosenbrock: steps must be > 0");
+  if (!(opt_.relativeTolerance > 0)) throw std::logic_error("Rosenbrock: relative tolerance must be > 0");
+  if (!(opt_.maxStep > 0 && opt_.initialStep > 0)) throw std::logic_error("Rosenbrock: steps must be > 0");
 }
 
 void RosenbrockStepper::callRhs(double t, const Eigen::VectorXd& y, Eigen::VectorXd& ydot) {
@@ -91,7 +91,7 @@ double RosenbrockStepper::calcErrorNorm(const Eigen::VectorXd& err, const Eigen:
 }
 
 void RosenbrockStepper::step(double tStop) {
-  if (!(tStop > t_)) throw std::invalid_argument("Rosenbrock: the stop time must lie ahead of the current time");
+  if (!(tStop > t_)) throw std::logic_error("Rosenbrock: the stop time must lie ahead of the current time");
   const RosenbrockTableau& tab = getRos34pw2Tableau();
   const int n = static_cast<int>(y_.size());
   Eigen::VectorXd(&k)[4] = k_;  // work vectors kept between steps: no allocation per step

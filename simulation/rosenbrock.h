@@ -44,7 +44,7 @@ class RosenbrockStepper {
   /// Restarts after a discontinuity in f or y (new f; J and the step size are kept: a W-method needs
   /// no exact J, and a step that fails the error test is retried smaller).
   void reinitialize(double t, const Eigen::VectorXd& y);
-  /// Takes one accepted step, ending no later than tStop (s, > getTime(), else std::invalid_argument).
+  /// Takes one accepted step, ending no later than tStop (s, > getTime(), else std::logic_error).
   /// Throws std::runtime_error if the step size falls below minStep (naming a non-finite f if that
   /// was the cause) or f turns non-finite at an accepted point.
   void step(double tStop);

@@ -156,7 +156,9 @@ std::unique_ptr<Stepper> makeStepper(const SimTK::MultibodySystem& system, const
   StepperOptions o = options;
   o.kind = resolveIntegratorKind(options.kind, initial);
   if (o.kind == IntegratorKind::Rosenbrock && hasConstraints(initial))
-    throw std::invalid_argument("ROS34PW2 integrates models without constraints only");
+    throw io::InputError({"command line", 0, 0, "--integrator"},
+                         "ROS34PW2 integrates models without constraints only; this model has constraints (rolling "
+                         "without slip): choose auto or RungeKuttaMerson");
   if (o.kind == IntegratorKind::Rosenbrock) return std::make_unique<RosenbrockAdapter>(system, initial, o);
   return std::make_unique<SimbodyStepper>(system, initial, o);
 }

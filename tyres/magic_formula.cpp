@@ -1,11 +1,15 @@
 // MF 6.1/6.2: coefficients, force law and stiffnesses; the factory of the Magic Formula variants.
 #include "tyres/magic_formula.h"
 
+#include <algorithm>
 #include <array>
 #include <cctype>
 #include <cmath>
 #include <iostream>
+#include <sstream>
 #include <vector>
+
+#include "io/csv.h"
 
 #include "tyres/motorcycle_magic_formula.h"
 
@@ -49,15 +53,46 @@ const std::vector<std::string> kMf61Scaling = {"LFZO", "LCX",  "LMUX", "LEX",  "
                                                "LRES", "LXAL", "LYKA", "LVYKA", "LS",  "LMX",   "LVMX", "LMY",
                                                "LSGAL", "LSGKP"};
 
+// A quadratic 1 + q1 x + q2 x^2 is positive on [lo, hi] (its ends and, if inside, its vertex).
+bool isPositiveOn(double q1, double q2, double lo, double hi) {
+  auto f = [&](double x) { return 1 + q1 * x + q2 * x * x; };
+  if (!(f(lo) > 0) || !(f(hi) > 0)) return false;
+  if (q2 != 0) {
+    const double x = -q1 / (2 * q2);
+    if (x > lo && x < hi && !(f(x) > 0)) return false;
+  }
+  return true;
+}
+
 // A carcass stiffness (N/m, positive) and its three load and pressure coefficients (0 when absent), if
-// the source has the stiffness (Besselink, Schmeitz & Pacejka 2010, eqs. 17-18).
-bool readCarcass(const CoefficientSource& s, const char* name, const std::array<const char*, 3>& names, double& stiffness,
-                 const std::array<double*, 3>& fields) {
+// the source has the stiffness (Besselink, Schmeitz & Pacejka 2010, eqs. 17-18). The stiffness
+// C0 (1 + c1 dfz + c2 dfz^2)(1 + c3 dpi) must stay positive over the checked loads (dfz from -1 to
+// kCheckedLoadFactor - 1) at the pressure's dpi.
+bool readCarcass(const CoefficientSource& s, const char* name, const std::array<const char*, 3>& names, double dpi,
+                 double& stiffness, const std::array<double*, 3>& fields) {
   if (!s.find(name)) return false;
   stiffness = s.get(name);
   if (!(stiffness > 0)) s.fail(name, "must be positive");
   for (int i = 0; i < 3; ++i) *fields[i] = s.get(names[i], 0.0);
+  if (!isPositiveOn(*fields[0], *fields[1], -1, kCheckedLoadFactor - 1))
+    s.fail(names[0], std::string("with ") + names[1] + " makes " + name + " zero or negative between 0 and " +
+                         std::to_string(static_cast<int>(kCheckedLoadFactor)) + " FNOMIN");
+  if (!(1 + *fields[2] * dpi > 0)) s.fail(names[2], std::string("makes ") + name + " zero or negative at the inflation pressure");
   return true;
+}
+
+// The sign checks of readMf61 (docs/tyres.md, "What is refused").
+void checkMf61Signs(const CoefficientSource& s, const Mf61& c) {
+  const std::pair<const char*, double> positive[] = {
+      {"FNOMIN", c.FNOMIN}, {"UNLOADED_RADIUS", c.R0}, {"NOMPRES", c.NOMPRES}, {"LONGVL", c.LONGVL}, {"VXLOW", c.VXLOW},
+      {"PCX1", c.PCX1},     {"PDX1", c.PDX1},          {"PCY1", c.PCY1},       {"PDY1", c.PDY1}};
+  for (const auto& [name, v] : positive)
+    if (!(v > 0)) s.fail(name, "must be positive (got " + std::to_string(v) + ")");
+  if (!(c.pressure > 0)) s.fail("INFLPRES", "must be positive");
+  for (const auto& name : kMf61Scaling) {
+    const std::string problem = findScalingProblem(name, s.getScaling(name));
+    if (!problem.empty()) s.fail(name, problem);
+  }
 }
 
 Mf61 readMf61(const CoefficientSource& s, std::optional<double> pressure) {
@@ -93,15 +128,20 @@ Mf61 readMf61(const CoefficientSource& s, std::optional<double> pressure) {
   for (auto [name, field] : {std::pair<const char*, double*>{"QBZ6", &c.QBZ6}, {"QSX12", &c.QSX12}, {"QSX13", &c.QSX13},
                              {"QSX14", &c.QSX14}})
     *field = s.get(name, 0.0);
+  if (!(c.NOMPRES > 0)) s.fail("NOMPRES", "must be positive");
+  c.pressure = pressure ? *pressure : s.get("INFLPRES", c.NOMPRES);
+  if (!(c.pressure > 0)) s.fail("INFLPRES", "must be positive");
+  const double dpi = (c.pressure - c.NOMPRES) / c.NOMPRES;
   // Relaxation length: from the lateral carcass stiffness (MF 6.1/6.2) when the file gives it, else
-  // from PTY1, PTY2 (the MF 5.2 form), else none (the scenario must give one).
-  const bool hasCy = readCarcass(s, "LATERAL_STIFFNESS", {"PCFY1", "PCFY2", "PCFY3"}, c.CY0, {&c.PCFY1, &c.PCFY2, &c.PCFY3});
+  // from PTY1, PTY2 (the MF 5.2 form, positive for PTY1, PTY2 > 0), else none (the scenario must give one).
+  const bool hasCy = readCarcass(s, "LATERAL_STIFFNESS", {"PCFY1", "PCFY2", "PCFY3"}, dpi, c.CY0, {&c.PCFY1, &c.PCFY2, &c.PCFY3});
   if (!hasCy && (s.find("PTY1") || s.find("PTY2"))) {
     c.PTY1 = s.get("PTY1");
     c.PTY2 = s.get("PTY2");
-    if (!(c.PTY2 != 0)) s.fail("PTY2", "must be nonzero");
+    if (!(c.PTY1 > 0)) s.fail("PTY1", "must be positive (the relaxation length is proportional to it)");
+    if (!(c.PTY2 > 0)) s.fail("PTY2", "must be positive");
   }
-  readCarcass(s, "LONGITUDINAL_STIFFNESS", {"PCFX1", "PCFX2", "PCFX3"}, c.CX0, {&c.PCFX1, &c.PCFX2, &c.PCFX3});
+  readCarcass(s, "LONGITUDINAL_STIFFNESS", {"PCFX1", "PCFX2", "PCFX3"}, dpi, c.CX0, {&c.PCFX1, &c.PCFX2, &c.PCFX3});
   // A mirrored (right-hand) fit would need the lateral signs flipped: not done, so refused.
   if (const auto side = s.findText("TYRESIDE")) {
     std::string v = *side;
@@ -116,14 +156,7 @@ Mf61 readMf61(const CoefficientSource& s, std::optional<double> pressure) {
       {"LYKA", &c.LYKA}, {"LVYKA", &c.LVYKA}, {"LS", &c.LS}, {"LMX", &c.LMX}, {"LVMX", &c.LVMX}, {"LMY", &c.LMY},
       {"LSGAL", &c.LSGAL}, {"LSGKP", &c.LSGKP}};
   for (auto& [name, field] : scaling) *field = s.getScaling(name);
-  c.pressure = pressure ? *pressure : s.get("INFLPRES", c.NOMPRES);
-  if (!(c.FNOMIN > 0)) s.fail("FNOMIN", "must be positive");
-  if (!(c.R0 > 0)) s.fail("UNLOADED_RADIUS", "must be positive");
-  if (!(c.NOMPRES > 0)) s.fail("NOMPRES", "must be positive");
-  if (!(c.LONGVL > 0)) s.fail("LONGVL", "must be positive");
-  if (!(c.VXLOW > 0)) s.fail("VXLOW", "must be positive");
-  if (!(c.LFZO > 0)) s.fail("LFZO", "must be positive");
-  if (!(c.pressure > 0)) s.fail("INFLPRES", "must be positive");
+  checkMf61Signs(s, c);
   return c;
 }
 
@@ -226,6 +259,7 @@ class MagicFormula61 : public TyreForceLaw {
   }
   double getNominalLoad() const override { return Fz0p_; }
   double getUnloadedRadius() const override { return c_.R0; }
+  double getReferenceSpeed() const override { return c_.LONGVL; }
 
  private:
   static constexpr double kEps = 1e-12;  // the book's epsilon against 0/0 at zero load, N
@@ -340,14 +374,106 @@ std::optional<MagicFormulaVariant> parseMagicFormulaVariant(const std::string& n
   return std::nullopt;
 }
 
+std::optional<MotorcyclePaperAxes> parseMotorcyclePaperAxes(const std::string& name) {
+  if (name == "z_down") return MotorcyclePaperAxes::ZDown;
+  if (name == "z_up") return MotorcyclePaperAxes::ZUp;
+  return std::nullopt;
+}
+
+std::optional<MotorcycleSlipVariable> parseMotorcycleSlipVariable(const std::string& name) {
+  if (name == "angle") return MotorcycleSlipVariable::Angle;
+  if (name == "tangent") return MotorcycleSlipVariable::Tangent;
+  return std::nullopt;
+}
+
 const std::vector<std::string>& getScalingNames(MagicFormulaVariant v) {
   return v == MagicFormulaVariant::Motorcycle ? getMotorcycleScalingNames() : kMf61Scaling;
 }
 
+std::string findScalingProblem(const std::string& name, double value) {
+  static const std::vector<std::string> positive = {"LFZO", "LMUX", "LMUY", "LCX", "LCY", "LKX", "LKY", "LSGAL", "LSGKP"};
+  const bool mustBePositive = std::find(positive.begin(), positive.end(), name) != positive.end();
+  if (!std::isfinite(value)) return "must be a finite number";
+  if (mustBePositive && !(value > 0))
+    return "must be positive (got " + std::to_string(value) + ")" +
+           (name == "LSGAL" ? "; for no relaxation give the tyre relaxation_length_m: 0" : "");
+  if (value < 0) return "must not be negative (got " + std::to_string(value) + "; 0 turns its term off)";
+  return "";
+}
+
 std::unique_ptr<TyreForceLaw> makeTyreForceLaw(MagicFormulaVariant v, const CoefficientSource& source,
-                                               std::optional<double> pressure) {
-  if (v == MagicFormulaVariant::Motorcycle) return makeMotorcycleMagicFormula(source);
-  return std::make_unique<MagicFormula61>(readMf61(source, pressure));
+                                               std::optional<double> pressure, const MotorcycleConventions& motorcycle) {
+  std::unique_ptr<TyreForceLaw> law;
+  if (v == MagicFormulaVariant::Motorcycle)
+    law = makeMotorcycleMagicFormula(source, motorcycle);
+  else
+    law = std::make_unique<MagicFormula61>(readMf61(source, pressure));
+  const std::string problem = findForceLawProblem(*law);
+  if (!problem.empty()) source.fail("", "these coefficients cannot be used: " + problem);
+  return law;
+}
+
+namespace {
+
+std::string describePoint(const TyreSlip& p) {
+  std::ostringstream s;
+  s << "Fz " << p.Fz << " N, slip angle " << p.alpha * 180 / M_PI << " deg, camber " << p.gamma * 180 / M_PI
+    << " deg, slip ratio " << p.kappa << ", speed " << p.Vx << " m/s";
+  return s.str();
+}
+
+bool isFinite(const TyreForces& f) {
+  return std::isfinite(f.Fx) && std::isfinite(f.Fy) && std::isfinite(f.Mx) && std::isfinite(f.My) && std::isfinite(f.Mz);
+}
+
+// Forces and moments finite on the grid of the checked range (makeTyreForceLaw).
+std::string findNonFinitePoint(const TyreForceLaw& law, double Fz0) {
+  const double deg = M_PI / 180;
+  for (double load : {0.0, 0.05, 1.0, 2.0, kCheckedLoadFactor})
+    for (double alpha : {0.0, 2 * deg, -20 * deg, 89 * deg, -89 * deg})
+      for (double gamma : {0.0, 20 * deg, 60 * deg, -60 * deg})
+        for (double kappa : {0.0, 0.1, 1.0, -1.0})
+          for (double V : {0.0, 60.0}) {
+            const TyreSlip p{load * Fz0, kappa, alpha, gamma, V};
+            if (!isFinite(law.calcForces(p))) return "a force or moment is not finite at " + describePoint(p);
+          }
+  return "";
+}
+
+// Slopes and slip forces with the right signs at positive loads, and the own relaxation length.
+std::string findDegenerateLoad(const TyreForceLaw& law, double Fz0) {
+  const bool hasRelaxation = !std::isnan(law.calcRelaxationLength(Fz0, 0, 0));
+  for (double load : {0.05, 0.25, 0.5, 1.0, 2.0, kCheckedLoadFactor}) {
+    const double Fz = load * Fz0;
+    const std::string at = " at Fz " + io::formatNumber(Fz, 6) + " N";
+    const double Kya = law.calcCorneringStiffness(Fz), Kxk = law.calcLongitudinalStiffness(Fz);
+    if (!(std::isfinite(Kya) && Kya < 0)) return "the cornering stiffness " + io::formatNumber(Kya, 6) + " N/rad does not push against the slip" + at;
+    if (!(std::isfinite(Kxk) && Kxk > 0)) return "the slip stiffness " + io::formatNumber(Kxk, 6) + " N is not finite and positive" + at;
+    if (!std::isfinite(law.calcCamberStiffness(Fz))) return "the camber stiffness is not finite" + at;
+    const double a = 5 * M_PI / 180, V = 20;
+    if (!(law.calcForces({Fz, 0, a, 0, V}).Fy < law.calcForces({Fz, 0, -a, 0, V}).Fy))
+      return "the side force does not oppose a 5 degree slip angle" + at;
+    if (!(law.calcForces({Fz, 0.1, 0, 0, V}).Fx > law.calcForces({Fz, -0.1, 0, 0, V}).Fx))
+      return "the longitudinal force does not oppose a 0.1 slip ratio" + at;
+    if (!hasRelaxation) continue;
+    for (double gamma : {0.0, 30 * M_PI / 180, 60 * M_PI / 180})
+      for (double speed : {0.0, 10.0, 60.0}) {
+        const double sigma = law.calcRelaxationLength(Fz, gamma, speed);
+        if (!(std::isfinite(sigma) && sigma > 0))
+          return "the relaxation length " + io::formatNumber(sigma, 6) + " m is not finite and positive" + at + ", camber " +
+                 io::formatNumber(gamma * 180 / M_PI, 3) + " deg, speed " + io::formatNumber(speed, 3) + " m/s";
+      }
+  }
+  return "";
+}
+
+}  // namespace
+
+std::string findForceLawProblem(const TyreForceLaw& law) {
+  const double Fz0 = law.getNominalLoad();
+  if (!(std::isfinite(Fz0) && Fz0 > 0)) return "the nominal load is not positive";
+  const std::string nonFinite = findNonFinitePoint(law, Fz0);
+  return nonFinite.empty() ? findDegenerateLoad(law, Fz0) : nonFinite;
 }
 
 std::unique_ptr<TyreForceLaw> loadTirForceLaw(const std::string& path, const std::map<std::string, double>* scaling) {

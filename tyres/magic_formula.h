@@ -56,6 +56,8 @@ class TyreForceLaw {
   virtual double getUnloadedRadius() const = 0;
   /// Crown (cross-section) radius the law's moments use (m); NaN if the law uses none.
   virtual double getCrownRadius() const { return std::numeric_limits<double>::quiet_NaN(); }
+  /// The speed of the measurements the coefficients were fitted at (MF 6.x LONGVL, m/s); NaN if none.
+  virtual double getReferenceSpeed() const { return std::numeric_limits<double>::quiet_NaN(); }
 };
 
 /// The Magic Formula variants.
@@ -64,11 +66,48 @@ enum class MagicFormulaVariant { MF61, MF62, Motorcycle };
 std::optional<MagicFormulaVariant> parseMagicFormulaVariant(const std::string& name);
 /// The scaling factors (L...) a variant's equations use.
 const std::vector<std::string>& getScalingNames(MagicFormulaVariant v);
+/// Why a scaling factor's value is refused ("" if it is not): every factor is finite and >= 0 (0 turns
+/// its term off), and those that divide or set a slope or a friction level are > 0 (LFZO, LMUX, LMUY,
+/// LCX, LCY, LKX, LKY, LSGAL, LSGKP). docs/tyres.md, "What is refused".
+std::string findScalingProblem(const std::string& name, double value);
 
-/// Reads the coefficients a variant needs from `source` (InputError for a missing one) and builds the
-/// force law. Inflation pressure (Pa): `pressure` if given, else INFLPRES, else NOMPRES.
+/// How the motorcycle variant reads the equations of Sharp, Evangelou & Limebeer (2004), which are
+/// written with a slip `a` and a camber `g` that both push the tyre to +y (docs/tyres.md, "The
+/// motorcycle conventions"). The law is odd in (a, g) jointly except for the combined-slip factor's
+/// RBY3 shift, so the axes decide only on which side of zero slip that term acts.
+enum class MotorcyclePaperAxes {
+  ZDown,  ///< y right, z down: a = alpha_ISO, g = gamma_ISO, and Fy, Mz change sign (MBSim, TUMFTM)
+  ZUp     ///< y left, z up: a = -alpha_ISO, g = -gamma_ISO, forces as they are
+};
+/// The slip variable of the motorcycle equations: the slip angle in rad (MBSim, TUMFTM) or its tangent
+/// (as MF 6.x); cos(alpha) is 1/sqrt(1 + a^2) in both.
+enum class MotorcycleSlipVariable { Angle, Tangent };
+struct MotorcycleConventions {
+  MotorcyclePaperAxes axes = MotorcyclePaperAxes::ZDown;
+  MotorcycleSlipVariable slip = MotorcycleSlipVariable::Angle;
+};
+/// "z_down", "z_up" / "angle", "tangent"; nothing for other names.
+std::optional<MotorcyclePaperAxes> parseMotorcyclePaperAxes(const std::string& name);
+std::optional<MotorcycleSlipVariable> parseMotorcycleSlipVariable(const std::string& name);
+
+/// Reads the coefficients a variant needs from `source` (InputError for a missing one or a value of the
+/// wrong sign, at the coefficient) and builds the force law; then checks it over its input range
+/// (findForceLawProblem) and refuses a law that is not finite or is degenerate there (InputError at the
+/// coefficient set). Inflation pressure (Pa): `pressure` if given, else INFLPRES, else NOMPRES.
 std::unique_ptr<TyreForceLaw> makeTyreForceLaw(MagicFormulaVariant v, const CoefficientSource& source,
-                                               std::optional<double> pressure = std::nullopt);
+                                               std::optional<double> pressure = std::nullopt,
+                                               const MotorcycleConventions& motorcycle = {});
+
+/// The input range over which makeTyreForceLaw checks a law (docs/tyres.md, "What is refused"): loads
+/// 0 to kCheckedLoadFactor FNOMIN, slip angles to +/-89 degrees, camber to +/-60 degrees, slip ratios
+/// -1 to 1, speeds 0 to 60 m/s.
+constexpr double kCheckedLoadFactor = 3;
+/// Why a Magic Formula law cannot be used ("" if it can), checked on a coarse grid of that range: a
+/// force or moment that is not finite; a cornering stiffness that does not push against the slip or a
+/// slip stiffness that is not positive at a positive load; a side force or a longitudinal force that
+/// does not oppose a 5 degree slip angle or a 0.1 slip ratio at zero camber; an own relaxation length
+/// (if the law has one) that is not finite and positive from 5 % of FNOMIN up.
+std::string findForceLawProblem(const TyreForceLaw& law);
 
 /// The force law of a .tir file (variant from its FITTYP), with optional scaling overrides; unused
 /// nonzero coefficients are reported on std::cerr (warnUnused).

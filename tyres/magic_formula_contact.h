@@ -19,14 +19,8 @@
 // k_kappa = K_xk/Fz at the trim load, provided the law has no force or moment at zero slip
 // (no shifts, no rolling resistance, no Mz from Fx): tests/tyres/magic_formula_contact_test.cpp.
 //
-// Scenario (per tyre, `front` and `rear`):
-//   tir: FILE | coefficients: {NAME: value, ...}   the coefficients (names of the .tir keys)
-//   variant: mf61 | mf62 | motorcycle              default: the file's FITTYP (required inline)
-//   scaling: {LKY: 1.1, ...}                       scaling factors overriding the file's (default 1)
-//   relaxation_length_m                            optional (0: no lag); required when the law has none
-// A law with a crown radius (motorcycle: CROWN_RADIUS) must sit on a wheel of that crown_radius_m.
-//   radial_stiffness_N_per_m, radial_damping_Ns_per_m   default VERTICAL_STIFFNESS, VERTICAL_DAMPING
-//   pressure_Pa                                    default INFLPRES, else NOMPRES (MF 6.x)
+// Scenario: a map per tyre under `front` and `rear`, keys in tyres/magic_formula_tyre.h. A law with a
+// crown radius (motorcycle: CROWN_RADIUS) must sit on a wheel of that crown_radius_m.
 #include "plugins/plugin_api.h"
 
 namespace motostab::tyres {

@@ -1,6 +1,8 @@
 #include "tyres/relaxation_linear.h"
 
 #include <algorithm>
+#include <cmath>
+#include <limits>
 #include <map>
 #include <stdexcept>
 
@@ -26,6 +28,14 @@ LinearTyreParameters readTyre(YamlMap m, const LinearTyreParameters* preset) {
   read("cornering_stiffness_per_rad", p.corneringStiffness, &YamlMap::getPositive);
   read("camber_stiffness_per_rad", p.camberStiffness, &YamlMap::getDouble);
   read("self_aligning_stiffness_m_per_rad", p.selfAligningStiffness, &YamlMap::getDouble);
+  // The header's signs: camber thrust pushes the tyre towards the lean (k_phi >= 0) and the
+  // self-aligning moment of a small slip turns the wheel towards its velocity (k_mz <= 0, a positive
+  // pneumatic trail). The twisting moment may have either sign (measured bicycle tyres change it with load).
+  if (m.has("camber_stiffness_per_rad") && p.camberStiffness < 0)
+    m.fail("camber_stiffness_per_rad", "must not be negative: camber thrust pushes a tyre towards its lean (Fy = Fz k_phi phi)");
+  if (m.has("self_aligning_stiffness_m_per_rad") && p.selfAligningStiffness > 0)
+    m.fail("self_aligning_stiffness_m_per_rad",
+           "must not be positive: the self-aligning moment of a slip turns the wheel towards its velocity (k_mz = -trail k_alpha)");
   read("twisting_stiffness_m_per_rad", p.twistingStiffness, &YamlMap::getDouble);
   read("relaxation_length_m", p.relaxationLength, &YamlMap::getNonNegative);
   read("radial_stiffness_N_per_m", p.radialStiffness, &YamlMap::getPositive);
@@ -78,8 +88,32 @@ class RelaxationLinear : public TyreContactModel {
 
 }  // namespace
 
+// The linear law of the header, steady state, in ISO-W signs: alpha = -tan(alpha_ISO) (the contact's
+// -(v_P . e_t)/V), phi = -gamma_ISO, so Fy = Fz (k_alpha alpha + k_phi phi), Mz = Fz (k_mz alpha + k_mt phi).
+class LinearTyreForceLaw : public TyreForceLaw {
+ public:
+  explicit LinearTyreForceLaw(const LinearTyreParameters& p) : p_(p) {}
+  TyreForces calcForces(const TyreSlip& in) const override {
+    const double alpha = -std::tan(in.alpha), phi = -in.gamma;
+    TyreForces f;
+    f.Fx = in.Fz * p_.longitudinalStiffness * in.kappa;
+    f.Fy = in.Fz * (p_.corneringStiffness * alpha + p_.camberStiffness * phi);
+    f.Mz = in.Fz * (p_.selfAligningStiffness * alpha + p_.twistingStiffness * phi);
+    return f;
+  }
+  double calcCorneringStiffness(double Fz) const override { return -Fz * p_.corneringStiffness; }
+  double calcCamberStiffness(double Fz) const override { return -Fz * p_.camberStiffness; }
+  double calcLongitudinalStiffness(double Fz) const override { return Fz * p_.longitudinalStiffness; }
+  double calcRelaxationLength(double, double, double) const override { return p_.relaxationLength; }
+  double getNominalLoad() const override { return std::numeric_limits<double>::quiet_NaN(); }
+  double getUnloadedRadius() const override { return std::numeric_limits<double>::quiet_NaN(); }
+
+ private:
+  LinearTyreParameters p_;
+};
+
 LinearTyreParameters getRelaxationLinearPreset(const std::string& name) {
-  if (name != "bicycle") throw std::invalid_argument("unknown relaxation_linear preset '" + name + "'");
+  if (name != "bicycle") throw std::logic_error("unknown relaxation_linear preset '" + name + "'");
   // docs/scenario-format.md, "Bicycle tyre preset", gives each value's source.
   LinearTyreParameters p;
   p.corneringStiffness = 15.0;      // Dressel (2013): 0.15-0.35 /deg normalised, mean about 0.25 /deg
@@ -95,18 +129,28 @@ LinearTyreParameters getRelaxationLinearPreset(const std::string& name) {
 
 std::vector<std::string> getRelaxationLinearPresetNames() { return {"bicycle"}; }
 
+std::unique_ptr<TyreForceLaw> makeLinearTyreForceLaw(const LinearTyreParameters& p) {
+  return std::make_unique<LinearTyreForceLaw>(p);
+}
+
+std::pair<LinearTyreParameters, LinearTyreParameters> readRelaxationLinearTyres(YamlMap& m) {
+  if (!m.has("preset")) return {readTyre(m.getMap("front"), nullptr), readTyre(m.getMap("rear"), nullptr)};
+  const std::string name = m.getString("preset");
+  const auto names = getRelaxationLinearPresetNames();
+  if (std::find(names.begin(), names.end(), name) == names.end()) m.fail("preset", "unknown preset '" + name + "' (known: bicycle)");
+  const LinearTyreParameters preset = getRelaxationLinearPreset(name);
+  auto side = [&](const char* key) {
+    if (!m.has(key)) return preset;
+    return readTyre(m.getMap(key), &preset);
+  };
+  const LinearTyreParameters front = side("front");
+  return {front, side("rear")};
+}
+
 void registerRelaxationLinear(PluginRegistrar& registry) {
   registry.addContactModel("relaxation_linear", [](YamlMap& m) -> std::unique_ptr<ContactModel> {
-    if (!m.has("preset")) return std::make_unique<RelaxationLinear>(readTyre(m.getMap("front"), nullptr), readTyre(m.getMap("rear"), nullptr));
-    const std::string name = m.getString("preset");
-    const auto names = getRelaxationLinearPresetNames();
-    if (std::find(names.begin(), names.end(), name) == names.end()) m.fail("preset", "unknown preset '" + name + "' (known: bicycle)");
-    const LinearTyreParameters preset = getRelaxationLinearPreset(name);
-    auto side = [&](const char* key) {
-      if (!m.has(key)) return preset;
-      return readTyre(m.getMap(key), &preset);
-    };
-    return std::make_unique<RelaxationLinear>(side("front"), side("rear"));
+    const auto [front, rear] = readRelaxationLinearTyres(m);
+    return std::make_unique<RelaxationLinear>(front, rear);
   });
 }
 

@@ -11,7 +11,11 @@
 // With Table 6's signs (k_mz < 0, k_mt > 0) the self-aligning moment turns the wheel towards its
 // velocity and the twisting moment towards the lean, as in Cossalter (2006) ch. 2. A relaxation
 // length of 0 means no lag and no state.
+#include <memory>
+#include <utility>
+
 #include "plugins/plugin_api.h"
+#include "tyres/magic_formula.h"
 #include "tyres/tyre_contact.h"
 
 namespace motostab::tyres {
@@ -30,12 +34,24 @@ struct LinearTyreParameters {
 
 /// A named parameter set for both tyres (per unit load where stated). `bicycle`: measured bicycle
 /// tyres (Dressel & Rahman 2012, Dressel 2013, VTI 2020; docs/scenario-format.md). Unknown names throw
-/// std::invalid_argument.
+/// std::logic_error.
 LinearTyreParameters getRelaxationLinearPreset(const std::string& name);
 std::vector<std::string> getRelaxationLinearPresetNames();
 
-/// Registers `relaxation_linear` (parameters under `front` and `rear`, or `preset: NAME` with
-/// optional `front`/`rear` maps whose keys override the preset's values).
+/// Reads a `relaxation_linear` contact section (`model` already read): the front and rear tyres,
+/// under `front` and `rear`, or `preset: NAME` with optional `front`/`rear` maps whose keys override
+/// the preset's values. Refused (InputError at the key): a cornering, longitudinal or radial stiffness
+/// that is not positive, a negative camber stiffness (camber thrust pushes towards the lean), a positive
+/// self-aligning stiffness (a negative pneumatic trail), a negative relaxation length or damping.
+std::pair<LinearTyreParameters, LinearTyreParameters> readRelaxationLinearTyres(io::YamlMap& contact);
+
+/// The header's force law in steady state (no lag), in the ISO-W signs of tyres/magic_formula.h, for
+/// `motostab tyre`: Fx = Fz k_kappa kappa, Fy = Fz (k_alpha a + k_phi phi), Mz = Fz (k_mz a + k_mt phi),
+/// Mx = My = 0, with a = -tan(alpha_ISO) and phi = -gamma_ISO. Its relaxation length is the constant
+/// sigma; it has no nominal load and no radius of its own (NaN).
+std::unique_ptr<TyreForceLaw> makeLinearTyreForceLaw(const LinearTyreParameters& p);
+
+/// Registers `relaxation_linear` (readRelaxationLinearTyres).
 void registerRelaxationLinear(plugins::PluginRegistrar& registry);
 
 }  // namespace motostab::tyres

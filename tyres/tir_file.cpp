@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <vector>
@@ -52,15 +53,16 @@ bool isNumberRow(const std::string& text) {
 
 struct Parser {
   std::string source;
-  InputLocation at(int line, const std::string& key = "") const { return {source, line, 0, key}; }
+  InputLocation at(int line, const std::string& key = "", int column = 0) const { return {source, line, column, key}; }
 };
 
 // The value of `key` at `line`: a 'quoted' string, or a finite number (kept as text too).
-TirEntry parseEntry(const Parser& p, int line, const std::string& section, const std::string& key,
+TirEntry parseEntry(const Parser& p, int line, int column, const std::string& section, const std::string& key,
                     const std::string& value) {
   TirEntry e;
   e.section = section;
   e.line = line;
+  e.column = column;
   if (value.size() >= 2 && value.front() == '\'' && value.back() == '\'' &&
       value.find('\'', 1) == value.size() - 1) {
     e.text = value.substr(1, value.size() - 2);
@@ -69,7 +71,7 @@ TirEntry parseEntry(const Parser& p, int line, const std::string& section, const
     e.isNumber = true;
     e.number = *number;
   } else {
-    throw InputError(p.at(line, key), "malformed value '" + value + "' (expected a finite number or a 'quoted' string)");
+    throw InputError(p.at(line, key, column), "malformed value '" + value + "' (expected a finite number or a 'quoted' string)");
   }
   return e;
 }
@@ -91,7 +93,7 @@ void checkUnits(const Parser& p, const std::map<std::string, TirEntry>& units) {
     }
     const std::string u = upper(it->second.text);
     if (std::find(allowed.begin(), allowed.end(), u) == allowed.end())
-      throw InputError(p.at(it->second.line, name), "unit '" + it->second.text + "' is not supported (SI only: " +
+      throw InputError(p.at(it->second.line, name, it->second.column), "unit '" + it->second.text + "' is not supported (SI only: " +
                                                          allowed.front() + ")");
   }
 }
@@ -99,11 +101,19 @@ void checkUnits(const Parser& p, const std::map<std::string, TirEntry>& units) {
 }  // namespace
 
 TirFile TirFile::load(const std::string& path) {
-  std::ifstream in(path);
+  std::error_code ec;
+  if (!std::filesystem::exists(path, ec)) throw InputError({path, 0, 0, ""}, "cannot open the tyre property file: no such file");
+  if (!std::filesystem::is_regular_file(path, ec))
+    throw InputError({path, 0, 0, ""}, "not a regular file (a tyre property file must be a plain .tir file)");
+  const std::uintmax_t size = std::filesystem::file_size(path, ec);
+  if (ec || size > kMaxBytes)
+    throw InputError({path, 0, 0, ""}, "larger than " + std::to_string(kMaxBytes >> 20) + " MiB: not a tyre property file");
+  std::ifstream in(path, std::ios::binary);
   if (!in) throw InputError({path, 0, 0, ""}, "cannot open the tyre property file");
-  std::stringstream text;
-  text << in.rdbuf();
-  return parse(text.str(), path);
+  std::string text(static_cast<size_t>(size), '\0');
+  in.read(text.data(), static_cast<std::streamsize>(size));
+  text.resize(static_cast<size_t>(in.gcount()));
+  return parse(text, path);
 }
 
 TirFile TirFile::parse(const std::string& text, const std::string& source) {
@@ -139,9 +149,10 @@ TirFile TirFile::parse(const std::string& text, const std::string& source) {
     if (key.empty() || key.find_first_of(" \t'") != std::string::npos)
       throw InputError(p.at(line), "malformed key '" + trim(t.substr(0, eq)) + "'");
     inTable = false;
-    const TirEntry e = parseEntry(p, line, section, key, value);
+    const int column = static_cast<int>(raw.find(value, raw.find('=') + 1)) + 1;  // of the value
+    const TirEntry e = parseEntry(p, line, column, section, key, value);
     if (!seenInSection.emplace(key, line).second)
-      throw InputError(p.at(line, key), "given twice in [" + section + "] (first at line " +
+      throw InputError(p.at(line, key, column), "given twice in [" + section + "] (first at line " +
                                             std::to_string(seenInSection[key]) + ")");
     if (section == "UNITS") {
       f.units_[key] = e;
@@ -150,14 +161,14 @@ TirFile TirFile::parse(const std::string& text, const std::string& source) {
     if (section == "MDI_HEADER") continue;
     const auto [it, fresh] = f.entries_.emplace(key, e);
     if (!fresh)
-      throw InputError(p.at(line, key), "also given in [" + it->second.section + "] at line " +
+      throw InputError(p.at(line, key, column), "also given in [" + it->second.section + "] at line " +
                                             std::to_string(it->second.line) + ": ambiguous");
   }
   checkUnits(p, f.units_);
   const TirEntry* fit = f.find("FITTYP");
   if (!fit) throw InputError(p.at(0, "FITTYP"), "missing [MODEL] FITTYP (61 or 62 expected)");
   if (!fit->isNumber || (fit->number != 61 && fit->number != 62))
-    throw InputError(p.at(fit->line, "FITTYP"), "unsupported FITTYP " + fit->text +
+    throw InputError(p.at(fit->line, "FITTYP", fit->column), "unsupported FITTYP " + fit->text +
                                                     " (this reader implements MF 6.1 and 6.2: 61 or 62)");
   f.fitType_ = static_cast<int>(fit->number);
   return f;
@@ -177,7 +188,7 @@ double TirFile::getNumber(const std::string& key) const {
 
 void TirFile::fail(const std::string& key, const std::string& message) const {
   const TirEntry* e = find(key);
-  throw InputError({source_, e ? e->line : 0, 0, upper(key)}, message);
+  throw InputError({source_, e ? e->line : 0, e ? e->column : 0, upper(key)}, message);
 }
 
 }  // namespace motostab::tyres

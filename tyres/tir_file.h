@@ -6,6 +6,7 @@
 // out of the keys. Anything else is malformed: an InputError naming file:line. A key given twice in
 // one section is an error at its second line. The [UNITS] section must say meter, newton, radians,
 // kg and second, and pascal if it names PRESSURE (no unit conversion is done). Keys are case-insensitive (stored upper-case).
+#include <cstdint>
 #include <map>
 #include <optional>
 #include <string>
@@ -21,11 +22,16 @@ struct TirEntry {
   bool isNumber = false;
   double number = 0;      ///< the value when isNumber
   int line = 0;           ///< 1-based line
+  int column = 0;         ///< 1-based column of the value in its line
 };
 
 class TirFile {
  public:
-  /// Reads and checks a .tir file (syntax, units, FITTYP 61 or 62). InputError at file:line.
+  /// The largest .tir file read, bytes (published property files are tens of kB).
+  static constexpr std::uintmax_t kMaxBytes = 4 << 20;
+  /// Reads and checks a .tir file (syntax, units, FITTYP 61 or 62). InputError at file:line:column; a
+  /// path that is not a regular file (a folder, a device such as /dev/zero, a pipe) or a file larger than
+  /// kMaxBytes is an InputError at the path.
   static TirFile load(const std::string& path);
   /// The same from text; `source` names it in errors.
   static TirFile parse(const std::string& text, const std::string& source);
@@ -40,7 +46,7 @@ class TirFile {
   const std::string& getSource() const { return source_; }
   /// Every entry outside [UNITS] and [MDI_HEADER], by upper-case key.
   const std::map<std::string, TirEntry>& getEntries() const { return entries_; }
-  /// An InputError at the line of `key` (or the file when absent) with `message`.
+  /// An InputError at the line and column of `key`'s value (or the file when absent) with `message`.
   [[noreturn]] void fail(const std::string& key, const std::string& message) const;
 
  private:

@@ -125,9 +125,15 @@ void extractSweep(const SweepResult& sweep, TaskResult& r) {
 
 UncertaintySetup prepareUncertainty(const std::string& file, const ParameterOverrides& overrides,
                                     const UncertaintyOptions& options) {
+  return prepareUncertainty(ScenarioSource::open(file), overrides, options);
+}
+
+UncertaintySetup prepareUncertainty(std::shared_ptr<const ScenarioSource> source, const ParameterOverrides& overrides,
+                                    const UncertaintyOptions& options) {
   UncertaintySetup s;
+  const std::string& file = source->getFile();
   s.scenarioFile = file;
-  s.source = ScenarioSource::open(file);
+  s.source = std::move(source);
   s.overrides = overrides;
   s.options = options;
   const Scenario scenario = s.source->load(overrides);

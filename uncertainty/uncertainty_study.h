@@ -61,6 +61,9 @@ struct UncertaintySetup {
 /// InputError for a bad scenario or an empty uncertainty section.
 UncertaintySetup prepareUncertainty(const std::string& scenarioFile, const scenario::ParameterOverrides& overrides,
                                     const UncertaintyOptions& options);
+/// The same from a scenario source already read.
+UncertaintySetup prepareUncertainty(std::shared_ptr<const scenario::ScenarioSource> source,
+                                    const scenario::ParameterOverrides& overrides, const UncertaintyOptions& options);
 
 enum class TaskKind { Nominal, Plus, Minus, Sample, SobolA, SobolB, SobolAB };
 

@@ -5,6 +5,7 @@
 #include <stdexcept>
 
 #include "io/csv.h"
+#include "io/result_error.h"
 
 namespace motostab::swingarm::identification {
 
@@ -20,10 +21,10 @@ BendingTorsionStiffness calcBendingTorsionStiffness(double aTw, double kTw, doub
   m << aB, aT, std::sin((betaB - beta) * kDeg), std::sin((betaT - beta) * kDeg);
   const Eigen::Vector2d rhs(aTw * aTw / kTw, 0.0);
   if (std::abs(m.determinant()) < 1e-12 * (std::abs(aB) + std::abs(aT)))
-    throw std::invalid_argument("seed eq. 7 and 10 are singular (modal axes parallel to each other or to the static axis)");
+    throw io::ResultError("seed eq. 7 and 10 are singular (modal axes parallel to each other or to the static axis)");
   const Eigen::Vector2d u = m.partialPivLu().solve(rhs);
   if (!(u[0] > 0 && u[1] > 0))
-    throw std::invalid_argument("seed eq. 7 and 10 give a non-positive stiffness: the static axis does not lie "
+    throw io::ResultError("seed eq. 7 and 10 give a non-positive stiffness: the static axis does not lie "
                                 "between the bending and torsion axes");
   return {aB / u[0], aT / u[1]};
 }

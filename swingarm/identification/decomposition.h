@@ -12,7 +12,7 @@ namespace motostab::swingarm::identification {
 /// Bending and torsion stiffness from seed eq. 7 and 10, Nm/rad. Unknowns u_b = a_b/k_b, u_t = a_t/k_t:
 ///   a_b u_b + a_t u_t = a_tw^2 / k_tw                        (eq. 7)
 ///   u_b sin(beta_b - beta) + u_t sin(beta_t - beta) = 0     (eq. 10, cross-multiplied)
-/// Arms in m, angles in deg. Throws std::invalid_argument if the system is singular or gives k <= 0.
+/// Arms in m, angles in deg. Throws io::ResultError (measured axes without a result) if the system is singular or gives k <= 0.
 struct BendingTorsionStiffness {
   double kB = 0, kT = 0;
 };

@@ -6,6 +6,7 @@
 
 #include "io/csv.h"
 #include "io/input_error.h"
+#include "io/result_error.h"
 #include "swingarm/identification/frf_diagnosis.h"
 #include "swingarm/identification/yaml_input.h"
 
@@ -184,7 +185,7 @@ void attachModalAxis(const FrfTest& test, const FrfResult& res, const std::vecto
   try {
     m.axis = calcTwistAxis(P * calcRealShape(calcModeShape(test, res, res.frf.h1, rawPoles, i), &m.mpc), test.forcePoint);
     m.hasAxis = true;
-  } catch (const std::invalid_argument&) {
+  } catch (const io::ResultError&) {  // the plate only translates in this mode
     m.hasAxis = false;
   }
   const size_t nHits = res.frf.forceSpectra.size();

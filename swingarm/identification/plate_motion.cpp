@@ -3,6 +3,8 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "io/result_error.h"
+
 namespace motostab::swingarm::identification {
 
 std::string checkPlaneGeometry(const std::vector<PlatePoint>& points) {
@@ -28,7 +30,7 @@ Eigen::MatrixXd calcPlaneDesignMatrix(const std::vector<PlatePoint>& points) {
 
 Eigen::MatrixXd calcPlaneFitOperator(const std::vector<PlatePoint>& points) {
   const std::string why = checkPlaneGeometry(points);
-  if (!why.empty()) throw std::invalid_argument(why);
+  if (!why.empty()) throw std::logic_error("calcPlaneFitOperator: " + why);  // the readers check the geometry
   const Eigen::MatrixXd a = calcPlaneDesignMatrix(points);
   return (a.transpose() * a).ldlt().solve(a.transpose());
 }
@@ -37,7 +39,7 @@ TwistAxis calcTwistAxis(const Eigen::Vector3d& plane, const PlatePoint& f) {
   const Eigen::Vector2d omega(-plane[2], plane[1]);
   TwistAxis t;
   t.rotation = omega.norm();
-  if (!(t.rotation > 0)) throw std::invalid_argument("the plate only translates: no twist axis");
+  if (!(t.rotation > 0)) throw io::ResultError("the plate only translates: no twist axis");
   const double y = plane[0] + plane[1] * f.x + plane[2] * f.z;
   t.direction = (y >= 0 ? 1.0 : -1.0) * omega / t.rotation;
   t.forcePointMotion = std::abs(y);

@@ -19,7 +19,7 @@ struct PlatePoint {
 std::string checkPlaneGeometry(const std::vector<PlatePoint>& points);
 
 /// Least-squares operator P (3 x n): [d0, dx, dz] = P * dy for displacements dy at `points`.
-/// Throws std::invalid_argument if checkPlaneGeometry fails.
+/// std::logic_error if checkPlaneGeometry fails (the test readers check it first).
 Eigen::MatrixXd calcPlaneFitOperator(const std::vector<PlatePoint>& points);
 
 /// Design matrix A (n x 3) of the plane model, rows [1, x, z].
@@ -37,7 +37,7 @@ struct TwistAxis {
   Eigen::Vector2d direction;     ///< e = (e_x, e_z)
 };
 
-/// The axis dy = 0 of `plane` = [d0, dx, dz]. Throws std::invalid_argument for a pure translation.
+/// The axis dy = 0 of `plane` = [d0, dx, dz]. Throws io::ResultError for a pure translation.
 TwistAxis calcTwistAxis(const Eigen::Vector3d& plane, const PlatePoint& forcePoint);
 
 /// Lateral displacement y at `r` (per unit rotation) of a rotation about an axis through `point` with

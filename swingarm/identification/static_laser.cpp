@@ -6,6 +6,7 @@
 
 #include "io/csv.h"
 #include "io/input_error.h"
+#include "io/result_error.h"
 #include "swingarm/identification/yaml_input.h"
 
 namespace motostab::swingarm::identification {
@@ -56,6 +57,23 @@ StaticReadings readStaticReadings(const StaticTest& test) {
   return r;
 }
 
+namespace {
+
+// The plate's rotation per newton, |(dz, dx)| of the compliance plane, must stand out of its standard
+// error (three of them): a plate that only translates, to within the readings' noise, has no twist axis.
+void requireRotation(const Eigen::Vector3d& slope, const Eigen::Matrix3d& covariance, const StaticTest& test) {
+  const double rotation = std::hypot(slope[1], slope[2]);
+  const Eigen::Matrix2d c = covariance.bottomRightCorner<2, 2>();
+  const double stderr_ = rotation > 0 ? std::sqrt(slope.tail<2>().dot(c * slope.tail<2>())) / rotation
+                                      : std::sqrt(c.trace());
+  if (rotation > 3 * stderr_) return;
+  throw io::ResultError("the plate only translates: its rotation, " + io::formatNumber(rotation, 3) + " +/- " +
+                        io::formatNumber(stderr_, 3) + " rad/N, is not distinguishable from zero, so " +
+                        test.readings.string() + " gives no twist axis (are the sensors' names and positions right?)");
+}
+
+}  // namespace
+
 StaticResult identifyStatic(const StaticTest& test, const StaticReadings& rd) {
   std::vector<PlatePoint> pts;
   for (const auto& s : test.sensors) pts.push_back(s.position);
@@ -87,6 +105,7 @@ StaticResult identifyStatic(const StaticTest& test, const StaticReadings& rd) {
   res.sigmaResidual = res.residualDof > 0 ? std::sqrt(ss / res.residualDof) : 0.0;
   res.sigma = std::max(res.sigmaResidual, test.sensorResolution / std::sqrt(12.0));
   res.complianceCovariance = res.sigma * res.sigma * (A.transpose() * A).inverse() / sxx;
+  requireRotation(slope, res.complianceCovariance, test);
 
   res.axis = calcTwistAxis(slope, test.forcePoint);
   const double beta0 = res.axis.betaDeg;

@@ -2,9 +2,11 @@
 // output folder is neither created nor changed.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <random>
 
 #include "tests/apps/cli_support.h"
 
@@ -62,6 +64,7 @@ TEST(DiagnoseCli, BadMeasurementsExit2AndLeaveTheFolderAlone) {
 TEST(DiagnoseCli, FailedRunLeavesExistingFolderWhole) {
   const fs::path dir = fs::temp_directory_path() / ("motostab_diagnose_keep_" + std::to_string(::getpid()));
   fs::create_directories(dir / "out");
+  std::ofstream(dir / "out" / ".motostab-output") << "";  // an earlier run's outputs
   std::ofstream(dir / "out" / "old.txt") << "old outputs\n";
   std::ofstream(dir / "e.csv") << "speed_mps,mode,real,imag\n4,weave,0.4,3\n5,weave,0.3,4\n";
   std::ofstream(dir / "good.yaml") << "eigenvalues:\n  - file: e.csv\n";
@@ -80,13 +83,57 @@ TEST(DiagnoseCli, FailedRunLeavesExistingFolderWhole) {
     EXPECT_NE(out.find(needle), std::string::npos) << out;
     std::vector<std::string> names;
     for (const auto& e : fs::directory_iterator(dir / "out")) names.push_back(e.path().filename().string());
-    EXPECT_EQ(names, std::vector<std::string>{"old.txt"});
+    std::sort(names.begin(), names.end());
+    EXPECT_EQ(names, (std::vector<std::string>{".motostab-output", "old.txt"}));
     std::ifstream in(dir / "out" / "old.txt");
     std::string line;
     std::getline(in, line);
     EXPECT_EQ(line, "old outputs");
     for (const auto& e : fs::directory_iterator(dir))  // no temporary folder left behind
       EXPECT_EQ(e.path().filename().string().find(".out."), std::string::npos) << e.path();
+  }
+  fs::remove_all(dir);
+}
+
+// Measured-data options are checked where they are read and blamed on that file: a controller's negative
+// delay was reported against the scenario and "a --set" nobody gave, a run's speed of 1e6 m/s as a
+// --candidates problem (and 5e4 started a 500,000-speed reference sweep), a noise level of 1e300 gave
+// "RMS -nan, BIC -nan". The values are drawn at random (seeded) from the refused ranges.
+TEST(DiagnoseCli, MeasuredOptionsAreBlamedOnTheMeasurementFile) {
+  const fs::path dir = fs::temp_directory_path() / ("motostab_diagnose_blame_" + std::to_string(::getpid()));
+  fs::create_directories(dir);
+  std::mt19937 rng(29);
+  auto draw = [&](double lo, double hi) { return std::exp(std::uniform_real_distribution<double>(std::log(lo), std::log(hi))(rng)); };
+  std::string trace = "t_s,roll_rate\n";
+  for (int i = 0; i < 40; ++i) trace += std::to_string(0.01 * i) + "," + std::to_string(0.5 * std::exp(-0.1 * i) * std::sin(0.7 * i)) + "\n";
+  std::ofstream(dir / "trace.csv") << trace;
+  std::ofstream(dir / "e.csv") << "speed_mps,mode,real,imag\n4,weave,0.4,3\n";
+  const std::string run = "responses:\n  - file: trace.csv\n    time_column: t_s\n    signals:\n      - {column: roll_rate, quantity: roll_rate}\n";
+  const std::string delay = std::to_string(-draw(1e-3, 1e3)), speed = std::to_string(draw(151, 1e7));
+  const std::string noise = std::to_string(draw(1e101, 1e300)), csvSpeed = std::to_string(draw(151, 1e7));
+  std::ofstream(dir / "big.csv") << "speed_mps,mode,real,imag\n" << csvSpeed << ",weave,0.4,3\n";
+  std::ofstream(dir / "cd.csv") << "speed_mps,mode,real,imag,steer_controller.delay_s\n4,weave,0.4,3," << delay << "\n";
+  std::ofstream(dir / "dup.csv") << "speed_mps,mode,real,imag,real\n4,weave,0.4,3,0.5\n";
+  const std::vector<std::pair<std::string, std::string>> cases = {
+      {"eigenvalues:\n  - file: e.csv\n    controller: {roll_rate_Nms_per_rad: -3, delay_s: " + delay + "}\n",
+       "m.yaml:3:45: eigenvalues[0].controller.delay_s: must not be negative"},
+      {"eigenvalues:\n  - file: cd.csv\n", "cd.csv:2: steer_controller.delay_s: must not be negative"},
+      {run + "    speed_mps: " + speed + "\n", "m.yaml:6:5: responses[0].speed_mps: a measured speed must lie between 0 and 150"},
+      {"eigenvalues:\n  - file: big.csv\n", "big.csv:2: speed_mps: a measured speed"},
+      {run + "    speed_mps: 4\n    noise_std: {roll_rate: " + noise + "}\n", "m.yaml:7:17: responses[0].noise_std.roll_rate"},
+      {"eigenvalues:\n  - file: dup.csv\n", "dup.csv:1:5: real: column 'real' is given twice"},
+  };
+  for (const auto& [yaml, needle] : cases) {
+    std::ofstream(dir / "m.yaml") << yaml;
+    const std::string log = (dir / "log.txt").string();
+    const int code = test::waitForExit(test::startMotostab(
+        {"diagnose", kWhipple, (dir / "m.yaml").string(), "--out", (dir / "out").string()}, dir.string(), log));
+    const std::string out = test::readLog(log);
+    EXPECT_EQ(code, 2) << out;
+    EXPECT_NE(out.find(needle), std::string::npos) << out << "(expected " << needle << ")";
+    EXPECT_EQ(out.find("--set"), std::string::npos) << out;
+    EXPECT_EQ(out.find("--candidates"), std::string::npos) << out;
+    EXPECT_FALSE(fs::exists(dir / "out"));
   }
   fs::remove_all(dir);
 }

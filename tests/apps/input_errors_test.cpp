@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 
 #include "tests/support/temp_dir.h"
 #include "tests/apps/cli_support.h"
@@ -113,6 +114,117 @@ TEST(CliInput, BadSteerControllerNamesFileLineColumn) {
   }
   EXPECT_FALSE(std::filesystem::exists(dir / "out"));
   std::filesystem::remove_all(dir);
+}
+
+std::string readFile(const std::filesystem::path& p) {
+  std::ifstream in(p);
+  return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+}
+
+// The benchmark scenario with its `name:` line replaced.
+std::string withName(const std::string& name) {
+  std::string text = readFile(kWhipple);
+  const size_t at = text.find("\nname: ") + 1;
+  text.replace(at, text.find('\n', at) - at, "name: " + name);
+  return text;
+}
+
+// `sweep inner/bike.yaml --out inner` once replaced the folder holding the scenario and the user's notes:
+// a folder that holds an input of the run is refused, whether or not motostab wrote it, and so is any
+// folder motostab did not write.
+TEST(CliOutputSafety, AFolderHoldingTheScenarioIsNeverReplaced) {
+  namespace fs = std::filesystem;
+  const fs::path dir = makeTempDir("cli_inner");
+  fs::create_directories(dir / "inner");
+  std::ofstream(dir / "inner" / "bike.yaml") << readFile(kWhipple);
+  std::ofstream(dir / "inner" / "notes.txt") << "my notes\n";
+  for (const bool marked : {false, true}) {
+    if (marked) std::ofstream(dir / "inner" / ".motostab-output") << "";
+    const CliRun r = runCli({"sweep", "inner/bike.yaml", "--out", "inner", "--speeds", "4:5:1"}, dir.string());
+    EXPECT_EQ(r.exitCode, 2) << r.output;
+    EXPECT_NE(r.output.find("'inner' holds "), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("bike.yaml, an input of this run"), std::string::npos) << r.output;
+    EXPECT_EQ(readFile(dir / "inner" / "notes.txt"), "my notes\n");
+    EXPECT_EQ(readFile(dir / "inner" / "bike.yaml"), readFile(kWhipple));
+  }
+  // A folder of the user's that holds no input is refused too; an empty one is used.
+  fs::create_directories(dir / "mine");
+  std::ofstream(dir / "mine" / "x.txt") << "x";
+  const CliRun r = runCli({"sweep", kWhipple, "--out", "mine", "--speeds", "4:5:1"}, dir.string());
+  EXPECT_EQ(r.exitCode, 2) << r.output;
+  EXPECT_NE(r.output.find("not written by motostab"), std::string::npos) << r.output;
+  EXPECT_EQ(readFile(dir / "mine" / "x.txt"), "x");
+  fs::create_directories(dir / "empty");
+  EXPECT_EQ(runCli({"sweep", kWhipple, "--out", "empty", "--speeds", "4:5:1"}, dir.string()).exitCode, 0);
+  EXPECT_TRUE(fs::exists(dir / "empty" / "eigenvalues.csv"));
+  // A second run replaces what the first wrote.
+  EXPECT_EQ(runCli({"sweep", kWhipple, "--out", "empty", "--speeds", "4:6:1"}, dir.string()).exitCode, 0);
+}
+
+// A scenario `name` that is a path ("../victim", an absolute path, "a/b", "..") once made a plain
+// `motostab sweep s.yaml` replace a sibling folder: an input error at the name's line.
+TEST(CliOutputSafety, AScenarioNameIsNotAPath) {
+  namespace fs = std::filesystem;
+  const fs::path dir = makeTempDir("cli_name");
+  fs::create_directories(dir / "work");
+  fs::create_directories(dir / "victim");
+  std::ofstream(dir / "victim" / "precious.txt") << "keep\n";
+  const int nameLine = 5;  // the benchmark scenario's name line
+  for (const std::string& name : std::vector<std::string>{"\"../victim\"", "\"" + (dir / "victim").string() + "\"", "a/b", "\"..\"", "\".\""}) {
+    std::ofstream(dir / "work" / "s.yaml") << withName(name);
+    const CliRun r = runCli({"sweep", "s.yaml", "--speeds", "4:5:1"}, (dir / "work").string());
+    EXPECT_EQ(r.exitCode, 2) << name << "\n" << r.output;
+    EXPECT_NE(r.output.find("s.yaml:" + std::to_string(nameLine) + ":1: name"), std::string::npos) << r.output;
+    EXPECT_EQ(readFile(dir / "victim" / "precious.txt"), "keep\n");
+  }
+  std::size_t entries = 0;
+  for (const auto& e : fs::directory_iterator(dir / "work")) (void)e, ++entries;
+  EXPECT_EQ(entries, 1u);  // s.yaml only: nothing was written
+  expectInputError({"check", kWhipple, "--set", "name=../victim"}, "--set name=../victim");
+}
+
+// YAML aliases nested ten wide and seven deep ("billion laughs", 1.5 KB) once took 30 s and 6.5 GB: now
+// an error at the first alias that would expand aliases, in a scenario, a --set value and measured data.
+TEST(CliBoundedInputs, AliasBombsAreRefusedAtOnce) {
+  namespace fs = std::filesystem;
+  const fs::path dir = makeTempDir("cli_bomb");
+  std::string bomb = "bomb0: &b0 [x, x, x, x, x, x, x, x, x, x]\n";
+  for (int l = 1; l <= 7; ++l) {
+    bomb += "bomb" + std::to_string(l) + ": &b" + std::to_string(l) + " [";
+    for (int k = 0; k < 10; ++k) bomb += (k ? ", *b" : "*b") + std::to_string(l - 1);
+    bomb += "]\n";
+  }
+  std::ofstream(dir / "s.yaml") << bomb << readFile(kWhipple);
+  expectInputError({"sweep", (dir / "s.yaml").string()}, "s.yaml:3:");
+  expectInputError({"check", kWhipple, "--set", "description={a: &a [1, 1], b: &b [*a, *a], c: [*b, *b]}"},
+                   "expanded at most once");
+  std::ofstream(dir / "m.yaml") << bomb << "eigenvalues: []\n";
+  expectInputError({"diagnose", kWhipple, (dir / "m.yaml").string(), "--out", (dir / "o").string()}, "m.yaml:3:");
+  std::ofstream(dir / "two.yaml") << readFile(kWhipple) << "---\nname: second\n";
+  expectInputError({"check", (dir / "two.yaml").string()}, "second YAML document");
+  EXPECT_FALSE(fs::exists(dir / "o"));
+}
+
+// Files must be regular files; counts are bounded (the bounds are in docs/commands.md).
+TEST(CliBoundedInputs, CountsAndFilesAreBounded) {
+  expectInputError({"check", "/dev/zero"}, "is a device");
+  expectInputError({"uncertainty", std::string(MOTOSTAB_SOURCE_DIR) + "/scenarios/kooijman-silvercity.yaml", "--samples",
+                    "1000000000"},
+                   "--samples");
+  expectInputError({"sweep", kWhipple, "--roll-deg", "5:"}, "a bound or step is missing");
+  expectInputError({"sweep", kWhipple, "--roll-deg", ":10:1"}, "--roll-deg");
+  expectInputError({"sweep", kWhipple, "--speeds", "1:5:"}, "--speeds");
+  expectInputError({"sweep", kWhipple, "--roll-deg", "0:20:0.01"}, "at most 1000 angles");
+}
+
+// A sweep over one speed (`--speeds 5:5:1`) is a valid request: its plots are drawn over a range around it.
+TEST(CliValidRequests, OneSpeedSweepWithItsPlots) {
+  namespace fs = std::filesystem;
+  const fs::path dir = makeTempDir("cli_one_speed");
+  const CliRun r = runCli({"sweep", kWhipple, "--speeds", "5:5:1", "--out", "one"}, dir.string());
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  for (const char* f : {"real_part_vs_speed.png", "real_part_vs_speed.svg", "root_locus.png", "eigenvalues.csv"})
+    EXPECT_TRUE(fs::exists(dir / "one" / f)) << f;
 }
 
 }  // namespace

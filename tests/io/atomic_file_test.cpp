@@ -75,3 +75,37 @@ TEST(AtomicFile, FailedRenameLeavesNoTemporary) {
   EXPECT_EQ(listFolder(dir), std::vector<std::string>{"b.txt"});
   EXPECT_TRUE(std::filesystem::is_directory(dir / "b.txt" / "x"));
 }
+
+// A check of the complete temporary that fails (an import whose scenario does not load) leaves the old
+// file and no temporary; one that passes sees the whole content before the rename.
+TEST(AtomicFile, FailedCheckLeavesOldTarget) {
+  const auto dir = makeTempDir("atomic_check");
+  motostab::io::writeFileAtomically(dir / "s.yaml", "old");
+  EXPECT_THROW(motostab::io::writeFileAtomically(dir / "s.yaml", "bad",
+                                                 [](const std::filesystem::path&) { throw std::runtime_error("no"); }),
+               std::runtime_error);
+  EXPECT_EQ(readAll(dir / "s.yaml"), "old");
+  EXPECT_EQ(listFolder(dir), std::vector<std::string>{"s.yaml"});
+  std::string seen;
+  motostab::io::writeFileAtomically(dir / "s.yaml", "new", [&](const std::filesystem::path& t) { seen = readAll(t); });
+  EXPECT_EQ(seen, "new");
+  EXPECT_EQ(readAll(dir / "s.yaml"), "new");
+}
+
+// Temporaries of killed writers (their process id no longer runs: 999999999 is above any Linux pid_max)
+// are removed by the next write of the same file; a running writer's, another file's, and names outside
+// the scheme are kept.
+TEST(AtomicFile, TemporariesOfKilledWritersAreRemoved) {
+  const auto dir = makeTempDir("atomic_leftovers");
+  const std::string alive = ".a.txt.tmp-" + std::to_string(getppid()) + "-5";
+  const std::vector<std::string> kept{alive, ".b.txt.tmp-999999999-1", ".a.txt.tmp-999999999-x", ".a.txt.tmp-notes",
+                                      "a.txt.tmp-999999999-1"};
+  for (const auto& name : kept) std::ofstream(dir / name) << "keep";
+  std::ofstream(dir / ".a.txt.tmp-999999999-123") << "half";
+  std::ofstream(dir / ".a.txt.tmp-999999998-7") << "half";
+  motostab::io::writeFileAtomically(dir / "a.txt", "whole");
+  std::vector<std::string> expected = kept;
+  expected.push_back("a.txt");
+  std::sort(expected.begin(), expected.end());
+  EXPECT_EQ(listFolder(dir), expected);
+}

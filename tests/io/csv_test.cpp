@@ -41,6 +41,30 @@ TEST(Csv, RaggedRowIsAnError) {
   EXPECT_THROW(motostab::io::readCsv(p), motostab::io::InputError);
 }
 
+// A column given twice would let one silently shadow the other: an error at the header, naming both.
+TEST(Csv, DuplicatedColumnIsAnError) {
+  auto p = writeTemp("motostab_csv_dup.csv", "# c\ntime_s, roll_rate ,steer_rate,roll_rate\n0,1,2,3\n");
+  try {
+    motostab::io::readCsv(p);
+    FAIL() << "no error";
+  } catch (const motostab::io::InputError& e) {
+    EXPECT_EQ(e.getLocation().line, 2);
+    EXPECT_EQ(e.getLocation().column, 4);
+    EXPECT_EQ(e.getLocation().key, "roll_rate");
+    EXPECT_NE(std::string(e.what()).find("columns 2 and 4"), std::string::npos) << e.what();
+  }
+}
+
+// Spreadsheet programs save UTF-8 with a byte order mark: it is not part of the first column's name.
+TEST(Csv, ByteOrderMarkIsSkipped) {
+  auto p = writeTemp("motostab_csv_bom.csv", "\xEF\xBB\xBFspeed_mps,real\n1,2\n");
+  const auto t = motostab::io::readCsv(p);
+  EXPECT_EQ(t.header.front(), "speed_mps");
+  EXPECT_EQ(t.getColumn("speed_mps").front(), 1.0);
+}
+
+TEST(Csv, OnlyRegularFiles) { EXPECT_THROW(motostab::io::readCsv("/dev/zero"), motostab::io::InputError); }
+
 TEST(Csv, WriterRoundTripsDoublesExactly) {
   motostab::io::CsvWriter w({"x"});
   const double v = 0.1 + 0.2;

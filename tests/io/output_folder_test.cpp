@@ -6,9 +6,11 @@
 #include <fstream>
 #include <set>
 #include <sstream>
+#include <vector>
 
 #include "tests/support/temp_dir.h"
 #include "io/input_error.h"
+#include "io/input_file.h"
 #include "io/output_folder.h"
 
 namespace motostab::io {
@@ -28,6 +30,18 @@ std::set<std::string> listNames(const fs::path& dir) {
   return out;
 }
 
+// A folder as an earlier run left it: its outputs and the marker.
+void makeEarlierOutputs(const fs::path& folder) {
+  fs::create_directories(folder);
+  std::ofstream(folder / kOutputMarker) << "written by motostab";
+}
+
+// The outputs a run wrote: `names` and the marker.
+std::set<std::string> withMarker(std::set<std::string> names) {
+  names.insert(kOutputMarker);
+  return names;
+}
+
 std::string readText(const fs::path& p) {
   std::ifstream in(p);
   std::stringstream ss;
@@ -38,6 +52,7 @@ std::string readText(const fs::path& p) {
 TEST(OutputFolder, CommitReplacesTheOldFolderAsAWhole) {
   const fs::path dir = freshDir("commit");
   const fs::path target = dir / "out";
+  makeEarlierOutputs(target);
   fs::create_directories(target / "sub");
   std::ofstream(target / "old.txt") << "old";
   std::ofstream(target / "sub" / "old.csv") << "1";
@@ -45,12 +60,12 @@ TEST(OutputFolder, CommitReplacesTheOldFolderAsAWhole) {
     OutputFolder out(target);
     EXPECT_NE(out.getPath(), target);
     EXPECT_EQ(out.getPath().parent_path(), target.parent_path());  // a sibling: the rename stays on one file system
-    EXPECT_TRUE(listNames(out.getPath()).empty());
+    EXPECT_EQ(listNames(out.getPath()), withMarker({}));
     std::ofstream(out.getPath() / "new.txt") << "new";
     EXPECT_EQ(readText(target / "old.txt"), "old");  // untouched before commit
     out.commit();
   }
-  EXPECT_EQ(listNames(target), std::set<std::string>{"new.txt"});
+  EXPECT_EQ(listNames(target), withMarker({"new.txt"}));
   EXPECT_EQ(readText(target / "new.txt"), "new");
   EXPECT_EQ(listNames(dir), std::set<std::string>{"out"});  // no temporary or backup left
 }
@@ -58,7 +73,7 @@ TEST(OutputFolder, CommitReplacesTheOldFolderAsAWhole) {
 TEST(OutputFolder, FailedRunLeavesTheOldOutputs) {
   const fs::path dir = freshDir("fail");
   const fs::path target = dir / "out";
-  fs::create_directories(target);
+  makeEarlierOutputs(target);
   std::ofstream(target / "old.txt") << "old";
   try {
     OutputFolder out(target);
@@ -66,7 +81,7 @@ TEST(OutputFolder, FailedRunLeavesTheOldOutputs) {
     throw std::runtime_error("computation failed");
   } catch (const std::runtime_error&) {
   }
-  EXPECT_EQ(listNames(target), std::set<std::string>{"old.txt"});
+  EXPECT_EQ(listNames(target), withMarker({"old.txt"}));
   EXPECT_EQ(listNames(dir), std::set<std::string>{"out"});
 }
 
@@ -76,7 +91,7 @@ TEST(OutputFolder, NewTargetAndNestedParents) {
   OutputFolder out(target);
   std::ofstream(out.getPath() / "x.txt") << "x";
   out.commit();
-  EXPECT_EQ(listNames(target), std::set<std::string>{"x.txt"});
+  EXPECT_EQ(listNames(target), withMarker({"x.txt"}));
 }
 
 TEST(OutputFolder, TargetThatIsAFileIsAnInputError) {
@@ -129,16 +144,94 @@ TEST(OutputFolder, LeftoversOfKilledRunsAreCleanedUp) {
   fs::create_directories(dir / ".out.partial-999999999");
   std::ofstream(dir / ".out.partial-999999999" / "half.txt") << "partial";
   // ... and one killed between the fallback's two renames: only its backup holds the outputs.
-  fs::create_directories(dir / ".out.backup-999999998");
+  makeEarlierOutputs(dir / ".out.backup-999999998");
   std::ofstream(dir / ".out.backup-999999998" / "old.txt") << "old";
   {
     OutputFolder out(target);
-    EXPECT_EQ(listNames(target), std::set<std::string>{"old.txt"});  // restored before anything else
+    EXPECT_EQ(listNames(target), withMarker({"old.txt"}));  // restored before anything else
     std::ofstream(out.getPath() / "new.txt") << "new";
     out.commit();
   }
   EXPECT_EQ(listNames(dir), std::set<std::string>{"out"});
-  EXPECT_EQ(listNames(target), std::set<std::string>{"new.txt"});
+  EXPECT_EQ(listNames(target), withMarker({"new.txt"}));
+}
+
+// A folder motostab did not write (no marker) is the user's: never replaced, whatever it holds; an
+// empty folder holds nothing to lose and is taken.
+TEST(OutputFolder, AFolderWithoutTheMarkerIsRefused) {
+  const fs::path dir = freshDir("foreign");
+  const fs::path target = dir / "notes";
+  fs::create_directories(target / "sub");
+  std::ofstream(target / "notes.txt") << "mine";
+  std::ofstream(target / "sub" / ".motostab-output-not") << "x";  // not the marker, and not at the top
+  try {
+    OutputFolder out(target);
+    ADD_FAILURE() << "replaced a folder motostab did not write";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.getLocation().key, "--out");
+    EXPECT_NE(std::string(e.what()).find(target.string()), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("not written by motostab"), std::string::npos) << e.what();
+  }
+  EXPECT_EQ(readText(target / "notes.txt"), "mine");
+  EXPECT_EQ(listNames(dir), std::set<std::string>{"notes"});
+  fs::create_directories(dir / "empty");
+  OutputFolder empty(dir / "empty");
+  empty.commit();
+  EXPECT_EQ(listNames(dir / "empty"), withMarker({}));
+}
+
+// A folder put in the target's place while the run computed is checked again at commit.
+TEST(OutputFolder, TheCheckIsRepeatedAtCommit) {
+  const fs::path dir = freshDir("late");
+  const fs::path target = dir / "out";
+  OutputFolder out(target);
+  fs::create_directories(target);
+  std::ofstream(target / "mine.txt") << "mine";
+  EXPECT_THROW(out.commit(), InputError);
+  EXPECT_EQ(listNames(target), std::set<std::string>{"mine.txt"});
+}
+
+// A folder holding a file the run read (readInputFile records it) is refused even when motostab wrote it:
+// an input written into an output folder (e.g. an edited extended.yaml) would be lost.
+TEST(OutputFolder, AFolderHoldingAnInputIsRefused) {
+  const fs::path dir = freshDir("input");
+  const fs::path target = dir / "inner";
+  makeEarlierOutputs(target);
+  fs::create_directories(target / "deep");
+  std::ofstream(target / "deep" / "bike.yaml") << "name: bike\n";
+  const fs::path sibling = dir / "inner-sweep";  // a prefix of the name is not "inside"
+  readInputFile(target / "deep" / "bike.yaml");
+  for (const fs::path& bad : {target, dir / "." / "inner"}) {
+    try {
+      OutputFolder out(bad);
+      ADD_FAILURE() << "would replace an input";
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find("bike.yaml, an input of this run"), std::string::npos) << e.what();
+    }
+  }
+  OutputFolder other(sibling);
+  other.commit();
+  EXPECT_EQ(readText(target / "deep" / "bike.yaml"), "name: bike\n");
+  EXPECT_THROW(checkFileReplaceable(target / "deep" / "bike.yaml", "name"), InputError);  // a single output file too
+}
+
+TEST(OutputFolder, FolderNamesAreNamesNotPaths) {
+  for (const std::string& bad : std::vector<std::string>{"", ".", "..", "a/b", "../victim", "/tmp/x", "a\nb", std::string(201, 'n')})
+    EXPECT_NE(describeBadFolderName(bad), "") << bad;
+  for (const std::string& good : std::vector<std::string>{"whipple-benchmark", "Browser + Jason", "..a", "a..b", "x.y", std::string(200, 'n')})
+    EXPECT_EQ(describeBadFolderName(good), "") << good;
+}
+
+// A single output file (import's scenario) replaces only a file whose first line is motostab's header.
+TEST(OutputFolder, SingleOutputFilesReplaceOnlyTheirOwn) {
+  const fs::path dir = freshDir("single");
+  EXPECT_NO_THROW(checkFileReplaceable(dir / "new.yaml", "# Written by motostab"));
+  std::ofstream(dir / "own.yaml") << "# Written by motostab import from x\nname: a\n";
+  EXPECT_NO_THROW(checkFileReplaceable(dir / "own.yaml", "# Written by motostab"));
+  std::ofstream(dir / "mine.yaml") << "name: mine\n";
+  EXPECT_THROW(checkFileReplaceable(dir / "mine.yaml", "# Written by motostab"), InputError);
+  fs::create_directories(dir / "folder.yaml");
+  EXPECT_THROW(checkFileReplaceable(dir / "folder.yaml", "# Written by motostab"), InputError);
 }
 
 }  // namespace

@@ -7,6 +7,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <random>
 
 #include "io/yaml_map.h"
 
@@ -109,6 +110,78 @@ TEST(YamlMap, OverrideValuesAreCheckedYaml) {
   EXPECT_THROW(applyOverride(root, "a={c: 1, c: 2}"), InputError);
   applyOverride(root, "a.b=2.5");
   EXPECT_EQ(root["a"]["b"].as<double>(), 2.5);
+}
+
+// "Billion laughs": levels of lists of aliases to the level below. Each alias may expand only a node
+// without aliases, so a second level is refused at its first alias, whatever the widths (drawn at
+// random, seeded); one level of aliases is read as the nodes it names.
+std::string makeAliasLevels(int levels, int width) {
+  std::string text = "a0: &a0 [x";
+  for (int k = 1; k < width; ++k) text += ", x";
+  text += "]\n";
+  for (int l = 1; l <= levels; ++l) {
+    text += "a" + std::to_string(l) + ": &a" + std::to_string(l) + " [*a" + std::to_string(l - 1);
+    for (int k = 1; k < width; ++k) text += ", *a" + std::to_string(l - 1);
+    text += "]\n";
+  }
+  return text;
+}
+
+TEST(YamlMap, AliasesExpandAtMostOnce) {
+  std::mt19937 rng(29);
+  for (int trial = 0; trial < 5; ++trial) {
+    const int width = std::uniform_int_distribution<int>(2, 12)(rng);
+    const int levels = std::uniform_int_distribution<int>(2, 9)(rng);
+    const std::string file = writeYaml("bomb" + std::to_string(trial) + ".yaml", makeAliasLevels(levels, width));
+    const InputError e = catchInputError([&] { loadYamlFile(file); });
+    EXPECT_EQ(e.getLocation().line, 3) << e.what();  // the first alias of level 2
+    EXPECT_NE(std::string(e.what()).find("expanded at most once"), std::string::npos) << e.what();
+    // The same through --set (the value is YAML text too).
+    YAML::Node root = YAML::Load("a: 1");
+    std::string oneLine;
+    for (char c : makeAliasLevels(levels, width)) oneLine += c == '\n' ? ',' : c;
+    oneLine.pop_back();
+    EXPECT_THROW(applyOverride(root, "a={" + oneLine + "}"), InputError) << oneLine;
+  }
+  YamlMap one = loadYamlFile(writeYaml("one.yaml", makeAliasLevels(1, 3)));
+  EXPECT_EQ(one.getStringList("a0").size(), 3u);
+  EXPECT_EQ(one.getNode()["a1"].size(), 3u);
+  EXPECT_EQ(one.getNode()["a1"][2][1].as<std::string>(), "x");
+}
+
+// A node budget bounds what one level of aliases can expand to: kMaxYamlNodes counting each alias as
+// the nodes it names.
+TEST(YamlMap, ExpandedNodesAreBounded) {
+  // Nodes: the root mapping, keys "base" and "copies", the base list and its `width` items, the copies
+  // list, and `width + 1` per alias of the base list. The most copies within the budget, and one more.
+  const long width = 1000, fixed = 1 + 2 + (width + 1) + 1;
+  const long most = (kMaxYamlNodes - fixed) / (width + 1);
+  auto makeText = [&](long copies) {
+    std::string text = "base: &b [0";
+    for (long k = 1; k < width; ++k) text += ", 0";
+    text += "]\ncopies:\n";
+    for (long c = 0; c < copies; ++c) text += "  - *b\n";
+    return text;
+  };
+  EXPECT_NO_THROW(loadYamlFile(writeYaml("wide_ok.yaml", makeText(most))));
+  const InputError e = catchInputError([&] { loadYamlFile(writeYaml("wide.yaml", makeText(most + 1))); });
+  EXPECT_NE(std::string(e.what()).find("more than 100000 YAML nodes"), std::string::npos) << e.what();
+  EXPECT_EQ(e.getLocation().line, 2 + most + 1);  // at the alias that exceeds it
+}
+
+TEST(YamlMap, OneDocumentPerFile) {
+  const InputError e = catchInputError([&] { loadYamlFile(writeYaml("two.yaml", "a: 1\n---\nb: 2\n")); });
+  EXPECT_EQ(e.getLocation().line, 2);
+  EXPECT_NE(std::string(e.what()).find("second YAML document"), std::string::npos) << e.what();
+  EXPECT_NO_THROW(loadYamlFile(writeYaml("explicit.yaml", "---\na: 1\n...\n")));
+  YAML::Node root = YAML::Load("a: 1");
+  EXPECT_THROW(applyOverride(root, "a=1\n---\n2"), InputError);
+}
+
+// YAML files are regular files of bounded size (io/input_file.h).
+TEST(YamlMap, OnlyRegularFiles) {
+  EXPECT_THROW(loadYamlFile("/dev/zero"), InputError);
+  EXPECT_THROW(loadYamlFile(makeTempDir("yaml_folder").string()), InputError);
 }
 
 }  // namespace

@@ -151,8 +151,8 @@ TEST(MagicFormulaContact, MotorcycleCrownRadiusMustBeTheWheels) {
 
 // relaxation_linear parameters equivalent to the motorcycle Magic Formula coefficients `c` (a tyre of
 // scenarios/supersport-mf.yaml) at load Fz (N) and speed V (m/s), written out from Sharp, Evangelou &
-// Limebeer (2004) sec. 4 in the paper's signs (slip and camber > 0 push to +y, which are the project's
-// alpha and phi): K_ya0 = PKY1 Fz0 sin(PKY2 atan(Fz/(PKY3 Fz0))), K_yg = (PKY6 + PKY7 dfz) Fz; at zero
+// Limebeer (2004) sec. 4 in the paper's signs (slip and camber > 0 push to +y; near zero slip either
+// reading of the paper's axes, docs/tyres.md, gives Fy = K_ya0 alpha + K_yg phi in the project's signs): K_ya0 = PKY1 Fz0 sin(PKY2 atan(Fz/(PKY3 Fz0))), K_yg = (PKY6 + PKY7 dfz) Fz; at zero
 // slip the trail is Dt = Fz (Rc/Fz0)(QDZ1 + QDZ2 dfz), so dMz/dalpha = -Dt K_ya0, and the residual
 // torque's camber slope is dMz/dphi = Fz Rc (QDZ8 + QDZ9 dfz); sigma = K_ya0 (c1 + c2 V + c3 V^2).
 std::string linearFromMotorcycle(const YAML::Node& c, double Fz, double V, double kr) {

@@ -16,6 +16,7 @@
 #include "core/portable_random.h"
 #include "tyres/magic_formula.h"
 #include "tyres/motorcycle_magic_formula.h"
+#include "tests/support/catch_input_error.h"
 
 namespace motostab::tyres {
 
@@ -305,6 +306,71 @@ TEST(MagicFormula61, ScalingFactorsScaleWhatTheyName) {
   EXPECT_NEAR(scaled->calcLongitudinalStiffness(3000), 1.1 * plain->calcLongitudinalStiffness(3000), 1e-9);
 }
 
+// The 1-based line of the first line of the sample that starts with `key` followed by a blank.
+int sampleLineOf(const std::string& key) {
+  std::istringstream in(readSample());
+  std::string line;
+  for (int n = 1; std::getline(in, line); ++n)
+    if (line.rfind(key + " ", 0) == 0) return n;
+  return -1;
+}
+
+// Coefficients of the wrong sign, wherever the law reads them, are InputErrors at their own line and
+// column of the file: a negative relaxation scale (LSGAL = -1 gave "relaxation" roots of +117 1/s), a
+// zero shape factor (PCY1 = 0 gave a flat side force beside a cornering stiffness of -53353 N/rad), a
+// friction, relaxation or carcass coefficient that makes its quantity zero or negative.
+TEST(MagicFormula61, CoefficientsOfTheWrongSignAreRefusedAtTheirLine) {
+  const std::string carcass = "\n[STRUCTURAL]\nLATERAL_STIFFNESS = 190000\nPCFY1 = 0.2\nPCFY2 = -0.5\nPCFY3 = 0\n";
+  struct Case {
+    std::map<std::string, std::string> values;
+    std::string key;
+  };
+  const std::vector<Case> cases = {{{{"LSGAL", "-1"}}, "LSGAL"}, {{{"LSGAL", "0"}}, "LSGAL"},   {{{"PCY1", "0"}}, "PCY1"},
+                                   {{{"PCX1", "-1.6"}}, "PCX1"}, {{{"PDY1", "0"}}, "PDY1"},     {{{"PDX1", "-1"}}, "PDX1"},
+                                   {{{"PTY1", "-1.8"}}, "PTY1"}, {{{"PTY2", "0"}}, "PTY2"},     {{{"LMUY", "0"}}, "LMUY"},
+                                   {{{"LKYC", "-0.5"}}, "LKYC"}, {{{"LONGVL", "-16.7"}}, "LONGVL"}};
+  for (const auto& c : cases) {
+    const TirFile f = sampleWithValues(c.values);
+    const InputError e = test::catchInputError([&] { makeTyreForceLaw(MagicFormulaVariant::MF61, *makeTirSource(f, nullptr)); });
+    EXPECT_EQ(e.getLocation().key, c.key) << e.what();
+    EXPECT_EQ(e.getLocation().line, sampleLineOf(c.key)) << e.what();
+    EXPECT_GT(e.getLocation().column, 1) << e.what();
+  }
+  // A lateral carcass stiffness whose load polynomial 1 + 0.2 dfz - 0.5 dfz^2 turns negative before
+  // 3 FNOMIN (dfz = 2: -0.6) would give a relaxation length of the wrong sign: refused at PCFY1.
+  const TirFile soft = TirFile::parse(readSample() + carcass, "carcass.tir");
+  const InputError e = test::catchInputError([&] { makeTyreForceLaw(MagicFormulaVariant::MF61, *makeTirSource(soft, nullptr)); });
+  EXPECT_EQ(e.getLocation().key, "PCFY1") << e.what();
+  // A scaling factor given by the scenario that overrides the file's is checked too.
+  const std::map<std::string, double> scaling{{"LKY", -1.0}};
+  const InputError lky = test::catchInputError(
+      [&] { makeTyreForceLaw(MagicFormulaVariant::MF61, *makeTirSource(TirFile::load(kSample), &scaling)); });
+  EXPECT_EQ(lky.getLocation().key, "LKY") << lky.what();
+  EXPECT_EQ(findScalingProblem("LRES", 0), "");
+  EXPECT_NE(findScalingProblem("LRES", -0.1), "");
+  EXPECT_NE(findScalingProblem("LKY", 0), "");
+}
+
+// Coefficients that pass the sign checks but make the law non-finite or degenerate somewhere in its
+// range are refused at the coefficient set (the file), naming what went wrong and where.
+TEST(MagicFormula61, DegenerateLawsAreRefusedNamingTheCoefficientSet) {
+  // PKY2 = 0: K_ya = PKY1 Fz0 sin(PKY4 atan(Fz/(PKY2 Fz0))) is 0/0 at zero load.
+  const InputError nan = test::catchInputError(
+      [&] { makeTyreForceLaw(MagicFormulaVariant::MF61, *makeTirSource(sampleWithValues({{"PKY2", "0"}}), nullptr)); });
+  EXPECT_EQ(nan.getLocation().file, "sample-edited.tir");
+  EXPECT_EQ(nan.getLocation().line, 0);
+  EXPECT_NE(nan.getReason().find("not finite at Fz 0 N"), std::string::npos) << nan.what();
+  // PKY4 = 4: sin(4 atan(Fz/(PKY2 Fz0))) < 0 above Fz = PKY2 Fz0 = 1.7 FNOMIN, a cornering stiffness that
+  // pushes along the slip.
+  const InputError sign = test::catchInputError(
+      [&] { makeTyreForceLaw(MagicFormulaVariant::MF61, *makeTirSource(sampleWithValues({{"PKY4", "4"}}), nullptr)); });
+  EXPECT_NE(sign.getReason().find("cornering stiffness"), std::string::npos) << sign.what();
+  EXPECT_NE(sign.getReason().find("at Fz 8000 N"), std::string::npos) << sign.what();
+  // The sample itself, and the grid's cost: a few thousand evaluations.
+  const auto law = makeTyreForceLaw(MagicFormulaVariant::MF61, *makeTirSource(TirFile::load(kSample), nullptr));
+  EXPECT_EQ(findForceLawProblem(*law), "");
+}
+
 // The motorcycle front tyre 120/70 ZR17 of Sharp, Evangelou & Limebeer (2004) (Evangelou 2004, Tables
 // 9.1-9.3; relaxation Table 9.5), crown radius 0.06 m, as in scenarios/supersport-mf.yaml.
 const std::map<std::string, double> kFront120 = {
@@ -340,12 +406,15 @@ class MapSource : public CoefficientSource {
 };
 
 // The motorcycle Magic Formula written out from Sharp, Evangelou & Limebeer (2004) sec. 4 and Evangelou
-// (2004) ch. 9, in the paper's signs (slip a = tan of the angle and camber g > 0 push to +y), with the
-// scaling factors L (1 when absent). R0 of the moments is the crown radius Rc.
+// (2004) ch. 9, in the paper's variables: a slip a and a camber g (rad) that both push the tyre to +y,
+// cos a written 1/sqrt(1 + a^2), with the scaling factors L (1 when absent). R0 of the moments is the
+// crown radius Rc. Optional terms 0 when absent: PDY2, PDY3 (the form of MBSim's magic_formula_sharp.cc
+// and TUMFTM's motorcycle_model) and QEZ3 (Evangelou's Table 9.3).
 struct SharpTyre {
   std::map<std::string, double> c, L;
   double Rc;
   double k(const char* n) const { return c.at(n); }
+  double k0(const char* n) const { return c.count(n) ? c.at(n) : 0.0; }
   double l(const char* n) const { return L.count(n) ? L.at(n) : 1.0; }
   double Fz0() const { return k("FNOMIN") * l("LFZO"); }
   double dfz(double Fz) const { return (Fz - Fz0()) / Fz0(); }
@@ -354,33 +423,54 @@ struct SharpTyre {
   }
   double Kyg(double Fz) const { return (k("PKY6") + k("PKY7") * dfz(Fz)) * Fz * l("LKYC"); }
   double Kx(double Fz) const { return Fz * (k("PKX1") + k("PKX2") * dfz(Fz)) * std::exp(k("PKX3") * dfz(Fz)) * l("LKX"); }
+  double Dy(double Fz, double g) const { return k("PDY1") * std::exp(k0("PDY2") * dfz(Fz)) / (1 + k0("PDY3") * g * g) * Fz * l("LMUY"); }
   double Fx0(double Fz, double s) const {
     const double D = (k("PDX1") + k("PDX2") * dfz(Fz)) * Fz * l("LMUX"), C = k("PCX1");
     const double E = (k("PEX1") + k("PEX2") * dfz(Fz) + k("PEX3") * std::pow(dfz(Fz), 2)) * (1 - k("PEX4") * sgn(s));
     return D * std::sin(C * std::atan(Kx(Fz) / (C * D) * s - E * (Kx(Fz) / (C * D) * s - std::atan(Kx(Fz) / (C * D) * s))));
   }
   double Fy0(double Fz, double a, double g) const {
-    const double Dy = k("PDY1") * Fz * l("LMUY"), Cy = k("PCY1"), Cg = k("PCY2");
-    const double By = Kya(Fz, g) / (Cy * Dy), Bg = Kyg(Fz) / (Cg * Dy);
+    const double D = Dy(Fz, g), Cy = k("PCY1"), Cg = k("PCY2");
+    const double By = Kya(Fz, g) / (Cy * D), Bg = Kyg(Fz) / (Cg * D);
     const double Ey = k("PEY1") + k("PEY2") * g * g + k("PEY4") * g * sgn(a), Eg = k("PEY5");
-    return Dy * std::sin(Cy * std::atan(By * a - Ey * (By * a - std::atan(By * a))) + Cg * std::atan(Bg * g - Eg * (Bg * g - std::atan(Bg * g))));
+    return D * std::sin(Cy * std::atan(By * a - Ey * (By * a - std::atan(By * a))) + Cg * std::atan(Bg * g - Eg * (Bg * g - std::atan(Bg * g))));
   }
   double Gxa(double s, double a) const { return std::cos(k("RCX1") * std::atan(k("RBX1") * std::cos(std::atan(k("RBX2") * s)) * a)); }
-  double Gyk(double s, double a) const { return std::cos(k("RCY1") * std::atan(k("RBY1") * std::cos(std::atan(k("RBY2") * (a - k("RBY3")))) * s)); }
+  // The combined-slip factor whose RBY3 shift makes the law asymmetric in a.
+  double Byk(double a) const { return k("RBY1") * std::cos(std::atan(k("RBY2") * (a - k("RBY3")))); }
+  double Gyk(double s, double a) const { return std::cos(k("RCY1") * std::atan(Byk(a) * s)); }
   double Mz(double Fz, double s, double a, double g) const {
-    const double d = dfz(Fz), ca = std::cos(std::atan(a)), r = Kx(Fz) * s / Kya(Fz, 0);
+    const double d = dfz(Fz), ca = 1 / std::sqrt(1 + a * a), r = Kx(Fz) * s / Kya(Fz, 0);
     const double ateq = std::sqrt(a * a + r * r) * sgn(a);
     const double ar = a + (k("QHZ3") + k("QHZ4") * d) * g, areq = std::sqrt(ar * ar + r * r) * sgn(ar);
     const double Bt = (k("QBZ1") + k("QBZ2") * d) * (1 + k("QBZ5") * std::abs(g) + k("QBZ6") * g * g), Ct = k("QCZ1");
     const double Dt = Fz * Rc / Fz0() * (k("QDZ1") + k("QDZ2") * d) * (1 + k("QDZ3") * std::abs(g) + k("QDZ4") * g * g) * l("LTR");
-    const double Et = (k("QEZ1") + k("QEZ2") * d + k("QEZ3") * d * d) * (1 + k("QEZ5") * g * 2 / M_PI * std::atan(Bt * Ct * a));
+    const double Et = (k("QEZ1") + k("QEZ2") * d + k0("QEZ3") * d * d) * (1 + k("QEZ5") * g * 2 / M_PI * std::atan(Bt * Ct * a));
     const double t = Dt * std::cos(Ct * std::atan(Bt * ateq - Et * (Bt * ateq - std::atan(Bt * ateq)))) * ca;
-    const double By0 = Kya(Fz, 0) / (k("PCY1") * k("PDY1") * Fz * l("LMUY"));
+    const double By0 = Kya(Fz, 0) / (k("PCY1") * Dy(Fz, 0));
     const double Br = k("QBZ9") + k("QBZ10") * By0 * k("PCY1");
     const double Dr = Fz * Rc * ((k("QDZ8") + k("QDZ9") * d) * g + (k("QDZ10") + k("QDZ11") * d) * g * std::abs(g)) * l("LRES") * ca;
     return -t * Gyk(s, a) * Fy0(Fz, a, 0) + Dr * std::cos(std::atan(Br * areq));
   }
+  // ISO-W forces at an ISO operating point under a convention (docs/tyres.md): z_down (MBSim, TUMFTM)
+  // evaluates at a = s(alpha_ISO), g = gamma_ISO and turns Fy and Mz; z_up at a = -s, g = -gamma_ISO;
+  // s is the angle or its tangent.
+  TyreForces iso(const MotorcycleConventions& cv, double Fz, double kappa, double alpha, double gamma) const {
+    const double sign = cv.axes == MotorcyclePaperAxes::ZDown ? 1.0 : -1.0;
+    const double a = sign * (cv.slip == MotorcycleSlipVariable::Angle ? alpha : std::tan(alpha)), g = sign * gamma;
+    TyreForces f;
+    f.Fx = Fx0(Fz, kappa) * Gxa(kappa, a);
+    f.Fy = -sign * Fy0(Fz, a, g) * Gyk(kappa, a);
+    f.Mz = -sign * Mz(Fz, kappa, a, g);
+    return f;
+  }
 };
+
+const std::vector<MotorcycleConventions> kAllConventions = {
+    {MotorcyclePaperAxes::ZDown, MotorcycleSlipVariable::Angle},
+    {MotorcyclePaperAxes::ZDown, MotorcycleSlipVariable::Tangent},
+    {MotorcyclePaperAxes::ZUp, MotorcycleSlipVariable::Angle},
+    {MotorcyclePaperAxes::ZUp, MotorcycleSlipVariable::Tangent}};
 
 // The motorcycle scaling factors drawn in [0.6, 1.4].
 std::map<std::string, double> drawMotorcycleScaling(PortableRandom& r) {
@@ -389,71 +479,140 @@ std::map<std::string, double> drawMotorcycleScaling(PortableRandom& r) {
   return out;
 }
 
+// Pure and combined slip at camber up to 60 degrees, slip on both sides of zero (and of RBY3), for every
+// convention, with and without QEZ3 and with drawn PDY2, PDY3.
 TEST(MotorcycleMagicFormula, MatchesSharpEvangelouLimebeerAtDrawnPoints) {
   PortableRandom rng(42);
-  for (int i = 0; i < 200; ++i) {
+  for (int i = 0; i < 400; ++i) {
+    const MotorcycleConventions cv = kAllConventions[i % 4];
     const auto scaling = drawMotorcycleScaling(rng);
-    const auto law = makeMotorcycleMagicFormula(MapSource(kFront120, &scaling));
-    const SharpTyre ref{kFront120, scaling, kFront120.at("CROWN_RADIUS")};
-    // Large camber is the point of the motorcycle form: up to 55 degrees.
-    const double Fz = rng.drawUniform(200, 3000), a = rng.drawUniform(-0.2, 0.2), g = rng.drawUniform(-0.96, 0.96);
+    auto coefficients = kFront120;
+    if (i % 8 >= 4) coefficients.erase("QEZ3");
+    if (i % 3 == 0) {
+      coefficients["PDY2"] = rng.drawUniform(-0.2, 0.2);
+      coefficients["PDY3"] = rng.drawUniform(0, 0.5);
+    }
+    const auto law = makeMotorcycleMagicFormula(MapSource(coefficients, &scaling), cv);
+    const SharpTyre ref{coefficients, scaling, coefficients.at("CROWN_RADIUS")};
+    const double Fz = rng.drawUniform(200, 3000), alpha = rng.drawUniform(-0.25, 0.25), gamma = rng.drawUniform(-M_PI / 3, M_PI / 3);
     const double s = rng.drawUniform(-0.15, 0.15), V = rng.drawUniform(2, 60);
-    // ISO inputs: alpha_ISO = -atan(a), gamma_ISO = -g.
-    const TyreForces pure = law->calcForces({Fz, 0, -std::atan(a), -g, V});
-    EXPECT_NEAR(pure.Fy, ref.Fy0(Fz, a, g), 1e-9 * Fz) << i;
-    EXPECT_NEAR(pure.Mz, ref.Mz(Fz, 0, a, g), 1e-10 * Fz) << i;
-    const TyreForces braking = law->calcForces({Fz, s, 0, -g, V});
-    EXPECT_NEAR(braking.Fx, ref.Fx0(Fz, s), 1e-9 * Fz) << i;
-    const TyreForces combined = law->calcForces({Fz, s, -std::atan(a), -g, V});
-    EXPECT_NEAR(combined.Fx, ref.Fx0(Fz, s) * ref.Gxa(s, a), 1e-9 * Fz) << i;
-    EXPECT_NEAR(combined.Fy, ref.Fy0(Fz, a, g) * ref.Gyk(s, a), 1e-9 * Fz) << i;
-    EXPECT_NEAR(combined.Mz, ref.Mz(Fz, s, a, g), 1e-10 * Fz) << i;
+    auto expectNear = [&](const TyreForces& got, const TyreForces& want, const char* what) {
+      EXPECT_NEAR(got.Fx, want.Fx, 1e-9 * Fz) << what << " " << i;
+      EXPECT_NEAR(got.Fy, want.Fy, 1e-9 * Fz) << what << " " << i;
+      EXPECT_NEAR(got.Mz, want.Mz, 1e-10 * Fz) << what << " " << i;
+      EXPECT_EQ(got.Mx, 0) << what;
+      EXPECT_EQ(got.My, 0) << what;
+    };
+    expectNear(law->calcForces({Fz, 0, alpha, gamma, V}), ref.iso(cv, Fz, 0, alpha, gamma), "pure side slip");
+    expectNear(law->calcForces({Fz, s, 0, gamma, V}), ref.iso(cv, Fz, s, 0, gamma), "pure longitudinal slip");
+    expectNear(law->calcForces({Fz, s, alpha, gamma, V}), ref.iso(cv, Fz, s, alpha, gamma), "combined slip");
     // Relaxation sigma = K_ya (c1 + c2 V + c3 V^2) at the camber.
-    const double sigma = ref.Kya(Fz, g) * (kFront120.at("RELAX_C1") + kFront120.at("RELAX_C2") * V + kFront120.at("RELAX_C3") * V * V);
-    EXPECT_NEAR(law->calcRelaxationLength(Fz, -g, V), sigma, 1e-12) << i;
+    const double sigma = ref.Kya(Fz, gamma) * (kFront120.at("RELAX_C1") + kFront120.at("RELAX_C2") * V + kFront120.at("RELAX_C3") * V * V);
+    EXPECT_NEAR(law->calcRelaxationLength(Fz, gamma, V), sigma, 1e-12) << i;
   }
   // Slopes at zero: cornering stiffness PKY1 Fz0 sin(PKY2 atan(Fz/(PKY3 Fz0))) and camber stiffness
-  // (PKY6 + PKY7 dfz) Fz, both pushing to +y for a positive slip or camber in the paper's signs.
-  const auto law = makeMotorcycleMagicFormula(MapSource(kFront120, nullptr));
+  // (PKY6 + PKY7 dfz) Fz, both pushing to +y for a positive slip or camber in the paper's signs, so
+  // negative in ISO signs whatever the convention.
   auto c = [](const char* k) { return kFront120.at(k); };
-  for (double Fz : {600.0, 1100.0, 1900.0}) {
-    const double Kya = c("PKY1") * c("FNOMIN") * std::sin(c("PKY2") * std::atan(Fz / (c("PKY3") * c("FNOMIN"))));
-    const double Kyg = (c("PKY6") + c("PKY7") * (Fz - c("FNOMIN")) / c("FNOMIN")) * Fz;
-    EXPECT_NEAR(-slope(*law, Fz, &TyreSlip::alpha, &TyreForces::Fy), Kya, 1e-6 * Kya);
-    EXPECT_NEAR(-slope(*law, Fz, &TyreSlip::gamma, &TyreForces::Fy), Kyg, 1e-6 * Kyg);
-    EXPECT_NEAR(-law->calcCorneringStiffness(Fz), Kya, 1e-9 * Kya);
-    EXPECT_NEAR(-law->calcCamberStiffness(Fz), Kyg, 1e-9 * Kyg);
+  for (const auto& cv : kAllConventions) {
+    const auto law = makeMotorcycleMagicFormula(MapSource(kFront120, nullptr), cv);
+    for (double Fz : {600.0, 1100.0, 1900.0}) {
+      const double Kya = c("PKY1") * c("FNOMIN") * std::sin(c("PKY2") * std::atan(Fz / (c("PKY3") * c("FNOMIN"))));
+      const double Kyg = (c("PKY6") + c("PKY7") * (Fz - c("FNOMIN")) / c("FNOMIN")) * Fz;
+      EXPECT_NEAR(-slope(*law, Fz, &TyreSlip::alpha, &TyreForces::Fy), Kya, 1e-6 * Kya);
+      EXPECT_NEAR(-slope(*law, Fz, &TyreSlip::gamma, &TyreForces::Fy), Kyg, 1e-6 * Kyg);
+      EXPECT_NEAR(-law->calcCorneringStiffness(Fz), Kya, 1e-9 * Kya);
+      EXPECT_NEAR(-law->calcCamberStiffness(Fz), Kyg, 1e-9 * Kyg);
+    }
+    // Evangelou (2004) Table 9.5 order: the front relaxation length at its nominal load and 20 m/s is
+    // about 0.18 m (K_ya = 18.36 kN/rad there).
+    EXPECT_NEAR(law->calcRelaxationLength(1100, 0, 20), 0.178, 0.002);
   }
-  // Evangelou (2004) Table 9.5 order: the front relaxation length at its nominal load and 20 m/s is
-  // about 0.18 m (K_ya = 18.36 kN/rad there).
-  EXPECT_NEAR(law->calcRelaxationLength(1100, 0, 20), 0.178, 0.002);
+}
+
+// The law is odd in slip and camber jointly except for RBY3: the two axes readings give the same forces
+// without longitudinal slip, or with RBY3 = 0; with both, the combined-slip side force is cut more
+// strongly on the side of zero slip where the paper's slip a is near RBY3 (a = alpha_ISO for z_down,
+// -alpha_ISO for z_up).
+TEST(MotorcycleMagicFormula, OnlyTheRby3TermTellsThePaperAxesApart) {
+  const MotorcycleConventions down{MotorcyclePaperAxes::ZDown, MotorcycleSlipVariable::Angle};
+  const MotorcycleConventions up{MotorcyclePaperAxes::ZUp, MotorcycleSlipVariable::Angle};
+  auto symmetric = kFront120;
+  symmetric["RBY3"] = 0;
+  const auto lawDown = makeMotorcycleMagicFormula(MapSource(kFront120, nullptr), down);
+  const auto lawUp = makeMotorcycleMagicFormula(MapSource(kFront120, nullptr), up);
+  const auto symDown = makeMotorcycleMagicFormula(MapSource(symmetric, nullptr), down);
+  const auto symUp = makeMotorcycleMagicFormula(MapSource(symmetric, nullptr), up);
+  PortableRandom rng(7341);
+  for (int i = 0; i < 100; ++i) {
+    const double Fz = rng.drawUniform(300, 3000), alpha = rng.drawUniform(-0.3, 0.3), gamma = rng.drawUniform(-1, 1);
+    const double kappa = rng.drawUniform(-0.2, 0.2);
+    const TyreForces d0 = lawDown->calcForces({Fz, 0, alpha, gamma, 20}), u0 = lawUp->calcForces({Fz, 0, alpha, gamma, 20});
+    EXPECT_NEAR(d0.Fy, u0.Fy, 1e-10 * Fz) << i;
+    EXPECT_NEAR(d0.Mz, u0.Mz, 1e-11 * Fz) << i;
+    const TyreForces ds = symDown->calcForces({Fz, kappa, alpha, gamma, 20}), us = symUp->calcForces({Fz, kappa, alpha, gamma, 20});
+    EXPECT_NEAR(ds.Fx, us.Fx, 1e-10 * Fz) << i;
+    EXPECT_NEAR(ds.Fy, us.Fy, 1e-10 * Fz) << i;
+    EXPECT_NEAR(ds.Mz, us.Mz, 1e-11 * Fz) << i;
+  }
+  // Front tyre at 1500 N, slip ratio 0.1, zero camber, +/-5 degrees: with RBY3 = -0.059 < 0 the factor
+  // Byk(a) = RBY1 cos(atan(RBY2 (a - RBY3))) is larger at a = -5 deg than at +5 deg, so the side force is
+  // cut more where the paper's a is negative: at alpha_ISO = -5 deg for z_down, +5 deg for z_up.
+  const SharpTyre ref{kFront120, {}, kFront120.at("CROWN_RADIUS")};
+  const double Fz = 1500, kappa = 0.1, deg5 = 5 * M_PI / 180;
+  ASSERT_GT(ref.Byk(-deg5), ref.Byk(deg5));
+  const double downPlus = lawDown->calcForces({Fz, kappa, deg5, 0, 20}).Fy, downMinus = lawDown->calcForces({Fz, kappa, -deg5, 0, 20}).Fy;
+  const double upPlus = lawUp->calcForces({Fz, kappa, deg5, 0, 20}).Fy, upMinus = lawUp->calcForces({Fz, kappa, -deg5, 0, 20}).Fy;
+  EXPECT_LT(downPlus, 0);
+  EXPECT_GT(downMinus, 0);
+  EXPECT_GT(std::abs(downPlus), std::abs(downMinus) + 100) << downPlus << " " << downMinus;
+  EXPECT_NEAR(upPlus, -downMinus, 1e-9 * Fz);
+  EXPECT_NEAR(upMinus, -downPlus, 1e-9 * Fz);
+  // The sizes from the independent evaluation: |Fy| = Dy sin(Cy atan(...)) Gyk at a = +/-5 deg.
+  EXPECT_NEAR(downPlus, -ref.Fy0(Fz, deg5, 0) * ref.Gyk(kappa, deg5), 1e-9 * Fz);
+  EXPECT_NEAR(downMinus, -ref.Fy0(Fz, -deg5, 0) * ref.Gyk(kappa, -deg5), 1e-9 * Fz);
 }
 
 // The physical signs of the law with the published front set, at its nominal load (Cossalter 2006,
-// Motorcycle Dynamics, ch. 2): camber thrust pushes the tyre towards the lean and the camber
-// (twisting) moment turns it towards the lean; the self-aligning moment of a slip turns it towards its
-// velocity. ISO-W: a wheel leaning right has gamma_ISO > 0, a wheel sliding left alpha_ISO > 0. The
-// twisting slope per unit load, Rc QDZ8 = 0.022 m/rad, is of the order of the seed paper's Table 6
-// linear front tyre (0.032 m/rad); with the unloaded radius in its place it would be 0.116 m/rad.
+// Motorcycle Dynamics, ch. 2), whatever the convention: camber thrust pushes the tyre towards the lean
+// and the camber (twisting) moment turns it towards the lean; the self-aligning moment of a slip turns it
+// towards its velocity. ISO-W: a wheel leaning right has gamma_ISO > 0, a wheel sliding left
+// alpha_ISO > 0. The twisting slope per unit load, Rc QDZ8 = 0.022 m/rad, is of the order of the seed
+// paper's Table 6 linear front tyre (0.032 m/rad); with the unloaded radius in its place it would be
+// 0.116 m/rad.
 TEST(MotorcycleMagicFormula, CamberTwistsTowardsTheLeanAndSlipAlignsTowardsTheVelocity) {
-  const auto law = makeMotorcycleMagicFormula(MapSource(kFront120, nullptr));
-  const double Fz = kFront120.at("FNOMIN");
-  for (double gamma : {0.2, 0.4, 0.8}) {
-    const TyreForces right = law->calcForces({Fz, 0, 0, gamma, 25});
-    const TyreForces left = law->calcForces({Fz, 0, 0, -gamma, 25});
-    EXPECT_LT(right.Fy, 0) << gamma;
-    EXPECT_LT(right.Mz, 0) << gamma;
-    EXPECT_NEAR(left.Fy, -right.Fy, 1e-9 * Fz) << gamma;
-    EXPECT_NEAR(left.Mz, -right.Mz, 1e-9 * Fz) << gamma;
+  for (const auto& cv : kAllConventions) {
+    const auto law = makeMotorcycleMagicFormula(MapSource(kFront120, nullptr), cv);
+    const double Fz = kFront120.at("FNOMIN");
+    for (double gamma : {0.2, 0.4, 0.8, 1.0}) {
+      const TyreForces right = law->calcForces({Fz, 0, 0, gamma, 25});
+      const TyreForces left = law->calcForces({Fz, 0, 0, -gamma, 25});
+      EXPECT_LT(right.Fy, 0) << gamma;
+      EXPECT_LT(right.Mz, 0) << gamma;
+      EXPECT_NEAR(left.Fy, -right.Fy, 1e-9 * Fz) << gamma;
+      EXPECT_NEAR(left.Mz, -right.Mz, 1e-9 * Fz) << gamma;
+    }
+    const double h = 1e-6;
+    const double twisting = -(law->calcForces({Fz, 0, 0, h, 25}).Mz - law->calcForces({Fz, 0, 0, -h, 25}).Mz) / (2 * h) / Fz;
+    EXPECT_NEAR(twisting, kFront120.at("CROWN_RADIUS") * kFront120.at("QDZ8"), 1e-6);
+    EXPECT_GT(twisting, 0.032 / 3);
+    EXPECT_LT(twisting, 0.032 * 3);
+    const TyreForces slipping = law->calcForces({Fz, 0, 0.01, 0, 25});
+    EXPECT_LT(slipping.Fy, 0);
+    EXPECT_GT(slipping.Mz, 0);
   }
-  const double h = 1e-6;
-  const double twisting = -(law->calcForces({Fz, 0, 0, h, 25}).Mz - law->calcForces({Fz, 0, 0, -h, 25}).Mz) / (2 * h) / Fz;
-  EXPECT_NEAR(twisting, kFront120.at("CROWN_RADIUS") * kFront120.at("QDZ8"), 1e-6);
-  EXPECT_GT(twisting, 0.032 / 3);
-  EXPECT_LT(twisting, 0.032 * 3);
-  const TyreForces slipping = law->calcForces({Fz, 0, 0.01, 0, 25});
-  EXPECT_LT(slipping.Fy, 0);
-  EXPECT_GT(slipping.Mz, 0);
+}
+
+// Where the slip variable matters: the paper's equations at the angle or at its tangent. At 10 degrees
+// the two differ by tan(0.1745) - 0.1745 = 0.0018 rad of slip, a fraction of a per cent of the force.
+TEST(MotorcycleMagicFormula, SlipVariableIsTheAngleOrItsTangent) {
+  const SharpTyre ref{kFront120, {}, kFront120.at("CROWN_RADIUS")};
+  const double Fz = 1100, alpha = 10 * M_PI / 180;
+  const auto angle = makeMotorcycleMagicFormula(MapSource(kFront120, nullptr), {MotorcyclePaperAxes::ZDown, MotorcycleSlipVariable::Angle});
+  const auto tangent = makeMotorcycleMagicFormula(MapSource(kFront120, nullptr), {MotorcyclePaperAxes::ZDown, MotorcycleSlipVariable::Tangent});
+  EXPECT_NEAR(angle->calcForces({Fz, 0, alpha, 0, 20}).Fy, -ref.Fy0(Fz, alpha, 0), 1e-9 * Fz);
+  EXPECT_NEAR(tangent->calcForces({Fz, 0, alpha, 0, 20}).Fy, -ref.Fy0(Fz, std::tan(alpha), 0), 1e-9 * Fz);
+  EXPECT_NE(angle->calcForces({Fz, 0, alpha, 0, 20}).Fy, tangent->calcForces({Fz, 0, alpha, 0, 20}).Fy);
 }
 
 TEST(MotorcycleMagicFormula, RelaxationCoefficientsAllOrNone) {
@@ -463,6 +622,58 @@ TEST(MotorcycleMagicFormula, RelaxationCoefficientsAllOrNone) {
   m.erase("RELAX_C1");
   m.erase("RELAX_C3");
   EXPECT_TRUE(std::isnan(makeMotorcycleMagicFormula(MapSource(m, nullptr))->calcRelaxationLength(1100, 0, 20)));
+}
+
+// A relaxation length that is zero or negative at some speed (unstable "relaxation" roots) is refused,
+// naming the coefficient: c1 > 0, c3 >= 0 and, for c2 < 0, c2^2 < 4 c1 c3 (Evangelou's rear set has
+// c2 < 0 and passes: 1.78e-16 < 7.36e-14).
+TEST(MotorcycleMagicFormula, RelaxationLengthPositiveAtEverySpeed) {
+  auto refuses = [](std::map<std::string, double> m, const std::string& key) {
+    const InputError e = test::catchInputError([&] { makeMotorcycleMagicFormula(MapSource(m, nullptr)); });
+    EXPECT_EQ(e.getLocation().key, key) << e.what();
+  };
+  for (double c1 : {-8.633e-6, 0.0}) {
+    auto m = kFront120;
+    m["RELAX_C1"] = c1;
+    refuses(m, "RELAX_C1");
+  }
+  auto m = kFront120;
+  m["RELAX_C3"] = -1e-12;
+  refuses(m, "RELAX_C3");
+  m = kFront120;
+  m["RELAX_C2"] = -2 * std::sqrt(m["RELAX_C1"] * m["RELAX_C3"]) * 1.01;  // a double root just below zero
+  refuses(m, "RELAX_C2");
+  m = kFront120;
+  m["RELAX_C2"] = -1.333e-8;  // the rear set's sign
+  const auto law = makeMotorcycleMagicFormula(MapSource(m, nullptr));
+  for (double V = 0; V <= 200; V += 5) EXPECT_GT(law->calcRelaxationLength(1100, 0, V), 0) << V;
+}
+
+// The motorcycle coefficients' signs, and laws that are degenerate or not finite in their range.
+TEST(MotorcycleMagicFormula, MeaninglessCoefficientsAreRefused) {
+  for (const auto& [key, value] : std::vector<std::pair<std::string, double>>{
+           {"PCY1", 0}, {"PCY2", -0.8}, {"PKY1", -22.8}, {"PKX1", 0}, {"PDX1", -1}, {"PDY3", -1}, {"CROWN_RADIUS", 0}}) {
+    auto m = kFront120;
+    m[key] = value;
+    const InputError e = test::catchInputError([&] { makeMotorcycleMagicFormula(MapSource(m, nullptr)); });
+    EXPECT_EQ(e.getLocation().key, key) << e.what();
+  }
+  const std::map<std::string, double> scaling{{"LTR", -1.0}};
+  EXPECT_EQ(test::catchInputError([&] { makeMotorcycleMagicFormula(MapSource(kFront120, &scaling)); }).getLocation().key, "LTR");
+  // PDY2 = 1000: exp(1000 dfz) overflows above about 1.7 FNOMIN; PKY2 = 5: sin(5 atan(Fz/(PKY3 Fz0))) < 0
+  // above 0.73 PKY3 Fz0 = 2000 N. Both pass the sign checks; the range check refuses them at the set ("").
+  auto overflow = kFront120;
+  overflow["PDY2"] = 1000;
+  const InputError inf = test::catchInputError([&] { makeTyreForceLaw(MagicFormulaVariant::Motorcycle, MapSource(overflow, nullptr)); });
+  EXPECT_EQ(inf.getLocation().key, "");
+  EXPECT_NE(inf.getReason().find("not finite at Fz 2200 N"), std::string::npos) << inf.what();
+  auto turning = kFront120;
+  turning["PKY2"] = 5;
+  const InputError flip = test::catchInputError([&] { makeTyreForceLaw(MagicFormulaVariant::Motorcycle, MapSource(turning, nullptr)); });
+  EXPECT_NE(flip.getReason().find("cornering stiffness"), std::string::npos) << flip.what();
+  // The published sets load, in every convention.
+  for (const auto& cv : kAllConventions)
+    EXPECT_NO_THROW(makeTyreForceLaw(MagicFormulaVariant::Motorcycle, MapSource(kFront120, nullptr), std::nullopt, cv));
 }
 
 }  // namespace

@@ -5,11 +5,15 @@
 
 #include <complex>
 
+#include "../support/catch_input_error.h"
 #include "analysis/linearize.h"
+#include "core/portable_random.h"
+#include "tyres/relaxation_linear.h"
 
 namespace motostab::tyres {
 
 using analysis::LinearModel;
+using io::InputError;
 using analysis::LinearizeOptions;
 using analysis::TrimOptions;
 using analysis::TrimResult;
@@ -82,6 +86,55 @@ TEST(RelaxationLinear, TrimHasNoSlipOrLeanWhenSymmetric) {
   const Scenario& s = model.getScenario();
   const double drag = 0.5 * s.aerodynamics.airDensity * s.aerodynamics.dragArea * 400.0;
   EXPECT_NEAR(model.getInput(trim.state, Input::DriveTorque), drag * s.rearWheel.radius, 0.02 * drag * s.rearWheel.radius);
+}
+
+// The header's signs: camber thrust pushes towards the lean (k_phi >= 0) and a small slip's aligning
+// moment turns the wheel towards its velocity (k_mz <= 0). A negative camber stiffness or a positive
+// self-aligning stiffness is refused at its key, given directly or over a preset; the twisting
+// stiffness may have either sign (measured bicycle tyres change it with load).
+TEST(RelaxationLinear, UnphysicalSignsAreRefusedAtTheirKey) {
+  const std::string supersport = std::string(MOTOSTAB_SOURCE_DIR) + "/scenarios/supersport.yaml";
+  const std::string bicycle = std::string(MOTOSTAB_SOURCE_DIR) + "/scenarios/whipple-benchmark-tyres.yaml";
+  struct Case {
+    std::string file, set, key;
+  };
+  for (const auto& c : std::vector<Case>{
+           {supersport, "contact.front.camber_stiffness_per_rad=-1.24", "contact.front.camber_stiffness_per_rad"},
+           {supersport, "contact.rear.self_aligning_stiffness_m_per_rad=0.47", "contact.rear.self_aligning_stiffness_m_per_rad"},
+           {bicycle, "contact.front={camber_stiffness_per_rad: -0.9}", "contact.front.camber_stiffness_per_rad"}}) {
+    const InputError e = test::catchInputError([&] { VehicleModel(loadScenario(c.file, {c.set})); });
+    EXPECT_EQ(e.getLocation().key, c.key) << e.what();
+  }
+  EXPECT_NO_THROW(VehicleModel(loadScenario(supersport, {"contact.front.twisting_stiffness_m_per_rad=-0.01"})));
+  EXPECT_NO_THROW(VehicleModel(loadScenario(supersport, {"contact.front.camber_stiffness_per_rad=0"})));
+}
+
+// The steady-state law motostab tyre draws: the header's equations in ISO-W signs (alpha_ISO = -atan
+// of the contact's slip, gamma_ISO = -phi), at drawn points and parameters.
+TEST(RelaxationLinear, SteadyLawInIsoSigns) {
+  core::PortableRandom rng(314);
+  for (int i = 0; i < 50; ++i) {
+    LinearTyreParameters p;
+    p.corneringStiffness = rng.drawUniform(5, 20);
+    p.camberStiffness = rng.drawUniform(0, 2);
+    p.selfAligningStiffness = rng.drawUniform(-0.5, 0);
+    p.twistingStiffness = rng.drawUniform(-0.05, 0.05);
+    p.longitudinalStiffness = rng.drawUniform(5, 30);
+    p.relaxationLength = rng.drawUniform(0, 0.3);
+    const auto law = makeLinearTyreForceLaw(p);
+    const double Fz = rng.drawUniform(100, 3000), alphaIso = rng.drawUniform(-0.3, 0.3), gammaIso = rng.drawUniform(-1, 1);
+    const double kappa = rng.drawUniform(-0.2, 0.2);
+    const TyreForces f = law->calcForces({Fz, kappa, alphaIso, gammaIso, 20});
+    const double alpha = -std::tan(alphaIso), phi = -gammaIso;  // the project's signs
+    EXPECT_NEAR(f.Fx, Fz * p.longitudinalStiffness * kappa, 1e-9 * Fz);
+    EXPECT_NEAR(f.Fy, Fz * (p.corneringStiffness * alpha + p.camberStiffness * phi), 1e-9 * Fz);
+    EXPECT_NEAR(f.Mz, Fz * (p.selfAligningStiffness * alpha + p.twistingStiffness * phi), 1e-9 * Fz);
+    EXPECT_EQ(f.Mx, 0);
+    EXPECT_EQ(f.My, 0);
+    EXPECT_NEAR(law->calcCorneringStiffness(Fz), -Fz * p.corneringStiffness, 1e-9 * Fz);
+    EXPECT_NEAR(law->calcCamberStiffness(Fz), -Fz * p.camberStiffness, 1e-9 * Fz);
+    EXPECT_EQ(law->calcRelaxationLength(Fz, gammaIso, 20), p.relaxationLength);
+  }
 }
 
 }  // namespace

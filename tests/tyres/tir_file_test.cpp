@@ -2,6 +2,7 @@
 // MF61-sample-tir) and files broken on purpose, each an InputError naming file:line and the key.
 #include <gtest/gtest.h>
 
+#include <filesystem>
 #include <fstream>
 #include <regex>
 
@@ -89,6 +90,9 @@ TEST(TirFile, BrokenFilesNameTheLineAndKey) {
     EXPECT_EQ(e.getLocation().key, c.key) << c.replacement;
     EXPECT_NE(e.getReason().find(c.reason), std::string::npos) << e.what();
   }
+  // The column is the value's: "PKY4 = nan" has its value in column 8.
+  EXPECT_EQ(test::catchInputError([&] { parseBroken(editLine("PKY4", "PKY4 = nan")); }).getLocation().column, 8);
+  EXPECT_EQ(TirFile::load(kSample).find("PKY1")->column, 28);
   const InputError none = test::catchInputError([&] { parseBroken(editLine("FITTYP", "$ no FITTYP")); });
   EXPECT_NE(none.getReason().find("missing [MODEL] FITTYP"), std::string::npos) << none.what();
 }
@@ -119,6 +123,25 @@ TEST(TirFile, MissingOrUnsupportedCoefficientsAreErrorsOfTheFile) {
   // A file that does not exist.
   const InputError absent = test::catchInputError([&] { TirFile::load((dir / "none.tir").string()); });
   EXPECT_NE(absent.getReason().find("cannot open"), std::string::npos);
+}
+
+// Only a regular file of at most TirFile::kMaxBytes is read: a device (tyre /dev/zero ran out of memory
+// with std::bad_alloc), a folder or a huge file is an InputError at the path.
+TEST(TirFile, OnlyRegularFilesOfBoundedSizeAreRead) {
+  const auto dir = makeTempDir("TirFile_Regular");
+  std::vector<std::string> refused = {dir.string()};
+  if (std::filesystem::exists("/dev/zero")) refused.push_back("/dev/zero");
+  const auto big = dir / "big.tir";
+  {
+    std::ofstream out(big);
+    out << readText(kSample);
+    out << std::string(TirFile::kMaxBytes, '$');
+  }
+  refused.push_back(big.string());
+  for (const auto& path : refused) {
+    const InputError e = test::catchInputError([&] { TirFile::load(path); });
+    EXPECT_EQ(e.getLocation().file, path) << e.what();
+  }
 }
 
 TEST(TirFile, TablesAndCommentsAreNotKeys) {

@@ -1,0 +1,81 @@
+// linear_models.mat read back by an independent reader: SciPy's loadmat (python3-scipy, through
+// tests/output/read_linear_models.py) checks the variables and that the eigenvalues of each A(:, :, k)
+// (numpy) are those of eigenvalues.csv, for a sweep of the enduro (relaxing tyres and a twisting
+// swingarm: 20 states) over a random speed grid and for one linearisation at a random speed.
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <fstream>
+#include <iostream>
+#include <iterator>
+#include <string>
+
+#include "analysis/modes.h"
+#include "core/portable_random.h"
+#include "output/linear_models_mat.h"
+#include "output/sweep_output.h"
+#include "tests/support/analysis_chain.h"
+#include "tests/support/temp_dir.h"
+
+namespace motostab::output {
+
+using namespace motostab::testing;
+using core::PortableRandom;
+
+namespace {
+
+const std::string kEnduro = std::string(MOTOSTAB_SOURCE_DIR) + "/scenarios/enduro.yaml";
+
+// Runs the reader; its exit status (0: every check held).
+int readBack(const std::filesystem::path& dir, const std::string& kind, const std::string& aCsv = "") {
+  const std::string cmd = std::string(MOTOSTAB_SCIPY_PYTHON) + " " + MOTOSTAB_SOURCE_DIR + "/tests/output/read_linear_models.py " +
+                          (dir / "linear_models.mat").string() + " " + (dir / "eigenvalues.csv").string() + " " + kind + " " +
+                          aCsv + " > " + (dir / "reader.log").string() + " 2>&1";
+  const int status = std::system(cmd.c_str());
+  std::ifstream in(dir / "reader.log");
+  std::cout << std::string(std::istreambuf_iterator<char>(in), {});
+  return status;
+}
+
+}  // namespace
+
+TEST(LinearModelsMat, SweepReadBackBySciPy) {
+  PortableRandom rng(2024);
+  const VehicleModel model(loadScenario(kEnduro, {"swingarm.compliance=twist"}));
+  SweepOptions opt;
+  opt.start = rng.drawUniform(2, 10), opt.step = rng.drawUniform(2, 4), opt.stop = opt.start + 3 * opt.step;
+  opt.linearize.computeB = true;
+  const SweepResult sweep = runSweep(model, opt);
+  const auto dir = makeTempDir("mat_sweep");
+  writeSweepData(dir, "enduro", sweep);
+  writeLinearModelsMat(dir / "linear_models.mat", sweep.models);
+  EXPECT_EQ(readBack(dir, "sweep"), 0);
+}
+
+TEST(LinearModelsMat, LinearisationReadBackBySciPy) {
+  PortableRandom rng(77);
+  const VehicleModel model(loadScenario(kEnduro));
+  const LinearModel lm = linearize(model, calcTrim(model, rng.drawUniform(5, 35)));
+  std::vector<std::string> labels;
+  for (const auto& b : analysis::trackModes({lm}, 1.497)) labels.push_back(b.label);
+  const auto dir = makeTempDir("mat_linearize");
+  writeLinearModel(dir, lm, labels);
+  writeLinearModelsMat(dir / "linear_models.mat", {lm});
+  EXPECT_EQ(readBack(dir, "linearize", (dir / "A.csv").string()), 0);
+}
+
+TEST(LinearModelsMat, RefusesModelsItCannotStack) {
+  const VehicleModel model(loadScenario(kEnduro));
+  const LinearModel a = linearize(model, calcTrim(model, 10));
+  LinearModel noB = a;
+  noB.B.resize(0, 0);
+  LinearModel renamed = a;
+  renamed.states[0].name = "other";
+  const auto file = makeTempDir("mat_refused") / "linear_models.mat";
+  EXPECT_THROW(writeLinearModelsMat(file, {a, noB}), std::invalid_argument);
+  EXPECT_THROW(writeLinearModelsMat(file, {a, renamed}), std::invalid_argument);
+  EXPECT_THROW(writeLinearModelsMat(file, {}), std::invalid_argument);
+  EXPECT_FALSE(std::filesystem::exists(file));
+}
+
+}  // namespace motostab::output
