@@ -257,13 +257,21 @@ class SweepRun {
   };
 
   // Trims and linearises speed k from the chain's last trim (or cold); false (the failure recorded)
-  // when the trim fails and failed speeds are kept: the chain then goes on from its last trim.
+  // when the trim fails and failed speeds are kept: the chain then goes on from its last trim. With
+  // failed speeds kept, a warm-started trim that fails is tried once more cold (a tight turn at low
+  // speed can be too far from the next speed's for Newton's method).
   bool trimAndLinearize(const VehicleModel& m, size_t k, bool lead, Chain& c) {
     try {
       if (!c.valid) {
         linearizeFirst(m, k, lead, c.work, c.lo);
       } else {
-        updTrim(m, out_.speeds[k], opt_.trim, c.work);
+        try {
+          updTrim(m, out_.speeds[k], opt_.trim, c.work);
+        } catch (const TrimError&) {
+          if (!opt_.keepFailedSpeeds) throw;
+          c.work = calcTrim(m, out_.speeds[k], opt_.trim);
+          c.lastJ.resize(0, 0);
+        }
         out_.models[k] = linearizeInPlace(m, c.work, c.lo);
       }
       return true;

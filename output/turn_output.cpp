@@ -90,13 +90,13 @@ void writeHandsFreeJson(const std::filesystem::path& dir, const VehicleModel& mo
 std::string formatHandsFreeTable(const VehicleModel& model, const std::vector<HandsFreeTurn>& turns, size_t defaultIndex) {
   constexpr double kDeg = 180 / M_PI;
   std::ostringstream os;
-  os << "  " << std::setw(12) << "speed (m/s)" << std::setw(12) << "steer (deg)" << std::setw(18) << "steer torque (N m)"
-     << std::setw(16) << "path radius (m)" << "  from straight running\n";
+  os << "  " << std::setw(12) << "speed (m/s)" << std::setw(13) << "steer (deg)" << std::setw(20) << "steer torque (N m)"
+     << std::setw(17) << "path radius (m)" << "  from straight running\n";
   for (size_t i = 0; i < turns.size(); ++i) {
     const nlohmann::json j = makeTrimJson(model, restoreTrim(model, turns[i].trim));
     os << (i == defaultIndex ? "* " : "  ") << std::setprecision(6) << std::setw(12) << j["speed_mps"].get<double>()
-       << std::setw(12) << j["steer_rad"].get<double>() * kDeg << std::setw(18) << j["steer_torque_Nm"].get<double>()
-       << std::setw(16) << (j["path_radius_m"].is_null() ? INFINITY : j["path_radius_m"].get<double>()) << "  "
+       << std::setw(13) << j["steer_rad"].get<double>() * kDeg << std::setw(20) << j["steer_torque_Nm"].get<double>()
+       << std::setw(17) << (j["path_radius_m"].is_null() ? INFINITY : j["path_radius_m"].get<double>()) << "  "
        << (turns[i].continuesFromStraight ? "yes" : "no") << "\n";
   }
   os << "  (* the default: the turn continuing from straight running, or the one nearest --speed)\n";

@@ -216,6 +216,54 @@ TEST(TurnTrim, HandsFreeTurnsTendToTheCapsizeSpeed) {
   EXPECT_LT(std::abs(lastRatioError), 1e-3 * std::abs(nullRatio));
 }
 
+// Every hands-free turn of the Whipple bicycle on a wide speed grid is listed, sorted by speed, each with
+// zero steer torque; at 20 deg there are turns at 3.14 m/s (23 deg of steer) and 5.53 m/s (7 deg), and
+// the one marked as continuing from straight running is the default. The check of the marking, apart
+// from how it is found: from 2 deg (where it lies within 0.05 m/s of the capsize speed of Meijaard et
+// al. 2007, Table 2) up to 20 deg, the marked turn at each roll is the listed turn nearest the marked one
+// of the roll before (the branch is continuous in roll), and its speed falls as the roll grows.
+TEST(TurnTrim, EveryHandsFreeTurnListedAndTheOneFromStraightRunningMarked) {
+  const VehicleModel model(loadScenario(kWhipple));
+  std::vector<double> speeds;
+  for (int i = 1; i <= 40; ++i) speeds.push_back(0.25 * i);
+  double previous = 6.02426201538837;  // the capsize speed
+  for (double deg : {2.0, 5.0, 10.0, 20.0}) {
+    TrimOptions opt;
+    opt.roll = deg * M_PI / 180;
+    const std::vector<HandsFreeTurn> turns = calcHandsFreeTurns(model, speeds, opt);
+    ASSERT_FALSE(turns.empty());
+    int marked = -1;
+    size_t nearest = 0;
+    for (size_t i = 0; i < turns.size(); ++i) {
+      const TrimResult t = restoreTrim(model, turns[i].trim);
+      EXPECT_NEAR(model.getInput(t.state, Input::SteerTorque), 0.0, 1e-9) << deg << " deg, turn " << i;
+      if (i > 0) EXPECT_LT(turns[i - 1].trim.speed, turns[i].trim.speed);
+      if (turns[i].continuesFromStraight) {
+        EXPECT_EQ(marked, -1) << "two turns marked at " << deg << " deg";
+        marked = static_cast<int>(i);
+      }
+      if (std::abs(turns[i].trim.speed - previous) < std::abs(turns[nearest].trim.speed - previous)) nearest = i;
+    }
+    ASSERT_GE(marked, 0) << "no turn marked at " << deg << " deg";
+    EXPECT_EQ(static_cast<size_t>(marked), nearest) << deg << " deg";
+    EXPECT_EQ(chooseHandsFreeTurn(turns), static_cast<size_t>(marked));
+    EXPECT_LT(turns[marked].trim.speed, previous);
+    if (deg == 2.0) EXPECT_NEAR(turns[marked].trim.speed, previous, 0.05);
+    previous = turns[marked].trim.speed;
+    if (deg != 20.0) continue;
+    auto findTurn = [&](double v) {
+      for (const HandsFreeTurn& t : turns)
+        if (std::abs(t.trim.speed - v) < 0.01) return restoreTrim(model, t.trim);
+      ADD_FAILURE() << "no hands-free turn near " << v << " m/s at 20 deg";
+      return restoreTrim(model, turns[marked].trim);
+    };
+    const int steer = model.getIndices().steer;
+    EXPECT_NEAR(std::abs(findTurn(3.14).state.getQ()[steer]) * 180 / M_PI, 23.0, 0.5);
+    EXPECT_NEAR(std::abs(findTurn(5.53).state.getQ()[steer]) * 180 / M_PI, 7.0, 0.5);
+    EXPECT_NEAR(turns[marked].trim.speed, 5.53, 0.01);
+  }
+}
+
 // A failed turn names the speed and the requested roll.
 TEST(TurnTrim, FailureNamesSpeedAndRoll) {
   const VehicleModel model(loadScenario(kWhipple));

@@ -71,6 +71,71 @@ TEST(TurnCli, HandsFreeTrimHasZeroSteerTorque) {
   EXPECT_TRUE(j["tyres"].empty());                        // rolling constraints report no tyre outputs
 }
 
+// trim.json of --hands-free lists every turn on the grid, sorted by speed, the one continuing from
+// straight running marked and the default (the Whipple bicycle at 20 deg: 3.14 and 5.53 m/s, the latter
+// reached from the capsize speed).
+TEST(TurnCli, HandsFreeTrimListsEveryTurn) {
+  const auto dir = makeTempDir("turn_cli_hands_free_list");
+  std::string output;
+  ASSERT_EQ(test::runMotostab({"trim", kScenarios + "whipple-benchmark.yaml", "--roll-deg", "20", "--hands-free",
+                               "--speeds", "0.5:8:0.25", "--out", "h"},
+                              dir.string(), output),
+            0)
+      << output;
+  std::ifstream in(dir / "h" / "trim.json");
+  const nlohmann::json j = nlohmann::json::parse(in);
+  const nlohmann::json& turns = j.at("hands_free_turns");
+  ASSERT_GE(turns.size(), 2u);
+  int marked = 0, defaults = 0;
+  bool slow = false;
+  for (size_t i = 0; i < turns.size(); ++i) {
+    const nlohmann::json& t = turns[i];
+    EXPECT_EQ(t.at("steer_torque_Nm").get<double>(), 0.0);
+    EXPECT_GT(t.at("path_radius_m").get<double>(), 0.0);
+    if (i > 0) EXPECT_LT(turns[i - 1].at("speed_mps").get<double>(), t.at("speed_mps").get<double>());
+    slow = slow || std::abs(t.at("speed_mps").get<double>() - 3.14) < 0.01;
+    if (t.at("continues_from_straight_running").get<bool>()) {
+      ++marked;
+      EXPECT_NEAR(t.at("speed_mps").get<double>(), 5.53, 0.01);
+      EXPECT_TRUE(t.at("default").get<bool>());
+    }
+    defaults += t.at("default").get<bool>();
+  }
+  EXPECT_TRUE(slow) << "the 3.14 m/s turn is missing";
+  EXPECT_EQ(marked, 1);
+  EXPECT_EQ(defaults, 1);
+  EXPECT_TRUE(j.at("continues_from_straight_running").get<bool>());  // the top level is the default turn
+  EXPECT_NEAR(j.at("speed_mps").get<double>(), 5.53, 0.01);
+  EXPECT_NE(output.find("from straight running"), std::string::npos) << output;
+}
+
+// A speed x roll map keeps the points that trim: the enduro's turn at 1 m/s and 5 deg does not (the
+// roll continuation stalls), the other points are written, the failed one is listed with its residual,
+// and the exit code is 3 (docs/commands.md, exit codes).
+TEST(TurnCli, PartialMapKeepsThePointsThatTrimAndExits3) {
+  const auto dir = makeTempDir("turn_cli_partial_map");
+  std::string output;
+  EXPECT_EQ(test::runMotostab({"sweep", kScenarios + "enduro.yaml", "--roll-deg", "0:5:5", "--speeds", "1:3:1", "--out", "m"},
+                              dir.string(), output),
+            3)
+      << output;
+  EXPECT_NE(output.find("1 of 6 points of the map did not trim"), std::string::npos) << output;
+  std::ifstream in(dir / "m" / "map_summary.json");
+  const nlohmann::json j = nlohmann::json::parse(in);
+  EXPECT_EQ(j.at("failed_points").get<int>(), 1);
+  std::ifstream rollIn(dir / "m" / "roll_+005.0deg" / "summary.json");
+  const nlohmann::json roll = nlohmann::json::parse(rollIn);
+  ASSERT_EQ(roll.at("failed_speeds").size(), 1u);
+  EXPECT_EQ(roll["failed_speeds"][0].at("speed_mps").get<double>(), 1.0);
+  EXPECT_GT(roll["failed_speeds"][0].at("residual").get<double>(), 1e-6);
+  std::ifstream csv(dir / "m" / "map.csv");
+  std::string line;
+  std::set<std::string> points;  // roll and speed of every row
+  std::getline(csv, line);
+  while (std::getline(csv, line)) points.insert(line.substr(0, line.find(',', line.find(',') + 1)));
+  EXPECT_EQ(points.size(), 5u) << "the five points that trim";
+}
+
 TEST(TurnCli, BadTurnInputExits2AndSaysWhatToChange) {
   const std::string w = kScenarios + "whipple-benchmark.yaml";
   struct Case {
