@@ -134,7 +134,7 @@ py::dict uncertainty(const ScenarioHandle& s, long long samples, long long seed,
   std::vector<bool> ok(n);
   py::list paths, modes, reasons;
   for (const auto& param : out.setup.params) paths.append(param.path);
-  for (const char* mode : uncertainty::kUncertainModes) modes.append(mode);
+  for (const analysis::ModeLabel mode : uncertainty::kUncertainModes) modes.append(analysis::toString(mode));
   for (size_t t = 0; t < n; ++t) {
     const auto& task = out.tasks[t];
     for (size_t j = 0; j < task.parameters.size() && j < p; ++j) parameters[t * p + j] = task.parameters[j];
