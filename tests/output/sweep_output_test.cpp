@@ -186,7 +186,7 @@ TEST(SweepOutput, LinearModelFilesFollowTheReadme) {
   }
   const auto dir = makeTempDir("linear_output");
   lin.labels.assign(n - 1, ModeLabel::Weave);
-  EXPECT_THROW(writeLinearModel(dir, lin), std::invalid_argument);
+  EXPECT_THROW(writeLinearModel(dir, lin), std::logic_error);
   lin.labels.clear();
   for (int k = 0; k < n; ++k)
     lin.labels.push_back(std::vector<ModeLabel>{ModeLabel::Weave, ModeLabel::Capsize, ModeLabel::Castor, ModeLabel::Other}[rng.drawIndex(4)]);
