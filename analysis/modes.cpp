@@ -186,6 +186,7 @@ struct Root {
   bool oscillatory = false;
   ModeContent c;
   double rollYawLateral = 0, steer = 0, inPlane = 0, longitudinal = 0, compliance = 0, auxiliary = 0;
+  double steerAngle = 0;  // of an oscillation: calcSteerAngleShare
   StateRole topCompliance = StateRole::Compliance;  // the compliance role with the largest share
   std::optional<ModeLabel> label;
   int size() const { return conjugate >= 0 ? 2 : 1; }
@@ -202,6 +203,22 @@ ModeLabel getComplianceLabel(StateRole r) {
     case StateRole::RiderLean: return ModeLabel::RiderLean;
     default: return ModeLabel::Compliance;
   }
+}
+
+// |steer|^2 over the sum of |angle|^2 of the angular coordinates of eigenvector k (roll, yaw, pitch,
+// steer, suspension, compliance; all in rad).
+double calcSteerAngleShare(const LinearModel& lin, int k) {
+  double steer = 0, all = 0;
+  for (size_t i = 0; i < lin.states.size(); ++i) {
+    const LinearState& st = lin.states[i];
+    const bool angle = st.role == StateRole::Roll || st.role == StateRole::Yaw || st.role == StateRole::Pitch ||
+                       st.role == StateRole::Steer || st.role == StateRole::Suspension || isComplianceRole(st.role);
+    if (st.getKind() != StateKind::Coordinate || !angle) continue;
+    const double a = std::norm(lin.eigenvectors(i, k));
+    all += a;
+    if (st.role == StateRole::Steer) steer += a;
+  }
+  return all > 0 ? steer / all : 0.0;
 }
 
 // Roots of lin with their content: each complex pair once (the member with the positive imaginary part).
@@ -233,6 +250,7 @@ std::vector<Root> collectRoots(const LinearModel& lin) {
     r.longitudinal = r.c.calcLongitudinal();
     r.compliance = r.c.calcCompliance();
     r.auxiliary = r.c.calcAuxiliary();
+    if (r.oscillatory) r.steerAngle = calcSteerAngleShare(lin, r.k);
     double top = -1;
     for (int s = 0; s < kNumStateRoles; ++s)
       if (isComplianceRole(static_cast<StateRole>(s)) && r.c.role[s] > top) top = r.c.role[s], r.topCompliance = static_cast<StateRole>(s);
@@ -296,11 +314,10 @@ constexpr double kWobbleSteer = 0.02;
 
 // The lateral rigid-body modes (docs/methods.md): capsize (slowest roll-led real root), castor (most
 // negative steer-led real root), weave (of the lateral oscillations the one with the most roll, or the
-// pair of real roots it splits into at low speed), wobble (of the other oscillations, the one with the
-// most steer, more steer than roll); in a turn, a slow pair for a capsize joined with another root.
+// pair of real roots it splits into at low speed), wobble (of the other oscillations with more steer than
+// roll, the one whose steer angle leads the angles most); in a turn, a slow pair for a capsize joined with another root.
 void labelLateralModes(std::vector<Root>& roots, Capacity& cap) {
   auto roll = [](const Root& r) { return r.c.get(StateRole::Roll); };
-  auto moreSteer = [](const Root& a, const Root& b) { return a.steer > b.steer; };
   auto moreRoll = [&](const Root& a, const Root& b) { return roll(a) > roll(b); };
   // Roll among the mechanical motion: a root that the tyre lags carry counts less.
   auto moreMechanicalRoll = [&](const Root& a, const Root& b) {
@@ -329,13 +346,16 @@ void labelLateralModes(std::vector<Root>& roots, Capacity& cap) {
     cap.take(*split1, ModeLabel::Weave), cap.take(*split2, ModeLabel::Weave);
   else if (Root* osc = pickBest(roots, [&](const Root& r) { return r.oscillatory && lateralFamily(r); }, moreMechanicalRoll))
     cap.take(*osc, ModeLabel::Weave);
+  // Of the oscillations with enough steer energy, the one where the steer angle has the largest share
+  // of the angles: the front frame turning about the steer axis, whatever energy a small pitch of the
+  // frames on stiff tyres carries with it (in a turn, steer and pitch couple).
   if (Root* w = pickBest(
           roots,
           [](const Root& r) {
             return r.oscillatory && r.auxiliary <= 0.5 && r.steer > r.c.get(StateRole::Roll) && r.steer >= kWobbleSteer &&
                    r.steer >= r.c.get(r.topCompliance);
           },
-          moreSteer))
+          [](const Root& a, const Root& b) { return a.steerAngle > b.steerAngle; }))
     cap.take(*w, ModeLabel::Wobble);
   // In a turn the capsize root may join another into a slow pair: at most half the weave's |lambda|.
   const Root* weave = nullptr;
