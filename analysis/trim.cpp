@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <functional>
+#include <limits>
 #include <sstream>
 #include <vector>
 
@@ -215,6 +216,7 @@ class TrimNewton {
   void iterate() {
     int it = 0;
     double norm = r_.lpNorm<Eigen::Infinity>();
+    bool converged = false;
     std::vector<double> x0(n_);
     Eigen::VectorXd rTrial;
     while (norm > opt_.tolerance && it < opt_.maxIterations) {
@@ -234,7 +236,10 @@ class TrimNewton {
       if (!(trialNorm < norm)) {
         for (int j = 0; j < n_; ++j) fn_.set(s_, unknowns_[j], x0[j]);
         residual_(s_, r_);
-        if (jacobianIsCurrent_) break;  // no descent even with a fresh Jacobian
+        if (jacobianIsCurrent_) {  // no descent even with a fresh Jacobian: done if at the round-off floor
+          converged = norm <= calcRoundOffFloor(x0);
+          break;
+        }
         computeJacobian();
         continue;
       }
@@ -248,10 +253,24 @@ class TrimNewton {
     res_.residualNorm = norm;
     if (J_.size() == 0 && norm <= opt_.tolerance) computeJacobian();
     res_.jacobian.swap(J_);
-    if (!(norm <= opt_.tolerance)) throw TrimError(speed_, norm, it, opt_.roll);
+    if (!(norm <= opt_.tolerance) && !converged) throw TrimError(speed_, norm, it, opt_.roll);
   }
 
  private:
+  // The residual's round-off floor at the unknowns x (with J_ current there): what rounding the unknowns
+  // to machine precision moves it by, 1000 eps max_i sum_j |J_ij| max(1, |x_j|). Stiff tyres (Sharp's
+  // radial 1e7 N/m) put it above opt.tolerance; elsewhere it is far below, and it is used only when
+  // Newton stops descending with a fresh Jacobian.
+  double calcRoundOffFloor(const std::vector<double>& x) const {
+    double floor = 0;
+    for (Eigen::Index i = 0; i < J_.rows(); ++i) {
+      double row = 0;
+      for (int j = 0; j < n_; ++j) row += std::abs(J_(i, j)) * std::max(1.0, std::abs(x[j]));
+      floor = std::max(floor, row);
+    }
+    return 1e3 * std::numeric_limits<double>::epsilon() * floor;
+  }
+
   // Central differences of the residual along each unknown at the current iterate.
   void computeJacobian() {
     J_.resize(r_.size(), n_);

@@ -28,7 +28,9 @@ enum class TurnCondition {
 };
 
 struct TrimOptions {
-  double tolerance = 1e-11;   ///< on the residual's infinity norm (rad/s^2, m/s^2, m, m/s)
+  /// On the residual's infinity norm (rad/s^2, m/s^2, m, m/s); where Newton stops descending with a fresh
+  /// Jacobian, the residual's round-off floor (1000 eps max_i sum_j |J_ij| max(1, |x_j|)) also passes.
+  double tolerance = 1e-11;
   int maxIterations = 40;
   double jacobianStep = 1e-6;
   /// Steady turn at this roll angle (rad, > 0 leans right, |roll| < 89 deg); NaN: straight running.
