@@ -43,7 +43,7 @@ TEST(Prediction, NoDataIsAClearError) {
   try {
     Predictor(kBenchmark, {}, none);
     ADD_FAILURE() << "no error";
-  } catch (const std::invalid_argument& e) {
+  } catch (const std::logic_error& e) {
     EXPECT_NE(std::string(e.what()).find("no eigenvalue rows and no response runs"), std::string::npos) << e.what();
   }
 }

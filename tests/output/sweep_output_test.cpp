@@ -174,7 +174,7 @@ TEST(SweepOutput, LinearModelFilesFollowTheReadme) {
   std::vector<std::string> modes;
   for (int k = 0; k < n; ++k) modes.push_back(std::vector<std::string>{"weave", "capsize", "castor", "other"}[rng.drawIndex(4)]);
   const auto dir = makeTempDir("linear_output");
-  EXPECT_THROW(writeLinearModel(dir, lin, std::vector<std::string>(n - 1, "weave")), std::invalid_argument);
+  EXPECT_THROW(writeLinearModel(dir, lin, std::vector<std::string>(n - 1, "weave")), std::logic_error);
   writeLinearModel(dir, lin, modes);
 
   auto expectMatrix = [&](const std::string& file, const Eigen::MatrixXd& M, const std::vector<std::string>& cols) {
