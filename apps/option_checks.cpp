@@ -3,6 +3,7 @@
 #include <cmath>
 #include <sstream>
 
+#include "io/csv.h"
 #include "io/number.h"
 #include "io/result_error.h"
 #include "scenario/scenario.h"
