@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <map>
 
+#include "diagnosis/findings.h"
 #include "io/csv.h"
 #include "scenario/extension_specs.h"
 #include "scenario/parameter_paths.h"
@@ -159,9 +160,11 @@ MeasuredEigenvalue readEigenvalueRow(const CsvTable& t, size_t i) {
   if (e.hasRange && !(e.speedMin >= 0 && e.speedMin <= e.speed && e.speed <= e.speedMax))
     failRow(t, i, "speed_min_mps", "need 0 <= speed_min_mps <= speed_mps <= speed_max_mps");
   if (const std::string why = checkSpeed(e.speedMax); e.hasRange && !why.empty()) failRow(t, i, "speed_max_mps", why);
-  const auto& labels = getModeLabels();
-  if (!e.mode.empty() && std::find(labels.begin(), labels.end(), e.mode) == labels.end())
-    failRow(t, i, "mode", "unknown mode label '" + e.mode + "'");
+  if (!e.mode.empty()) {
+    const auto label = parseModeLabel(e.mode);
+    if (!label) failRow(t, i, "mode", "unknown mode label '" + e.mode + "'");
+    e.mode = *label;
+  }
   return e;
 }
 
@@ -336,6 +339,12 @@ const std::vector<std::string>& getModeLabels() {
   return labels;
 }
 
+std::optional<std::string> parseModeLabel(const std::string& text) {
+  const auto& labels = getModeLabels();
+  if (std::find(labels.begin(), labels.end(), text) == labels.end()) return std::nullopt;
+  return text;
+}
+
 MeasuredData loadMeasuredData(const std::string& path) {
   YamlMap root = loadYamlFile(path);
   MeasuredData data;
@@ -343,10 +352,11 @@ MeasuredData loadMeasuredData(const std::string& path) {
   data.name = root.getString("name", fs::path(path).stem().string());
   for (auto& e : getMapList(root, "eigenvalues")) readEigenvalueFile(e, data);
   for (auto& r : getMapList(root, "responses")) data.responses.push_back(readRun(r));
+  for (auto& f : getMapList(root, "findings")) data.findings.push_back(readFinding(f));
   data.steerRateAmplitude = root.getPositive("steer_rate_amplitude_rad_s", 0.0);
   root.finish();
-  if (data.eigenvalues.empty() && data.responses.empty())
-    root.fail("", "no measurements: give eigenvalues and/or responses");
+  if (data.eigenvalues.empty() && data.responses.empty() && data.findings.empty())
+    root.fail("", "no measurements: give eigenvalues, responses and/or findings");
   return data;
 }
 
