@@ -45,6 +45,7 @@ void BM_EnduroTwistSweep401PythonVsCpp(benchmark::State& st) {
   const motostab::scenario::Scenario scenario = motostab::scenario::loadScenario(kEnduro, {"swingarm.compliance=twist"});
   motostab::analysis::SweepOptions opt;
   opt.start = 0, opt.stop = 40, opt.step = 0.1;
+  opt.linearize.computeB = true;  // the sweep `motostab sweep` and motostab.sweep both run
   std::vector<double> cpp, python, ratio, overhead, model, cpuRatio, cpuOverhead;
   for (auto _ : st) {
     auto t0 = Clock::now();

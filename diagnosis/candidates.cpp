@@ -243,6 +243,35 @@ void addTyreScalingCandidates(const YAML::Node& tree, std::vector<Candidate>& ou
   }
 }
 
+// The rider's arms on the handlebar (vehicle/rider_arms.h): added steer inertia fixed at Sharp's
+// (1994) hands-on 0.20 kg m^2 (front-frame steer inertia 0.71 -> 0.91), stiffness and damping free with
+// Student-t priors from the published hands-on values: Sharp (1994) k = 50 N m/rad, c = 6 - 1 = 5 N m s/rad
+// added by the hands; the "arms yaw" spring-damper of the sport-bike model of Passigato et al. (2020, Appl.
+// Sci. 10:6826; data after Sharp, Evangelou & Limebeer 2004) 1053 N m/rad, 19.3 N m s/rad. Priors:
+// k 50 +/- 300 (t, nu = 4: both values inside 3.5 sigma), c 5 +/- 8; bounds [0, 2000] and [0, 40]. The
+// candidate is on from its start (J is not zero at k = c = 0): its likelihood ratio is read as nested
+// at k = c = 0 with J's 0.2 kg m^2 a fixed part of the hands-on model. Needs a rider on the rear frame.
+void addRiderArmsCandidate(const YAML::Node& tree, std::vector<Candidate>& out, std::vector<std::string>& unavailable) {
+  if (tree["rider_arms"]) {
+    unavailable.push_back("rider_arms: the scenario has them already (their values are parameter candidates)");
+    return;
+  }
+  const auto rf = getRearFrame(tree);
+  const double mB = rf ? rf->mass : getScalar(tree, "rear_frame", "mass_kg", 0);
+  if (!(mB > kRiderMass_kg)) {
+    unavailable.push_back("rider_arms: the rear frame (" + formatNumber(mB) + " kg) is lighter than a " +
+                          formatNumber(kRiderMass_kg) + " kg rider: no rider's hands on the handlebar");
+    return;
+  }
+  CandidateParameter k = makeFreeParameter("stiffness_Nm_per_rad", "rider_arms.stiffness_Nm_per_rad", 0, 2000, 50, 1e-2);
+  k.priorMean = 50, k.priorSigma = 300, k.off = 0, k.offAtBound = true;
+  CandidateParameter c = makeFreeParameter("damping_Nms_per_rad", "rider_arms.damping_Nms_per_rad", 0, 40, 5, 1e-3);
+  c.priorMean = 5, c.priorSigma = 8, c.off = 0, c.offAtBound = true;
+  out.push_back({"rider_arms",
+                 {"rider_arms={inertia_kgm2: " + formatNumber(kRiderArmsInertia_kgm2) + ", stiffness_Nm_per_rad: 50, damping_Nms_per_rad: 5}"},
+                 {k, c}});
+}
+
 }  // namespace
 
 std::vector<Candidate> listCandidates(const YAML::Node& tree,
@@ -255,6 +284,7 @@ std::vector<Candidate> listCandidates(const YAML::Node& tree,
   else if (!steerRate.source.empty()) (unavailable ? *unavailable : none).push_back("steer_friction: " + steerRate.source);
   if (!tree["fork_compliance"]) out.push_back(makeForkCompliance(tree));
   addRiderLeanCandidate(tree, out, unavailable ? *unavailable : none);
+  addRiderArmsCandidate(tree, out, unavailable ? *unavailable : none);
   addSwingarmCandidates(tree, out);
   addTyreSlipCandidate(tree, out);
   addSteerControllerCandidates(tree, out);

@@ -55,6 +55,8 @@ struct Candidate {
 /// wheels. `rider_lean` (the rider's upper body leaning passively, its stiffness free) where the rear
 /// frame holds a rider: heavier than kRiderMass_kg and no `rider_lean` section yet; otherwise a line
 /// in `unavailable` says why (a riderless vehicle such as Kooijman's Silvercity has no rider to lean).
+/// `rider_arms` (the rider's hands on the bars: steer stiffness and damping free, inertia
+/// kRiderArmsInertia_kgm2) likewise where the rear frame holds a rider and no `rider_arms` is given.
 /// With a `steer_controller`: `steer_controller_gain` (its gain_factor free) and, without a delay,
 /// `steer_controller_delay` (delay_s free).
 /// `steer_friction` (physical_candidates.h) where `steerRate` holds a steer-rate amplitude; else a
@@ -63,6 +65,10 @@ std::vector<Candidate> listCandidates(const YAML::Node& scenarioTree,
                                       const std::vector<std::pair<std::string, double>>& uncertainty,
                                       std::vector<std::string>* unavailable = nullptr,
                                       const SteerRateAmplitude& steerRate = {});
+
+/// Steer inertia the `rider_arms` candidate adds with the hands on the bars: Sharp (1994), front-frame
+/// steer inertia 0.71 kg m^2 hands off, 0.91 hands on.
+constexpr double kRiderArmsInertia_kgm2 = 0.20;
 
 /// Mass of the rider the `rider_lean` candidate assumes (an estimate), kg.
 constexpr double kRiderMass_kg = 75;

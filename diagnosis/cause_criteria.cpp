@@ -61,9 +61,13 @@ void judgeCandidate(const FitProblem& problem, const std::vector<const Candidate
   crossValidate(problem, makeModel(causes, nullptr), fit.noise, base);
   if (fit.hasCv) {
     fit.foldsBetter = 0;
-    for (size_t f = 0; f < fit.foldRms.size(); ++f)  // a failed fold never counts as better
+    int even = 0;  // folds both predict exactly (findings that hold either way): no evidence, left out
+    for (size_t f = 0; f < fit.foldRms.size(); ++f) {  // a failed fold never counts as better
       fit.foldsBetter += !fit.foldFailed[f] && fit.foldRms[f] < base.foldRms[f];
-    if (fit.foldsBetter < opt.minFoldShare * problem.numFolds - 1e-9) fit.failed.push_back("CV better in < 80 % of folds");
+      even += !fit.foldFailed[f] && fit.foldRms[f] == 0 && base.foldRms[f] == 0;
+    }
+    if (fit.foldsBetter == 0 || fit.foldsBetter < opt.minFoldShare * (problem.numFolds - even) - 1e-9)
+      fit.failed.push_back("CV better in < 80 % of folds");
   }
 }
 

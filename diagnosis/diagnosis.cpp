@@ -1,9 +1,11 @@
 #include "diagnosis/diagnosis.h"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
 #include "diagnosis/controller_groups.h"
+#include "diagnosis/findings.h"
 #include "diagnosis/fit_problem.h"
 #include "diagnosis/model_fit.h"
 #include "diagnosis/profile_likelihood.h"
@@ -62,6 +64,22 @@ std::vector<Candidate> selectCandidates(const ScenarioSource& source, const Meas
       } else {
         ++it;
       }
+  const std::vector<std::string> findingPaths = getFindingPaths(data.findings);
+  const auto setsFindingPath = [&](const Candidate& c) {
+    std::vector<std::string> paths;
+    for (const auto& item : c.fixedOverrides.getItems()) paths.push_back(item.path);
+    for (const auto& p : c.parameters) paths.push_back(p.path);
+    for (const auto& p : paths)
+      if (std::find(findingPaths.begin(), findingPaths.end(), p) != findingPaths.end()) return p;
+    return std::string();
+  };
+  for (auto it = listed.begin(); it != listed.end();)
+    if (const std::string p = setsFindingPath(*it); !p.empty()) {
+      unavailable.push_back(it->name + ": it sets " + p + ", which a finding's variant or change sets");
+      it = listed.erase(it);
+    } else {
+      ++it;
+    }
   try {
     return filterCandidates(listed, opt.candidates);
   } catch (const InputError& e) {  // say why a known candidate is missing
@@ -151,6 +169,7 @@ DiagnosisResult runDiagnosis(std::shared_ptr<const ScenarioSource> source, const
   if (!opt.reuseLinearModels) opt.sweepCache = nullptr;
   else if (!opt.sweepCache) opt.sweepCache = std::make_shared<SweepCache>();
   if (opt.progress) opt.progress("reference sweep", 0, 1);
+  checkFindingChanges(*source, opt.overrides, data.findings);
   const Predictor predictor(source, opt.overrides, data, opt.sweepCache);
   const FitProblem problem(predictor, data, opt.folds);
   std::vector<std::string> unavailable;

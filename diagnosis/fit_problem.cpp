@@ -5,6 +5,7 @@
 #include <numeric>
 #include <stdexcept>
 
+#include "diagnosis/findings.h"
 #include "diagnosis/priors.h"
 #include "scenario/parameter_paths.h"
 
@@ -77,6 +78,7 @@ FitProblem::FitProblem(const Predictor& predictor, const MeasuredData& data, int
     : predictor_(predictor), data_(data) {
   addEigenvalueObservations();
   addResponseObservations();
+  addFindingObservations();
   poolSmallComponents();
   markGivenComponents();
   assignFolds(folds);
@@ -200,15 +202,36 @@ void FitProblem::addResponseObservations() {
   }
 }
 
-// Units (rows and runs) sorted by speed and cut into contiguous blocks.
+// Each finding one observation, predicted from its probe rows (after the measured rows).
+void FitProblem::addFindingObservations() {
+  const int rows = static_cast<int>(data_.eigenvalues.size()), runs = static_cast<int>(data_.responses.size());
+  int probe = rows;
+  for (size_t f = 0; f < data_.findings.size(); ++f) {
+    const Finding& finding = data_.findings[f];
+    findingProbeStart_.push_back(probe);
+    probe += static_cast<int>(countProbeRows(finding));
+    Observation o;
+    o.knownSigma = finding.tolerance;
+    o.component = addComponent("finding" + std::to_string(f + 1) + "." + analysis::toString(finding.mode) + "." + getFindingKindName(finding.kind), true);
+    componentSigma[o.component] = finding.tolerance;
+    o.unit = rows + runs + static_cast<int>(f);
+    o.speed = 0.5 * (finding.speedMin + finding.speedMax);
+    o.finding = static_cast<int>(f);
+    observations.push_back(o);
+  }
+}
+
+// Units (rows, runs and findings) sorted by speed and cut into contiguous blocks.
 void FitProblem::assignFolds(int folds) {
   const int rows = static_cast<int>(data_.eigenvalues.size()), runs = static_cast<int>(data_.responses.size());
-  const int units = rows + runs;
-  if (folds <= 0) folds = rows == 0 ? runs : 5;
+  const int finds = static_cast<int>(data_.findings.size());
+  const int units = rows + runs + finds;
+  if (folds <= 0) folds = rows + finds == 0 ? runs : 5;
   numFolds = std::max(1, std::min(folds, units));
   std::vector<double> speed(units);
   for (int i = 0; i < rows; ++i) speed[i] = data_.eigenvalues[i].speed;
   for (int r = 0; r < runs; ++r) speed[rows + r] = data_.responses[r].speed;
+  for (int f = 0; f < finds; ++f) speed[rows + runs + f] = 0.5 * (data_.findings[f].speedMin + data_.findings[f].speedMax);
   std::vector<int> order(units), foldOf(units);
   std::iota(order.begin(), order.end(), 0);
   std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return speed[a] < speed[b]; });
@@ -235,6 +258,7 @@ Prediction FitProblem::predict(const ModelSpec& model, const Eigen::VectorXd& x,
 }
 
 double FitProblem::getPredicted(const Prediction& p, const Observation& o) const {
+  if (o.finding >= 0) return calcFindingViolation(data_.findings[o.finding], &p.eigenvalues[findingProbeStart_[o.finding]]);
   if (o.row >= 0) return o.part ? p.eigenvalues[o.row].imag() : p.eigenvalues[o.row].real();
   return p.responses[o.run].predicted[o.signal][o.sample];
 }

@@ -11,7 +11,8 @@
 
 namespace motostab::diagnosis {
 
-/// One scalar observation: the real or imaginary part of an eigenvalue row, or one response sample.
+/// One scalar observation: the real or imaginary part of an eigenvalue row, one response sample, or
+/// one finding (value 0, its violation predicted, its tolerance as known sigma: findings.h).
 struct Observation {
   double value = 0;         ///< measured (1/s, rad/s, or the signal column's unit)
   double knownSigma = 0;    ///< stderr / noise_std when given, else 0
@@ -21,6 +22,7 @@ struct Observation {
   double speed = 0;         ///< m/s
   int row = -1, part = 0;   ///< eigenvalue row and part (0 real, 1 imag)
   int run = -1, signal = 0, sample = 0;
+  int finding = -1;         ///< index into MeasuredData::findings
 };
 
 /// A model: the candidates switched on together, with their parameters stacked.
@@ -43,8 +45,8 @@ class FitProblem {
  public:
   FitProblem(const Predictor& predictor, const MeasuredData& data, int folds);
   std::vector<Observation> observations;
-  /// weave.real, weave.imag, run1.gyro_V, ...; <mode>.real+imag where one part had fewer than
-  /// kMinEstimatedRows rows without stderr (poolSmallComponents).
+  /// weave.real, weave.imag, run1.gyro_V, finding1.wobble.stable, ...; <mode>.real+imag where one
+  /// part had fewer than kMinEstimatedRows rows without stderr (poolSmallComponents).
   std::vector<std::string> components;
   std::vector<double> componentSigma;    ///< current sigma of each component (unknown ones estimated)
   std::vector<bool> componentKnown;
@@ -96,6 +98,7 @@ class FitProblem {
  private:
   void addEigenvalueObservations();
   void addResponseObservations();
+  void addFindingObservations();
   void assignFolds(int folds);
   void poolSmallComponents();
   void markGivenComponents();
@@ -104,6 +107,7 @@ class FitProblem {
   int addComponent(const std::string& name, bool known);
   const Predictor& predictor_;
   const MeasuredData& data_;
+  std::vector<int> findingProbeStart_;  ///< per finding: its first probe row in Prediction::eigenvalues
 };
 
 }  // namespace motostab::diagnosis

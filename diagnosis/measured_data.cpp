@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <map>
 
+#include "diagnosis/findings.h"
 #include "io/csv.h"
 #include "scenario/extension_specs.h"
 #include "scenario/parameter_paths.h"
@@ -343,10 +344,11 @@ MeasuredData loadMeasuredData(const std::string& path) {
   data.name = root.getString("name", fs::path(path).stem().string());
   for (auto& e : getMapList(root, "eigenvalues")) readEigenvalueFile(e, data);
   for (auto& r : getMapList(root, "responses")) data.responses.push_back(readRun(r));
+  for (auto& f : getMapList(root, "findings")) data.findings.push_back(readFinding(f));
   data.steerRateAmplitude = root.getPositive("steer_rate_amplitude_rad_s", 0.0);
   root.finish();
-  if (data.eigenvalues.empty() && data.responses.empty())
-    root.fail("", "no measurements: give eigenvalues and/or responses");
+  if (data.eigenvalues.empty() && data.responses.empty() && data.findings.empty())
+    root.fail("", "no measurements: give eigenvalues, responses and/or findings");
   return data;
 }
 

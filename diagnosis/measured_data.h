@@ -52,11 +52,41 @@ struct ResponseRun {
   std::vector<std::string> controller;  ///< `steer_controller.*` overrides of its `controller:` mapping
 };
 
+/// What a paper, road test or rider reports of a mode without its eigenvalues
+/// (docs/measured-data-format.md, Findings; likelihood: diagnosis/findings.h).
+enum class FindingKind {
+  Stable,           ///< the mode's real part is <= 0 over the speeds
+  Unstable,         ///< the mode's real part is >= 0 over the speeds
+  FrequencyWithin,  ///< its frequency |imag| / (2 pi) lies in [frequencyMin, frequencyMax] over the speeds
+  MostStableNear,   ///< its real part is lowest over the speeds near `speed`
+  ChangeBelow       ///< `change` moves its eigenvalue by less than `percent` % over the speeds
+};
+
+/// One finding with its stated tolerance.
+struct Finding {
+  FindingKind kind = FindingKind::Stable;
+  analysis::ModeLabel mode{};                ///< the mode the finding is about
+  double speedMin = 0, speedMax = 0;         ///< m/s, the speeds it holds over
+  double frequencyMin = 0, frequencyMax = 0; ///< Hz (FrequencyWithin)
+  double speed = 0;                          ///< m/s (MostStableNear)
+  double percent = 0;                        ///< % (ChangeBelow)
+  std::vector<std::string> change;           ///< `--set` overrides of the change (ChangeBelow)
+  /// `--set` overrides of the model variant the finding is stated for (e.g. a swingarm compliance),
+  /// applied before the change; empty: the scenario as it is.
+  std::vector<std::string> variant;
+  /// Scale of the likelihood term, in the finding's unit: 1/s (Stable, Unstable), Hz
+  /// (FrequencyWithin), m/s (MostStableNear), percentage points (ChangeBelow).
+  double tolerance = 0;
+  std::string source;                        ///< where the finding is stated (free text)
+  io::InputLocation where;                   ///< its entry in the YAML file
+};
+
 struct MeasuredData {
   std::string name;
   std::string file;       ///< the YAML file
   std::vector<MeasuredEigenvalue> eigenvalues;
   std::vector<ResponseRun> responses;
+  std::vector<Finding> findings;
   std::vector<std::string> eigenvalueFiles;  ///< resolved CSV paths
   /// `steer_rate_amplitude_rad_s`: the steer-rate amplitude of the measured oscillations (rad/s), at
   /// which the steer_friction candidate's equivalent damping is taken; 0: not given.
@@ -75,7 +105,8 @@ constexpr double kMinStd = io::kMinMagnitude, kMaxStd = io::kMaxMagnitude;
 /// key, a missing file or column, a bad or non-finite cell, a speed outside [0, kMaxMeasuredSpeed], a
 /// standard deviation outside [kMinStd, kMaxStd], a controller setting the scenario's steer_controller
 /// section would refuse, an unknown mode label or quantity, or a response window with fewer than 20
-/// samples is an InputError naming the file and line (and column for YAML).
+/// samples is an InputError naming the file and line (and column for YAML). Findings are read as
+/// diagnosis/findings.h readFindings says.
 MeasuredData loadMeasuredData(const std::string& path);
 
 /// Mode labels accepted in eigenvalue files: the names of analysis::ModeLabel (analysis/modes.h assigns them).

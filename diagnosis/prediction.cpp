@@ -4,6 +4,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "diagnosis/findings.h"
 #include "vehicle/vehicle_model.h"
 
 namespace motostab::diagnosis {
@@ -33,6 +34,14 @@ SweepOptions makeChainOptions() {
   return opt;
 }
 
+// `data` with its findings' probe rows appended to its eigenvalue rows (and no findings left).
+MeasuredData addProbeRows(const MeasuredData& data) {
+  MeasuredData out = data;
+  for (auto& row : makeProbeRows(data.findings)) out.eigenvalues.push_back(std::move(row));
+  out.findings.clear();
+  return out;
+}
+
 }  // namespace
 
 Predictor::Predictor(const std::string& scenarioFile, ParameterOverrides baseChanges, const MeasuredData& data)
@@ -40,9 +49,13 @@ Predictor::Predictor(const std::string& scenarioFile, ParameterOverrides baseCha
 
 Predictor::Predictor(std::shared_ptr<const ScenarioSource> source, ParameterOverrides baseChanges, const MeasuredData& data,
                      std::shared_ptr<SweepCache> cache)
-    : source_(std::move(source)), baseChanges_(std::move(baseChanges)), data_(data), cache_(std::move(cache)) {
+    : source_(std::move(source)),
+      baseChanges_(std::move(baseChanges)),
+      withProbes_(data.findings.empty() ? nullptr : std::make_shared<const MeasuredData>(addProbeRows(data))),
+      data_(withProbes_ ? *withProbes_ : data),
+      cache_(std::move(cache)) {
   if (data_.eigenvalues.empty() && data_.responses.empty())
-    throw std::logic_error("Predictor: the measured data hold no eigenvalue rows and no response runs: nothing to predict");
+    throw std::logic_error("Predictor: the measured data hold no eigenvalue rows, response runs or findings: nothing to predict");
   makeControllerParts();
   if (!parts_.empty()) return;
   speeds_ = collectSpeeds();

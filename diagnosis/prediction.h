@@ -39,7 +39,8 @@ namespace motostab::diagnosis {
 
 /// Everything a scenario predicts for a measurement set.
 struct Prediction {
-  std::vector<std::complex<double>> eigenvalues;  ///< per measured row (imag >= 0), 1/s
+  /// Per measured row, then per probe row of the findings (makeProbeRows), imag >= 0, 1/s.
+  std::vector<std::complex<double>> eigenvalues;
   std::vector<ResponseFit> responses;            ///< per run
   int numLinear = 0;                             ///< sum over runs of ResponseFit::numLinear
 };
@@ -98,6 +99,9 @@ class Predictor {
 
   std::shared_ptr<const scenario::ScenarioSource> source_;
   scenario::ParameterOverrides baseChanges_;
+  /// The data with the findings' probe rows appended to the eigenvalue rows (diagnosis/findings.h
+  /// makeProbeRows), when it has findings; data_ refers to it then.
+  std::shared_ptr<const MeasuredData> withProbes_;
   const MeasuredData& data_;
   std::vector<double> speeds_;
   std::vector<double> nodes_;       ///< Chebyshev points of the fast predictions (empty: none)

@@ -20,12 +20,12 @@ std::vector<DataVariant> makeRobustnessVariants(const MeasuredData& data) {
       if (e.where.file != file) v.data.eigenvalues.push_back(e);
     auto& files = v.data.eigenvalueFiles;
     files.erase(std::remove(files.begin(), files.end(), file), files.end());
-    if (!v.data.eigenvalues.empty() || !v.data.responses.empty()) out.push_back(std::move(v));
+    if (!v.data.eigenvalues.empty() || !v.data.responses.empty() || !v.data.findings.empty()) out.push_back(std::move(v));
   }
   for (size_t r = 0; r < data.responses.size(); ++r) {
     DataVariant v{"response run " + std::to_string(r + 1) + ": " + std::filesystem::path(data.responses[r].file).filename().string(), data};
     v.data.responses.erase(v.data.responses.begin() + static_cast<long>(r));
-    if (!v.data.eigenvalues.empty() || !v.data.responses.empty()) out.push_back(std::move(v));
+    if (!v.data.eigenvalues.empty() || !v.data.responses.empty() || !v.data.findings.empty()) out.push_back(std::move(v));
   }
   DataVariant mid{"speed ranges -> mid speeds", data};
   bool any = false;

@@ -29,6 +29,7 @@ SweepOptions makeSweepOptions(const ScenarioHandle& s, const SpeedTuple& speeds,
   opt.start = grid[0], opt.stop = grid[1], opt.step = grid[2];
   cli::checkThreads(threads, argumentLocation("threads"));
   opt.threads = threads;
+  opt.linearize.computeB = true;  // as `motostab sweep` (for linear_models.mat): the same A to the last bit
   return opt;
 }
 

@@ -181,8 +181,8 @@ py::dict diagnose(const ScenarioHandle& s, const std::string& measurements, cons
     try {
       r = diagnosis::runDiagnosis(s.source, data, opt);
     } catch (const io::InputError& e) {  // a candidate name or glob that matches none: the keyword's name
-      if (e.getLocation().key != "--candidates") throw;
-      throw io::InputError(argumentLocation("candidates"), "'" + e.getLocation().file + "' " + e.getReason());
+      if (e.getLocation().file != "--candidates") throw;
+      throw io::InputError(argumentLocation("candidates"), "'" + e.getLocation().key + "' " + e.getReason());
     }
     Out o{output::makeDiagnosisJson(r), output::makeDiagnosisReport(r), {}, r.extendedOverrides,
           r.observed, r.sigma, r.predictedBefore, r.predictedAfter, r.observationSpeed, r.observationTime,

@@ -242,7 +242,8 @@ OrderCandidate makeCandidate(const ExponentialFit& fit, int size, const Eigen::V
   c.order = getOrder(fit.poles);
   c.offset = fit.offset;
   c.pencilSize = size;
-  c.singularValueRatio = size < sv.size() ? sv(size) / sv(size - 1) : 0.0;
+  // Two zero singular values (a noiseless signal past its order) show no gap: ratio 1, not 0/0.
+  c.singularValueRatio = size >= sv.size() ? 0.0 : sv(size - 1) > 0 ? sv(size) / sv(size - 1) : 1.0;
   c.atGap = c.singularValueRatio < options.gapRatio;
   c.rSquared = 1 - fit.residualSumSquares / samplesTotal;
   c.criterion = samplesTotal * std::log(rss / samplesTotal) + params * std::log(samplesTotal);

@@ -1,8 +1,11 @@
 #include "scenario/extension_specs.h"
 
+#include <Eigen/Dense>
+
 #include <cmath>
 
 #include "io/number.h"
+#include "scenario/whole_vehicle.h"
 
 namespace motostab::scenario {
 
@@ -132,6 +135,26 @@ RiderLeanSpec readRiderLean(YamlMap m, const Scenario& s) {
   return r;
 }
 
+RiderArmsSpec readRiderArms(YamlMap m, const Scenario& s) {
+  RiderArmsSpec a;
+  a.inertia = m.getPositive("inertia_kgm2");
+  a.stiffness = m.getNonNegative("stiffness_Nm_per_rad");
+  a.damping = m.getNonNegative("damping_Nms_per_rad");
+  if (m.has("grip_half_width_m")) a.gripHalfWidth = m.getPositive("grip_half_width_m");
+  // The steer axis through its ground point (w + c, 0, 0) along n = (-sin lambda, 0, cos lambda); the
+  // grips at the point of it nearest the front frame's CoM, +/- d along y (distance d from the axis).
+  const double lambda = s.geometry.steerAxisTilt;
+  const Eigen::Vector3d p0(s.geometry.wheelbase + s.geometry.trail, 0, 0), n(-std::sin(lambda), 0, std::cos(lambda));
+  const Eigen::Vector3d g = p0 + n * n.dot(Eigen::Vector3d(s.frontFrame.com[0], 0, s.frontFrame.com[2]) - p0);
+  const double d = a.gripHalfWidth, mass = a.inertia / (d * d);  // two grips of mass/2 each at distance d
+  a.body.mass = mass;
+  a.body.com = {g(0), 0, g(2)};
+  a.body.inertia = {mass * d * d, 0, mass * d * d, 0, 0, 0};  // about any axis in the x-z plane: m d^2
+  checkRemainder(m, "inertia_kgm2", s.rearFrame, a.body, "rear_frame");
+  m.finish();
+  return a;
+}
+
 void readExtensions(YamlMap& root, Scenario& s) {
   if (root.has("steer_damper")) {
     s.hasSteerDamper = true;
@@ -148,6 +171,12 @@ void readExtensions(YamlMap& root, Scenario& s) {
   if (root.has("steer_controller")) {
     s.hasSteerController = true;
     s.steerController = readSteerController(root.getMap("steer_controller"));
+  }
+  if (root.has("rider_arms")) {  // last: the grips move from the rear frame (and rider) to the front frame
+    s.hasRiderArms = true;
+    s.riderArms = readRiderArms(root.getMap("rider_arms"), s);
+    s.rearFrame = calcBodyRemainder(s.rearFrame, s.riderArms.body);
+    s.frontFrame = composeBodies({s.frontFrame, s.riderArms.body});
   }
 }
 

@@ -36,6 +36,11 @@ ForkComplianceSpec readForkCompliance(io::YamlMap m, const Scenario& scenario);
 /// damping_Nms_per_rad}`; the rear frame without the upper body must remain a valid body.
 RiderLeanSpec readRiderLean(io::YamlMap m, const Scenario& scenario);
 
+/// `rider_arms: {inertia_kgm2, stiffness_Nm_per_rad, damping_Nms_per_rad, grip_half_width_m?}`
+/// (scenario.h RiderArmsSpec), its grip masses placed on the steer axis at the front frame's
+/// centre-of-mass height, `scenario`'s rear frame able to give them up (checked).
+RiderArmsSpec readRiderArms(io::YamlMap m, const Scenario& scenario);
+
 /// Default fork bending axis: the steer-axis point at the height of the front tyre's top (2 r_F), an
 /// estimate of the fork crown (lower triple clamp), m along the steer axis: 2 r_F / cos(lambda).
 double calcDefaultForkAxisDistance(const Scenario& scenario);

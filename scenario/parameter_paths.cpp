@@ -75,6 +75,7 @@ std::vector<ScalarParameter> listScalarParameters(const YAML::Node& tree) {
       {"swingarm", {"pivot_m", "mass_kg", "com_m", "inertia_kgm2"}},
       {"rider_lean", {"hinge_height_m", "mass_kg", "com_m", "inertia_kgm2", "stiffness_Nm_per_rad", "damping_Nms_per_rad"}},
       {"fork_compliance.carrier", {"mass_kg", "com_m", "inertia_kgm2"}},
+      {"rider_arms", {"inertia_kgm2", "stiffness_Nm_per_rad", "damping_Nms_per_rad", "grip_half_width_m"}},
       {"steer_controller", {"roll_angle_Nm_per_rad", "roll_rate_Nms_per_rad", "steer_angle_Nm_per_rad",
                             "steer_rate_Nms_per_rad", "gain_factor", "delay_s"}},
       {"steer_controller.schedule", {"below_mps"}},

@@ -26,7 +26,7 @@ struct ScalarParameter {
 /// vehicle (`total`), the rear and front frames (mass, each CoM coordinate, each inertia entry), both wheels, the
 /// swingarm's pivot and mass properties, and when present the leaning rider's hinge height, upper
 /// body, lean stiffness and damping (`rider_lean`) and an explicit fork hub carrier
-/// (`fork_compliance.carrier`), and a steer controller's gains, gain factor, delay and `below_mps`
+/// (`fork_compliance.carrier`), the rider's arms (`rider_arms`), and a steer controller's gains, gain factor, delay and `below_mps`
 /// (`steer_controller`). Order: as in the scenario format.
 std::vector<ScalarParameter> listScalarParameters(const YAML::Node& scenarioTree);
 

@@ -106,6 +106,23 @@ struct RiderLeanSpec {
   double damping = 0;            ///< N m s/rad (>= 0)
 };
 
+/// The rider's arms on the handlebar (vehicle/rider_arms.h): a steer impedance between the front
+/// frame and the rear frame (the rider rigid on it), after Sharp's hands-on steer model (added steer
+/// inertia, a torsional spring and a damper about the steer axis; Sharp 1994, "Vibrational modes of
+/// motorcycles and their design parameter sensitivities", IMechE Vehicle NVH and Refinement) and
+/// Cossalter, Doria, Lot, Massaro (2011) "The effect of rider's passive steering impedance on
+/// motorcycle stability: identification and analysis", Meccanica 46:279-292. The inertia is carried
+/// by two point masses at the grips, `gripHalfWidth` either side of the steer axis at the height of the
+/// front frame's centre of mass, moved from the rear frame (which holds the whole rider) to the front
+/// frame: the vehicle's totals are unchanged.
+struct RiderArmsSpec {
+  double inertia = 0;            ///< J_a, added steer inertia about the steer axis, kg m^2 (> 0)
+  double stiffness = 0;          ///< k_a, N m/rad (>= 0)
+  double damping = 0;            ///< c_a, N m s/rad (>= 0)
+  double gripHalfWidth = 0.25;   ///< d, m (> 0): grip distance from the steer axis
+  BodySpec body;                 ///< the grip masses (2 x J_a / (2 d^2)) in D: what moved to the front frame
+};
+
 /// Linear state feedback on the steer torque (vehicle/steer_controller.h), ISO 8855 signs (roll > 0
 /// leans right, steer > 0 steers left, torque > 0 steers left):
 ///   u = f(v) g (k_phi phi + k_phid phi' + k_delta delta + k_deltad delta')            (N m)
@@ -194,6 +211,8 @@ struct Scenario {
   RiderLeanSpec riderLean;
   bool hasSteerController = false;
   SteerControllerSpec steerController;
+  bool hasRiderArms = false;
+  RiderArmsSpec riderArms;                ///< its grip masses are already in frontFrame, out of rearFrame
   std::vector<std::string> plugins;     ///< shared libraries to load before building
   std::vector<std::string> overrides;   ///< the --set assignments applied, for messages
   std::vector<ParameterUncertainty> uncertainty;  ///< stated parameter uncertainties (may be empty)

@@ -62,30 +62,31 @@ def yaml_lines(text):
     return [i for i, l in enumerate(text.split("\n")) if re.match(r"^\s*[A-Za-z_][\w.]*\s*:", l)]
 
 
-def delete_key(text, rng):
+def pick_key_line(text, rng):
+    """The lines of `text` and the index of a key line drawn at random (None when there is none)."""
     lines = text.split("\n")
     idx = yaml_lines(text)
-    if not idx:
+    return lines, (rng.choice(idx) if idx else None)
+
+
+def delete_key(text, rng):
+    lines, i = pick_key_line(text, rng)
+    if i is None:
         return text, "no key"
-    i = rng.choice(idx)
     return "\n".join(lines[:i] + lines[i + 1:]), "deleted %r" % lines[i].strip()
 
 
 def repeat_key(text, rng):
-    lines = text.split("\n")
-    idx = yaml_lines(text)
-    if not idx:
+    lines, i = pick_key_line(text, rng)
+    if i is None:
         return text, "no key"
-    i = rng.choice(idx)
     return "\n".join(lines[:i + 1] + [lines[i]] + lines[i + 1:]), "repeated %r" % lines[i].strip()
 
 
 def misspell_key(text, rng):
-    lines = text.split("\n")
-    idx = yaml_lines(text)
-    if not idx:
+    lines, i = pick_key_line(text, rng)
+    if i is None:
         return text, "no key"
-    i = rng.choice(idx)
     m = re.match(r"^(\s*)([A-Za-z_][\w.]*)(\s*:.*)$", lines[i])
     key = m.group(2)
     k = rng.randrange(len(key))

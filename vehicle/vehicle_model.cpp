@@ -8,6 +8,7 @@
 #include "vehicle/fork_compliance.h"
 #include "vehicle/rider_lean.h"
 #include "vehicle/steer_controller.h"
+#include "vehicle/rider_arms.h"
 #include "vehicle/steer_damper.h"
 
 namespace motostab::vehicle {
@@ -239,6 +240,7 @@ void VehicleModel::build(PluginRegistry& registry, const std::vector<ModelExtens
   const Vec3 pRearHub_D(0, 0, s.rearWheel.radius);
   if (s.hasAerodynamics) addAerodynamicDrag(ctx, rearFrame_, s.aerodynamics, toVec3(s.aerodynamics.centreOfPressure) - pRearHub_D);
   if (s.hasSteerDamper) addSteerDamper(ctx, frontFrame_, s.steerDamper);
+  if (s.hasRiderArms) addRiderArms(ctx, frontFrame_, s.riderArms);
   if (s.hasSteerController) {
     steerController_ = addSteerController(ctx, rearFrame_, frontFrame_, s.steerController);
     addZ(steerController_->getStates());

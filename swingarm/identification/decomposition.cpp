@@ -42,11 +42,11 @@ double calcTwistDamping(double cB, double cT, double aB, double kB, double aT, d
 
 SwingarmIdentification identifySwingarm(const StaticResult& s, const FrfResult& frf) {
   if (frf.bendingIndex < 0 || frf.torsionIndex < 0 || frf.bendingIndex == frf.torsionIndex)
-    throw std::runtime_error("the hammer test did not yield distinct bending and torsion modes with axes "
+    throw io::ResultError("the hammer test did not yield distinct bending and torsion modes with axes "
                              "(set processing.bending_mode_hz / torsion_mode_hz, or check the channels)");
   const ModeResult& b = frf.modes[frf.bendingIndex];
   const ModeResult& t = frf.modes[frf.torsionIndex];
-  if (!b.hasAxis || !t.hasAxis) throw std::runtime_error("bending or torsion mode without a modal axis");
+  if (!b.hasAxis || !t.hasAxis) throw io::ResultError("bending or torsion mode without a modal axis");
   // x = [k_lat, a_tw, beta, a_b, beta_b, a_t, beta_t, f_b, zeta_b, f_t, zeta_t]
   Eigen::VectorXd x(11), sd(11);
   x << s.kLat, s.aTw, s.betaDeg, b.axis.arm, b.axis.betaDeg, t.axis.arm, t.axis.betaDeg, b.frequencyHz,

@@ -3,6 +3,7 @@
 #include <set>
 
 #include "io/csv.h"
+#include "io/number.h"
 #include "io/input_error.h"
 #include "swingarm/identification/hammer_frf.h"
 #include "swingarm/identification/yaml_input.h"
@@ -83,6 +84,14 @@ std::vector<modal::ImpactRecord> readHits(const FrfTest& test) {
     r.force = csv.getColumn(test.forceColumn);
     for (const auto& c : test.channels) r.responses.push_back(csv.getColumn(c.column));
     if (t.size() < 16) throw InputError({src, 0, 0, test.timeColumn}, "too few samples (" + std::to_string(t.size()) + ")");
+    // Signals beyond any physical magnitude (io/number.h) would make the spectra overflow.
+    std::vector<std::pair<const std::vector<double>*, std::string>> signals{{&r.force, test.forceColumn}};
+    for (size_t k = 0; k < test.channels.size(); ++k) signals.push_back({&r.responses[k], test.channels[k].column});
+    for (const auto& [values, column] : signals)
+      for (size_t i = 0; i < values->size(); ++i)
+        if (std::abs((*values)[i]) > io::kMaxMagnitude)
+          throw InputError({src, csv.lineNumbers[i], csv.getColumnIndex(column) + 1, column},
+                           "a magnitude above 1e12, beyond any physical measurement");
     const int tc = csv.getColumnIndex(test.timeColumn) + 1;
     for (size_t i = 1; i < t.size(); ++i)
       if (!(t[i] > t[i - 1]))

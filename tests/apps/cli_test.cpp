@@ -110,7 +110,7 @@ TEST(CliCommands, LinearizeMatchesTable2) {
   const auto dir = makeTempDir("cli_linearize");
   const CliRun r = runCli({"linearize", kWhipple, "--speed", "5", "--out", dir.string()});
   ASSERT_EQ(r.exitCode, 0) << r.output;
-  EXPECT_EQ(checkOutputsParse(dir), 5);  // A, B, eigenvalues, eigenvectors, linear_model.json
+  EXPECT_EQ(checkOutputsParse(dir), 6);  // A, B, eigenvalues, eigenvectors, linear_model.json, scenario.json
   expectEigenvalues(readLinearEigenvalues(dir / "eigenvalues.csv"), {kWeave5, std::conj(kWeave5), kCapsize5, kCastor5}, 1e-6);
 }
 

@@ -16,6 +16,18 @@ namespace {
 namespace fs = std::filesystem;
 const std::string kWhipple = std::string(MOTOSTAB_SOURCE_DIR) + "/scenarios/whipple-benchmark.yaml";
 
+// Writes `yaml` as DIR/m.yaml, diagnoses the Whipple bicycle against it into DIR/out, expects exit 2
+// and returns the output.
+std::string runDiagnoseExpectingExit2(const fs::path& dir, const std::string& yaml) {
+  std::ofstream(dir / "m.yaml") << yaml;
+  const std::string log = (dir / "log.txt").string();
+  const int code = test::waitForExit(test::startMotostab(
+      {"diagnose", kWhipple, (dir / "m.yaml").string(), "--out", (dir / "out").string()}, dir.string(), log));
+  const std::string out = test::readLog(log);
+  EXPECT_EQ(code, 2) << out;
+  return out;
+}
+
 TEST(DiagnoseCli, BadMeasurementsExit2AndLeaveTheFolderAlone) {
   const fs::path dir = fs::temp_directory_path() / ("motostab_diagnose_cli_" + std::to_string(::getpid()));
   fs::create_directories(dir);
@@ -47,12 +59,7 @@ TEST(DiagnoseCli, BadMeasurementsExit2AndLeaveTheFolderAlone) {
       {"eigenvalues:\n  - {file: e.csv, colour: red}\n", "m.yaml:2"},    // unknown key
   };
   for (const auto& [yaml, needle] : cases) {
-    std::ofstream(dir / "m.yaml") << yaml;
-    const std::string log = (dir / "log.txt").string();
-    const int code = test::waitForExit(test::startMotostab(
-        {"diagnose", kWhipple, (dir / "m.yaml").string(), "--out", (dir / "out").string()}, dir.string(), log));
-    const std::string out = test::readLog(log);
-    EXPECT_EQ(code, 2) << out;
+    const std::string out = runDiagnoseExpectingExit2(dir, yaml);
     EXPECT_NE(out.find(needle), std::string::npos) << out;
     EXPECT_FALSE(fs::exists(dir / "out"));
   }
@@ -124,12 +131,7 @@ TEST(DiagnoseCli, MeasuredOptionsAreBlamedOnTheMeasurementFile) {
       {"eigenvalues:\n  - file: dup.csv\n", "dup.csv:1:5: real: column 'real' is given twice"},
   };
   for (const auto& [yaml, needle] : cases) {
-    std::ofstream(dir / "m.yaml") << yaml;
-    const std::string log = (dir / "log.txt").string();
-    const int code = test::waitForExit(test::startMotostab(
-        {"diagnose", kWhipple, (dir / "m.yaml").string(), "--out", (dir / "out").string()}, dir.string(), log));
-    const std::string out = test::readLog(log);
-    EXPECT_EQ(code, 2) << out;
+    const std::string out = runDiagnoseExpectingExit2(dir, yaml);
     EXPECT_NE(out.find(needle), std::string::npos) << out << "(expected " << needle << ")";
     EXPECT_EQ(out.find("--set"), std::string::npos) << out;
     EXPECT_EQ(out.find("--candidates"), std::string::npos) << out;

@@ -80,7 +80,7 @@ TEST(ExitCodes, Uncertainty) {
   const fs::path dir = makeTempDir("exit_uncertainty");
   expectExit({"uncertainty", kScenarios + "kooijman-silvercity.yaml", "--samples", "1000000000"}, 2, "--samples", dir);
   expectExit({"uncertainty", kScenarios + "supersport-mf.yaml", "--speeds", "150:150:1", "--samples", "3", "--set",
-              "uncertainty={rear_frame.mass_kg: 2}"},
+              "uncertainty={total.mass_kg: 2}"},
              3, "every one of the 3 samples failed", dir);
 }
 

@@ -147,7 +147,6 @@ TEST(TurnCli, BadTurnInputExits2AndSaysWhatToChange) {
       {{"trim", w, "--speed", "5", "--roll-deg", "-120"}, "strictly between -89 and 89"},
       {{"trim", w, "--speed", "5", "--roll-deg", "nan"}, "roll angle"},
       {{"trim", w, "--roll-deg", "5"}, "--speed"},
-      {{"trim", w, "--roll-deg", "5", "--hands-free", "--speeds", "1:3:0.5"}, "widen --speeds or change --roll-deg"},
       {{"sweep", w, "--speeds", "0:5:1", "--roll-deg", "10"}, "start the speed grid above 0"},
       {{"sweep", w, "--speeds", "1:5:1", "--roll-deg", "0:95:5"}, "strictly between -89 and 89"},
       {{"linearize", w, "--speed", "0", "--roll-deg", "10", "--out", "x"}, "above 0"},
@@ -156,10 +155,19 @@ TEST(TurnCli, BadTurnInputExits2AndSaysWhatToChange) {
   for (const Case& c : cases) expectInputError(c.args, c.needle, dir);
 }
 
-TEST(TurnCli, FailedTrimExits1NamingSpeedRollAndResidual) {
+// Valid input without a result: exit 3 (docs/commands.md, exit codes), saying what was tried.
+TEST(TurnCli, FailedTrimExits3NamingSpeedRollAndResidual) {
   const Outcome o = run("failed", {"trim", kScenarios + "whipple-benchmark.yaml", "--speed", "0.5", "--roll-deg", "80", "--out", "f"});
-  EXPECT_EQ(o.code, 1) << o.output;
+  EXPECT_EQ(o.code, 3) << o.output;
   for (const char* needle : {"0.5 m/s", "roll 80 deg", "residual"}) EXPECT_NE(o.output.find(needle), std::string::npos) << o.output;
+}
+
+// No hands-free turn bracketed on a valid grid: exit 3 with what to change.
+TEST(TurnCli, NoHandsFreeTurnExits3AndSaysWhatToChange) {
+  const Outcome o = run("noturn", {"trim", kScenarios + "whipple-benchmark.yaml", "--roll-deg", "5", "--hands-free", "--speeds",
+                                   "1:3:0.5", "--out", "n"});
+  EXPECT_EQ(o.code, 3) << o.output;
+  EXPECT_NE(o.output.find("widen --speeds or change --roll-deg"), std::string::npos) << o.output;
 }
 
 TEST(TurnCli, MapWritesEveryRollAndThePlots) {

@@ -10,6 +10,7 @@
 #include <set>
 #include <thread>
 
+#include "io/output_folder.h"
 #include "tests/support/temp_dir.h"
 #include "tests/apps/cli_support.h"
 
@@ -21,7 +22,8 @@ const std::string kWhipple = std::string(MOTOSTAB_SOURCE_DIR) + "/scenarios/whip
 
 std::set<std::string> listNames(const fs::path& dir) {
   std::set<std::string> out;
-  for (const auto& e : fs::directory_iterator(dir)) out.insert(e.path().filename().string());
+  for (const auto& e : fs::directory_iterator(dir))
+    if (e.path().filename() != motostab::io::kOutputMarker) out.insert(e.path().filename().string());
   return out;
 }
 
@@ -30,6 +32,7 @@ void writeOldOutputs(const fs::path& target) {
   fs::create_directories(target);
   std::ofstream(target / "eigenvalues.csv") << "old\n";
   std::ofstream(target / "old_marker.txt") << "old\n";
+  std::ofstream(target / motostab::io::kOutputMarker) << "motostab\n";  // an earlier run's outputs
 }
 
 // The first file in a temporary output folder of `pid`, polled every 0.2 ms; false if it exits first.
@@ -89,11 +92,11 @@ TEST(WholeRunOutputs, FailedRunKeepsOldOutputs) {
   fs::remove_all(dir);
   fs::create_directories(dir);
   writeOldOutputs(dir / "out");
-  // A trim that cannot converge is a computation failure (exit 1) after the output folder exists.
+  // A trim that cannot converge is a computation failure (exit 3) after the output folder exists.
   const std::string log = (dir / "log.txt").string();
   const int code = test::waitForExit(test::startMotostab(
       {"linearize", kWhipple, "--speed", "5", "--out", "out", "--set", "gravity_mps2=1e12"}, dir.string(), log));
-  ASSERT_EQ(code, 1) << test::readLog(log);
+  ASSERT_EQ(code, 3) << test::readLog(log);
   EXPECT_EQ(listNames(dir / "out"), (std::set<std::string>{"eigenvalues.csv", "old_marker.txt"}));
   for (const auto& name : listNames(dir)) EXPECT_TRUE(name == "out" || name == "log.txt") << name;
 }

@@ -49,9 +49,34 @@ TEST(Candidates, NoRiderLeanOnARiderlessBicycle) {
   std::vector<std::string> unavailable;
   const auto all = listCandidates(makeScenarioTree(kDir + "/scenarios/kooijman-silvercity.yaml", {}), {}, &unavailable);
   EXPECT_EQ(find(all, "rider_lean"), nullptr);
-  ASSERT_EQ(unavailable.size(), 1u);
+  EXPECT_EQ(find(all, "rider_arms"), nullptr);
+  ASSERT_EQ(unavailable.size(), 2u);
   EXPECT_NE(unavailable[0].find("riderless"), std::string::npos) << unavailable[0];
+  EXPECT_EQ(unavailable[1].rfind("rider_arms:", 0), 0u) << unavailable[1];
   EXPECT_NE(find(all, "steer_damper"), nullptr);
+}
+
+// rider_arms where the rear frame holds a rider: Sharp's (1994) hands-on steer inertia 0.20 kg m^2
+// (0.71 -> 0.91), stiffness and damping free with priors centred on his 50 N m/rad and 5 N m s/rad; the
+// switched-on scenario loads with those values.
+TEST(Candidates, RiderArmsOnTheSupersport) {
+  const std::string file = kDir + "/scenarios/supersport.yaml";
+  const auto all = listCandidates(makeScenarioTree(file, {}), {});
+  const Candidate* c = find(all, "rider_arms");
+  ASSERT_NE(c, nullptr);
+  ASSERT_EQ(c->parameters.size(), 2u);
+  EXPECT_EQ(c->parameters[0].path, "rider_arms.stiffness_Nm_per_rad");
+  EXPECT_DOUBLE_EQ(c->parameters[0].priorMean, 50);
+  EXPECT_EQ(c->parameters[1].path, "rider_arms.damping_Nms_per_rad");
+  EXPECT_DOUBLE_EQ(c->parameters[1].priorMean, 5);
+  std::vector<std::string> ov = c->fixedOverrides.format();
+  ov.push_back("rider_arms.damping_Nms_per_rad=7");
+  const Scenario s = loadScenario(file, ov);
+  ASSERT_TRUE(s.hasRiderArms);
+  EXPECT_NEAR(s.riderArms.inertia, 0.20, 1e-12);
+  EXPECT_NEAR(s.riderArms.stiffness, 50, 1e-12);
+  EXPECT_NEAR(s.riderArms.damping, 7, 1e-12);
+  EXPECT_EQ(find(listCandidates(makeScenarioTree(file, ov), {}), "rider_arms"), nullptr);  // it has them
 }
 
 // A scenario with a leaning rider (Browser with Jason, BicycleParameters) offers no second one; its lean

@@ -58,7 +58,7 @@ TEST(ResponseOutput, WritesModesJsonAndPlot) {
 TEST(ResponseOutput, ModesJsonNeedsOneNamePerSignal) {
   const auto record = makeRecord();
   const auto result = motostab::response::identifyModes(record.time, record.signals);
-  EXPECT_THROW(motostab::output::makeModesJson(result, {"a", "b"}), std::invalid_argument);
+  EXPECT_THROW(motostab::output::makeModesJson(result, {"a", "b"}), std::logic_error);  // a caller's bug
   const std::string table = motostab::output::formatModesTable(result, {"roll_rate"});
   EXPECT_NE(table.find("roll_rate: offset 0.2"), std::string::npos) << table;
   EXPECT_NE(table.find("order 2"), std::string::npos) << table;

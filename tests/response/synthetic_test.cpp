@@ -10,6 +10,7 @@
 #include <Eigen/Dense>
 
 #include "core/portable_random.h"
+#include "io/input_error.h"
 #include "response/mode_identification.h"
 
 using motostab::response::IdentificationOptions;
@@ -296,24 +297,24 @@ TEST(ResponseSynthetic, RejectsBadInput) {
   const auto y = makeSignal(t, 0.0, {{-1, 10, 1, 0}}, 0.0, 1);
   auto shortY = y;
   shortY.pop_back();
-  EXPECT_THROW(identifyModes(t, {shortY}), std::invalid_argument);
-  EXPECT_THROW(identifyModes(t, {}), std::invalid_argument);
+  EXPECT_THROW(identifyModes(t, {shortY}), motostab::io::InputError);
+  EXPECT_THROW(identifyModes(t, {}), motostab::io::InputError);
   auto badT = t;
   badT[10] = badT[9];
-  EXPECT_THROW(identifyModes(badT, {y}), std::invalid_argument);
+  EXPECT_THROW(identifyModes(badT, {y}), motostab::io::InputError);
   IdentificationOptions o;
   o.windowStart = 0.5;
   o.windowEnd = 2.0;  // beyond the last sample (1 s)
   try {
     identifyModes(t, {y}, o);
     FAIL() << "no error";
-  } catch (const std::invalid_argument& e) {
+  } catch (const motostab::io::InputError& e) {
     EXPECT_NE(std::string(e.what()).find("outside the data"), std::string::npos) << e.what();
   }
   o.windowStart = 0.5;
   o.windowEnd = 0.55;  // 6 samples
-  EXPECT_THROW(identifyModes(t, {y}, o), std::invalid_argument);
-  EXPECT_THROW(identifyModes(t, {std::vector<double>(t.size(), 3.0)}), std::invalid_argument);
+  EXPECT_THROW(identifyModes(t, {y}, o), motostab::io::InputError);
+  EXPECT_THROW(identifyModes(t, {std::vector<double>(t.size(), 3.0)}), motostab::io::InputError);
 }
 
 }  // namespace

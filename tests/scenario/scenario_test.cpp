@@ -109,8 +109,11 @@ TEST(Scenario, InertiaViolatesTriangleInequality) {
 
 // A speed range whose step count overflows (or would fill the memory) is an input error, not a crash.
 TEST(Scenario, SpeedRangeWithTooManySteps) {
-  expectError(variant("speeds", "{start: 0, stop: 10, step: 0.1}", "{start: 0, stop: 1e300, step: 1e-300}"),
+  expectError(variant("speeds", "{start: 0, stop: 10, step: 0.1}", "{start: 0, stop: 1e11, step: 1e-9}"),
               "speeds_mps", "speeds_mps.step", "more than 1e6 speeds");
+  // A number beyond any physical magnitude is refused where it is read, before the range is formed.
+  expectError(variant("speeds3", "{start: 0, stop: 10, step: 0.1}", "{start: 0, stop: 1e300, step: 1e-300}"),
+              "speeds_mps", "speeds_mps.stop", "a magnitude above 1e12");
   expectError(variant("speeds2", "{start: 0, stop: 10, step: 0.1}", "{start: 0, stop: 1e9, step: 1e-3}"),
               "speeds_mps", "speeds_mps.step", "more than 1e6 speeds");
 }

@@ -43,7 +43,7 @@ TEST(UncertaintySection, ReadsSigmasDistributionsAndAnyNumericPath) {
   const double s1 = 1e-3 * static_cast<double>(1 + g.drawBits() % 9), s2 = static_cast<double>(100 + g.drawBits() % 2000);
   std::ostringstream sec;
   sec.precision(17);
-  sec << "uncertainty:\n  geometry.normal_trail_m: " << s1 << "\n  rear_frame.com_m[2]: {sigma: 0.01, distribution: uniform}\n"
+  sec << "uncertainty:\n  geometry.normal_trail_m: " << s1 << "\n  total.com_m[2]: {sigma: 0.01, distribution: uniform}\n"
       << "  swingarm.torsion.stiffness_Nm_per_rad: {sigma: " << s2 << ", distribution: lognormal}\n";
   const auto [file, line] = writeWith("enduro.yaml", sec.str(), "good");
   const Scenario s = loadScenario(file);
@@ -52,7 +52,7 @@ TEST(UncertaintySection, ReadsSigmasDistributionsAndAnyNumericPath) {
   EXPECT_EQ(s.uncertainty[0].sigma, s1);
   EXPECT_EQ(s.uncertainty[0].distribution, ParameterUncertainty::Distribution::Normal);
   EXPECT_EQ(s.uncertainty[0].where.line, line + 1);
-  EXPECT_EQ(s.uncertainty[1].path, "rear_frame.com_m[2]");
+  EXPECT_EQ(s.uncertainty[1].path, "total.com_m[2]");
   EXPECT_EQ(s.uncertainty[1].distribution, ParameterUncertainty::Distribution::Uniform);
   EXPECT_EQ(s.uncertainty[2].sigma, s2);
   EXPECT_EQ(s.uncertainty[2].distribution, ParameterUncertainty::Distribution::Lognormal);

@@ -125,7 +125,7 @@ TEST(Rosenbrock, NonFiniteDerivativeIsAnError) {
     EXPECT_NE(std::string(e.what()).find("non-finite"), std::string::npos) << e.what();
     EXPECT_LE(s.getTime(), 0.5);
   }
-  EXPECT_THROW(s.step(s.getTime()), std::invalid_argument);  // the stop time must lie ahead
+  EXPECT_THROW(s.step(s.getTime()), std::logic_error);  // the stop time must lie ahead (a caller's bug)
 }
 
 // Landing on many stop times (output samples, pulse switches) must not throttle the step size.

@@ -3,6 +3,7 @@
 
 #include <cmath>
 
+#include "io/result_error.h"
 #include "swingarm/identification/decomposition.h"
 
 using motostab::swingarm::identification::calcBendingTorsionStiffness;
@@ -70,8 +71,8 @@ TEST(Decomposition, SolvesEquations7And10) {
 
 TEST(Decomposition, RejectsAStaticAxisOutsideTheModalAxes) {
   // Static axis not between the two modal axes -> a negative compliance, not a silent result.
-  EXPECT_THROW(calcBendingTorsionStiffness(0.45, 2e5, 120, 0.45, 95, 0.026, 3), std::invalid_argument);
-  EXPECT_THROW(calcBendingTorsionStiffness(0.45, 2e5, 90, 0.45, 95, 0.026, 95), std::invalid_argument);
+  EXPECT_THROW(calcBendingTorsionStiffness(0.45, 2e5, 120, 0.45, 95, 0.026, 3), motostab::io::ResultError);
+  EXPECT_THROW(calcBendingTorsionStiffness(0.45, 2e5, 90, 0.45, 95, 0.026, 95), motostab::io::ResultError);
 }
 
 }  // namespace

@@ -5,6 +5,8 @@
 
 #include <fstream>
 #include <functional>
+#include <random>
+#include <sstream>
 
 #include "io/input_error.h"
 #include "swingarm/identification/hammer_frf.h"
@@ -140,6 +142,35 @@ TEST(FrfInput, NonMonotonicTimeColumn) {
   EXPECT_EQ(e.getLocation().key, "time_s");
   EXPECT_EQ(e.getLocation().line, 22);  // header is line 1, row k is line k + 2
   EXPECT_NE(e.getReason().find("not strictly increasing"), std::string::npos);
+}
+
+// A sample beyond any physical magnitude, in a random row and column, is named where it is.
+TEST(FrfInput, SampleBeyondAnyPhysicalMagnitude) {
+  const Files f{makeTempDir("magnitude")};
+  const auto y = f.write("frf.yaml", kFrfYaml);
+  std::mt19937 rng(4711);
+  const int row = std::uniform_int_distribution<int>(0, 63)(rng), column = std::uniform_int_distribution<int>(1, 4)(rng);
+  std::string csv = makeHitCsv(-1), out;
+  std::istringstream in(csv);
+  std::string line;
+  for (int n = 0; std::getline(in, line); ++n) {
+    if (n == row + 1) {
+      std::vector<std::string> fields;
+      std::stringstream ss(line);
+      for (std::string x; std::getline(ss, x, ',');) fields.push_back(x);
+      fields[column] = "-1e300";
+      line = fields[0];
+      for (size_t k = 1; k < fields.size(); ++k) line += "," + fields[k];
+    }
+    out += line + "\n";
+  }
+  f.write("hit1.csv", out);
+  const InputError e = catchInputError([&] { readHits(readFrfTest(y)); });
+  const char* names[] = {"time_s", "force_N", "A1_mps2", "A2_mps2", "A3_mps2"};
+  EXPECT_EQ(e.getLocation().key, names[column]);
+  EXPECT_EQ(e.getLocation().line, row + 2);
+  EXPECT_EQ(e.getLocation().column, column + 1);
+  EXPECT_NE(e.getReason().find("magnitude above 1e12"), std::string::npos) << e.getReason();
 }
 
 TEST(FrfInput, MissingChannelColumnCollinearChannelsAndBadProcessing) {
