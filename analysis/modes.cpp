@@ -282,7 +282,7 @@ class Capacity {
 };
 
 // Zero roots of heading, lateral or forward drift: |lambda| at the linearisation's noise, max(1e-6 1/s,
-// 1e-8 |A|_inf), and most of the content in yaw, lateral, forward motion and wheel spin. The eigenvector
+// 1e-9 |A|_inf) (a 4e8 N m/rad fork on the enduro: the zero root at 2.7e-11 |A|_inf, the weave at 8e-9), and most of the content in yaw, lateral, forward motion and wheel spin. The eigenvector
 // of such a root is A's null vector only to that noise, and its energy shares weigh rates u = lambda q
 // of about that size: which motion leads is robust, a share near 1 is not (a lateral drift root of the
 // Whipple bicycle on tyres has 0.985-0.999).
@@ -319,7 +319,7 @@ constexpr double kWobbleSteer = 0.02;
 // negative steer-led real root), weave (of the lateral oscillations the one with the most roll, or the
 // pair of real roots it splits into at low speed), wobble (of the other oscillations with more steer than
 // roll, the one whose steer angle leads the angles most); in a turn, a slow pair for a capsize joined with another root.
-void labelLateralModes(std::vector<Root>& roots, Capacity& cap) {
+void labelLateralModes(std::vector<Root>& roots, Capacity& cap, double zero) {
   auto roll = [](const Root& r) { return r.c.get(StateRole::Roll); };
   auto moreRoll = [&](const Root& a, const Root& b) { return roll(a) > roll(b); };
   // Roll among the mechanical motion: a root that the tyre lags carry counts less.
@@ -329,8 +329,9 @@ void labelLateralModes(std::vector<Root>& roots, Capacity& cap) {
   auto lateralFamily = [](const Root& r) { return findFamily(r) == Family::Lateral; };
   auto rollLed = [&](const Root& r) { return roll(r) >= r.steer && roll(r) >= 0.1 * (r.rollYawLateral + r.steer); };
   // The slowest; of equal magnitudes (to 1e-6 relative: the +-lambda pairs at standstill) the lower real part.
-  auto slower = [](const Root& a, const Root& b) {
+  auto slower = [&](const Root& a, const Root& b) {
     const double x = std::abs(a.lambda), y = std::abs(b.lambda);
+    if ((x < zero) != (y < zero)) return y < zero;
     if (std::abs(x - y) > 1e-6 * std::max(x, y)) return x < y;
     return a.lambda.real() < b.lambda.real();
   };
@@ -430,10 +431,13 @@ void labelOtherModes(std::vector<Root>& roots, Capacity& cap) {
 std::vector<ModeLabel> labelModes(const LinearModel& lin) {
   std::vector<Root> roots = collectRoots(lin);
   Capacity cap;
-  const double zero = std::max(1e-6, 1e-8 * lin.A.cwiseAbs().rowwise().sum().maxCoeff());
+  const double zero = std::max(1e-6, 1e-9 * lin.A.cwiseAbs().rowwise().sum().maxCoeff());
   for (Root& r : roots)
     if (isNeutral(r, zero)) cap.take(r, ModeLabel::Neutral);
-  labelLateralModes(roots, cap);
+  labelLateralModes(roots, cap, zero);
+  // A zero root the drift does not lead (its eigenvector mixed with a slow root's near a double root).
+  for (Root& r : roots)
+    if (std::abs(r.lambda) < zero) cap.take(r, ModeLabel::Neutral);
   labelOtherModes(roots, cap);
   std::vector<ModeLabel> out(lin.eigenvalues.size(), ModeLabel::Other);
   for (const Root& r : roots) {

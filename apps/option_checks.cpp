@@ -89,13 +89,6 @@ std::vector<analysis::HandsFreeTurn> calcHandsFreeTurns(const vehicle::VehicleMo
   }
 }
 
-analysis::TrimResult calcHandsFreeTurn(const vehicle::VehicleModel& model, double start, double stop, double step,
-                                       const analysis::TrimOptions& options, double preferredSpeed,
-                                       const InputLocation& rollWhere, const InputLocation& speedsWhere) {
-  const auto turns = calcHandsFreeTurns(model, start, stop, step, options, rollWhere, speedsWhere);
-  return analysis::restoreTrim(model, turns[analysis::chooseHandsFreeTurn(turns, preferredSpeed)].trim);
-}
-
 void checkStudyOptions(const studies::StudyOptions& opt, const InputLocation& shapeWhere, const InputLocation& speedsWhere) {
   for (const double v : opt.shapeSpeeds)
     if (v < opt.sweep.start || v > opt.sweep.stop) {

@@ -68,12 +68,6 @@ std::vector<analysis::HandsFreeTurn> calcHandsFreeTurns(const vehicle::VehicleMo
                                                        double step, const analysis::TrimOptions& options,
                                                        const io::InputLocation& rollWhere, const io::InputLocation& speedsWhere);
 
-/// The default one of them (analysis::chooseHandsFreeTurn): nearest `preferredSpeed` (m/s; NaN: the
-/// turn continuing from straight running).
-analysis::TrimResult calcHandsFreeTurn(const vehicle::VehicleModel& model, double start, double stop, double step,
-                                       const analysis::TrimOptions& options, double preferredSpeed,
-                                       const io::InputLocation& rollWhere, const io::InputLocation& speedsWhere);
-
 /// Checks a study's options (`motostab study`): each mode-shape speed inside the swept speeds, and a
 /// turn's speeds above 0 (`speedsWhere`).
 void checkStudyOptions(const studies::StudyOptions& options, const io::InputLocation& shapeWhere,

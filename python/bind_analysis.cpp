@@ -49,10 +49,10 @@ py::dict trim(const ScenarioHandle& s, std::optional<double> speed, double rollD
     const VehicleModel model(*s.scenario);
     TrimOptions opt;
     opt.roll = rollDeg * M_PI / 180;
-    const TrimResult result = handsFree ? cli::calcHandsFreeTurn(model, grid[0], grid[1], grid[2], opt, speed.value_or(NAN),
-                                                                 argumentLocation("roll_deg"), argumentLocation("speeds"))
-                                        : analysis::calcTrim(model, *speed, opt);
-    return output::makeTrimJson(model, result);
+    if (!handsFree) return output::makeTrimJson(model, analysis::calcTrim(model, *speed, opt));
+    const auto turns = cli::calcHandsFreeTurns(model, grid[0], grid[1], grid[2], opt, argumentLocation("roll_deg"),
+                                               argumentLocation("speeds"));
+    return output::makeHandsFreeJson(model, turns, analysis::chooseHandsFreeTurn(turns, speed.value_or(NAN)));
   });
   return toPython(figures).cast<py::dict>();
 }

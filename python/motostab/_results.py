@@ -46,6 +46,10 @@ class Trim:
     residual: float                  #: infinity norm of the trim residual
     iterations: int                  #: Newton iterations
     tyres: Dict[str, float]          #: the contact model's outputs by name (forces N, angles rad)
+    #: hands-free only: whether this (the default) turn continues from straight running
+    continues_from_straight_running: Optional[bool] = None
+    #: hands-free only: every turn found, sorted by speed, each with the keys above and ``default``
+    hands_free_turns: Optional[List[Dict[str, Any]]] = None
 
     @classmethod
     def _from_core(cls, d: Mapping[str, Any]) -> "Trim":
