@@ -186,7 +186,6 @@ struct Root {
   bool oscillatory = false;
   ModeContent c;
   double rollYawLateral = 0, steer = 0, inPlane = 0, longitudinal = 0, compliance = 0, auxiliary = 0;
-  double steerAngle = 0;  // of an oscillation: calcSteerAngleShare
   StateRole topCompliance = StateRole::Compliance;  // the compliance role with the largest share
   std::optional<ModeLabel> label;
   int size() const { return conjugate >= 0 ? 2 : 1; }
@@ -203,22 +202,6 @@ ModeLabel getComplianceLabel(StateRole r) {
     case StateRole::RiderLean: return ModeLabel::RiderLean;
     default: return ModeLabel::Compliance;
   }
-}
-
-// |steer|^2 over the sum of |angle|^2 of the angular coordinates of eigenvector k (roll, yaw, pitch,
-// steer, suspension, compliance; all in rad).
-double calcSteerAngleShare(const LinearModel& lin, int k) {
-  double steer = 0, all = 0;
-  for (size_t i = 0; i < lin.states.size(); ++i) {
-    const LinearState& st = lin.states[i];
-    const bool angle = st.role == StateRole::Roll || st.role == StateRole::Yaw || st.role == StateRole::Pitch ||
-                       st.role == StateRole::Steer || st.role == StateRole::Suspension || isComplianceRole(st.role);
-    if (st.getKind() != StateKind::Coordinate || !angle) continue;
-    const double a = std::norm(lin.eigenvectors(i, k));
-    all += a;
-    if (st.role == StateRole::Steer) steer += a;
-  }
-  return all > 0 ? steer / all : 0.0;
 }
 
 // Roots of lin with their content: each complex pair once (the member with the positive imaginary part).
@@ -250,7 +233,6 @@ std::vector<Root> collectRoots(const LinearModel& lin) {
     r.longitudinal = r.c.calcLongitudinal();
     r.compliance = r.c.calcCompliance();
     r.auxiliary = r.c.calcAuxiliary();
-    if (r.oscillatory) r.steerAngle = calcSteerAngleShare(lin, r.k);
     double top = -1;
     for (int s = 0; s < kNumStateRoles; ++s)
       if (isComplianceRole(static_cast<StateRole>(s)) && r.c.role[s] > top) top = r.c.role[s], r.topCompliance = static_cast<StateRole>(s);
@@ -317,8 +299,8 @@ constexpr double kWobbleSteer = 0.02;
 
 // The lateral rigid-body modes (docs/methods.md): capsize (slowest roll-led real root), castor (most
 // negative steer-led real root), weave (of the lateral oscillations the one with the most roll, or the
-// pair of real roots it splits into at low speed), wobble (of the other oscillations with more steer than
-// roll, the one whose steer angle leads the angles most); in a turn, a slow pair for a capsize joined with another root.
+// pair of real roots it splits into at low speed), wobble (the oscillation with the most steer energy);
+// in a turn, a slow pair for a capsize joined with another root.
 void labelLateralModes(std::vector<Root>& roots, Capacity& cap, double zero) {
   auto roll = [](const Root& r) { return r.c.get(StateRole::Roll); };
   auto moreRoll = [&](const Root& a, const Root& b) { return roll(a) > roll(b); };
@@ -335,32 +317,49 @@ void labelLateralModes(std::vector<Root>& roots, Capacity& cap, double zero) {
     if (std::abs(x - y) > 1e-6 * std::max(x, y)) return x < y;
     return a.lambda.real() < b.lambda.real();
   };
+  // Where no lateral oscillation exists, the weave is split into two real roots (unstable, as the
+  // bicycle's at standstill or below the speed where they join in a tight turn): the two unstable real
+  // lateral roots with the most roll, named before the capsize so that it cannot take one of them.
+  auto splitRoot = [&](const Root& r) { return !r.oscillatory && lateralFamily(r) && r.lambda.real() > 0; };
+  if (!std::any_of(roots.begin(), roots.end(), [&](const Root& r) { return !r.label && r.oscillatory && lateralFamily(r); })) {
+    Root* split1 = pickBest(roots, splitRoot, moreRoll);
+    Root* split2 = pickBest(roots, [&](const Root& r) { return splitRoot(r) && &r != split1; }, moreRoll);
+    if (split2) cap.take(*split1, ModeLabel::Weave), cap.take(*split2, ModeLabel::Weave);
+  }
   if (Root* c = pickBest(roots, [&](const Root& r) { return !r.oscillatory && lateralFamily(r) && rollLed(r); }, slower))
     cap.take(*c, ModeLabel::Capsize);
   if (Root* c = pickBest(roots, [&](const Root& r) { return !r.oscillatory && lateralFamily(r) && r.steer > r.rollYawLateral; },
                          [](const Root& a, const Root& b) { return a.lambda.real() < b.lambda.real(); }))
     cap.take(*c, ModeLabel::Castor);
-  // The weave: below the speed where the weave pair becomes complex, its two real roots (unstable, as
-  // the bicycle's at standstill: the two unstable real lateral roots with the most roll); else the
-  // lateral oscillation with the most roll times (1 - auxiliary share).
-  auto splitRoot = [&](const Root& r) { return !r.oscillatory && lateralFamily(r) && r.lambda.real() > 0; };
-  Root* split1 = pickBest(roots, splitRoot, moreRoll);
-  Root* split2 = pickBest(roots, [&](const Root& r) { return splitRoot(r) && &r != split1; }, moreRoll);
-  if (split2)
-    cap.take(*split1, ModeLabel::Weave), cap.take(*split2, ModeLabel::Weave);
-  else if (Root* osc = pickBest(roots, [&](const Root& r) { return r.oscillatory && lateralFamily(r); }, moreMechanicalRoll))
+  // Weave and wobble. A weave candidate is a lateral oscillation; a wobble candidate an oscillation with
+  // a steer energy share of at least 0.02, above every compliance role's, not led by tyre lags. Where two
+  // or more oscillations are candidates, the wobble is named first: the one with the largest steer share
+  // (a steering damper's dissipation c |delta'|^2 goes where the steer rate is: the root it damps most),
+  // in-plane-led roots last; the weave is then the remaining lateral oscillation with the most roll times
+  // (1 - auxiliary share). Where only one oscillation is a candidate, it is the weave if lateral, else
+  // the wobble if its steer exceeds its roll.
+  auto weaveCandidate = [&](const Root& r) { return r.oscillatory && lateralFamily(r); };
+  auto wobbleCandidate = [&](const Root& r) {
+    return r.oscillatory && r.auxiliary <= 0.5 && r.steer >= kWobbleSteer && r.steer >= r.c.get(r.topCompliance);
+  };
+  // More steer energy; a root the in-plane motion leads (a pitch that turns the bars in a turn) only
+  // where no other candidate is left.
+  auto moreSteer = [](const Root& a, const Root& b) {
+    const bool inPlaneA = findFamily(a) == Family::InPlane, inPlaneB = findFamily(b) == Family::InPlane;
+    if (inPlaneA != inPlaneB) return inPlaneB;
+    return a.steer > b.steer;
+  };
+  const auto candidates = std::count_if(roots.begin(), roots.end(), [&](const Root& r) {
+    return !r.label && (weaveCandidate(r) || wobbleCandidate(r));
+  });
+  if (candidates >= 2) {
+    if (Root* w = pickBest(roots, wobbleCandidate, moreSteer)) cap.take(*w, ModeLabel::Wobble);
+    if (Root* osc = pickBest(roots, weaveCandidate, moreMechanicalRoll)) cap.take(*osc, ModeLabel::Weave);
+  } else if (Root* osc = pickBest(roots, weaveCandidate, moreMechanicalRoll)) {
     cap.take(*osc, ModeLabel::Weave);
-  // Of the oscillations with enough steer energy, the one where the steer angle has the largest share
-  // of the angles: the front frame turning about the steer axis, whatever energy a small pitch of the
-  // frames on stiff tyres carries with it (in a turn, steer and pitch couple).
-  if (Root* w = pickBest(
-          roots,
-          [](const Root& r) {
-            return r.oscillatory && r.auxiliary <= 0.5 && r.steer > r.c.get(StateRole::Roll) && r.steer >= kWobbleSteer &&
-                   r.steer >= r.c.get(r.topCompliance);
-          },
-          [](const Root& a, const Root& b) { return a.steerAngle > b.steerAngle; }))
+  } else if (Root* w = pickBest(roots, [&](const Root& r) { return wobbleCandidate(r) && r.steer > roll(r); }, moreSteer)) {
     cap.take(*w, ModeLabel::Wobble);
+  }
   // In a turn the capsize root may join another into a slow pair: at most half the weave's |lambda|.
   const Root* weave = nullptr;
   for (const Root& r : roots)
