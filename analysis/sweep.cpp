@@ -29,17 +29,19 @@ std::vector<double> makeSpeedGrid(double start, double stop, double step) {
 }
 
 RootAtSpeed calcBranchRoot(const VehicleModel& model, const SweepResult& sweep, const ModeBranch& branch, size_t k,
-                           double v, const SweepOptions& opt) {
+                           double v, const SweepOptions& opt, bool withLabel) {
   TrimResult trim = restoreTrim(model, sweep.trims[k]);
   updTrim(model, v, opt.trim, trim);
-  const LinearModel lin = linearizeInPlace(model, trim, opt.linearize);
+  LinearizeOptions linearize = opt.linearize;
+  linearize.labelModes = withLabel;
+  const LinearModel lin = linearizeInPlace(model, trim, linearize);
   const int kb = findBestMatch(sweep.models[k], branch.index[k], lin);
-  return {lin.eigenvalues[kb], static_cast<size_t>(kb) < lin.labels.size() ? lin.labels[kb] : labelModes(lin)[kb]};
+  return {lin.eigenvalues[kb], withLabel ? std::optional<ModeLabel>(lin.labels[kb]) : std::nullopt};
 }
 
 double calcBranchRealPart(const VehicleModel& model, const SweepResult& sweep, const ModeBranch& branch, size_t k,
                           double v, const SweepOptions& opt) {
-  return calcBranchRoot(model, sweep, branch, k, v, opt).lambda.real();
+  return calcBranchRoot(model, sweep, branch, k, v, opt, false).lambda.real();
 }
 
 namespace {
@@ -377,16 +379,19 @@ void refineCrossing(const VehicleModel& m, const SweepOptions& opt, const SweepO
   const ModeBranch& br = *c.branch;
   const double f0 = br.eigenvalue[c.k].real(), f1 = br.eigenvalue[c.k + 1].real();
   c.found.stabilising = f0 > 0;
-  std::vector<std::pair<double, RootAtSpeed>> seen;
+  std::vector<std::pair<double, std::complex<double>>> seen;
   auto f = [&](double v) {
-    seen.push_back({v, calcBranchRoot(m, out, br, c.k, v, fixed)});
-    return seen.back().second.lambda.real();
+    seen.push_back({v, calcBranchRoot(m, out, br, c.k, v, fixed, false).lambda});
+    return seen.back().second.real();
   };
   try {
     c.found.speed = findRoot(f, out.speeds[c.k], out.speeds[c.k + 1], f0, f1, opt.criticalSpeedTolerance);
+    const bool sameLabel = br.labels[c.k] == br.labels[c.k + 1];
     auto at = std::find_if(seen.begin(), seen.end(), [&](const auto& e) { return e.first == c.found.speed; });
-    const RootAtSpeed root = at != seen.end() ? at->second : calcBranchRoot(m, out, br, c.k, c.found.speed, fixed);
-    c.found.mode = br.labels[c.k] == br.labels[c.k + 1] ? br.labels[c.k] : root.label;
+    // The label at the critical speed only where the grid labels differ (labelling costs a mass matrix).
+    const RootAtSpeed root = at != seen.end() && sameLabel ? RootAtSpeed{at->second, br.labels[c.k]}
+                                                           : calcBranchRoot(m, out, br, c.k, c.found.speed, fixed, !sameLabel);
+    c.found.mode = sameLabel ? br.labels[c.k] : *root.label;
     c.found.frequency = std::abs(root.lambda.imag()) / (2 * M_PI);
   } catch (const TrimError&) {
     if (!opt.keepFailedSpeeds) throw;

@@ -1,6 +1,8 @@
 #pragma once
 // Linear stability sweep over forward speed: trim, linearise, label and track modes, and find
 // the stability boundaries (critical speeds) by root bracketing.
+#include <complex>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -107,13 +109,14 @@ std::vector<StableRange> calcStableGridRanges(const SweepResult& sweep);
 /// narrower than the grid step that holds no grid speed is not found. Empty when no grid speed is stable.
 std::vector<StableRange> calcStableSpeedRanges(const SweepResult& sweep);
 
-/// The eigenvalue continuing `branch` from sweep speed index k to speed v (1/s), and its label there.
+/// The eigenvalue continuing `branch` from sweep speed index k to speed v (1/s), and with `withLabel`
+/// its label there (labelModes: the cost of the rate mass matrix and the energy shares).
 struct RootAtSpeed {
   std::complex<double> lambda;
-  ModeLabel label = ModeLabel::Other;
+  std::optional<ModeLabel> label;
 };
 RootAtSpeed calcBranchRoot(const vehicle::VehicleModel& model, const SweepResult& sweep, const ModeBranch& branch, size_t k,
-                           double v, const SweepOptions& options);
+                           double v, const SweepOptions& options, bool withLabel = true);
 
 /// Real part of the eigenvalue continuing `branch` from sweep speed index k, at speed v (1/s).
 double calcBranchRealPart(const vehicle::VehicleModel& model, const SweepResult& sweep, const ModeBranch& branch, size_t k,
