@@ -1,5 +1,5 @@
 // motostab trim, and sweep/linearize with --roll-deg, run as a user would: pinned trim.json keys,
-// map outputs, and the exit codes of bad turn input (2) and of a trim that fails (1).
+// map outputs, and the exit codes of bad turn input (2) and of a trim that fails (3).
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -56,16 +56,23 @@ TEST(TurnCli, TrimWritesThePinnedKeys) {
   EXPECT_NE(output.find("steer torque"), std::string::npos) << output;
 }
 
-TEST(TurnCli, HandsFreeTrimHasZeroSteerTorque) {
-  const auto dir = makeTempDir("turn_cli_hands_free");
-  std::string output;
-  ASSERT_EQ(test::runMotostab({"trim", kScenarios + "whipple-benchmark.yaml", "--roll-deg", "3", "--hands-free",
-                               "--speeds", "4:8:0.5", "--out", "h"},
+// trim.json of `trim --hands-free` on the Whipple bicycle at `rollDeg` over `speeds`, run in a new
+// folder; `output`: what it printed.
+nlohmann::json runHandsFreeWhipple(const std::string& test, const std::string& rollDeg, const std::string& speeds,
+                                   std::string& output) {
+  const auto dir = makeTempDir("turn_cli_" + test);
+  EXPECT_EQ(test::runMotostab({"trim", kScenarios + "whipple-benchmark.yaml", "--roll-deg", rollDeg, "--hands-free",
+                               "--speeds", speeds, "--out", "h"},
                               dir.string(), output),
             0)
       << output;
   std::ifstream in(dir / "h" / "trim.json");
-  const nlohmann::json j = nlohmann::json::parse(in);
+  return nlohmann::json::parse(in);
+}
+
+TEST(TurnCli, HandsFreeTrimHasZeroSteerTorque) {
+  std::string output;
+  const nlohmann::json j = runHandsFreeWhipple("hands_free", "3", "4:8:0.5", output);
   EXPECT_EQ(j["steer_torque_Nm"].get<double>(), 0.0);
   EXPECT_NEAR(j["speed_mps"].get<double>(), 6.0, 0.1);  // near the capsize speed, 6.024 m/s
   EXPECT_TRUE(j["tyres"].empty());                        // rolling constraints report no tyre outputs
@@ -75,15 +82,8 @@ TEST(TurnCli, HandsFreeTrimHasZeroSteerTorque) {
 // straight running marked and the default (the Whipple bicycle at 20 deg: 3.14 and 5.53 m/s, the latter
 // reached from the capsize speed).
 TEST(TurnCli, HandsFreeTrimListsEveryTurn) {
-  const auto dir = makeTempDir("turn_cli_hands_free_list");
   std::string output;
-  ASSERT_EQ(test::runMotostab({"trim", kScenarios + "whipple-benchmark.yaml", "--roll-deg", "20", "--hands-free",
-                               "--speeds", "0.5:8:0.25", "--out", "h"},
-                              dir.string(), output),
-            0)
-      << output;
-  std::ifstream in(dir / "h" / "trim.json");
-  const nlohmann::json j = nlohmann::json::parse(in);
+  const nlohmann::json j = runHandsFreeWhipple("hands_free_list", "20", "0.5:8:0.25", output);
   const nlohmann::json& turns = j.at("hands_free_turns");
   ASSERT_GE(turns.size(), 2u);
   int marked = 0, defaults = 0;
