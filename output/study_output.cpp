@@ -184,8 +184,8 @@ std::string makeWeaveShapesFigure(const StudyResult& st, const StudyOptions& opt
     const std::string here = "abs($1 - " + fmt(st.weaveShapes[i].speed, 9) + ") < 1e-6";  // the CSV holds more digits
     os << "  set title " << gnuplotText(fmt(st.weaveShapes[i].speed, 1) + " m/s, " +
                                         fmt(st.weaveShapes[i].eigenvalue.imag() / (2 * M_PI), 2) + " Hz") << "\n";
-    if (i == 0) os << "  set key at screen 0.5, screen 0.12 center horizontal maxrows 2 width 2\n";
-    else os << "  unset key\n";
+    if (i == 0) os << "  set key at screen 0.5, screen 0.14 center horizontal maxcols 5 width 1\n";
+    else os << "  unset key\n  unset ylabel\n";
     for (size_t c = 0; c < names.size(); ++c) {
       const double gain = largest[c] >= 0.1 || largest[c] <= 0 ? 1 : std::pow(10.0, std::ceil(std::log10(0.1 / largest[c])));
       const std::string g = fmt(gain, 0), sel = "(" + here + " && strcol(2) eq '" + names[c] + "')";

@@ -200,12 +200,19 @@ std::string makeSpeedMarks(const SweepResult& sweep, const std::vector<ModeLabel
   if (n < 2) return os.str();
   int tag = firstTag;
   std::vector<size_t> marked;
+  std::vector<std::pair<double, double>> placed;  // marks placed, as fractions of the axes
   for (int i = 0; i < count; ++i) marked.push_back(static_cast<size_t>(std::lround(i * double(n - 1) / std::max(1, count - 1))));
   marked.erase(std::unique(marked.begin(), marked.end()), marked.end());
   for (ModeLabel m : modes)
     for (size_t k : marked) {
       const ModeBranch* b = findLabelledBranch(sweep.branches, m, k);
       if (!b || b->eigenvalue[k].imag() < 0 || !window.contains(b->eigenvalue[k])) continue;
+      const double x = (b->eigenvalue[k].real() - window.real.lo) / (window.real.hi - window.real.lo);
+      const double y = (calcFrequencyHz(b->eigenvalue[k]) - window.frequency.lo) / (window.frequency.hi - window.frequency.lo);
+      bool crowded = false;  // a mark within 3 % of the axes of one already placed would hide it
+      for (const auto& [px, py] : placed) crowded = crowded || (std::abs(x - px) < 0.03 && std::abs(y - py) < 0.03);
+      if (crowded) continue;
+      placed.push_back({x, y});
       const size_t from = k + 1 < n ? k : k - 1;  // the step to the next speed (the last mark: the step into it)
       const auto p = b->eigenvalue[k], a = b->eigenvalue[from], c = b->eigenvalue[from + 1];
       os << "  set label " << tag << " " << gnuplotQuote(formatSpeed(sweep.speeds[k], sweep.speeds[k] == std::round(sweep.speeds[k]) ? 0 : 1))

@@ -19,7 +19,8 @@ std::vector<std::string> getPlottedModes();
 
 /// gnuplot labels and arrows marking the speed along the root loci of `modes`: at `count` evenly
 /// spaced speeds of the grid, a circle with the speed (m/s) on each mode's upper root and an arrowhead
-/// along its step to the next speed. Points outside `window` are not marked. Label and arrow tags
+/// along its step to the next speed. Points outside `window`, and points within 3 % of the axes of a
+/// mark already placed (modes in the order given, speeds ascending), are not marked. Label and arrow tags
 /// are numbered from `firstTag`.
 std::string makeSpeedMarks(const analysis::SweepResult& sweep, const std::vector<analysis::ModeLabel>& modes,
                            const LocusWindow& window, int firstTag, int count = 5);
