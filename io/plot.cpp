@@ -15,6 +15,15 @@ std::string gnuplotQuote(const std::string& text) {
   return out + "'";
 }
 
+std::string gnuplotText(const std::string& text) {
+  std::string escaped;
+  for (char c : text) {
+    if (std::string("_^@&~{}\\").find(c) != std::string::npos) escaped += '\\';
+    escaped += c;
+  }
+  return gnuplotQuote(escaped);
+}
+
 namespace {
 std::string shellQuote(const std::string& text) {
   std::string out = "'";

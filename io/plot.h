@@ -14,4 +14,9 @@ void renderGnuplot(const std::filesystem::path& dir, const std::string& name, co
 /// Quotes a string for use inside a gnuplot single-quoted literal.
 std::string gnuplotQuote(const std::string& text);
 
+/// Quotes plain text (a mode, a file's column, a scenario name) for a title, label or key entry of a
+/// terminal with enhanced text: the markup characters _ ^ @ & ~ { } \ are escaped, so that
+/// "swingarm_torsion" prints as written rather than with a subscript.
+std::string gnuplotText(const std::string& text);
+
 }  // namespace motostab::io

@@ -12,6 +12,7 @@
 
 #include "output/scenario_output.h"
 #include "output/sweep_output.h"
+#include "output/plot_window.h"
 #include "output/writer_tools.h"
 
 namespace motostab::output {
@@ -37,9 +38,22 @@ std::string formatCell(double v, bool sign) {
   return os.str();
 }
 
-// Root locus: every scenario's labelled modes as points, colour per scenario, point type per mode.
+std::vector<analysis::ModeLabel> getNamedModes() {
+  std::vector<analysis::ModeLabel> out;
+  for (const std::string& m : getPlottedModes()) out.push_back(*analysis::parseModeLabel(m));
+  return out;
+}
+
+// Root locus: every scenario's labelled modes as points (upper half-plane), colour per scenario, point
+// type per mode; the axes fitted to all of them; the speed marked along the first scenario's loci.
 std::string makeRootLocusPlot(const std::vector<ComparedSweep>& sweeps) {
   const std::vector<std::string> modes = getPlottedModes();
+  std::vector<std::complex<double>> named;
+  for (const ComparedSweep& c : sweeps) {
+    const auto points = collectNamedPoints(c.sweep.branches, getNamedModes());
+    named.insert(named.end(), points.begin(), points.end());
+  }
+  const LocusWindow window = calcLocusWindow(named);
   std::string cmd;
   for (size_t i = 0; i < sweeps.size(); ++i)
     for (size_t m = 0; m < modes.size(); ++m) {
@@ -47,12 +61,16 @@ std::string makeRootLocusPlot(const std::vector<ComparedSweep>& sweeps) {
       for (const auto& b : sweeps[i].sweep.branches) present = present || analysis::toString(b.label) == modes[m];
       if (!present) continue;
       cmd += std::string(cmd.empty() ? "  plot " : ", \\\n       ") + gnuplotQuote(sweeps[i].label + "/eigenvalues.csv") +
-             " using 3:(strcol(2) eq '" + modes[m] + "' ? $5 : NaN) with points pt " + std::to_string(getPointType(m)) +
-             " ps 0.6 linecolor rgb '" + getColour(i) + "' title " + gnuplotQuote(sweeps[i].label + " " + modes[m]);
+             " using (strcol(2) eq '" + modes[m] + "' && $4 >= 0 ? $3 : NaN):5 with points pt " + std::to_string(getPointType(m)) +
+             " ps 0.6 linecolor rgb '" + getColour(i) + "' title " + gnuplotText(sweeps[i].label + " " + modes[m]);
     }
-  return "  set datafile separator ','\n  set datafile columnheaders\n  set grid\n  set key outside right\n"
-         "  set title 'Root loci compared'\n  set xlabel 'real part (1/s)'\n  set ylabel 'frequency (Hz)'\n" +
-         (cmd.empty() ? "  plot NaN notitle" : cmd) + "\n";
+  if (!cmd.empty())
+    cmd += ", \\\n       keyentry with points pt 6 ps 1.2 lc rgb 'black' title " +
+           gnuplotText("speed (m/s) along " + sweeps.front().label + ", arrows: increasing speed");
+  return "  set datafile separator ','\n  set datafile columnheaders\n  set grid\n  set key below\n"
+         "  set title 'Root loci compared'\n  set xlabel 'real part (1/s)'\n  set ylabel 'frequency (Hz)'\n"
+         "  set yzeroaxis linetype -1\n" +
+         formatLocusRanges(window) + makeSpeedMarks(sweeps.front().sweep, getNamedModes(), window, 101) + (cmd.empty() ? "  plot NaN notitle" : cmd) + "\n";
 }
 
 // Real parts against speed: one line per labelled branch (eigenvalues.csv holds one row per branch
@@ -60,13 +78,16 @@ std::string makeRootLocusPlot(const std::vector<ComparedSweep>& sweeps) {
 std::string makeRealPartPlot(const std::vector<ComparedSweep>& sweeps) {
   const std::vector<std::string> modes = getPlottedModes();
   std::string cmd;
+  std::vector<double> values;  // the drawn real parts where the root carries the mode's label: the vertical axis
   for (size_t i = 0; i < sweeps.size(); ++i) {
     const auto& branches = sweeps[i].sweep.branches;
     std::set<size_t> titled;
     for (size_t b = 0; b < branches.size(); ++b)
       for (size_t m = 0; m < modes.size(); ++m) {
         if (analysis::toString(branches[b].label) != modes[m]) continue;
-        const std::string title = titled.insert(m).second ? "title " + gnuplotQuote(sweeps[i].label + " " + modes[m]) : "notitle";
+        const std::string title = titled.insert(m).second ? "title " + gnuplotText(sweeps[i].label + " " + modes[m]) : "notitle";
+        for (size_t k = 0; k < branches[b].eigenvalue.size(); ++k)
+          if (analysis::toString(branches[b].labels[k]) == modes[m]) values.push_back(branches[b].eigenvalue[k].real());
         cmd += std::string(cmd.empty() ? "  plot " : ", \\\n       ") + gnuplotQuote(sweeps[i].label + "/eigenvalues.csv") +
                " every " + std::to_string(branches.size()) + "::" + std::to_string(b) + " using 1:3 with lines linecolor rgb '" +
                getColour(i) + "' dashtype " + std::to_string(getDashType(m)) + " linewidth 2 " + title;
@@ -74,7 +95,7 @@ std::string makeRealPartPlot(const std::vector<ComparedSweep>& sweeps) {
   }
   return "  set datafile separator ','\n  set datafile columnheaders\n  set grid\n  set key below\n"
          "  set title 'Real parts against speed compared (below zero: stable)'\n  set xlabel 'forward speed v (m/s)'\n"
-         "  set ylabel 'real part (1/s)'\n  set xzeroaxis linetype -1\n" +
+         "  set ylabel 'real part (1/s)'\n  set xzeroaxis linetype -1\n" + formatRange("y", calcAxisRange(values)) +
          (cmd.empty() ? "  plot NaN notitle" : cmd) + "\n";
 }
 

@@ -347,13 +347,26 @@ void writeEigenvaluePlots(const std::filesystem::path& dir, const DiagnosisResul
     writeFileAtomically(dir / ("eigen_" + mode + ".csv"), w.getText());
     const std::string f = "'eigen_" + mode + ".csv'";
     renderGnuplot(dir, "eigen_" + mode,
-                  "set datafile separator ','\nset key autotitle columnhead\nset multiplot layout 2,1 title '" + mode + "'\n"
-                  "set xlabel 'speed (m/s)'\nset ylabel 'real part (1/s)'\nset grid\n"
+                  "set datafile separator ','\nset key autotitle columnhead\nset multiplot layout 2,1 title " +
+                  gnuplotText(mode + " eigenvalues: measured (error bars: sigma), baseline model, extended model") + "\n"
+                  "set xlabel 'forward speed v (m/s)'\nset ylabel 'real part (1/s)'\nset grid\n"
                   "plot " + f + " u 1:2:4 w yerrorbars t 'measured', '' u 1:6 w p pt 6 t 'baseline', '' u 1:8 w p pt 7 t 'extended'\n"
                   "set ylabel 'frequency (Hz)'\n"
                   "plot " + f + " u 1:3:5 w yerrorbars t 'measured', '' u 1:7 w p pt 6 t 'baseline', '' u 1:9 w p pt 7 t 'extended'\n"
                   "unset multiplot\n");
   }
+}
+
+// A response plot's vertical axis: the column and its unit (the model's rad or rad/s through the
+// signal's scale, or the column's own unit when its gain is fitted).
+std::string describeSignalAxis(const diagnosis::ResponseSignal& sig) {
+  const bool angle = sig.quantity == diagnosis::Quantity::RollAngle || sig.quantity == diagnosis::Quantity::SteerAngle;
+  const std::string unit = angle ? "rad" : "rad/s";
+  if (sig.freeScale) return sig.column + " (the column's unit; the models through a fitted gain)";
+  if (sig.scale == 1) return sig.column + " (" + unit + ")";
+  std::ostringstream os;
+  os << sig.column << " (column unit: column x " << sig.scale << " = " << unit << ")";
+  return os.str();
 }
 
 void writeResponsePlots(const std::filesystem::path& dir, const DiagnosisResult& r) {
@@ -368,7 +381,9 @@ void writeResponsePlots(const std::filesystem::path& dir, const DiagnosisResult&
       writeFileAtomically(dir / (name + ".csv"), w.getText());
       renderGnuplot(dir, name,
                     "set datafile separator ','\nset key autotitle columnhead\nset grid\nset xlabel 'time (s)'\n"
-                    "set ylabel " + gnuplotQuote(rr.signals[j].column) + "\n"
+                    "set title " + gnuplotText("Run " + std::to_string(run + 1) + " at " + fmt(rr.speed, 3) + " m/s: " +
+                                               rr.signals[j].column + " (" + getQuantityName(rr.signals[j].quantity) + ")") + "\n"
+                    "set ylabel " + gnuplotText(describeSignalAxis(rr.signals[j])) + "\n"
                     "plot '" + name + ".csv' u 1:2 w l t 'measured', '' u 1:3 w l t 'baseline', '' u 1:4 w l t 'extended'\n");
     }
   }

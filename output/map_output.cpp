@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "output/sweep_output.h"
+#include "output/plot_window.h"
 #include "output/writer_tools.h"
 
 namespace motostab::output {
@@ -76,14 +77,34 @@ void writeModeBlocks(const TurnMapResult& map, ModeLabel mode, const std::string
   }
 }
 
-// A gnuplot `plot for` over the rolls of one mode's data file.
-std::string plotPerRoll(const TurnMapResult& map, const std::string& mode, const std::string& columns, bool first) {
+// One series per mode over every roll's block of its data file (each block a line), coloured by the
+// roll angle (column 2) through the palette; weave solid, wobble dashed.
+std::string plotPerRoll(const std::string& mode, const std::string& columns, bool first) {
+  return (first ? "  plot " : ", \\\n       ") + std::string("'map_") + mode + ".dat' using " + columns +
+         ":2 with linespoints pt 7 ps 0.4 lw 1.5 lc palette z dt " + (first ? "1" : "2") + " title " +
+         gnuplotText(mode + (first ? " (solid)" : " (dashed)"));
+}
+
+// A palette without repeats, dark enough on white at both ends, over the rolls (colour bar in deg).
+std::string setRollPalette(const TurnMapResult& map) {
+  const double lo = toDegrees(map.rolls.front()), hi = toDegrees(map.rolls.back());
   std::ostringstream os;
-  os << (first ? "  plot " : ", \\\n       ") << "for [i=0:" << map.rolls.size() - 1 << "] 'map_" << mode
-     << ".dat' index i using " << columns << " with linespoints pt 7 ps 0.4 lc i+1 dt " << (first ? 1 : 2)
-     << " title sprintf('" << mode << " %+.1f deg', " << toDegrees(map.rolls.front()) << " + i * "
-     << (map.rolls.size() > 1 ? toDegrees(map.rolls[1] - map.rolls[0]) : 0.0) << ")";
+  os << std::setprecision(17) << "  set palette defined (0 '#0d0887', 1 '#6a00a8', 2 '#b12a90', 3 '#e16462', 4 '#f2844b', 5 '#c8a000')\n"
+     << "  set cbrange [" << lo << ":" << (hi > lo ? hi : lo + 1) << "]\n  set cblabel 'roll angle (deg)'\n";
+  if (map.rolls.size() <= 12) {  // a tic at each roll of the map
+    os << "  set cbtics (";
+    for (size_t j = 0; j < map.rolls.size(); ++j) os << (j ? ", " : "") << toDegrees(map.rolls[j]);
+    os << ")\n";
+  }
   return os.str();
+}
+
+// The map's sweep nearest straight running (smallest |roll|).
+size_t findLeastRoll(const TurnMapResult& map) {
+  size_t best = 0;
+  for (size_t j = 1; j < map.rolls.size(); ++j)
+    if (std::abs(map.rolls[j]) < std::abs(map.rolls[best])) best = j;
+  return best;
 }
 
 void writeMapCsv(const std::filesystem::path& dir, const TurnMapResult& map) {
@@ -133,28 +154,43 @@ void writeTurnMapOutputs(const std::filesystem::path& dir, const std::string& na
   for (ModeLabel m : listPresentModes(map)) modes.push_back(toString(m));
   for (ModeLabel m : listPresentModes(map)) writeModeData(dir, map, m);
   if (modes.empty()) return;  // nothing to plot
-  const std::string title = gnuplotQuote(name);
   std::ostringstream damping;
-  damping << "  set multiplot layout 1," << modes.size() << " title 'Damping ratio over speed and roll: ' . " << title << "\n"
-          << "  set view map\n  set pm3d at b corners2color c1\n  set palette defined (-0.1 'red', 0 'white', 0.3 'blue')\n"
-          << "  set cbrange [-0.1:0.3]\n  set xlabel 'speed (m/s)'\n  set ylabel 'roll (deg)'\n  unset key\n";
+  damping << "  set multiplot layout 1," << modes.size() << " title " << gnuplotText("Damping ratio over speed and roll: " + name)
+          << "\n  set view map\n  set pm3d at b corners2color c1\n  set palette defined (-0.1 'red', 0 'white', 0.3 'blue')\n"
+          << "  set cbrange [-0.1:0.3]\n  set cblabel 'damping ratio (-), below 0: unstable'\n"
+          << "  set xlabel 'forward speed v (m/s)'\n  set ylabel 'roll angle (deg)'\n  unset key\n";
   for (const auto& m : modes)
-    damping << "  set title '" << m << "'\n  splot 'grid_" << m << ".dat' using 1:2:6 with pm3d\n";
+    damping << "  set title " << gnuplotText(m) << "\n  splot 'grid_" << m << ".dat' using 1:2:6 with pm3d\n";
   damping << "  unset multiplot\n";
   renderGnuplot(dir, "damping_map", damping.str());
-  const std::string common = "  set grid\n  set key outside right\n";
-  std::string loci, reals, which;
-  for (size_t i = 0; i < modes.size(); ++i) {
-    loci += plotPerRoll(map, modes[i], "3:5", i == 0);
-    reals += plotPerRoll(map, modes[i], "1:3", i == 0);
-    which += (i ? " and " : "") + modes[i] + (i ? " (dashed)" : " (solid)");
+  std::vector<std::complex<double>> named;  // the plotted modes at every roll: the axes
+  std::vector<double> reals;
+  for (const SweepResult& s : map.sweeps) {
+    const auto points = collectNamedPoints(s.branches, listPresentModes(map));
+    named.insert(named.end(), points.begin(), points.end());
+    for (const auto& l : points) reals.push_back(l.real());
   }
+  const LocusWindow window = calcLocusWindow(named);
+  const size_t marked = findLeastRoll(map);
+  std::ostringstream rollName;
+  rollName << std::fixed << std::setprecision(1) << toDegrees(map.rolls[marked]);
+  const std::string common = "  set grid\n  set key below\n" + setRollPalette(map);
+  std::string loci, realParts, which;
+  for (size_t i = 0; i < modes.size(); ++i) {
+    loci += plotPerRoll(modes[i], "3:5", i == 0);
+    realParts += plotPerRoll(modes[i], "1:3", i == 0);
+    which += (i ? " and " : "") + modes[i];
+  }
+  loci += ", \\\n       keyentry with points pt 6 ps 1.2 lc rgb 'black' title " +
+          gnuplotText("speed (m/s) along the " + rollName.str() + " deg loci, arrows: increasing speed");
   renderGnuplot(dir, "root_loci",
-                common + "  set title 'Root loci of " + which + " at each roll: ' . " + title +
-                    "\n  set xlabel 'real part (1/s)'\n  set ylabel 'frequency (Hz)'\n" + loci + "\n");
+                common + "  set title " + gnuplotText("Root loci of " + which + " at each roll: " + name) +
+                    "\n  set xlabel 'real part (1/s)'\n  set ylabel 'frequency (Hz)'\n  set yzeroaxis lt -1\n" +
+                    formatLocusRanges(window) + makeSpeedMarks(map.sweeps[marked], listPresentModes(map), window, 101) + loci + "\n");
   renderGnuplot(dir, "real_part_vs_speed",
-                common + "  set title 'Real part against speed per roll, " + which + ": ' . " + title +
-                    "\n  set xlabel 'speed (m/s)'\n  set ylabel 'real part (1/s)'\n  set xzeroaxis lt -1\n" + reals + "\n");
+                common + "  set title " + gnuplotText("Real part against speed per roll, " + which + ": " + name) +
+                    "\n  set xlabel 'forward speed v (m/s)'\n  set ylabel 'real part (1/s)'\n  set xzeroaxis lt -1\n" +
+                    formatRange("y", calcAxisRange(reals)) + realParts + "\n");
 }
 
 std::string formatTurnMapTable(const TurnMapResult& map) {

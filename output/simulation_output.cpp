@@ -31,7 +31,7 @@ void writeResponsePlot(const std::filesystem::path& dir, const SimulationResult&
     if (std::find(rigid.begin(), rigid.end(), n) == rigid.end()) panels.push_back({n, n + " (rad or m)"});
   }
   std::string body = "  set datafile separator ','\n  set grid\n  set key off\n  set xlabel 'time (s)'\n";
-  body += "  set multiplot layout " + std::to_string(panels.size()) + ",1 title " + gnuplotQuote(title) + "\n";
+  body += "  set multiplot layout " + std::to_string(panels.size()) + ",1 title " + gnuplotText(title) + "\n";
   for (const auto& p : panels) {
     const int col = result.getColumnIndex(p.column) + 1;
     const bool angle = p.label.find("deg") != std::string::npos;

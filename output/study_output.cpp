@@ -1,10 +1,12 @@
 #include "output/study_output.h"
 
+#include <algorithm>
 #include <cmath>
 #include <iomanip>
 #include <sstream>
 
 #include "output/sweep_output.h"
+#include "output/plot_window.h"
 #include "output/writer_tools.h"
 #include "studies/study_findings.h"
 
@@ -25,7 +27,7 @@ std::string variantSeries(const std::vector<std::string>& variants, const std::s
   for (const auto& v : variants)
     out += (out.empty() ? "" : ", \\\n       ") + std::string("'study_modes.csv' using ") + xcol + ":((strcol(1) eq '" + v +
            "' && strcol(2) eq '" + stiffness + "' && strcol(4) eq '" + mode + "') ? " + ycol + " : NaN) with " + style +
-           " title '" + v + " " + mode + "'";
+           " title " + gnuplotText(v + " " + mode);
   return out;
 }
 
@@ -136,34 +138,79 @@ void writeWeaveShapes(const std::filesystem::path& dir, const StudyResult& st) {
   writeFileAtomically(dir / "weave_shapes.csv", shapes.getText());
 }
 
+// Fig. 9: the weave and wobble of every variant at the identified stiffness (upper half-plane), the
+// axes fitted to them, the speed marked along the first variant's loci.
+std::string makeRootLocusFigure(const StudyResult& st, const StudyOptions& opt) {
+  const std::vector<analysis::ModeLabel> modes{analysis::ModeLabel::Weave, analysis::ModeLabel::Wobble};
+  std::vector<std::complex<double>> named;
+  for (const auto& v : st.nominal) {
+    const auto points = collectNamedPoints(v.sweep.branches, modes);
+    named.insert(named.end(), points.begin(), points.end());
+  }
+  const LocusWindow window = calcLocusWindow(named);
+  const std::string marks = st.nominal.empty() ? "" : makeSpeedMarks(st.nominal.front().sweep, modes, window, 101);
+  const std::string markKey = st.nominal.empty() ? "" : ", \\\n       keyentry with points pt 6 ps 1.2 lc rgb 'black' title " +
+      gnuplotText("speed (m/s) along " + st.nominal.front().name + ", arrows: increasing speed");
+  return "  set datafile separator ','\n  set grid\n  set key below\n  set title " +
+         gnuplotText("Root loci of weave and wobble: " + st.scenario) +
+         "\n  set xlabel 'real part (1/s)'\n  set ylabel 'frequency (Hz)'\n  set yzeroaxis lt -1\n" + formatLocusRanges(window) +
+         marks + "  plot " + variantSeries(opt.variants, "identified", "weave", "($6 >= 0 ? $5 : NaN)", "$7", "points pt 7 ps 0.5") +
+         ", \\\n       " + variantSeries(opt.variants, "identified", "wobble", "($6 >= 0 ? $5 : NaN)", "$7", "points pt 5 ps 0.5") +
+         markKey + "\n";
+}
+
+// Fig. 12: one compass panel per speed, an arrow per component in its own colour (legend below the
+// first panel). A component whose largest amplitude is under 0.1 is drawn magnified by a power of ten,
+// said in the legend.
+std::string makeWeaveShapesFigure(const StudyResult& st, const StudyOptions& opt) {
+  static const char* colours[] = {"#1f5fbf", "#c0392b", "#2e8b3e", "#8e44ad", "#d35400", "#16a085", "#7f8c8d", "#b7950b"};
+  std::vector<std::string> names;
+  std::vector<double> largest;
+  for (const auto& s : st.weaveShapes)
+    for (const auto& c : s.components) {
+      const size_t i = std::find(names.begin(), names.end(), c.name) - names.begin();
+      if (i == names.size()) names.push_back(c.name), largest.push_back(0);
+      largest[i] = std::max(largest[i], c.amplitude);
+    }
+  const size_t n = std::max<size_t>(1, st.weaveShapes.size());
+  std::ostringstream os;
+  os << "  set datafile separator ','\n  set grid\n  set size ratio -1\n  set xrange [-1.15:1.15]\n  set yrange [-1.15:1.15]\n"
+     << "  set xtics 0.5\n  set ytics 0.5\n  set xzeroaxis lt -1\n  set yzeroaxis lt -1\n"
+     << "  set xlabel 'in phase with steer'\n  set ylabel 'leading steer by 90 deg'\n"
+     << "  set multiplot layout 1," << n << " margins 0.07, 0.98, 0.3, 0.9 spacing 0.06 title "
+     << gnuplotText("Weave mode shapes (" + opt.shapeVariant + " model; angles in rad, lateral = rear-hub displacement / "
+                    "wheelbase; largest component 1)") << "\n";
+  for (size_t i = 0; i < st.weaveShapes.size(); ++i) {
+    const std::string here = "abs($1 - " + fmt(st.weaveShapes[i].speed, 9) + ") < 1e-6";  // the CSV holds more digits
+    os << "  set title " << gnuplotText(fmt(st.weaveShapes[i].speed, 1) + " m/s, " +
+                                        fmt(st.weaveShapes[i].eigenvalue.imag() / (2 * M_PI), 2) + " Hz") << "\n";
+    if (i == 0) os << "  set key at screen 0.5, screen 0.14 center horizontal maxcols 5 width 1\n";
+    else os << "  unset key\n  unset ylabel\n";
+    for (size_t c = 0; c < names.size(); ++c) {
+      const double gain = largest[c] >= 0.1 || largest[c] <= 0 ? 1 : std::pow(10.0, std::ceil(std::log10(0.1 / largest[c])));
+      const std::string g = fmt(gain, 0), sel = "(" + here + " && strcol(2) eq '" + names[c] + "')";
+      os << (c ? ", \\\n       " : "  plot ") << "'weave_shapes.csv' skip 1 using (0):(0):(" << sel << " ? " << g << "*$5 : NaN):("
+         << g << "*$6) with vectors head filled size screen 0.012,25 lw 2.5 lc rgb '" << colours[c % std::size(colours)]
+         << "' title " << gnuplotText(names[c] + (gain > 1 ? " (x" + g + ")" : ""));
+    }
+    os << "\n";
+  }
+  os << "  unset multiplot\n";
+  return os.str();
+}
+
 // Figs. 9-12 from study_modes.csv and weave_shapes.csv.
 void writeStudyPlots(const std::filesystem::path& dir, const StudyResult& st, const StudyOptions& opt) {
   const std::string common = "  set datafile separator ','\n  set grid\n  set key outside right\n";
-  renderGnuplot(dir, "fig09_root_locus",
-                common + "  set title " + gnuplotQuote("Root loci of weave and wobble: " + st.scenario) +
-                    "\n  set xlabel 'real part (1/s)'\n  set ylabel 'frequency (Hz)'\n  plot " +
-                    variantSeries(opt.variants, "identified", "weave", "5", "$7", "points pt 7 ps 0.5") + ", \\\n       " +
-                    variantSeries(opt.variants, "identified", "wobble", "5", "$7", "points pt 5 ps 0.5") + "\n");
+  renderGnuplot(dir, "fig09_root_locus", makeRootLocusFigure(st, opt));
   for (const char* which : {"identified", "halved"}) {
     const bool halved = std::string(which) == "halved";
     renderGnuplot(dir, halved ? "fig11_weave_real_part_halved" : "fig10_weave_real_part",
-                  common + "  set title " + gnuplotQuote(std::string("Weave real part, ") + which + " swingarm stiffness: " + st.scenario) +
-                      "\n  set xlabel 'speed (m/s)'\n  set ylabel 'real part (1/s)'\n  set xrange [10:40]\n  plot " +
+                  common + "  set title " + gnuplotText(std::string("Weave real part, ") + which + " swingarm stiffness: " + st.scenario) +
+                      "\n  set xlabel 'forward speed v (m/s)'\n  set ylabel 'real part (1/s)'\n  set xrange [10:40]\n  plot " +
                       variantSeries(opt.variants, which, "weave", "3", "($6 > 0 ? $5 : NaN)", "linespoints pt 7 ps 0.5") + "\n");
   }
-  std::string panels;
-  for (size_t i = 0; i < st.weaveShapes.size(); ++i) {
-    const double v = st.weaveShapes[i].speed;
-    const std::string here = "(abs($1 - " + fmt(v, 9) + ") < 1e-6)";  // the CSV holds the speed to more digits
-    panels += "  set title '" + fmt(v, 1) + " m/s'\n  plot 'weave_shapes.csv' using (0):(0):(" + here +
-              " ? $5 : NaN):6 with vectors head filled lw 2 notitle, \\\n       'weave_shapes.csv' using (" + here +
-              " ? 1.15*$5 : NaN):(1.15*$6):2 with labels notitle\n";
-  }
-  renderGnuplot(dir, "fig12_weave_shapes",
-                common + "  set size ratio -1\n  set xrange [-1.3:1.3]\n  set yrange [-1.3:1.3]\n  set multiplot layout 1," +
-                    std::to_string(std::max<size_t>(1, st.weaveShapes.size())) + " title " +
-                    gnuplotQuote("Weave mode shapes (" + opt.shapeVariant + "), steer phase 0") + "\n" + panels +
-                    "  unset multiplot\n");
+  renderGnuplot(dir, "fig12_weave_shapes", makeWeaveShapesFigure(st, opt));
 }
 
 }  // namespace

@@ -8,6 +8,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "output/plot_window.h"
 #include "output/writer_tools.h"
 
 namespace motostab::output {
@@ -37,20 +38,34 @@ const ModeLabel kPlottedModes[] = {ModeLabel::Weave, ModeLabel::Capsize, ModeLab
 // Line colours of the plotted modes, in the order above.
 const char* kModeColours[] = {"#1f5fbf", "#c0392b", "#2e8b3e", "#8e44ad"};
 
-// Plots each labelled mode present in the sweep from eigenvalues.csv as points.
-std::string plotModes(const SweepResult& sweep, const std::string& xcol, const std::string& ycol) {
-  std::string cmd = "  plot ";
-  bool first = true;
-  for (ModeLabel m : kPlottedModes) {
+// The legend entry of the speed marks.
+const char* kSpeedMarkKey = "keyentry with points pt 6 ps 1.2 lc rgb 'black' title 'speed (m/s), arrows: increasing speed'";
+
+const std::vector<ModeLabel> kNamedModes(std::begin(kPlottedModes), std::end(kPlottedModes));
+
+// gnuplot: true on a row of eigenvalues.csv whose mode is none of the plotted ones.
+std::string isOtherRow() {
+  std::string cond;
+  for (ModeLabel m : kPlottedModes) cond += std::string(cond.empty() ? "" : " && ") + "strcol(2) ne '" + toString(m) + "'";
+  return cond;
+}
+
+// The root locus from eigenvalues.csv, upper half-plane: the other roots grey, each plotted mode in its
+// colour, speed marks, the legend's notes (roots off the axes).
+std::string plotLocus(const SweepResult& sweep, const std::string& note) {
+  std::string cmd = "  plot 'eigenvalues.csv' using ((" + isOtherRow() +
+                    ") && $4 >= 0 ? $3 : NaN):5 with points pt 7 ps 0.35 lc rgb '#b0b0b0' title 'other roots'";
+  for (size_t m = 0; m < std::size(kPlottedModes); ++m) {
     bool present = false;
     for (const auto& b : sweep.branches)
-      present = present || std::find(b.labels.begin(), b.labels.end(), m) != b.labels.end();
+      present = present || std::find(b.labels.begin(), b.labels.end(), kPlottedModes[m]) != b.labels.end();
     if (!present) continue;
-    const std::string name = toString(m);
-    cmd += std::string(first ? "" : ", \\\n       ") + "'eigenvalues.csv' using " + xcol + ":(strcol(2) eq '" + name +
-           "' ? " + ycol + " : NaN) with points pt 7 ps 0.5 title '" + name + "'";
-    first = false;
+    const std::string name = toString(kPlottedModes[m]);
+    cmd += ", \\\n       'eigenvalues.csv' using (strcol(2) eq '" + name + "' && $4 >= 0 ? $3 : NaN):5 with points pt 7 ps 0.55 lc rgb '" +
+           kModeColours[m] + "' title " + gnuplotText(name);
   }
+  cmd += ", \\\n       " + std::string(kSpeedMarkKey);
+  if (!note.empty()) cmd += ", \\\n       keyentry with points pt -1 title " + gnuplotText(note);
   return cmd + "\n";
 }
 
@@ -90,7 +105,7 @@ std::string markCriticalSpeeds(const SweepResult& sweep, size_t firstTag) {
     const std::string v = formatSpeed(c.speed, -1);
     os << "  set arrow " << firstTag + i << " from " << v << ", graph 0 to " << v
        << ", graph 1 nohead front dashtype 3 linewidth 1.5 linecolor rgb '#303030'\n"
-       << "  set label " << firstTag + i << " '" << toString(c.mode) << " " << formatSpeed(c.speed, 3) << " m/s' at " << v
+       << "  set label " << firstTag + i << " " << gnuplotText(std::string(toString(c.mode)) + " " + formatSpeed(c.speed, 3) + " m/s") << " at " << v
        << ", graph 0.98 rotate by 90 right offset -0.9,0 front boxed\n";
   }
   return os.str();
@@ -99,7 +114,7 @@ std::string markCriticalSpeeds(const SweepResult& sweep, size_t firstTag) {
 // Meijaard et al. (2007), Fig. 3: real parts solid, imaginary parts (rad/s) dashed, one line per
 // tracked branch. eigenvalues.csv holds one row per branch and speed, speed-major, so `every N::B`
 // picks branch B's rows in speed order.
-std::string plotBranches(const SweepResult& sweep) {
+std::string plotBranches(const SweepResult& sweep, const std::string& note) {
   const size_t n = sweep.branches.size();
   std::string cmd = "  plot ";
   bool first = true;
@@ -108,6 +123,13 @@ std::string plotBranches(const SweepResult& sweep) {
     first = false;
   };
   const std::string style = sweep.speeds.size() > 1 ? "lines" : "linespoints pointtype 7";  // one speed: a point
+  bool otherTitled = false;  // the other roots' real parts, thin and grey, behind the plotted modes
+  for (size_t b = 0; b < n; ++b) {
+    if (std::find(std::begin(kPlottedModes), std::end(kPlottedModes), sweep.branches[b].label) != std::end(kPlottedModes)) continue;
+    add("'eigenvalues.csv' every " + std::to_string(n) + "::" + std::to_string(b) + " using 1:3 with " + style +
+        " linecolor rgb '#b8b8b8' linewidth 1 " + (otherTitled ? "notitle" : "title 'other roots, real part'"));
+    otherTitled = true;
+  }
   for (size_t m = 0; m < std::size(kPlottedModes); ++m) {
     const std::string colour = std::string("linecolor rgb '") + kModeColours[m] + "' linewidth 2";
     bool titled = false, imagDrawn = false;
@@ -117,35 +139,91 @@ std::string plotBranches(const SweepResult& sweep) {
       const std::string rows = "'eigenvalues.csv' every " + std::to_string(n) + "::" + std::to_string(b);
       const std::string name = toString(br.label);
       add(rows + " using 1:3 with " + style + " " + colour + " dashtype 1 " +
-          (titled ? "notitle" : "title '" + name + ", real part'"));
+          (titled ? "notitle" : "title " + gnuplotText(name + ", real part")));
       titled = true;
       bool complex = false;  // one dashed line per complex pair, |imag| in rad/s where it is complex
       for (const auto& l : br.eigenvalue) complex = complex || std::abs(l.imag()) > 1e-9;
       if (!complex || imagDrawn) continue;
-      add(rows + " using 1:(abs($4) > 1e-9 ? abs($4) : NaN) with " + style + " " + colour + " dashtype 2 title '" + name +
-          ", imaginary part'");
+      add(rows + " using 1:(abs($4) > 1e-9 ? abs($4) : NaN) with " + style + " " + colour + " dashtype 2 title " +
+          gnuplotText(name + ", imaginary part"));
       imagDrawn = true;
     }
   }
+  if (!note.empty()) add("keyentry with lines linecolor rgb '#b8b8b8' title " + gnuplotText(note));
   return first ? "  plot NaN notitle\n" : cmd + "\n";
+}
+
+std::string makeRootLocusPlot(const std::string& name, const SweepResult& sweep) {
+  const LocusWindow window = calcLocusWindow(collectNamedPoints(sweep.branches, kNamedModes));
+  const std::string note = formatLocusNote(findHiddenRoots(window, collectOtherRoots(sweep.branches, kNamedModes)));
+  return "  set datafile separator ','\n  set datafile columnheaders\n  set grid\n  set key below\n"
+         "  set title " + gnuplotText("Root locus: " + name) + "\n"
+         "  set xlabel 'real part (1/s)'\n  set ylabel 'frequency (Hz)'\n  set yzeroaxis linetype -1\n" +
+         formatLocusRanges(window) + makeSpeedMarks(sweep, kNamedModes, window, 101) + plotLocus(sweep, note);
 }
 
 std::string makeEigenvaluePlot(const std::string& name, const SweepResult& sweep) {
   const std::vector<StableRange> stable = calcStableSpeedRanges(sweep);
   // One speed: a range of 1 m/s around it (gnuplot cannot draw an empty range).
   const double first = sweep.speeds.front(), last = sweep.speeds.back(), pad = first < last ? 0 : 0.5;
+  // Vertical axis: the plotted modes' real parts and imaginary parts (where drawn), each where the root
+  // carries the mode's label; the other roots beyond it are counted in the legend.
+  std::vector<double> values;
+  std::vector<std::vector<std::complex<double>>> others;
+  for (const ModeBranch& b : sweep.branches) {
+    const bool plotted = std::find(kNamedModes.begin(), kNamedModes.end(), b.label) != kNamedModes.end();
+    const auto below = std::count_if(b.eigenvalue.begin(), b.eigenvalue.end(), [](auto l) { return l.imag() < 0; });
+    if (!plotted && 2 * size_t(below) <= b.eigenvalue.size()) others.push_back(b.eigenvalue);  // a pair counted once
+    for (size_t k = 0; plotted && k < b.eigenvalue.size(); ++k)
+      if (b.labels[k] == b.label) values.push_back(b.eigenvalue[k].real()), values.push_back(std::abs(b.eigenvalue[k].imag()));
+  }
+  const AxisRange yrange = calcAxisRange(values);
   return "  set datafile separator ','\n  set datafile columnheaders\n  set grid\n"
          "  set key below\n  set style textbox opaque noborder\n"
-         "  set title " + gnuplotQuote("Eigenvalues against speed: " + name) + "\n"
+         "  set title " + gnuplotText("Eigenvalues against speed: " + name) + "\n"
          "  set xlabel 'forward speed v (m/s)'\n"
          "  set ylabel 'eigenvalue: real part (1/s, solid), imaginary part (rad/s, dashed)'\n"
          "  set xzeroaxis linetype -1\n"
          "  set xrange [" + formatSpeed(std::max(0.0, first - pad), -1) + ":" + formatSpeed(last + pad, -1) + "]\n" +
+         formatRange("y", yrange) +
          markStableRanges(sweep, stable) + markCriticalSpeeds(sweep, std::max<size_t>(stable.size(), 1) + 1) +
-         plotBranches(sweep);
+         plotBranches(sweep, formatRealPartNote(findHiddenRealParts(yrange, others)));
 }
 
 }  // namespace
+
+std::string makeSpeedMarks(const SweepResult& sweep, const std::vector<ModeLabel>& modes, const LocusWindow& window, int firstTag,
+                           int count) {
+  std::ostringstream os;
+  os << std::setprecision(17) << "  # Speed marks: the speed (m/s) and an arrowhead towards the next speed of the grid.\n";
+  const size_t n = sweep.speeds.size();
+  if (n < 2) return os.str();
+  int tag = firstTag;
+  std::vector<size_t> marked;
+  std::vector<std::pair<double, double>> placed;  // marks placed, as fractions of the axes
+  for (int i = 0; i < count; ++i) marked.push_back(static_cast<size_t>(std::lround(i * double(n - 1) / std::max(1, count - 1))));
+  marked.erase(std::unique(marked.begin(), marked.end()), marked.end());
+  for (ModeLabel m : modes)
+    for (size_t k : marked) {
+      const ModeBranch* b = findLabelledBranch(sweep.branches, m, k);
+      if (!b || b->eigenvalue[k].imag() < 0 || !window.contains(b->eigenvalue[k])) continue;
+      const double x = (b->eigenvalue[k].real() - window.real.lo) / (window.real.hi - window.real.lo);
+      const double y = (calcFrequencyHz(b->eigenvalue[k]) - window.frequency.lo) / (window.frequency.hi - window.frequency.lo);
+      bool crowded = false;  // a mark within 3 % of the axes of one already placed would hide it
+      for (const auto& [px, py] : placed) crowded = crowded || (std::abs(x - px) < 0.03 && std::abs(y - py) < 0.03);
+      if (crowded) continue;
+      placed.push_back({x, y});
+      const size_t from = k + 1 < n ? k : k - 1;  // the step to the next speed (the last mark: the step into it)
+      const auto p = b->eigenvalue[k], a = b->eigenvalue[from], c = b->eigenvalue[from + 1];
+      os << "  set label " << tag << " " << gnuplotQuote(formatSpeed(sweep.speeds[k], sweep.speeds[k] == std::round(sweep.speeds[k]) ? 0 : 1))
+         << " at " << p.real() << ", " << calcFrequencyHz(p) << " point pt 6 ps 1.2 offset 0.7,0.7 font ',9' front\n";
+      if (std::abs(c - a) > 0)
+        os << "  set arrow " << tag << " from " << a.real() << ", " << calcFrequencyHz(a) << " to " << c.real() << ", "
+           << calcFrequencyHz(c) << " head filled size screen 0.012,25 linecolor rgb 'black' front\n";
+      ++tag;
+    }
+  return os.str();
+}
 
 std::vector<std::string> getPlottedModes() {
   std::vector<std::string> names;
@@ -198,10 +276,7 @@ void writeSweepData(const std::filesystem::path& dir, const std::string& name, c
 
 void writeSweepOutputs(const std::filesystem::path& dir, const std::string& name, const SweepResult& sweep) {
   writeSweepData(dir, name, sweep);
-  const std::string common = "  set datafile separator ','\n  set grid\n  set key outside right\n";
-  renderGnuplot(dir, "root_locus",
-                common + "  set title " + gnuplotQuote("Root locus: " + name) +
-                    "\n  set xlabel 'real part (1/s)'\n  set ylabel 'frequency (Hz)'\n" + plotModes(sweep, "3", "$5"));
+  renderGnuplot(dir, "root_locus", makeRootLocusPlot(name, sweep));
   renderGnuplot(dir, "real_part_vs_speed", makeEigenvaluePlot(name, sweep));
 }
 

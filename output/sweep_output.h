@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "analysis/sweep.h"
+#include "output/plot_window.h"
 #include "nlohmann/json.hpp"
 
 namespace motostab::output {
@@ -16,6 +17,14 @@ double calcDampingRatio(std::complex<double> lambda);
 /// The modes the sweep plots draw, in their order (weave, capsize, castor, wobble).
 std::vector<std::string> getPlottedModes();
 
+/// gnuplot labels and arrows marking the speed along the root loci of `modes`: at `count` evenly
+/// spaced speeds of the grid, a circle with the speed (m/s) on each mode's upper root and an arrowhead
+/// along its step to the next speed. Points outside `window`, and points within 3 % of the axes of a
+/// mark already placed (modes in the order given, speeds ascending), are not marked. Label and arrow tags
+/// are numbered from `firstTag`.
+std::string makeSpeedMarks(const analysis::SweepResult& sweep, const std::vector<analysis::ModeLabel>& modes,
+                           const LocusWindow& window, int firstTag, int count = 5);
+
 /// DIR/eigenvalues.csv and DIR/summary.json only.
 void writeSweepData(const std::filesystem::path& dir, const std::string& scenarioName, const analysis::SweepResult& sweep);
 
@@ -23,7 +32,9 @@ void writeSweepData(const std::filesystem::path& dir, const std::string& scenari
 /// root's label at that speed), DIR/summary.json (critical speeds, stable ranges, failed speeds), the root locus, and real_part_vs_speed: the
 /// eigenvalues against speed as in Meijaard et al. (2007) Fig. 3 (real parts solid, imaginary parts in
 /// rad/s dashed), each critical speed a labelled vertical line, the stable ranges shaded
-/// (calcStableSpeedRanges), or a note that there is none; each plot with its gnuplot script.
+/// (calcStableSpeedRanges), or a note that there is none; each plot with its gnuplot script. Both plots
+/// are scaled to the plotted modes (calcLocusWindow, calcAxisRange); the other roots are drawn grey
+/// and the legend counts those off the axes. The root locus marks the speed (makeSpeedMarks).
 void writeSweepOutputs(const std::filesystem::path& dir, const std::string& scenarioName, const analysis::SweepResult& sweep);
 
 /// The summary as JSON: every critical speed (mode, speed, direction, frequency, refined), the first of

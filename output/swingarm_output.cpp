@@ -93,7 +93,7 @@ void writeAxesPlot(const std::filesystem::path& dir, const std::string& name, co
   const char* colours[] = {"black", "#1f77b4", "#d62728", "#2ca02c", "#9467bd"};
   for (size_t i = 0; i < axes.size(); ++i)
     gp << ", \\\n  '" << name << "_axes.dat' index " << i << " with lines lw " << (i == 0 ? 3 : 2) << " lc rgb '"
-       << colours[i % 5] << "' title " << gnuplotQuote(axes[i].label);
+       << colours[i % 5] << "' title " << gnuplotText(axes[i].label);
   gp << "\n";
   renderGnuplot(dir, name, gp.str());
 }
@@ -212,8 +212,8 @@ void plotFrfMagnitudePhase(const FrfTest& test, const FrfResult& r, const std::f
   for (size_t c = 0; c < test.channels.size(); ++c) {
     const int base = 2 + 9 * static_cast<int>(c);
     mp << (c ? ", " : "") << "'frf.csv' using 1:" << base + 2 << " with points pt 7 ps 0.3 lc " << c + 1
-       << " title " << gnuplotQuote(test.channels[c].name + " H1") << ", '' using 1:" << base + 7 << " with lines lc "
-       << c + 1 << " title " << gnuplotQuote(test.channels[c].name + " model");
+       << " title " << gnuplotText(test.channels[c].name + " H1") << ", '' using 1:" << base + 7 << " with lines lc "
+       << c + 1 << " title " << gnuplotText(test.channels[c].name + " model");
   }
   mp << "\nunset logscale y\nset ylabel 'phase (deg)'\nset xlabel 'frequency (Hz)'\nset yrange [-180:180]\nset ytics 90\n"
      << "unset title\nplot ";
@@ -228,12 +228,12 @@ void plotFrfMagnitudePhase(const FrfTest& test, const FrfResult& r, const std::f
 
 void plotCoherence(const FrfTest& test, const FrfResult& r, const std::filesystem::path& dir) {
   std::ostringstream co;
-  co << "set datafile separator ','\nset grid\nset xlabel 'frequency (Hz)'\nset ylabel 'coherence'\n"
+  co << "set datafile separator ','\nset grid\nset xlabel 'frequency (Hz)'\nset ylabel 'coherence (-)'\n"
      << "set yrange [0:1.02]\nset xrange [" << r.options.fMin << ":" << calcPlotTop(r) << "]\nset title 'H1 coherence ("
      << r.frf.averages << " hits)'\nplot ";
   for (size_t c = 0; c < test.channels.size(); ++c)
     co << (c ? ", " : "") << "'frf.csv' using 1:" << 2 + 9 * c + 4 << " with lines lc " << c + 1 << " title "
-       << gnuplotQuote(test.channels[c].name);
+       << gnuplotText(test.channels[c].name);
   renderGnuplot(dir, "coherence", co.str() + "\n");
 }
 

@@ -19,10 +19,10 @@ void writeTyreCurve(const std::filesystem::path& dir, const std::string& title, 
   writeFileAtomically(dir / "forces.csv", csv.getText());
   const std::string common = "  set datafile separator ','\n  set grid\n  set key off\n  set xlabel 'slip angle (deg, ISO)'\n";
   renderGnuplot(dir, "fy_vs_slip",
-                common + "  set title " + gnuplotQuote("Side force: " + title) +
+                common + "  set title " + gnuplotText("Side force: " + title) +
                     "\n  set ylabel 'Fy (N)'\n  plot 'forces.csv' skip 1 using ($2*180/pi):6 with lines lw 2\n");
   renderGnuplot(dir, "mz_vs_slip",
-                common + "  set title " + gnuplotQuote("Aligning moment: " + title) +
+                common + "  set title " + gnuplotText("Aligning moment: " + title) +
                     "\n  set ylabel 'Mz (N m)'\n  plot 'forces.csv' skip 1 using ($2*180/pi):7 with lines lw 2\n");
 }
 

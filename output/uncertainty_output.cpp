@@ -218,40 +218,49 @@ bool hasFiniteBand(const ModeQuantiles& q, bool frequency) {
   return false;
 }
 
-// Fan chart of column pair (p05, p50, p95) = (c, c+1, c+2) of mode_quantiles.csv against speed, for
-// the modes with a finite band (c = 7: frequency); empty when no mode has one.
-std::string makeFanBody(const UncertaintySummary& sum, int c, const std::string& title, const std::string& ylabel) {
-  std::string b = kCommon + "  set title " + gnuplotQuote(title) + "\n  set xlabel 'speed (m/s)'\n  set ylabel " +
-                  gnuplotQuote(ylabel) + "\n  set xzeroaxis lt -1\n  set style fill transparent solid 0.25 noborder\n  plot ";
+// Fan chart of column triple (p05, p50, p95) = (c, c+1, c+2) of mode_quantiles.csv against speed, one
+// row of panels per mode with a finite band (c = 7: frequency): left the band and the median, each
+// panel scaled to its mode, right the band's width p95 - p05, which stays readable when the band is thin
+// beside the median's change with speed. Empty when no mode has a band.
+std::string makeFanBody(const UncertaintySummary& sum, int c, const std::string& title, const std::string& quantity,
+                        const std::string& unit) {
+  std::vector<size_t> shown;
+  for (size_t m = 0; m < sum.modes.size(); ++m)
+    if (hasFiniteBand(sum.modes[m], c == 7)) shown.push_back(m);
+  if (shown.empty()) return "";
   const std::string lo = std::to_string(c), mid = std::to_string(c + 1), hi = std::to_string(c + 2);
-  bool any = false;
-  for (size_t m = 0; m < sum.modes.size(); ++m) {
-    if (!hasFiniteBand(sum.modes[m], c == 7)) continue;
-    const std::string sel = "(strcol(2) eq '" + sum.modes[m].mode + "' ? $";
-    const std::string lt = std::to_string(m + 1);
-    b += std::string(any ? ", \\\n       " : "") + "'mode_quantiles.csv' skip 1 using 1:" + sel + lo + " : NaN):" + sel + hi +
-         " : NaN) with filledcurves lt " + lt + " title '" + sum.modes[m].mode + " 5-95 %', \\\n       " +
-         "'mode_quantiles.csv' skip 1 using 1:" + sel + mid + " : NaN) with lines lt " + lt + " lw 2 title '" +
-         sum.modes[m].mode + " median'";
-    any = true;
+  std::string b = "  set datafile separator ','\n  set grid\n  set key top right\n  set xzeroaxis lt -1\n"
+                  "  set style fill transparent solid 0.35 noborder\n  set multiplot layout " +
+                  std::to_string(shown.size()) + ",2 title " + gnuplotText(title) + "\n";
+  for (size_t i = 0; i < shown.size(); ++i) {
+    const std::string mode = sum.modes[shown[i]].mode, lt = std::to_string(shown[i] + 1);
+    const std::string sel = "(strcol(2) eq '" + mode + "' ? $";
+    const std::string xlabel = i + 1 == shown.size() ? "'forward speed v (m/s)'" : "''";
+    b += "  set xlabel " + xlabel + "\n  set ylabel " + gnuplotText(mode + " " + quantity + " (" + unit + ")") + "\n" +
+         "  plot 'mode_quantiles.csv' skip 1 using 1:" + sel + lo + " : NaN):" + sel + hi + " : NaN) with filledcurves lt " + lt +
+         " title '5-95 %', \\\n       'mode_quantiles.csv' skip 1 using 1:" + sel + mid + " : NaN) with lines lt " + lt +
+         " lw 2 title 'median'\n" + "  set ylabel " + gnuplotText(mode + " band width (" + unit + ")") + "\n" +
+         "  plot 'mode_quantiles.csv' skip 1 using 1:" + sel + hi + " - $" + lo + " : NaN) with lines lt " + lt +
+         " lw 2 title 'p95 - p05'\n";
   }
-  return any ? b + "\n" : std::string();
+  return b + "  unset multiplot\n";
 }
 
 // Histogram of one samples.csv column (1-based), binned by gnuplot into 30 bins over its range.
 std::string makeHistogramBody(const std::string& mode, int column) {
   const std::string c = std::to_string(column);
-  return kCommon + "  set title " + gnuplotQuote("First " + mode + " critical speed over the samples") +
+  return kCommon + "  set title " + gnuplotText("First " + mode + " critical speed over the samples") +
          "\n  set xlabel 'critical speed (m/s)'\n  set ylabel 'samples'\n  set style fill solid 0.5\n"
          "  stats 'samples.csv' skip 1 using " + c + " nooutput\n"
          "  w = (STATS_max - STATS_min) / 30.0\n  if (w <= 0) { w = 1e-6 }\n"
          "  plot 'samples.csv' skip 1 using (STATS_min + w * (floor((column(" + c + ") - STATS_min) / w) + 0.5)):(1.0) "
-         "smooth frequency with boxes title '" + mode + "'\n";
+         "smooth frequency with boxes title " + gnuplotText(mode) + "\n";
 }
 
 std::string makeSensitivityBody(const std::string& mode, std::pair<size_t, size_t> rows, bool sobol) {
-  return kCommon + "  set title " + gnuplotQuote("Sensitivity of the " + mode + " critical speed") +
-         "\n  set ylabel " + gnuplotQuote(sobol ? "first-order Sobol index" : "standardised regression coefficient") +
+  return kCommon + "  set title " + gnuplotText("Sensitivity of the " + mode + " critical speed") +
+         "\n  set ylabel " + gnuplotQuote(sobol ? "first-order Sobol index (-)" : "standardised regression coefficient (-)") +
+         "\n  set xlabel 'parameter'" +
          "\n  set style fill solid 0.6\n  set boxwidth 0.7\n  set xtics rotate by -45 noenhanced\n  unset key\n"
          "  plot 'sensitivity.csv' skip 1 every ::" + std::to_string(rows.first) + "::" + std::to_string(rows.second) +
          " using 0:4:xtic(3) with boxes\n";
@@ -268,8 +277,8 @@ void writeUncertaintyOutputs(const std::filesystem::path& dir, const std::string
   writeFileAtomically(dir / "sensitivity.csv", makeSensitivityCsv(s, sum, rows));
   writeFileAtomically(dir / "report.md", makeUncertaintyReport(name, s, sum));
   // A chart is drawn only when it has a finite value to show (few samples can leave none).
-  const std::string fanReal = makeFanBody(sum, 4, "Real part against speed, 5-95 % band: " + name, "real part (1/s)");
-  const std::string fanFrequency = makeFanBody(sum, 7, "Frequency against speed, 5-95 % band: " + name, "frequency (Hz)");
+  const std::string fanReal = makeFanBody(sum, 4, "Real part against speed, 5-95 % band: " + name, "real part", "1/s");
+  const std::string fanFrequency = makeFanBody(sum, 7, "Frequency against speed, 5-95 % band: " + name, "frequency", "Hz");
   if (!fanReal.empty()) renderGnuplot(dir, "fan_real_part", fanReal);
   if (!fanFrequency.empty()) renderGnuplot(dir, "fan_frequency", fanFrequency);
   const bool sobol = s.options.method == SamplingMethod::Sobol;

@@ -13,6 +13,7 @@ using io::CsvWriter;
 using io::formatJson;
 using io::formatNumber;
 using io::gnuplotQuote;
+using io::gnuplotText;
 using io::renderGnuplot;
 using io::writeFileAtomically;
 
