@@ -8,6 +8,7 @@
 // (its likelihood term (g/tau)^2 <= 1), disagrees when g > tau, cannot be checked when the motorcycle
 // has no such mode over the finding's speeds or refuses its variant or change.
 #include <cmath>
+#include <complex>
 #include <memory>
 #include <string>
 #include <vector>

@@ -42,7 +42,7 @@ double findCrossing(const std::vector<double>& v, const std::vector<double>& re)
 
 // Findings of the supersport with `hidden` as a paper states them, 0.5 m/s clear of any crossing: the
 // wobble stable (or unstable) on each side of where its real part crosses zero, and its frequency at
-// three speeds within +/- 0.1 Hz; the weave's frequency at three speeds within +/- 0.05 Hz.
+// five speeds within +/- 0.1 Hz; the weave's frequency at five speeds within +/- 0.05 Hz.
 std::string writeFindings(const fs::path& dir, const std::vector<std::string>& hidden) {
   analysis::SweepOptions opt;
   opt.start = kLow, opt.stop = kHigh, opt.step = kStep;
@@ -63,7 +63,7 @@ std::string writeFindings(const fs::path& dir, const std::vector<std::string>& h
     y += std::string("  - {kind: ") + high + ", mode: wobble, speeds_mps: " + range(vc + 0.5, kHigh) + ", tolerance_per_s: 0.05}\n";
   }
   for (const auto* b : {&wobble, &weave})
-    for (double v : {kLow, 0.5 * (kLow + kHigh), kHigh}) {
+    for (double v : {kLow, 0.75 * kLow + 0.25 * kHigh, 0.5 * (kLow + kHigh), 0.25 * kLow + 0.75 * kHigh, kHigh}) {
       const size_t k = std::lround((v - kLow) / kStep);
       const double f = std::abs(b->eigenvalue[k].imag()) / (2 * M_PI), d = b == &wobble ? 0.1 : 0.05;
       y += std::string("  - {kind: frequency_within, mode: ") + analysis::toString(b->label) + ", speeds_mps: " + range(v, v) +
@@ -91,6 +91,8 @@ std::string describe(const DiagnosisResult& r) {
     why += "\n" + f.name + " dBIC " + formatNumber(f.deltaBic, 4) + " p " + formatNumber(f.pValue, 3) + ":";
     for (const auto& x : f.failed) why += " " + x + ";";
     for (const auto& e : f.parameters) why += " " + e.name + " = " + formatNumber(e.value, 4);
+    why += "; fold RMS";
+    for (double x : f.foldRms) why += " " + formatNumber(x, 3);
   }
   for (const auto& c : r.causes)
     for (const auto& e : c.fit.parameters)
@@ -110,19 +112,24 @@ class HiddenFindingsTest : public ::testing::Test {
   fs::path dir_;
 };
 
-// A steering damper of drawn damping (Cossalter 2006 and Sharp & Limebeer 2001 give 6.8 and 7.4 N m s/rad;
-// drawn over a range whose wobble critical speed lies in the findings' speeds, so that they bound the
-// damping from both sides): named, the drawn value inside its 95 % profile interval.
+// A steering damper of drawn damping, three draws (small against Cossalter's 6.8 and Sharp & Limebeer's
+// 7.4 N m s/rad: drawn where the wobble's critical speed stays inside the findings' speeds, so that the
+// findings bound the damping from both sides; below about 0.6 N m s/rad it moves the wobble too little for
+// findings at these tolerances, delta BIC -1): named, the drawn value inside its 95 % profile interval.
 TEST_F(HiddenFindingsTest, HiddenSteerDamperIsNamedWithAnIntervalCoveringIt) {
-  const double c = testing::Draw(9127).uniform(0.3, 1.5);
-  const DiagnosisResult r = diagnose(dir_, {"steer_damper={damping_Nms_per_rad: " + formatNumber(c) + "}"});
-  const std::string why = "drawn c " + formatNumber(c) + describe(r);
-  ASSERT_EQ(r.causes.size(), 1u) << why;
-  const FitSummary& named = r.causes[0].fit;
-  ASSERT_EQ(named.name, "steer_damper") << why;
-  EXPECT_LE(named.parameters[0].profileLow, c) << why;
-  EXPECT_GE(named.parameters[0].profileHigh, c) << why;
-  EXPECT_LT(r.extended.deviance, r.baseline.deviance) << why;
+  testing::Draw draw(9127);
+  for (int trial = 0; trial < 3; ++trial) {
+    const double c = draw.uniform(0.8, 1.6);
+    const DiagnosisResult r = diagnose(dir_, {"steer_damper={damping_Nms_per_rad: " + formatNumber(c) + "}"});
+    const std::string why = "drawn c " + formatNumber(c) + describe(r);
+    ASSERT_EQ(r.causes.size(), 1u) << why;
+    const FitSummary& named = r.causes[0].fit;
+    ASSERT_EQ(named.name, "steer_damper") << why;
+    EXPECT_LE(named.parameters[0].profileLow, c) << why;
+    EXPECT_GE(named.parameters[0].profileHigh, c) << why;
+    EXPECT_LT(named.parameters[0].profileHigh - named.parameters[0].profileLow, 2 * c) << why;  // bounded both ways
+    EXPECT_LT(r.extended.deviance, r.baseline.deviance) << why;
+  }
 }
 
 // The rider's arms on the bars (vehicle/rider_arms.h: Sharp 1994's 0.2 kg m^2 of added steer inertia, a
@@ -134,7 +141,6 @@ TEST_F(HiddenFindingsTest, HiddenRiderArmsAreNamedOrTheirLookAlike) {
   const DiagnosisResult r = diagnose(dir_, {"rider_arms={inertia_kgm2: 0.2, stiffness_Nm_per_rad: " + formatNumber(k) +
                                             ", damping_Nms_per_rad: " + formatNumber(c) + "}"});
   const std::string why = "drawn k " + formatNumber(k) + " c " + formatNumber(c) + describe(r);
-  std::cout << why << "\n";
   ASSERT_EQ(r.causes.size(), 1u) << why;
   const FitSummary& named = r.causes[0].fit;
   ASSERT_TRUE(named.name == "rider_arms" || named.name == "steer_damper") << why;
