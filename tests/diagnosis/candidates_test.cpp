@@ -66,7 +66,8 @@ TEST(Candidates, NoRiderLeanOnARiderlessBicycle) {
 // supersport's 0.129 and 0.122 m); the switched-on scenario loads with the scaled lengths.
 TEST(Candidates, TyreRelaxationScalesBothTyres) {
   const std::string file = kDir + "/scenarios/supersport.yaml";
-  const Candidate* c = find(listCandidates(makeScenarioTree(file, {}), {}), "tyre_relaxation");
+  const std::vector<Candidate> all = listCandidates(makeScenarioTree(file, {}), {});
+  const Candidate* c = find(all, "tyre_relaxation");
   ASSERT_NE(c, nullptr);
   ASSERT_EQ(c->parameters.size(), 1u);
   const double f = core::PortableRandom(77).drawUniform(0.3, 3);
