@@ -1,6 +1,9 @@
 // motostab sweep | linearize | study: scenario -> model -> trim -> linearise -> modes -> outputs.
+#include <chrono>
 #include <cmath>
+#include <filesystem>
 #include <iostream>
+#include <optional>
 
 #include "apps/commands.h"
 #include "apps/common_options.h"
@@ -12,7 +15,10 @@
 #include "output/linear_models_mat.h"
 #include "output/map_output.h"
 #include "output/scenario_output.h"
+#include "diagnosis/measured_data.h"
+#include "io/csv.h"
 #include "output/study_output.h"
+#include "output/study_verdicts_output.h"
 #include "output/sweep_output.h"
 #include "scenario/scenario_source.h"
 
@@ -178,12 +184,24 @@ void registerLinearizeCommand(CLI::App& app) {
   });
 }
 
+// The findings file of `motostab study`: --findings, else for a scenario file DIR/NAME.yaml the bundled
+// DIR/../examples/seed-findings/NAME.yaml when it exists (the seed's supersport and enduro); empty: none.
+std::string findFindingsFile(const std::string& given, bool none, const std::string& scenarioFile) {
+  if (none) return "";
+  if (!given.empty()) return given;
+  const std::filesystem::path p(scenarioFile);
+  const std::filesystem::path bundled = p.parent_path() / ".." / "examples" / "seed-findings" / p.filename();
+  std::error_code ec;
+  return std::filesystem::is_regular_file(bundled, ec) ? bundled.lexically_normal().string() : "";
+}
+
 // motostab study: the seed paper's swingarm study.
 void registerStudyCommand(CLI::App& app) {
   struct StudyArgs {
-    std::string scenario, speeds, out;
+    std::string scenario, speeds, out, findings, candidates;
     std::vector<std::string> overrides;
     std::vector<std::string> variants{"rigid", "bending", "torsion", "twist"};
+    bool noFindings = false;
     double stiffnessScale = 0.5, dampingScale = 1.0 / std::sqrt(2.0);
     std::vector<double> shapeSpeeds{10.0, 18.5, 30.0};
     int threads = 2;
@@ -211,6 +229,14 @@ void registerStudyCommand(CLI::App& app) {
   study->add_option("--threads", st->threads, "Variants swept in parallel")->check(makeThreadsCheck());
   study->add_option("--roll-deg", st->rollDeg, "Compare the variants about steady turns at this roll angle (deg)")
       ->check(makeRollCheck());
+  study->add_option("--findings", st->findings,
+                    "Findings to set against the motorcycle and diagnose (docs/measured-data-format.md; default for "
+                    "scenarios/NAME.yaml: examples/seed-findings/NAME.yaml when it exists)")
+      ->check(CLI::ExistingFile);
+  study->add_flag("--no-findings", st->noFindings, "No verdicts on findings (and no diagnosis)");
+  study->add_option("--candidates", st->candidates,
+                    "Candidate causes offered for the findings' disagreements (default: steer_damper,rider_arms,"
+                    "fork_compliance,tyre_relaxation, those the scenario admits)");
   addStrictOption(study, st->strict);
   study->callback([st, dampingOption]() {
     const ParameterOverrides changes(st->overrides);  // the --set text, parsed once
@@ -230,15 +256,31 @@ void registerStudyCommand(CLI::App& app) {
     opt.threads = st->threads;
     if (st->rollDeg != 0) opt.sweep.trim.roll = st->rollDeg * M_PI / 180;
     checkStudyOptions(opt, {"--shape-speeds", 0, 0, ""}, getSpeedsLocation(!st->speeds.empty()));
+    studies::VerdictOptions vo;
+    vo.findingsFile = findFindingsFile(st->findings, st->noFindings, st->scenario);
+    if (!st->candidates.empty()) vo.candidates = io::splitFields(st->candidates, ',');
+    vo.threads = st->threads;
+    vo.overrides = changes;
+    if (!vo.findingsFile.empty()) diagnosis::loadMeasuredData(vo.findingsFile);  // bad input before any work
     const std::string out = getOutputFolder(st->out, scenario.name, "study");
     OutputFolder folder(out);
+    const auto t0 = std::chrono::steady_clock::now();
     const StudyResult result = runStudy(source, opt);
+    const double sweepSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     const studies::StudyFindings findings = studies::calcStudyFindings(result);
-    writeStudyOutputs(folder.getPath(), result, findings, opt);
+    std::optional<studies::StudyVerdicts> verdicts;
+    if (!vo.findingsFile.empty()) verdicts = studies::runStudyVerdicts(ScenarioSource::open(st->scenario), vo);
+    const studies::StudyVerdicts* v = verdicts ? &*verdicts : nullptr;
+    writeStudyOutputs(folder.getPath(), result, findings, opt, v, st->scenario);
     writeScenarioJson(folder.getPath(), scenario);
     folder.commit();
-    std::cout << makeStudyReport(result, findings, opt) << "\nWrote " << out
-              << "/{report.md, study_modes.csv, weave_shapes.csv, fig09..fig12 (.gp/.png/.svg), nominal/, halved/}\n";
+    std::cout << makeStudyReport(result, findings, opt) << "\n";
+    if (v) std::cout << output::makeVerdictSummary(*v);
+    else std::cout << "No findings set against the motorcycle (--findings FILE; docs/commands.md).\n";
+    std::cout << "Sweeps " << io::formatNumber(sweepSeconds, 3) << " s"
+              << (v ? ", diagnosis of the findings " + io::formatNumber(v->seconds, 3) + " s" : std::string()) << ".\nWrote "
+              << out << "/{report.md, study_modes.csv, weave_shapes.csv, fig09..fig12 (.gp/.png/.svg), nominal/, halved/"
+              << (v ? ", verdicts.json, extended.yaml" : "") << "}\n";
   });
 }
 

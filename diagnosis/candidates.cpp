@@ -272,6 +272,32 @@ void addRiderArmsCandidate(const YAML::Node& tree, std::vector<Candidate>& out, 
                  {k, c}});
 }
 
+// Tyre relaxation (relaxation_linear tyres): both tyres' relaxation lengths times one factor, log scale
+// in [0.2, 5], off at 1 (the scenario's lengths). Prior: Student-t about 1 with sigma 0.4. Published
+// motorcycle-tyre relaxation lengths at nominal load span about 0.13-0.26 m: Sharp (1994, load-dependent
+// 0.18-0.24 m), Sharp & Limebeer (2001, 0.25 m), the sport tyres of Sharp, Evangelou & Limebeer (2004,
+// 0.16-0.26 m from speed 0 to 40 m/s), as their public model files transcribe them; a factor 0.5-2 about
+// a scenario's value covers that spread.
+void addTyreRelaxationCandidate(const YAML::Node& tree, std::vector<Candidate>& out) {
+  const YAML::Node c = tree["contact"];
+  if (!c || !c.IsMap() || !c["model"] || c["model"].Scalar() != "relaxation_linear") return;
+  const auto length = [&](const char* tyre) {
+    const YAML::Node t = c[tyre];
+    return t && t.IsMap() && t["relaxation_length_m"] ? t["relaxation_length_m"].as<double>(0.0) : 0.0;
+  };
+  const double front = length("front"), rear = length("rear");
+  if (!(front > 0 && rear > 0)) return;
+  CandidateParameter p = makeFreeParameter("relaxation_scale", "contact.front.relaxation_length_m", 0.2, 5, 1, 1e-4);
+  p.logScale = true;
+  p.off = 1;
+  p.keyScale = front;
+  p.alsoPaths = {"contact.rear.relaxation_length_m"};
+  p.alsoScales = {rear};
+  p.priorMean = 1, p.priorSigma = 0.4;
+  p.note = "times the scenario's relaxation lengths, front " + formatNumber(front, 4) + " m, rear " + formatNumber(rear, 4) + " m";
+  out.push_back({"tyre_relaxation", {}, {p}});
+}
+
 }  // namespace
 
 std::vector<Candidate> listCandidates(const YAML::Node& tree,
@@ -287,6 +313,7 @@ std::vector<Candidate> listCandidates(const YAML::Node& tree,
   addRiderArmsCandidate(tree, out, unavailable ? *unavailable : none);
   addSwingarmCandidates(tree, out);
   addTyreSlipCandidate(tree, out);
+  addTyreRelaxationCandidate(tree, out);
   addSteerControllerCandidates(tree, out);
   addTyreScalingCandidates(tree, out);
   addPhysicalCandidates(tree, out);

@@ -32,6 +32,9 @@ struct CandidateParameter {
   double priorMean = 0, priorSigma = 0;  ///< Student-t prior (diagnosis/priors.h); sigma 0: none
   bool priorMeasured = false;  ///< the sigma is the scenario's `uncertainty:` one, not motostab's default
   std::vector<std::string> alsoPaths;  ///< further keys set to the same value (both tyres)
+  /// keyScale of each of alsoPaths (empty: keyScale for all): one scale factor applied to several
+  /// keys of different values (tyre_relaxation: both tyres' relaxation lengths).
+  std::vector<double> alsoScales;
   /// The override keys get keyOffset + keyScale * value (key unit): a parameter in its own unit
   /// applied through another key (steer_friction: the friction torque in N m as the equivalent
   /// viscous damping added to the damper's coefficient, physical_candidates.h).
@@ -60,7 +63,8 @@ struct Candidate {
 /// With a `steer_controller`: `steer_controller_gain` (its gain_factor free) and, without a delay,
 /// `steer_controller_delay` (delay_s free).
 /// `steer_friction` (physical_candidates.h) where `steerRate` holds a steer-rate amplitude; else a
-/// line in `unavailable` says why not.
+/// line in `unavailable` says why not. `tyre_relaxation` (both tyres' relaxation lengths scaled by one
+/// factor) for scenarios with relaxation_linear tyres.
 std::vector<Candidate> listCandidates(const YAML::Node& scenarioTree,
                                       const std::vector<std::pair<std::string, double>>& uncertainty,
                                       std::vector<std::string>* unavailable = nullptr,

@@ -6,6 +6,7 @@
 #include "diagnosis/least_squares.h"
 #include "diagnosis/model_fit.h"
 #include "diagnosis/priors.h"
+#include "diagnosis/profile_likelihood.h"
 
 namespace motostab::diagnosis {
 
@@ -21,13 +22,36 @@ bool excludesOff(const CandidateParameter& p, const ParameterEstimate& e, double
   return std::abs(e.value - p.off) > kZ95 * e.stderr_;
 }
 
-// The parameter criteria: interval excludes off, not at a bound, correlations.
-void judgeParameters(const Candidate& c, FitSummary& fit, int off, const DiagnosisOptions& opt) {
+// "Off" in internal units for the profile test: a stiffness's (off at infinity) the upper end of its
+// range, where the data cannot tell it from rigid; NaN where a log-scale parameter has no finite off.
+double getOffInternal(const CandidateParameter& p) {
+  if (p.offAtInfinity) return std::log(p.upper);
+  if (!p.logScale) return p.off;
+  return p.off > 0 ? std::log(p.off) : NAN;
+}
+
+// The profile-likelihood test of "off" where the Wald interval does not exclude it: parameter k held
+// at off, the others refitted (the fit's own noise), chi2 rises by more than 3.84. A likelihood that is
+// flat about its maximum (findings that all hold there: zero information, a zero Wald standard error)
+// still excludes off when holding the parameter at off violates the data.
+bool profileExcludesOff(const FitProblem& problem, const ModelSpec& model, const CandidateParameter& p,
+                        const FitSummary& fit, int index) {
+  const double off = getOffInternal(p);
+  if (!std::isfinite(off)) return false;
+  return calcProfileRise(withNoise(problem, fit.noise), model, fit, index, off) > kProfileChi2_95;
+}
+
+// The parameter criteria: interval excludes off (Wald, else the profile likelihood: one refit per
+// parameter the Wald interval does not decide), not at a bound, correlations.
+void judgeParameters(const FitProblem& problem, const ModelSpec& model, const Candidate& c, FitSummary& fit, int off,
+                     const DiagnosisOptions& opt) {
   const int df = static_cast<int>(c.parameters.size());
   for (int k = 0; k < df; ++k) {
     const ParameterEstimate& e = fit.parameters[k];
     const double seInternal = c.parameters[k].logScale ? e.stderr_ / std::max(e.value, 1e-300) : e.stderr_;
-    if (!excludesOff(c.parameters[k], e, fit.x(off + k), seInternal)) fit.failed.push_back("confidence interval includes off");
+    const bool excluded = excludesOff(c.parameters[k], e, fit.x(off + k), seInternal) ||
+                          profileExcludesOff(problem, model, c.parameters[k], fit, off + k);
+    if (!excluded) fit.failed.push_back("confidence interval includes off");
     // An estimate held at a bound of its search range (kParameterRangeSigmas prior sigmas, a
     // stiffness's factor 1000) is not determined by the data: its fit only says "further than this".
     if (e.atBound && e.value != c.parameters[k].off) fit.failed.push_back(kAtBoundFailure);
@@ -51,7 +75,7 @@ void judgeCandidate(const FitProblem& problem, const std::vector<const Candidate
   fit.failed.clear();
   if (!(fit.deltaBic <= -opt.minBicDrop)) fit.failed.push_back("BIC drop < " + std::to_string(int(opt.minBicDrop)));
   if (!(fit.pValue < opt.maxPValue)) fit.failed.push_back("likelihood-ratio p >= 0.01");
-  judgeParameters(c, fit, model.size() - df, opt);
+  judgeParameters(problem, model, c, fit, model.size() - df, opt);
   fit.contradictsMeasurement = contradictsMeasurement(fit.parameters);
   if (!fit.failed.empty() && !alwaysCv) return;
   // Both scored with the candidate's own noise: one metric for the two (the baseline's noise has

@@ -45,7 +45,8 @@ ParameterOverrides ModelSpec::makeOverrides(const Eigen::VectorXd& x) const {
     for (const auto& p : c->parameters) {
       const double key = p.keyOffset + p.keyScale * (p.logScale ? std::exp(x(i)) : x(i));
       out.set(p.path, key);
-      for (const auto& also : p.alsoPaths) out.set(also, key);
+      for (size_t a = 0; a < p.alsoPaths.size(); ++a)
+        out.set(p.alsoPaths[a], a < p.alsoScales.size() ? p.keyOffset + p.alsoScales[a] * (key - p.keyOffset) / p.keyScale : key);
       ++i;
     }
   }

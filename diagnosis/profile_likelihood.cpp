@@ -8,8 +8,6 @@
 namespace motostab::diagnosis {
 namespace {
 
-constexpr double kChi95 = 3.841458820694124;  // chi-square(1) 95 % quantile
-
 // chi2 with parameter i held at internal value v, the others refitted; infinite where v makes no
 // valid vehicle (an inertia past the triangle inequality, a trim that fails): the profile then ends
 // at the edge of the valid values.
@@ -22,12 +20,14 @@ double calcProfileChi2(const FitProblem& problem, const ModelSpec& model, Eigen:
   }
 }
 
-// One end of the interval in direction dir, internal units: doubling steps out, then bisection.
+// One end of the interval in direction dir, internal units: doubling steps out from the standard error
+// (from 1 % of the range where it is zero or not finite: a flat likelihood), then bisection.
 double findProfileEnd(const FitProblem& problem, const ModelSpec& model, const FitSummary& s, int i, double se,
-                      double bound, int dir) {
-  const double target = s.chi2 + kChi95, x0 = s.x(i);
-  double inside = x0, outside = x0, d = std::max(se, 1e-6 * std::max(1.0, std::abs(x0)));
-  for (int k = 0; k < 10; ++k, d *= 2) {
+                      double range, double bound, int dir) {
+  const double target = s.chi2 + kProfileChi2_95, x0 = s.x(i);
+  const double first = se > 0 && std::isfinite(se) ? se : 0.01 * range;
+  double inside = x0, outside = x0, d = std::max(first, 1e-6 * std::max(1.0, std::abs(x0)));
+  for (int k = 0; k < 24; ++k, d *= 2) {
     outside = dir > 0 ? std::min(x0 + d, bound) : std::max(x0 - d, bound);
     if (calcProfileChi2(problem, model, s.x, i, outside) >= target) break;
     inside = outside;
@@ -42,6 +42,11 @@ double findProfileEnd(const FitProblem& problem, const ModelSpec& model, const F
 
 }  // namespace
 
+double calcProfileRise(const FitProblem& problem, const ModelSpec& model, const FitSummary& s, int index,
+                       double internalValue) {
+  return calcProfileChi2(problem, model, s.x, index, internalValue) - s.chi2;
+}
+
 void calcProfiles(const FitProblem& problem, const ModelSpec& model, FitSummary& s) {
   const auto ps = model.getParameters();
   for (size_t i = 0; i < ps.size(); ++i) {
@@ -49,8 +54,8 @@ void calcProfiles(const FitProblem& problem, const ModelSpec& model, FitSummary&
     const bool lg = ps[i]->logScale;
     const double se = lg ? e.stderr_ / e.value : e.stderr_;
     const double lo = lg ? std::log(ps[i]->lower) : ps[i]->lower, hi = lg ? std::log(ps[i]->upper) : ps[i]->upper;
-    const double a = findProfileEnd(problem, model, s, static_cast<int>(i), se, lo, -1);
-    const double b = findProfileEnd(problem, model, s, static_cast<int>(i), se, hi, +1);
+    const double a = findProfileEnd(problem, model, s, static_cast<int>(i), se, hi - lo, lo, -1);
+    const double b = findProfileEnd(problem, model, s, static_cast<int>(i), se, hi - lo, hi, +1);
     e.profileLow = lg ? std::exp(a) : a;
     e.profileHigh = lg ? std::exp(b) : b;
     e.hasProfile = true;

@@ -5,6 +5,7 @@
 #include <iomanip>
 #include <sstream>
 
+#include "output/study_verdicts_output.h"
 #include "output/sweep_output.h"
 #include "output/plot_window.h"
 #include "output/writer_tools.h"
@@ -215,9 +216,11 @@ void writeStudyPlots(const std::filesystem::path& dir, const StudyResult& st, co
 
 }  // namespace
 
-std::string makeStudyReport(const StudyResult& st, const StudyFindings& findings, const StudyOptions& opt) {
+std::string makeStudyReport(const StudyResult& st, const StudyFindings& findings, const StudyOptions& opt,
+                            const studies::StudyVerdicts* verdicts) {
   std::ostringstream r;
   appendIntroduction(r, st, opt);
+  if (verdicts) r << makeVerdictSection(*verdicts);
   appendWobble(r, findings.wobble);
   appendWeave(r, st, findings.weave);
   appendComplianceEffect(r, findings);
@@ -227,11 +230,12 @@ std::string makeStudyReport(const StudyResult& st, const StudyFindings& findings
 }
 
 void writeStudyOutputs(const std::filesystem::path& dir, const StudyResult& st, const StudyFindings& findings,
-                       const StudyOptions& opt) {
+                       const StudyOptions& opt, const studies::StudyVerdicts* verdicts, const std::string& scenarioFile) {
   writeStudyModes(dir, st);
   writeWeaveShapes(dir, st);
   writeStudyPlots(dir, st, opt);
-  writeFileAtomically(dir / "report.md", makeStudyReport(st, findings, opt));
+  if (verdicts) writeVerdictOutputs(dir, scenarioFile, *verdicts);
+  writeFileAtomically(dir / "report.md", makeStudyReport(st, findings, opt, verdicts));
 }
 
 }  // namespace motostab::output

@@ -6,6 +6,12 @@
 #include <gtest/gtest.h>
 
 #include "diagnosis/candidates.h"
+
+#include <cmath>
+#include <map>
+
+#include "core/portable_random.h"
+#include "diagnosis/fit_problem.h"
 #include "diagnosis/diagnosis.h"
 #include "scenario/scenario.h"
 
@@ -54,6 +60,28 @@ TEST(Candidates, NoRiderLeanOnARiderlessBicycle) {
   EXPECT_NE(unavailable[0].find("riderless"), std::string::npos) << unavailable[0];
   EXPECT_EQ(unavailable[1].rfind("rider_arms:", 0), 0u) << unavailable[1];
   EXPECT_NE(find(all, "steer_damper"), nullptr);
+}
+
+// tyre_relaxation on relaxation_linear tyres: one factor scales both tyres' relaxation lengths (the
+// supersport's 0.129 and 0.122 m); the switched-on scenario loads with the scaled lengths.
+TEST(Candidates, TyreRelaxationScalesBothTyres) {
+  const std::string file = kDir + "/scenarios/supersport.yaml";
+  const std::vector<Candidate> all = listCandidates(makeScenarioTree(file, {}), {});
+  const Candidate* c = find(all, "tyre_relaxation");
+  ASSERT_NE(c, nullptr);
+  ASSERT_EQ(c->parameters.size(), 1u);
+  const double f = core::PortableRandom(77).drawUniform(0.3, 3);
+  ModelSpec m;
+  m.parts = {c};
+  Eigen::VectorXd x(1);
+  x << std::log(f);
+  const std::vector<std::string> ov = m.makeOverrides(x).format();
+  EXPECT_NO_THROW(loadScenario(file, ov));
+  std::map<std::string, double> set;
+  for (const auto& o : ov) set[o.substr(0, o.find('='))] = std::stod(o.substr(o.find('=') + 1));
+  EXPECT_NEAR(set["contact.front.relaxation_length_m"], 0.129 * f, 1e-12);
+  EXPECT_NEAR(set["contact.rear.relaxation_length_m"], 0.122 * f, 1e-12);
+  EXPECT_EQ(find(listCandidates(makeScenarioTree(kDir + "/scenarios/whipple-benchmark.yaml", {}), {}), "tyre_relaxation"), nullptr);
 }
 
 // rider_arms where the rear frame holds a rider: Sharp's (1994) hands-on steer inertia 0.20 kg m^2

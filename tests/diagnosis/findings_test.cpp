@@ -201,10 +201,10 @@ DiagnosisResult diagnoseBenchmarkFindings(const fs::path& dir, const std::vector
 }
 
 // A steer damper of drawn damping: findings alone make it the best candidate by far, with every finding
-// held at its fit, and the drawn value held too (its prediction violates no finding). Not yet named as a
-// cause: where every finding holds the interval terms are flat, the information is zero and the Wald
-// interval criterion cannot be met (docs/diagnosis.md, Findings: what findings cannot do).
-TEST_F(FindingsTest, HiddenSteerDamperIsTheBestCandidateFromFindings) {
+// held at its fit, and name it: where every finding holds the interval terms are flat and the Wald
+// standard error is zero, so "off" is excluded by the profile likelihood (docs/diagnosis.md, Off outside
+// the interval), whose 95 % interval covers the drawn value.
+TEST_F(FindingsTest, HiddenSteerDamperIsNamedFromFindings) {
   const double c = testing::Draw(5150).uniform(0.8, 1.6);
   const DiagnosisResult r = diagnoseBenchmarkFindings(dir_, {"steer_damper={damping_Nms_per_rad: " + io::formatNumber(c) + "}"});
   std::string why;
@@ -221,6 +221,10 @@ TEST_F(FindingsTest, HiddenSteerDamperIsTheBestCandidateFromFindings) {
   EXPECT_LT(best.deviance, 1) << why;                 // every finding holds at the fit
   EXPECT_GT(r.baseline.deviance, 100) << why;         // and the undamped bicycle violates them
   EXPECT_NEAR(best.parameters[0].value, c, 0.5 * c) << why;
+  ASSERT_EQ(r.causes.size(), 1u) << why;
+  EXPECT_EQ(r.causes[0].fit.name, "steer_damper") << why;
+  EXPECT_LE(r.causes[0].fit.parameters[0].profileLow, c) << why;
+  EXPECT_GE(r.causes[0].fit.parameters[0].profileHigh, c) << why;
 }
 
 // Findings of the unchanged bicycle name nothing.
