@@ -82,16 +82,16 @@ TEST(ExitCodes, Uncertainty) {
   expectExit({"uncertainty", kScenarios + "supersport-mf.yaml", "--speeds", "150:150:1", "--samples", "3", "--set",
               "uncertainty={total.mass_kg: 2}"},
              3, "every one of the 3 samples failed", dir);
-  // Every draw of a crown radius with sigma 1000 m is refused: named at the uncertainty entry with its
+  // Every draw of a crown radius with sigma 1e6 m is refused: named at the uncertainty entry with its
   // sigma and the value drawn (it was blamed on a "--set rear_wheel.crown_radius_m=..." nobody gave).
   std::ifstream in(kWhipple);
   std::stringstream text;
-  text << in.rdbuf() << "uncertainty:\n  rear_wheel.crown_radius_m: 1e3\n";
+  text << in.rdbuf() << "uncertainty:\n  rear_wheel.crown_radius_m: 1e6\n";
   std::ofstream(dir / "wide.yaml") << text.str();
   const CliRun r = runCli({"uncertainty", (dir / "wide.yaml").string(), "--samples", "3", "--speeds", "4:5:1", "--out",
                            (dir / "u").string()});
   EXPECT_EQ(r.exitCode, 3) << r.output;
-  EXPECT_NE(r.output.find("wide.yaml:35:3: uncertainty.rear_wheel.crown_radius_m: a value drawn with sigma 1000"),
+  EXPECT_NE(r.output.find("wide.yaml:35:3: uncertainty.rear_wheel.crown_radius_m: a value drawn with sigma 1e+06"),
             std::string::npos) << r.output;
   EXPECT_EQ(r.output.find("--set"), std::string::npos) << r.output;
 }
