@@ -258,8 +258,8 @@ TEST(CliBoundedInputs, CountsAndFilesAreBounded) {
   expectInputError({"sweep", kWhipple, "--roll-deg", ":10:1"}, "--roll-deg");
   expectInputError({"sweep", kWhipple, "--speeds", "1:5:"}, "--speeds");
   expectInputError({"sweep", kWhipple, "--roll-deg", "0:20:0.01"}, "at most 1000 angles");
-  // Speeds x roll angles of a map: 991 x 201 points (1e8 were accepted and filled the memory).
-  expectInputError({"sweep", kWhipple, "--speeds", "1:100:0.1", "--roll-deg", "0:20:0.1"}, "at most 100000");
+  // Speeds x roll angles of a map: 991 x 201 points (1e8 were accepted and filled the memory; 30 kB each).
+  expectInputError({"sweep", kWhipple, "--speeds", "1:100:0.1", "--roll-deg", "0:20:0.1"}, "points; at most 10000 (");
   // Output samples of a simulation (duration / output step overflowed to an empty run with exit 0).
   expectInputError({"simulate", kWhipple, "--speed", "5", "--duration", "300000", "--output-step", "1e-4"},
                    "output samples; at most 1e5");
