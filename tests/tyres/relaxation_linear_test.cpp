@@ -8,6 +8,7 @@
 #include "../support/catch_input_error.h"
 #include "analysis/linearize.h"
 #include "core/portable_random.h"
+#include "io/csv.h"
 #include "tyres/relaxation_linear.h"
 
 namespace motostab::tyres {
