@@ -1,6 +1,8 @@
 #include "analysis/sweep.h"
 
 #include "core/parallel.h"
+#include "io/csv.h"
+#include "io/result_error.h"
 
 #include <cmath>
 #include <functional>
@@ -18,13 +20,13 @@ using core::runWorkers;
 using vehicle::VehicleModel;
 
 std::vector<double> makeSpeedGrid(double start, double stop, double step) {
-  const double steps = (stop - start) / step;
-  if (!(step > 0 && steps >= 0 && steps <= scenario::SpeedRange::kMaxSteps))
+  std::string why;
+  const long n = scenario::countSpeeds(start, stop, step, why);
+  if (!why.empty())
     throw std::invalid_argument("speed grid " + std::to_string(start) + ":" + std::to_string(stop) + ":" +
-                                std::to_string(step) + " needs start <= stop, step > 0 and at most 1e6 steps");
+                                std::to_string(step) + ": " + why);
   std::vector<double> v;
-  const long n = static_cast<long>(std::floor((stop - start) / step + 1e-9));
-  for (long i = 0; i <= n; ++i) v.push_back(start + i * step);
+  for (long i = 0; i < n; ++i) v.push_back(start + i * step);
   return v;
 }
 
@@ -168,6 +170,7 @@ class SweepRun {
 
   SweepResult takeTrackedResult() {
     dropFailedSpeeds();
+    checkFinite();
     out_.branches = trackModes(out_.models, opt_.threads, std::move(costs_));
     return std::move(out_);
   }
@@ -308,6 +311,15 @@ class SweepRun {
     }
     if (lead) settleReference(std::make_exception_ptr(TrimError(out_.speeds[plan_.leadFirst], NAN, 0, opt_.trim.roll,
                                                                 "no speed of the sweep's first chain could be trimmed")));
+  }
+
+  // A linearised model whose roots are not finite has no modes to track: no result (exit 3), at its speed.
+  void checkFinite() const {
+    for (size_t k = 0; k < out_.models.size(); ++k)
+      if (!out_.models[k].eigenvalues.allFinite() || !out_.models[k].eigenvectors.allFinite())
+        throw io::ResultError("the linearised model at " + io::formatNumber(out_.speeds[k], 6) +
+                              " m/s has eigenvalues that are not finite (parameters far outside their physical "
+                              "range make its state matrix numerically singular)");
   }
 
   // Leaves out the speeds that failed (listed in out_.failures); the match costs kept are those of

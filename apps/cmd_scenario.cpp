@@ -1,10 +1,12 @@
 // motostab check | import.
+#include <filesystem>
 #include <iomanip>
 #include <iostream>
 
 #include "apps/commands.h"
 #include "apps/common_options.h"
 #include "io/atomic_file.h"
+#include "io/input_error.h"
 #include "output/scenario_output.h"
 #include "scenario/bicycle_parameters.h"
 #include "vehicle/vehicle_model.h"
@@ -115,6 +117,9 @@ void registerScenarioCommands(CLI::App& app) {
   i->add_flag("--repair-inertia", imp->repairInertia,
               "Move a frame's I_yy onto the triangle-inequality bound (unused by the linear Whipple model)");
   i->callback([imp]() {
+    const std::filesystem::path out(imp->out);
+    if (!out.has_filename() || out.filename() == "." || out.filename() == "..")
+      throw io::InputError({"command line", 0, 0, "--out"}, "'" + imp->out + "' names no file: give the scenario file to write, e.g. bike.yaml");
     const std::string name = imp->name.empty() ? std::filesystem::path(imp->out).stem().string() : imp->name;
     std::vector<InertiaRepair> repairs;  // written only once it loads; errors at the parameter file's lines
     writeBicycleParametersScenario(imp->file, name, imp->out, {imp->repairInertia}, &repairs);

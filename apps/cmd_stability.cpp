@@ -113,6 +113,7 @@ void registerSweepCommand(CLI::App& app) {
       checkTurnSpeeds(opt.start, getSpeedsLocation(!sweepArgs->speeds.empty()));
       const std::vector<double> rolls = parseRollAngles(sweepArgs->roll);
       if (rolls.size() > 1) {
+        checkMapPoints(opt.start, opt.stop, opt.step, rolls.size(), getSpeedsLocation(!sweepArgs->speeds.empty()));
         TurnMapOptions mo;
         mo.sweep = opt;
         mo.rolls = rolls;

@@ -141,10 +141,19 @@ std::string describeRelaxation(const InspectedTyre& t, double Fz, double camber,
     s << formatNumber(t.relaxationLength, 6) << " m (the scenario's relaxation_length_m)";
     return s.str();
   }
+  if (std::isnan(t.law->calcRelaxationLength(Fz, camber, speeds.front())))
+    return "not given (the coefficients have none; a scenario gives relaxation_length_m)";
   for (size_t i = 0; i < speeds.size(); ++i)
     s << (i ? ", " : "") << formatNumber(t.law->calcRelaxationLength(Fz, camber, speeds[i]), 6) << " m at "
       << formatNumber(speeds[i], 6) << " m/s";
   return s.str();
+}
+
+// The longitudinal relaxation length line (reported only): the law's, or why there is none.
+std::string describeLongitudinalRelaxation(const TyreForceLaw& law, double Fz) {
+  const double sigma = law.calcLongitudinalRelaxationLength(Fz);
+  if (std::isnan(sigma)) return "not given (MF 6.x only, from LONGITUDINAL_STIFFNESS, which these coefficients lack)";
+  return formatNumber(sigma, 6) + " m (reported only)";
 }
 
 void runTyre(const TyreArgs& a) {
@@ -171,8 +180,7 @@ void runTyre(const TyreArgs& a) {
             << "  camber stiffness    dFy/dgamma = " << formatNumber(law.calcCamberStiffness(a.fz), 6) << " N/rad\n"
             << "  slip stiffness      dFx/dkappa = " << formatNumber(law.calcLongitudinalStiffness(a.fz), 6) << " N\n"
             << "  relaxation length   sigma      = " << describeRelaxation(tyre, a.fz, camber, speeds) << "\n"
-            << "  longitudinal relaxation length = " << formatNumber(law.calcLongitudinalRelaxationLength(a.fz), 6)
-            << " m (reported only)\n"
+            << "  longitudinal relaxation length = " << describeLongitudinalRelaxation(law, a.fz) << "\n"
             << "Wrote " << (target / "forces.csv").string() << " (" << points.size() << " rows) and "
             << (target / "{fy,mz}_vs_slip.{png,svg,gp}").string() << "\n";
 }

@@ -14,7 +14,7 @@ namespace motostab::cli {
 struct NumberRange;  // apps/option_checks.h
 
 /// Upper bounds of the count options (docs/commands.md, "Limits"): speeds of a sweep (also the
-/// scenario's speeds_mps, scenario::SpeedRange::kMaxSteps), roll angles of a map, slip angles of `tyre`,
+/// scenario's speeds_mps, scenario::SpeedRange::kMaxSpeeds; with roll angles, kMaxMapPoints), roll angles of a map, slip angles of `tyre`,
 /// samples of `uncertainty`.
 constexpr long kMaxRollAngles = 1000;
 constexpr long kMaxSlipPoints = 100000;

@@ -29,10 +29,21 @@ void checkNumber(double value, const NumberRange& range, const InputLocation& wh
 }
 
 void checkSpeedRange(double start, double stop, double step, const InputLocation& where) {
-  const bool ok = std::isfinite(start) && std::isfinite(stop) && std::isfinite(step) && start >= 0 && stop >= start &&
-                  step > 0 && (stop - start) / step <= scenario::SpeedRange::kMaxSteps;
-  if (!ok)
-    throw InputError(where, "expected START:STOP:STEP, finite, with 0 <= START <= STOP, STEP > 0 and at most 1e6 speeds");
+  std::string why;
+  scenario::countSpeeds(start, stop, step, why);
+  if (!why.empty()) throw InputError(where, "START:STOP:STEP " + why);
+}
+
+void checkMapPoints(double start, double stop, double step, size_t rolls, const InputLocation& speedsWhere) {
+  std::string why;
+  const long speeds = scenario::countSpeeds(start, stop, step, why);
+  if (!why.empty()) throw InputError(speedsWhere, "START:STOP:STEP " + why);
+  const double points = static_cast<double>(speeds) * static_cast<double>(rolls);
+  if (points > kMaxMapPoints)
+    throw InputError(speedsWhere, "a speed x roll map of " + std::to_string(speeds) + " speeds x " + std::to_string(rolls) +
+                                      " roll angles (--roll-deg) has " + io::formatNumber(points, 6) + " points; at most " +
+                                      std::to_string(kMaxMapPoints) + " (each keeps a trim and a linear model): fewer "
+                                      "speeds or roll angles");
 }
 
 bool isRollInRange(double deg) { return std::abs(deg) < kMaxRollDeg; }

@@ -29,7 +29,7 @@ struct NumberRange {
 void checkNumber(double value, const NumberRange& range, const io::InputLocation& where);
 
 /// The ranges of the options both the command line and the Python module take.
-inline const NumberRange kSpeedMps{0, 1e3};             ///< a trim or linearisation speed, m/s
+inline const NumberRange kSpeedMps{0, scenario::SpeedRange::kMaxSpeed};  ///< a trim or linearisation speed, m/s
 inline const NumberRange kTurnSpeedMps{0, 1e3, true};   ///< the speed of `trim`, m/s
 inline const NumberRange kTyreLoadN{0, 1e7, true};      ///< a tyre's normal load, N
 inline const NumberRange kCamberDeg{-89, 89};           ///< a tyre's camber, deg
@@ -39,8 +39,16 @@ inline const NumberRange kDampingFactor{0, 1e6};        ///< the study's damping
 inline const NumberRange kMaxCauses{0, 20};             ///< causes a diagnosis names at most
 inline const NumberRange kFolds{2, 1000};               ///< a diagnosis's cross-validation folds
 
-/// A speed grid START:STOP:STEP (m/s): finite, 0 <= START <= STOP, STEP > 0, at most 1e6 speeds.
+/// A speed grid START:STOP:STEP (m/s): finite, 0 <= START <= STOP <= 150, STEP > 0, at most 10000
+/// speeds (scenario::countSpeeds).
 void checkSpeedRange(double start, double stop, double step, const io::InputLocation& where);
+
+/// The most points (speeds x roll angles) of a speed x roll map: each keeps a trim and a linear model
+/// (about 30 kB for a 20-state motorcycle, measured: 10000 points take about 0.3 GB, as 10000 speeds).
+constexpr long kMaxMapPoints = 10000;
+/// InputError at `speedsWhere` (naming --roll-deg too) when the speeds of START:STOP:STEP times `rolls`
+/// roll angles exceed kMaxMapPoints.
+void checkMapPoints(double start, double stop, double step, size_t rolls, const io::InputLocation& speedsWhere);
 
 /// A roll angle (deg) strictly between -89 and 89.
 bool isRollInRange(double deg);

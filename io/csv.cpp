@@ -19,6 +19,39 @@ std::string trim(const std::string& s) {
   return s.substr(b, e - b + 1);
 }
 
+// The fields of one CSV record (RFC 4180, within one line): a field in double quotes may hold commas, and
+// "" for a quote; blanks around a field are dropped. An unclosed quote, or text after a closing one, is
+// an InputError at its line and column.
+std::vector<std::string> splitRecord(const std::string& line, const std::string& source, int lineNo) {
+  std::vector<std::string> out;
+  size_t i = 0;
+  auto fail = [&](const std::string& why) { throw InputError({source, lineNo, static_cast<int>(i + 1), ""}, why); };
+  while (true) {
+    while (i < line.size() && (line[i] == ' ' || line[i] == '\t')) ++i;
+    std::string field;
+    if (i < line.size() && line[i] == '"') {
+      const size_t open = i++;
+      for (;; ++i) {
+        if (i >= line.size()) i = open, fail("a quoted field is not closed (a quote inside is written \"\")");
+        if (line[i] != '"') field += line[i];
+        else if (i + 1 < line.size() && line[i + 1] == '"') field += '"', ++i;
+        else break;
+      }
+      ++i;
+      while (i < line.size() && (line[i] == ' ' || line[i] == '\t' || line[i] == '\r')) ++i;
+      if (i < line.size() && line[i] != ',') fail("text after a quoted field's closing quote");
+    } else {
+      const size_t comma = line.find(',', i);
+      field = trim(line.substr(i, comma == std::string::npos ? std::string::npos : comma - i));
+      if (field.find('"') != std::string::npos) fail("a quote inside an unquoted field (quote the whole field)");
+      i = comma == std::string::npos ? line.size() : comma;
+    }
+    out.push_back(field);
+    if (i >= line.size()) return out;
+    ++i;  // the comma: another field follows, empty at the end of the line
+  }
+}
+
 }  // namespace
 
 std::vector<std::string> splitFields(const std::string& text, char separator) {
@@ -58,10 +91,10 @@ CsvTable readCsv(const std::filesystem::path& path, const std::vector<std::strin
     ++lineNo;
     const std::string t = trim(line);
     if (t.empty() || t[0] == '#') continue;
-    auto cells = splitFields(t, ',');
+    const auto cells = splitRecord(t, table.source, lineNo);
     if (table.header.empty()) {
       for (size_t j = 0; j < cells.size(); ++j) {
-        const std::string name = trim(cells[j]);
+        const std::string& name = cells[j];
         for (size_t k = 0; k < j; ++k)
           if (table.header[k] == name)
             throw InputError({table.source, lineNo, static_cast<int>(j + 1), name},
@@ -83,7 +116,7 @@ CsvTable readCsv(const std::filesystem::path& path, const std::vector<std::strin
     std::vector<double> row(cells.size());
     std::vector<std::string> text(textColumns.size());
     for (size_t j = 0; j < cells.size(); ++j) {
-      const std::string c = trim(cells[j]);
+      const std::string& c = cells[j];
       if (textIndex[j] >= 0) {
         text[textIndex[j]] = c;
         row[j] = std::nan("");

@@ -11,6 +11,8 @@ namespace motostab::io {
 /// Column j of row-major numeric rows (rows[i][j]), in row order; units those of the column.
 std::vector<double> extractColumn(const std::vector<std::vector<double>>& rows, int j);
 
+/// A table read by readCsv: fields are separated by commas and may be quoted as RFC 4180 says ("weave",
+/// "a, b", "" for a quote), within one line; blanks around fields are dropped.
 struct CsvTable {
   std::string source;                     ///< file path, for messages
   std::vector<std::string> header;        ///< column names

@@ -15,10 +15,18 @@
 // folder behind; the next OutputFolder for NAME removes it (its process is gone) and restores a
 // backup left by a kill between the two renames of the fallback.
 //
-// Nothing a user owns is replaced: every output folder holds the marker file kOutputMarker, and an
-// existing folder is replaced only if it holds that marker (or is empty). A folder that holds an
-// input of the run (any file read through io/input_file.h) is never replaced. Both are InputErrors
-// (key "--out") naming the folder, checked when the OutputFolder is made and again at commit().
+// A sibling's name that would exceed the file systems' 255 bytes (a long NAME) keeps the first 160 bytes
+// of NAME and a hash of the whole ("NAME-PREFIX~HASH").
+//
+// Nothing a user owns is replaced: every output folder holds the marker file kOutputMarker, listing
+// every entry motostab wrote there (paths relative to the folder, one a line, after the line
+// "entries written:"). An existing folder is replaced only if it is empty, or holds that marker and
+// nothing the marker does not list (a file or folder the user added is named in the refusal). A marker
+// without a list (written by motostab before markers had one) is trusted as before: its folder is
+// replaced whole. A folder that holds an input of the run (any file read through io/input_file.h) is
+// never replaced. All are InputErrors (key "--out") naming the folder, checked when the OutputFolder
+// is made and again at commit(); so are the system's refusals to create or rename the folders (no
+// permission, a name too long), with the system's reason.
 #include <filesystem>
 #include <string>
 
@@ -28,8 +36,9 @@ namespace motostab::io {
 constexpr const char* kOutputMarker = ".motostab-output";
 
 /// Why `name` (a scenario's name, a file stem) cannot name a folder of its own in the working folder, or
-/// "" if it can: it is empty, "." or "..", longer than 200 bytes, or holds a path separator '/' or a
-/// control character.
+/// "" if it can: it is empty, "." or "..", longer than 200 bytes, holds a path separator '/', a control
+/// character (C0, DEL, C1 such as U+0085), a bidirectional-text control (U+061C, U+200E-F, U+202A-E,
+/// U+2066-9) or a line separator (U+2028-9), or is not valid UTF-8.
 std::string describeBadFolderName(const std::string& name);
 
 /// Throws InputError (key "--out") unless the single output file `file` may be written: it is absent, or
@@ -38,15 +47,15 @@ std::string describeBadFolderName(const std::string& name);
 void checkFileReplaceable(const std::filesystem::path& file, const std::string& header);
 
 /// Throws InputError (key "--out") unless `target` may be replaced by a run's outputs: it is absent, or
-/// an empty folder, or a folder holding kOutputMarker; and it holds no input file of this run
-/// (io/input_file.h, getInputFiles).
+/// an empty folder, or a folder holding kOutputMarker and (when the marker lists them) only the entries
+/// it lists; and it holds no input file of this run (io/input_file.h, getInputFiles).
 void checkReplaceable(const std::filesystem::path& target);
 
 class OutputFolder {
  public:
   /// Prepares a temporary folder beside `target`, holding only kOutputMarker. Throws InputError (key
-  /// "--out") if `target` may not be replaced (checkReplaceable), std::runtime_error if the folder
-  /// cannot be created.
+  /// "--out") if `target` may not be replaced (checkReplaceable), ends in "." or "..", has a name
+  /// longer than 255 bytes, or if the system refuses to create the folder (its reason named).
   explicit OutputFolder(std::filesystem::path target);
   OutputFolder(const OutputFolder&) = delete;
   OutputFolder& operator=(const OutputFolder&) = delete;
@@ -57,9 +66,9 @@ class OutputFolder {
   const std::filesystem::path& getPath() const { return temporary_; }
   /// The final folder, as given.
   const std::filesystem::path& getTarget() const { return target_; }
-  /// Puts the outputs in place of `target` (replacing any previous outputs as a whole). Throws
-  /// InputError if `target` may no longer be replaced (checkReplaceable), std::runtime_error if the
-  /// rename fails; `target` then still holds the old outputs.
+  /// Lists the outputs in the marker and puts them in place of `target` (replacing any previous outputs
+  /// as a whole). Throws InputError if `target` may no longer be replaced (checkReplaceable) or the
+  /// system refuses the rename; `target` then still holds the old outputs.
   void commit();
 
  private:

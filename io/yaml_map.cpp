@@ -8,6 +8,7 @@
 #include <mutex>
 #include <sstream>
 
+#include "io/csv.h"
 #include "io/input_file.h"
 #include "io/number.h"
 
@@ -232,6 +233,18 @@ double YamlMap::getNonNegative(const std::string& key, double fallback) {
   return has(key) ? getNonNegative(key) : fallback;
 }
 
+double YamlMap::getZeroOrAtLeast(const std::string& key, double floor, const std::string& unit, double fallback) {
+  return has(key) ? getZeroOrAtLeast(key, floor, unit) : fallback;
+}
+
+double YamlMap::getZeroOrAtLeast(const std::string& key, double floor, const std::string& unit) {
+  const double v = getNonNegative(key);
+  if (v > 0 && v < floor)
+    fail(key, "must be 0 (off) or at least " + formatNumber(floor, 6) + " " + unit + " (got " +
+                  static_cast<const YAML::Node&>(node_)[key].Scalar() + ")");
+  return v;
+}
+
 bool YamlMap::getBool(const std::string& key, bool fallback) {
   if (!has(key)) return fallback;
   const YAML::Node n = require(key);
@@ -304,7 +317,10 @@ std::vector<YamlMap> YamlMap::getMapList(const std::string& key) {
 std::string resolveRelativeTo(const std::string& namingFile, const std::string& name) {
   const std::filesystem::path p(name);
   if (p.is_absolute()) return name;
-  return (std::filesystem::path(namingFile).parent_path() / p).lexically_normal().string();
+  const std::filesystem::path resolved = (std::filesystem::path(namingFile).parent_path() / p).lexically_normal();
+  // A file of the working folder keeps its "./": a name without a folder is one the loader searches
+  // for (a plugin library, ./libx.so named by ./p.yaml, must stay a path).
+  return resolved.has_parent_path() ? resolved.string() : "./" + resolved.string();
 }
 
 std::string YamlMap::getFilePath(const std::string& key) {

@@ -35,6 +35,12 @@ class YamlMap {
   double getPositive(const std::string& key, double fallback);
   /// Optional value >= 0 with a default.
   double getNonNegative(const std::string& key, double fallback);
+  /// A value that is 0 (the effect off) or at least `floor`, in `unit` (a delay, a relaxation
+  /// length): smaller positive values are below anything physical and make the model numerically
+  /// singular, so they are an InputError naming the floor.
+  double getZeroOrAtLeast(const std::string& key, double floor, const std::string& unit);
+  /// Optional such value with a default.
+  double getZeroOrAtLeast(const std::string& key, double floor, const std::string& unit, double fallback);
   bool getBool(const std::string& key, bool fallback);
   std::string getString(const std::string& key);
   std::string getString(const std::string& key, const std::string& fallback);
@@ -93,7 +99,8 @@ YAML::Node parseYamlText(const std::string& text, const std::string& file, const
 /// column (a duplicate at its second occurrence).
 YamlMap loadYamlFile(const std::string& file);
 
-/// `name` as named in `namingFile`: unchanged if absolute, else relative to namingFile's folder.
+/// `name` as named in `namingFile`: unchanged if absolute, else relative to namingFile's folder; always
+/// with a folder ("./x.so" for a file of the working folder, never a bare name).
 std::string resolveRelativeTo(const std::string& namingFile, const std::string& name);
 
 /// One segment of a key path such as `rear_frame.com_m[2]`: a mapping key and, optionally, a

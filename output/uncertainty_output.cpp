@@ -115,6 +115,13 @@ nlohmann::json makeUncertaintyJson(const std::string& name, const UncertaintySet
   return j;
 }
 
+// A CSV cell of a value that may be undefined (no crossing, no sample of a mode, a failed sample's
+// parameters): empty where the JSON has null, never "nan" (docs/uncertainty.md).
+void addValue(CsvWriter& csv, double v) {
+  if (std::isfinite(v)) csv.add(v);
+  else csv.add(std::string());
+}
+
 std::string makeSamplesCsv(const UncertaintySetup& s, const std::vector<TaskResult>& results) {
   std::vector<std::string> header{"task", "kind", "row", "status", "redraws"};
   for (const auto& p : s.params) header.push_back(p.path);
@@ -127,8 +134,8 @@ std::string makeSamplesCsv(const UncertaintySetup& s, const std::vector<TaskResu
     const UncertaintyTask task = getTask(s, t);
     csv.beginRow().add(std::to_string(t)).add(getKindName(s, task)).add(std::to_string(task.row));
     csv.add(r.ok ? "ok" : "failed").add(std::to_string(r.redraws));
-    for (size_t p = 0; p < s.params.size(); ++p) csv.add(p < r.parameters.size() ? r.parameters[p] : NAN);
-    for (double v : r.firstCrossing) csv.add(v);
+    for (size_t p = 0; p < s.params.size(); ++p) addValue(csv, p < r.parameters.size() ? r.parameters[p] : NAN);
+    for (double v : r.firstCrossing) addValue(csv, v);
     csv.add(quoteCell(r.crossings)).add(quoteCell(r.reason));
   }
   return csv.getText();
@@ -184,8 +191,8 @@ std::string makeModeQuantilesCsv(const UncertaintySummary& sum) {
   for (const auto& q : sum.modes)
     for (size_t k = 0; k < sum.speeds.size(); ++k) {
       csv.beginRow().add(sum.speeds[k]).add(q.mode).add(std::to_string(q.count[k]));
-      for (double v : q.real[k]) csv.add(v);
-      for (double v : q.frequency[k]) csv.add(v);
+      for (double v : q.real[k]) addValue(csv, v);
+      for (double v : q.frequency[k]) addValue(csv, v);
     }
   return csv.getText();
 }
@@ -201,7 +208,9 @@ std::string makeSensitivityCsv(const UncertaintySetup& s, const UncertaintySumma
     rows.push_back({line, line + s.params.size() - 1});
     int rank = 0;
     for (size_t p : rankParameters(c.sensitivity)) {
-      csv.beginRow().add(c.mode).add(std::to_string(++rank)).add(s.params[p].path).add(c.sensitivity[p]).add(c.derivatives[p]);
+      csv.beginRow().add(c.mode).add(std::to_string(++rank)).add(s.params[p].path);
+      addValue(csv, c.sensitivity[p]);
+      addValue(csv, c.derivatives[p]);
       ++line;
     }
   }

@@ -98,6 +98,7 @@ py::dict turnMap(const ScenarioHandle& s, const SpeedTuple& speeds, const std::a
   mo.sweep = makeSweepOptions(s, speeds, threads);
   cli::checkTurnSpeeds(mo.sweep.start, speedsLocation(speeds));
   mo.rolls = cli::makeRollAngles(rollDeg[0], rollDeg[1], rollDeg[2], argumentLocation("roll_deg"));
+  cli::checkMapPoints(mo.sweep.start, mo.sweep.stop, mo.sweep.step, mo.rolls.size(), speedsLocation(speeds));
   analysis::TurnMapResult map = callQuietly([&] { return analysis::runTurnMap(VehicleModel(*s.scenario), mo); });
   return convertTurnMap(std::move(map), s.scenario->name);
 }

@@ -187,6 +187,23 @@ std::string quoteYamlString(const std::string& text) {
 
 namespace {
 
+// A frame inertia with a principal moment <= 0 is no body's, and no change of I_yy makes it one: an
+// InputError at the line of its I<s>xx, before the triangle inequality and its repair are considered.
+void checkPositiveDefinite(const std::map<std::string, BicycleParameter>& entries, const std::map<std::string, double>& p,
+                           const std::string& file) {
+  for (const std::string s : {"B", "H"}) {
+    if (!hasFrameInertia(p, s)) continue;
+    const Eigen::Vector3d l = Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(getFrameInertia(p, s)).eigenvalues();
+    if (l[0] > 0) continue;
+    char text[300];
+    std::snprintf(text, sizeof text,
+                  "the %s frame's inertia tensor (I%sxx, I%syy, I%szz, I%sxz) is not positive definite: principal "
+                  "moments %.6g, %.6g, %.6g kg m^2, and no body has a moment of inertia <= 0",
+                  s == "B" ? "rear" : "front", s.c_str(), s.c_str(), s.c_str(), s.c_str(), l[0], l[1], l[2]);
+    throw InputError({file, entries.at("I" + s + "xx").line, 0, "I" + s + "xx"}, text);
+  }
+}
+
 // Without repair an impossible frame inertia is an InputError with the explanation and the way out.
 std::vector<InertiaRepair> applyInertiaPolicy(std::map<std::string, double>& p, const std::string& file, bool repair) {
   if (repair) return repairFrameInertias(p, file);
@@ -204,7 +221,10 @@ std::vector<InertiaRepair> applyInertiaPolicy(std::map<std::string, double>& p, 
 
 std::string convertBicycleParametersToScenario(const std::string& file, const std::string& name,
                                                const BicycleImportOptions& options, std::vector<InertiaRepair>* repairs) {
-  auto p = readBicycleParameters(file);
+  const auto entries = readBicycleParameterFile(file);
+  std::map<std::string, double> p;
+  for (const auto& [key, e] : entries) p[key] = e.value;
+  checkPositiveDefinite(entries, p, file);
   const auto changes = applyInertiaPolicy(p, file, options.repairInertia);
   if (repairs) *repairs = changes;
   auto get = [&](const std::string& k) {

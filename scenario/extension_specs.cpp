@@ -89,7 +89,7 @@ SteerControllerSpec readSteerController(YamlMap m) {
   c.steerRateGain = m.getDouble("steer_rate_Nms_per_rad", 0);
   c.gainFactor = m.getPositive("gain_factor", 1);
   if (m.has("schedule")) readSchedule(m.getMap("schedule"), c);
-  c.delay = m.getNonNegative("delay_s", 0);
+  c.delay = m.getZeroOrAtLeast("delay_s", kMinSteerDelay, "s", 0);
   if (m.has("torque_limit_Nm")) c.torqueLimit = m.getPositive("torque_limit_Nm");
   m.finish();
   return c;

@@ -20,7 +20,8 @@ SteerDamperSpec readSteerDamper(io::YamlMap m);
 /// `steer_controller: {roll_angle_Nm_per_rad?, roll_rate_Nms_per_rad?, steer_angle_Nm_per_rad?,
 /// steer_rate_Nms_per_rad?, gain_factor?, schedule: {below_mps: v0} | {table: [[v, f], ...]}?, delay_s?,
 /// torque_limit_Nm?}` (vehicle/steer_controller.h). The table needs at least two rows with strictly
-/// increasing speeds; a negative delay, a non-positive limit or gain factor are errors.
+/// increasing speeds; a negative delay or one between 0 and kMinSteerDelay, a non-positive limit or gain
+/// factor are errors.
 SteerControllerSpec readSteerController(io::YamlMap m);
 
 /// The scalar keys of `steer_controller` (gains, gain_factor, delay_s, torque_limit_Nm), for readers

@@ -8,6 +8,7 @@
 #include "scenario/parameter_paths.h"
 #include "scenario/plausibility.h"
 #include "scenario/scenario_source.h"
+#include "io/csv.h"
 #include "io/output_folder.h"
 #include "scenario/whole_vehicle.h"
 #include "io/yaml_map.h"
@@ -149,6 +150,19 @@ std::vector<ParameterUncertainty> readUncertainty(YamlMap m, const YAML::Node& t
 
 }  // namespace
 
+long countSpeeds(double start, double stop, double step, std::string& why) {
+  why.clear();
+  if (!(std::isfinite(start) && std::isfinite(stop) && std::isfinite(step) && start >= 0 && stop >= start && step > 0))
+    why = "expected finite numbers with 0 <= start <= stop and step > 0";
+  else if (stop > SpeedRange::kMaxSpeed)
+    why = "speeds above " + io::formatNumber(SpeedRange::kMaxSpeed) + " m/s (540 km/h) are beyond any vehicle";
+  const double steps = why.empty() ? std::floor((stop - start) / step + 1e-9) : 0;
+  if (why.empty() && !(steps + 1 <= SpeedRange::kMaxSpeeds))
+    why = "gives " + io::formatNumber(steps + 1, 6) + " speeds; at most " + std::to_string(SpeedRange::kMaxSpeeds) +
+          " (each speed keeps a trim and a linear model in memory): a larger step or a narrower range";
+  return why.empty() ? static_cast<long>(steps) + 1 : 0;
+}
+
 const std::vector<std::string>& getSwingarmLoaderKeys() {
   static const std::vector<std::string> keys{"pivot_m", "mass_kg", "com_m", "inertia_kgm2", "compliance", "suspension"};
   return keys;
@@ -262,8 +276,9 @@ Scenario readScenario(const std::string& file, YamlMap& m) {
     s.speeds.stop = sp.getNonNegative("stop");
     s.speeds.step = sp.getPositive("step");
     if (s.speeds.stop < s.speeds.start) sp.fail("stop", "must not be below start");
-    if (!((s.speeds.stop - s.speeds.start) / s.speeds.step <= SpeedRange::kMaxSteps))
-      sp.fail("step", "gives more than 1e6 speeds between start and stop");
+    std::string why;
+    countSpeeds(s.speeds.start, s.speeds.stop, s.speeds.step, why);
+    if (!why.empty()) sp.fail(s.speeds.stop > SpeedRange::kMaxSpeed ? "stop" : "step", why);
     sp.finish();
   }
   {

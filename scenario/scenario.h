@@ -123,6 +123,11 @@ struct RiderArmsSpec {
   BodySpec body;                 ///< the grip masses (2 x J_a / (2 d^2)) in D: what moved to the front frame
 };
 
+/// The shortest steer controller delay, s: a tenth of a millisecond, below any rider's or actuator's
+/// (human reaction ~0.1-0.3 s, electric steer actuators ~1-10 ms). The Pade pole -2/tau of a shorter
+/// delay swamps every other root (1e-300 s gives -2e300 1/s and loses the weave).
+constexpr double kMinSteerDelay = 1e-4;
+
 /// Linear state feedback on the steer torque (vehicle/steer_controller.h), ISO 8855 signs (roll > 0
 /// leans right, steer > 0 steers left, torque > 0 steers left):
 ///   u = f(v) g (k_phi phi + k_phid phi' + k_delta delta + k_deltad delta')            (N m)
@@ -137,7 +142,7 @@ struct SteerControllerSpec {
   Schedule schedule = Schedule::None;
   double scheduleBelow = 0;   ///< v0, m/s: f = v0 - v for v < v0, else 0
   std::vector<std::array<double, 2>> scheduleTable;  ///< (v m/s, f) sorted by v: f interpolated linearly
-  double delay = 0;           ///< tau, s (>= 0; 0: none): first-order Pade delay
+  double delay = 0;           ///< tau, s (0: none, else >= kMinSteerDelay): first-order Pade delay
   double torqueLimit = 0;     ///< N m (> 0 when given; 0: none): |T| <= limit
 };
 
@@ -152,9 +157,17 @@ struct PluginSpec {
 /// Default speed range for sweeps, m/s.
 struct SpeedRange {
   double start = 0, stop = 10, step = 0.1;
-  /// The most steps (stop - start) / step a range may hold, wherever it is given.
-  static constexpr double kMaxSteps = 1e6;
+  /// The most speeds a range may hold, wherever it is given: a sweep keeps a trim and a linear model per
+  /// speed (about 27 kB for a 20-state motorcycle, measured: 10000 speeds take about 0.3 GB).
+  static constexpr long kMaxSpeeds = 10000;
+  /// The highest speed, m/s (540 km/h, above any motorcycle's), as for measured speeds.
+  static constexpr double kMaxSpeed = 150;
 };
+
+/// The number of speeds start, start + step, ... up to stop (within 1e-9 steps) of a range; 0 with `why`
+/// set when it is not one (else `why` is empty): every value finite, 0 <= start <= stop <= SpeedRange::kMaxSpeed, step > 0, at
+/// most SpeedRange::kMaxSpeeds speeds.
+long countSpeeds(double start, double stop, double step, std::string& why);
 
 /// A stated uncertainty of one scenario parameter (the `uncertainty:` section): the key path as
 /// --set takes it, and the standard deviation in the key's own unit.

@@ -35,6 +35,11 @@ void checkOptions(const SimulationOptions& o) {
   if (!(o.speed >= 0) || !std::isfinite(o.speed)) bad("--speed", "must be a finite speed >= 0 m/s");
   if (!(o.duration > 0) || !std::isfinite(o.duration)) bad("--duration", "must be > 0 s");
   if (!(o.outputStep > 0)) bad("--output-step", "must be > 0 s");
+  if (!(o.duration / o.outputStep <= kMaxOutputSamples))
+    bad("--output-step", "--duration " + io::formatNumber(o.duration, 6) + " s / --output-step " + io::formatNumber(o.outputStep, 6) +
+                             " s gives " + io::formatNumber(std::ceil(o.duration / o.outputStep), 6) +
+                             " output samples; at most 1e5 (each is kept in memory and written): a longer --output-step "
+                             "or a shorter --duration");
   if (!(o.accuracy > 0 && o.accuracy < 1)) bad("--accuracy", "must be in (0, 1)");
   if (!(o.maxStep >= 0)) bad("maxStep", "must be >= 0 s (0: the integrator's default)");
   if (!(o.fallRollLimit > 0)) bad("--fall-limit", "must be > 0");

@@ -89,6 +89,13 @@ void checkMf61Signs(const CoefficientSource& s, const Mf61& c) {
   for (const auto& [name, v] : positive)
     if (!(v > 0)) s.fail(name, "must be positive (got " + std::to_string(v) + ")");
   if (!(c.pressure > 0)) s.fail("INFLPRES", "must be positive");
+  // K_ya = PKY1 Fz0' sin(PKY4 atan(Fz / ((PKY2 + PKY5 gamma^2) Fz0'))) (1 - PKY3 |gamma|) (ISO: K_ya < 0).
+  if (!(c.PKY1 < 0))
+    s.fail("PKY1", "must be negative in ISO signs (got " + io::formatNumber(c.PKY1, 6) +
+                       "): the cornering stiffness PKY1 FNOMIN pushes against the slip; 0 gives none");
+  if (!(c.PKY2 > 0))
+    s.fail("PKY2", "must be positive (got " + io::formatNumber(c.PKY2, 6) +
+                       "): the load at which the cornering stiffness peaks, PKY2 FNOMIN, divides Fz (0/0 at zero load)");
   for (const auto& name : kMf61Scaling) {
     const std::string problem = findScalingProblem(name, s.getScaling(name));
     if (!problem.empty()) s.fail(name, problem);
@@ -459,8 +466,9 @@ std::string findDegenerateLoad(const TyreForceLaw& law, double Fz0) {
     for (double gamma : {0.0, 30 * M_PI / 180, 60 * M_PI / 180})
       for (double speed : {0.0, 10.0, 60.0}) {
         const double sigma = law.calcRelaxationLength(Fz, gamma, speed);
-        if (!(std::isfinite(sigma) && sigma > 0))
-          return "the relaxation length " + io::formatNumber(sigma, 6) + " m is not finite and positive" + at + ", camber " +
+        if (!(std::isfinite(sigma) && sigma >= kMinRelaxationLength))
+          return "the relaxation length " + io::formatNumber(sigma, 6) + " m is not finite and at least " +
+                 io::formatNumber(kMinRelaxationLength, 6) + " m" + at + ", camber " +
                  io::formatNumber(gamma * 180 / M_PI, 3) + " deg, speed " + io::formatNumber(speed, 3) + " m/s";
       }
   }

@@ -102,11 +102,15 @@ std::unique_ptr<TyreForceLaw> makeTyreForceLaw(MagicFormulaVariant v, const Coef
 /// 0 to kCheckedLoadFactor FNOMIN, slip angles to +/-89 degrees, camber to +/-60 degrees, slip ratios
 /// -1 to 1, speeds 0 to 60 m/s.
 constexpr double kCheckedLoadFactor = 3;
+/// The shortest relaxation length, m (a tenth of a millimetre; bicycle and motorcycle tyres have
+/// 0.01-0.3 m): a tyre's relaxation_length_m is 0 (no lag) or at least this, and a law's own length is
+/// at least this. The relaxation root -V/sigma of a shorter one swamps every other root.
+constexpr double kMinRelaxationLength = 1e-4;
 /// Why a Magic Formula law cannot be used ("" if it can), checked on a coarse grid of that range: a
 /// force or moment that is not finite; a cornering stiffness that does not push against the slip or a
 /// slip stiffness that is not positive at a positive load; a side force or a longitudinal force that
 /// does not oppose a 5 degree slip angle or a 0.1 slip ratio at zero camber; an own relaxation length
-/// (if the law has one) that is not finite and positive from 5 % of FNOMIN up.
+/// (if the law has one) that is not finite and at least kMinRelaxationLength from 5 % of FNOMIN up.
 std::string findForceLawProblem(const TyreForceLaw& law);
 
 /// The force law of a .tir file (variant from its FITTYP), with optional scaling overrides; unused

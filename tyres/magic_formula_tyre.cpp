@@ -96,7 +96,7 @@ MagicFormulaTyre readMagicFormulaTyre(YamlMap m) {
     build(*makeYamlSource(coefficients, &scaling));
     coefficients.finish();
   }
-  if (m.has("relaxation_length_m")) t.relaxationLength = m.getNonNegative("relaxation_length_m");
+  if (m.has("relaxation_length_m")) t.relaxationLength = m.getZeroOrAtLeast("relaxation_length_m", kMinRelaxationLength, "m", 0);
   t.where = m.locate();
   if (std::isnan(t.relaxationLength) && std::isnan(t.law->calcRelaxationLength(t.law->getNominalLoad(), 0, 0)))
     m.fail("relaxation_length_m", "required: this Magic Formula variant has no relaxation length of its own");

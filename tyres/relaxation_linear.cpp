@@ -37,7 +37,8 @@ LinearTyreParameters readTyre(YamlMap m, const LinearTyreParameters* preset) {
     m.fail("self_aligning_stiffness_m_per_rad",
            "must not be positive: the self-aligning moment of a slip turns the wheel towards its velocity (k_mz = -trail k_alpha)");
   read("twisting_stiffness_m_per_rad", p.twistingStiffness, &YamlMap::getDouble);
-  read("relaxation_length_m", p.relaxationLength, &YamlMap::getNonNegative);
+  if (!preset || m.has("relaxation_length_m"))
+    p.relaxationLength = m.getZeroOrAtLeast("relaxation_length_m", kMinRelaxationLength, "m");
   read("radial_stiffness_N_per_m", p.radialStiffness, &YamlMap::getPositive);
   read("radial_damping_Ns_per_m", p.radialDamping, &YamlMap::getNonNegative);
   read("longitudinal_stiffness", p.longitudinalStiffness, &YamlMap::getPositive);

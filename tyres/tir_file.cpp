@@ -1,6 +1,7 @@
 #include "tyres/tir_file.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cctype>
 #include <filesystem>
 #include <fstream>
@@ -67,6 +68,8 @@ TirEntry parseEntry(const Parser& p, int line, int column, const std::string& se
       value.find('\'', 1) == value.size() - 1) {
     e.text = value.substr(1, value.size() - 2);
   } else if (const auto number = parseFiniteNumber(value)) {
+    if (std::abs(*number) > io::kMaxMagnitude)  // as every YAML number and --set value
+      throw InputError(p.at(line, key, column), "'" + value + "': a magnitude above 1e12, beyond any physical parameter");
     e.text = value;
     e.isNumber = true;
     e.number = *number;

@@ -3,7 +3,8 @@
 // ASCII file of `[SECTION]` headers and `KEY = VALUE` lines, where a value is a number or a quoted
 // string ('Left'); `$` starts a comment anywhere on a line, lines starting with `!` are header
 // comments, and a line `{...}` starts a table (rows of numbers, e.g. [SHAPE]) whose rows are kept
-// out of the keys. Anything else is malformed: an InputError naming file:line. A key given twice in
+// out of the keys. Anything else is malformed: an InputError naming file:line. A number of magnitude
+// above io::kMaxMagnitude (1e12, as in YAML and --set) is an InputError at its line and column. A key given twice in
 // one section is an error at its second line. The [UNITS] section must say meter, newton, radians,
 // kg and second, and pascal if it names PRESSURE (no unit conversion is done). Keys are case-insensitive (stored upper-case).
 #include <cstdint>

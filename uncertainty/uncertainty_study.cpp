@@ -39,12 +39,27 @@ ParameterOverrides makeOverrides(const UncertaintySetup& s, const std::vector<do
   return o;
 }
 
+// Why drawn values x were refused, in the user's terms: the uncertainty entry whose draw the loader
+// refused (its line, sigma and the value drawn), and where and why; else the error as it is.
+std::string describeRefusedDraw(const UncertaintySetup& s, const std::vector<double>& x, const InputError& e) {
+  const std::string& key = e.getLocation().key;
+  for (size_t j = 0; j < s.params.size(); ++j) {
+    const std::string& p = s.params[j].path;
+    if (!(key == p || key.rfind(p + ".", 0) == 0 || key.rfind(p + "[", 0) == 0)) continue;
+    std::string reason = e.getReason();
+    reason = reason.substr(0, reason.find(" (value from --set " + p + "="));  // the draw is no --set of the user's
+    return s.params[j].where.describe() + ": a value drawn with sigma " + io::formatNumber(s.params[j].sigma, 6) + ", " +
+           io::formatNumber(x[j], 6) + ", is refused at " + key + ": " + reason;
+  }
+  return e.what();
+}
+
 // A model of the scenario with values x; nullptr (and `why`) if the loader or the model rejects them.
 std::unique_ptr<VehicleModel> buildModel(const UncertaintySetup& s, const std::vector<double>& x, std::string& why) {
   try {
     return std::make_unique<VehicleModel>(s.source->load(makeOverrides(s, x)));
   } catch (const InputError& e) {
-    why = e.what();
+    why = describeRefusedDraw(s, x, e);
     return nullptr;
   }
 }

@@ -33,6 +33,19 @@ TEST(SpeedGrid, RejectsDegenerateAndOversizedRanges) {
   EXPECT_THROW(makeSpeedGrid(0, 1, 0), std::invalid_argument);
   EXPECT_THROW(makeSpeedGrid(0, 1, std::nan("")), std::invalid_argument);
   EXPECT_EQ(makeSpeedGrid(3, 3, 0.1).size(), 1u);
+  // At most 10000 speeds, counted as speeds (0:1e6:1 held 1e6 steps, 1e6 + 1 speeds, and was accepted),
+  // each at most 150 m/s; counts drawn around the bound.
+  core::PortableRandom rng(10000);
+  for (int trial = 0; trial < 20; ++trial) {
+    const long n = 9990 + static_cast<long>(rng.drawIndex(20));
+    const double start = rng.drawUniform(0, 50), step = rng.drawUniform(1e-3, 9e-3);
+    const double stop = start + (n - 1) * step;
+    if (n <= 10000) EXPECT_EQ(makeSpeedGrid(start, stop, step).size(), static_cast<size_t>(n));
+    else EXPECT_THROW(makeSpeedGrid(start, stop, step), std::invalid_argument) << n;
+  }
+  EXPECT_EQ(makeSpeedGrid(140, 150, 1).size(), 11u);
+  EXPECT_THROW(makeSpeedGrid(140, 150.01, 1), std::invalid_argument);
+  EXPECT_THROW(makeSpeedGrid(1e11, 1e11, 1), std::invalid_argument);
 }
 
 }  // namespace

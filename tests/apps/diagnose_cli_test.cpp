@@ -8,6 +8,7 @@
 #include <fstream>
 #include <random>
 
+#include "io/csv.h"
 #include "tests/apps/cli_support.h"
 
 namespace motostab::cli {
@@ -120,11 +121,16 @@ TEST(DiagnoseCli, MeasuredOptionsAreBlamedOnTheMeasurementFile) {
   const std::string noise = std::to_string(draw(1e101, 1e300)), csvSpeed = std::to_string(draw(151, 1e7));
   std::ofstream(dir / "big.csv") << "speed_mps,mode,real,imag\n" << csvSpeed << ",weave,0.4,3\n";
   std::ofstream(dir / "cd.csv") << "speed_mps,mode,real,imag,steer_controller.delay_s\n4,weave,0.4,3," << delay << "\n";
+  const std::string tinyDelay = io::formatNumber(draw(1e-300, 9.9e-5));  // below the floor kMinSteerDelay
+  std::ofstream(dir / "tiny.csv") << "speed_mps,mode,real,imag,steer_controller.delay_s\n4,weave,0.4,3," << tinyDelay << "\n";
   std::ofstream(dir / "dup.csv") << "speed_mps,mode,real,imag,real\n4,weave,0.4,3,0.5\n";
   const std::vector<std::pair<std::string, std::string>> cases = {
       {"eigenvalues:\n  - file: e.csv\n    controller: {roll_rate_Nms_per_rad: -3, delay_s: " + delay + "}\n",
        "m.yaml:3:45: eigenvalues[0].controller.delay_s: must not be negative"},
       {"eigenvalues:\n  - file: cd.csv\n", "cd.csv:2: steer_controller.delay_s: must not be negative"},
+      {"eigenvalues:\n  - file: e.csv\n    controller: {delay_s: " + tinyDelay + "}\n",
+       "m.yaml:3:18: eigenvalues[0].controller.delay_s: must be 0 (off) or at least 0.0001 s"},
+      {"eigenvalues:\n  - file: tiny.csv\n", "tiny.csv:2: steer_controller.delay_s: must be 0 (off) or at least 0.0001 s"},
       {run + "    speed_mps: " + speed + "\n", "m.yaml:6:5: responses[0].speed_mps: a measured speed must lie between 0 and 150"},
       {"eigenvalues:\n  - file: big.csv\n", "big.csv:2: speed_mps: a measured speed"},
       {run + "    speed_mps: 4\n    noise_std: {roll_rate: " + noise + "}\n", "m.yaml:7:17: responses[0].noise_std.roll_rate"},

@@ -82,6 +82,18 @@ TEST(ExitCodes, Uncertainty) {
   expectExit({"uncertainty", kScenarios + "supersport-mf.yaml", "--speeds", "150:150:1", "--samples", "3", "--set",
               "uncertainty={total.mass_kg: 2}"},
              3, "every one of the 3 samples failed", dir);
+  // Every draw of a crown radius with sigma 1e6 m is refused: named at the uncertainty entry with its
+  // sigma and the value drawn (it was blamed on a "--set rear_wheel.crown_radius_m=..." nobody gave).
+  std::ifstream in(kWhipple);
+  std::stringstream text;
+  text << in.rdbuf() << "uncertainty:\n  rear_wheel.crown_radius_m: 1e6\n";
+  std::ofstream(dir / "wide.yaml") << text.str();
+  const CliRun r = runCli({"uncertainty", (dir / "wide.yaml").string(), "--samples", "3", "--speeds", "4:5:1", "--out",
+                           (dir / "u").string()});
+  EXPECT_EQ(r.exitCode, 3) << r.output;
+  EXPECT_NE(r.output.find("wide.yaml:35:3: uncertainty.rear_wheel.crown_radius_m: a value drawn with sigma 1e+06"),
+            std::string::npos) << r.output;
+  EXPECT_EQ(r.output.find("--set"), std::string::npos) << r.output;
 }
 
 // A measured run at 150 m/s on the Magic Formula supersport: the model has no trim there.
@@ -161,6 +173,11 @@ TEST(ExitCodes, CommandsWithoutAResultFailure) {
   EXPECT_EQ(imp.exitCode, 2) << imp.output;
   EXPECT_NE(imp.output.find("bike.txt:2: w: given twice (first on line 1)"), std::string::npos) << imp.output;
   EXPECT_FALSE(fs::exists(dir / "b.yaml"));
+  for (const char* noFile : {"", ".", "sub/"}) {  // "" was reported as a bad --name
+    const CliRun none = runCli({"import", "bike.txt", "--format", "bicycleparameters", "--out", noFile}, dir.string());
+    EXPECT_EQ(none.exitCode, 2) << none.output;
+    EXPECT_NE(none.output.find("--out: '" + std::string(noFile) + "' names no file"), std::string::npos) << none.output;
+  }
   const std::string tir = std::string(MOTOSTAB_TEST_DATA_DIR) + "/reference/MF61-sample-tir/sample_MF61_ExternData.tir";
   expectExit({"tyre", tir, "--fz", "4000", "--slip-deg", "-1:", "--camber-deg", "0"}, 2, "--slip-deg", dir);
   expectExit({"identify", "cog", kExamples + "static.yaml"}, 2, "static.yaml", dir);

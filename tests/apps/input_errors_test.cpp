@@ -31,7 +31,10 @@ TEST(CliInput, SpeedsMustBeFinite) {
   expectInputError({"sweep", kWhipple, "--speeds", "0:inf:0.1"}, "--speeds");
   expectInputError({"sweep", kWhipple, "--speeds", "0:10:0"}, "--speeds");
   expectInputError({"sweep", kWhipple, "--speeds", "5:1:0.1"}, "--speeds");
-  expectInputError({"sweep", kWhipple, "--speeds", "0:1e9:1e-9"}, "at most 1e6 speeds");
+  expectInputError({"sweep", kWhipple, "--speeds", "0:1e9:1e-9"}, "speeds above 150 m/s");
+  expectInputError({"sweep", kWhipple, "--speeds", "1e11:1e11:1"}, "speeds above 150 m/s");  // accepted, exit 0
+  expectInputError({"sweep", kWhipple, "--speeds", "0:100:0.01"}, "gives 10001 speeds; at most 10000");
+  expectInputError({"linearize", kWhipple, "--speed", "151"}, "--speed");
   expectInputError({"study", kWhipple, "--speeds", "0:10"}, "--speeds");
 }
 
@@ -181,6 +184,46 @@ TEST(CliOutputSafety, AScenarioNameIsNotAPath) {
   for (const auto& e : fs::directory_iterator(dir / "work")) (void)e, ++entries;
   EXPECT_EQ(entries, 1u);  // s.yaml only: nothing was written
   expectInputError({"check", kWhipple, "--set", "name=../victim"}, "--set name=../victim");
+  // A name with a right-to-left override (U+202E) or a C1 control (U+0085) becomes no folder.
+  for (const std::string& name : {std::string("\"rev\\u202Egpj\""), std::string("\"next\\x85line\"")}) {
+    std::ofstream(dir / "work" / "s.yaml") << withName(name);
+    const CliRun r = runCli({"check", "s.yaml"}, (dir / "work").string());
+    EXPECT_EQ(r.exitCode, 2) << name << "\n" << r.output;
+    EXPECT_NE(r.output.find("s.yaml:" + std::to_string(nameLine) + ":1: name"), std::string::npos) << r.output;
+  }
+}
+
+// A user's files added to a folder motostab wrote (`sweep --out A; mkdir A/sub`) were deleted by the next
+// run into A: the marker lists what motostab wrote, and a folder holding anything else is refused
+// naming it. The system's refusals (a name over 255 bytes) are exit 2 at --out; a 245-character name,
+// whose temporary sibling would exceed 255 bytes, works.
+TEST(CliOutputSafety, UserFilesInAnOutputFolderAreKept) {
+  namespace fs = std::filesystem;
+  const fs::path dir = makeTempDir("cli_user_files");
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  const std::vector<std::string> sweep{"sweep", kWhipple, "--speeds", "4:5:1", "--out"};
+  auto run = [&](const std::string& out) {
+    std::vector<std::string> args = sweep;
+    args.push_back(out);
+    return runCli(args, dir.string());
+  };
+  ASSERT_EQ(run("A").exitCode, 0);
+  fs::create_directories(dir / "A" / "sub");
+  std::ofstream(dir / "A" / "sub" / "notes.txt") << "x\n";
+  const CliRun refused = run("A");
+  EXPECT_EQ(refused.exitCode, 2) << refused.output;
+  EXPECT_NE(refused.output.find("--out: 'A' holds entries motostab did not write (sub)"), std::string::npos) << refused.output;
+  EXPECT_EQ(readFile(dir / "A" / "sub" / "notes.txt"), "x\n");
+  fs::remove_all(dir / "A" / "sub");
+  EXPECT_EQ(run("A").exitCode, 0);
+  const CliRun longName = run(std::string(245, 'o'));
+  EXPECT_EQ(longName.exitCode, 0) << longName.output;
+  EXPECT_TRUE(fs::exists(dir / std::string(245, 'o') / "eigenvalues.csv"));
+  const CliRun tooLong = run(std::string(256, 'o'));
+  EXPECT_EQ(tooLong.exitCode, 2) << tooLong.output;
+  EXPECT_NE(tooLong.output.find("--out"), std::string::npos) << tooLong.output;
+  fs::remove_all(dir);
 }
 
 // YAML aliases nested ten wide and seven deep ("billion laughs", 1.5 KB) once took 30 s and 6.5 GB: now
@@ -215,6 +258,11 @@ TEST(CliBoundedInputs, CountsAndFilesAreBounded) {
   expectInputError({"sweep", kWhipple, "--roll-deg", ":10:1"}, "--roll-deg");
   expectInputError({"sweep", kWhipple, "--speeds", "1:5:"}, "--speeds");
   expectInputError({"sweep", kWhipple, "--roll-deg", "0:20:0.01"}, "at most 1000 angles");
+  // Speeds x roll angles of a map: 991 x 201 points (1e8 were accepted and filled the memory; 30 kB each).
+  expectInputError({"sweep", kWhipple, "--speeds", "1:100:0.1", "--roll-deg", "0:20:0.1"}, "points; at most 10000 (");
+  // Output samples of a simulation (duration / output step overflowed to an empty run with exit 0).
+  expectInputError({"simulate", kWhipple, "--speed", "5", "--duration", "300000", "--output-step", "1e-4"},
+                   "output samples; at most 1e5");
 }
 
 // A sweep over one speed (`--speeds 5:5:1`) is a valid request: its plots are drawn over a range around it.

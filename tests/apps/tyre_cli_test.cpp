@@ -20,6 +20,9 @@ TEST(CliTyre, WritesForcesAndPlots) {
                            "0.01", "--out", (dir / "out").string()});
   ASSERT_EQ(r.exitCode, 0) << r.output;
   EXPECT_NE(r.output.find("cornering stiffness"), std::string::npos) << r.output;
+  // The sample has no LONGITUDINAL_STIFFNESS: no longitudinal relaxation length (it printed "nan m").
+  EXPECT_NE(r.output.find("longitudinal relaxation length = not given"), std::string::npos) << r.output;
+  EXPECT_EQ(r.output.find("nan"), std::string::npos) << r.output;
   const TextCsv t = readTextCsv(dir / "out" / "forces.csv");
   const std::vector<std::string> pinned{"fz_N", "slip_angle_rad", "camber_rad", "slip_ratio", "fx_N",
                                         "fy_N", "mz_Nm",          "mx_Nm",      "my_Nm"};
@@ -210,6 +213,9 @@ TEST(CliTyre, MeaninglessTyreParametersAreRefused) {
   const auto [pcy1, pcy1Line] = writeEdited(dir, kSampleTir, "PCY1                     =  1.337", "PCY1                     =  0");
   expectInputError(tyre({pcy1.string()}), "sample_MF61_ExternData-edited.tir:" + std::to_string(pcy1Line) + ":29: PCY1");
   if (std::filesystem::exists("/dev/zero")) expectInputError(tyre({"/dev/zero"}), "/dev/zero: not a regular file");
+  // A magnitude above 1e12 (QDZ1 = 1e200 gave an aligning moment of 1e201 N m with exit 0).
+  const auto [qdz1, qdz1Line] = writeEdited(dir, kSampleTir, "QDZ1                     =  0.09068", "QDZ1                     =  1e200");
+  expectInputError(tyre({qdz1.string()}), "sample_MF61_ExternData-edited.tir:" + std::to_string(qdz1Line) + ":29: QDZ1");
   // A scenario's inline relaxation coefficient, the same refused by sweep, and a relaxation_linear camber
   // stiffness of the wrong sign.
   const auto [relax, relaxLine] = writeEdited(dir, "scenarios/supersport-mf.yaml", "RELAX_C1: 8.633e-6", "RELAX_C1: -8.633e-6");

@@ -2,6 +2,8 @@
 
 #include <filesystem>
 #include <fstream>
+#include <utility>
+#include <vector>
 
 #include "tests/support/temp_dir.h"
 #include "io/csv.h"
@@ -61,6 +63,27 @@ TEST(Csv, ByteOrderMarkIsSkipped) {
   const auto t = motostab::io::readCsv(p);
   EXPECT_EQ(t.header.front(), "speed_mps");
   EXPECT_EQ(t.getColumn("speed_mps").front(), 1.0);
+}
+
+// Spreadsheets quote fields (RFC 4180): a quoted header ("mode" was read as the name '"mode"', and its
+// cells as numbers) and quoted cells are read as their text; an unclosed quote is an error at its column.
+TEST(Csv, QuotedFieldsAreRead) {
+  auto p = writeTemp("motostab_csv_quoted.csv", "\"speed_mps\", \"mode\" ,\"re,al\"\n5,\"weave\",\"-0.5\"\n6, \"say \"\"hi\"\"\" ,1\n");
+  const auto t = motostab::io::readCsv(p, {"mode"});
+  ASSERT_EQ(t.header, (std::vector<std::string>{"speed_mps", "mode", "re,al"}));
+  ASSERT_EQ(t.rows.size(), 2u);
+  EXPECT_EQ(t.text[0][0], "weave");
+  EXPECT_EQ(t.text[1][0], "say \"hi\"");
+  EXPECT_EQ(t.getColumn("re,al")[0], -0.5);
+  for (const auto& [text, column] : std::vector<std::pair<std::string, int>>{{"a,b\n1,\"2\n", 3}, {"a,b\n1,\"2\"x\n", 6}, {"a,b\n1,2\"\n", 3}}) {
+    try {
+      motostab::io::readCsv(writeTemp("motostab_csv_open.csv", text));
+      ADD_FAILURE() << text;
+    } catch (const motostab::io::InputError& e) {
+      EXPECT_EQ(e.getLocation().line, 2) << e.what();
+      EXPECT_EQ(e.getLocation().column, column) << e.what();
+    }
+  }
 }
 
 TEST(Csv, OnlyRegularFiles) { EXPECT_THROW(motostab::io::readCsv("/dev/zero"), motostab::io::InputError); }

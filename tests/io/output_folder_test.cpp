@@ -2,8 +2,11 @@
 // outputs, never a mix.
 #include <gtest/gtest.h>
 
+#include <unistd.h>
+
 #include <filesystem>
 #include <fstream>
+#include <random>
 #include <set>
 #include <sstream>
 #include <vector>
@@ -117,6 +120,59 @@ TEST(OutputFolder, NamesTheFileSystemRejectsAreInputErrors) {
   EXPECT_EQ(listNames(dir), std::set<std::string>{"file"});
 }
 
+// A folder name near the file systems' limit of 255 bytes (lengths drawn, seeded): its temporary sibling
+// ".NAME.partial-PID" would exceed it (creating it failed, exit 1): the sibling is shortened, the run
+// commits, and a killed run's leftover of the same name is cleaned up by the next run.
+TEST(OutputFolder, LongNamesGetSiblingsWithinTheLimit) {
+  const fs::path dir = freshDir("long");
+  std::mt19937 rng(245);
+  for (int i = 0; i < 4; ++i) {
+    const size_t length = std::uniform_int_distribution<size_t>(230, 255)(rng);
+    const std::string name = (i % 2 ? std::string("\xc3\xa9") : std::string()) + std::string(length - 2 * (i % 2), 'o');
+    const fs::path target = dir / name;
+    fs::path leftover;
+    {
+      OutputFolder killed(target);  // its temporary, renamed as a dead process's would be
+      const std::string t = killed.getPath().filename().string();
+      leftover = dir / (t.substr(0, t.rfind('-') + 1) + "999999999");
+      fs::rename(killed.getPath(), leftover);
+    }
+    ASSERT_TRUE(fs::exists(leftover));
+    OutputFolder out(target);
+    EXPECT_LE(out.getPath().filename().string().size(), 255u) << out.getPath();
+    EXPECT_FALSE(fs::exists(leftover)) << "a killed run's folder is left: " << leftover;
+    std::ofstream(out.getPath() / "a.txt") << "a";
+    out.commit();
+    EXPECT_EQ(listNames(target), withMarker({"a.txt"}));
+    fs::remove_all(target);
+  }
+  EXPECT_TRUE(fs::is_empty(dir));
+}
+
+// The system's refusal to create the output folder (no permission, a read-only file system) is bad
+// input at --out naming the reason (it was an internal error, exit 1). /sys refuses even root.
+TEST(OutputFolder, SystemRefusalsAreInputErrorsAtOut) {
+  std::vector<fs::path> refused;
+  if (fs::is_directory("/sys")) refused.push_back("/sys/motostab_output_test");
+  const fs::path dir = freshDir("readonly");
+  if (::geteuid() != 0) {  // root writes a mode-555 folder anyway
+    fs::create_directories(dir / "ro");
+    fs::permissions(dir / "ro", fs::perms::owner_read | fs::perms::owner_exec);
+    refused.push_back(dir / "ro" / "out");
+  }
+  for (const fs::path& target : refused) {
+    try {
+      OutputFolder out(target);
+      ADD_FAILURE() << "no error for " << target;
+    } catch (const InputError& e) {
+      EXPECT_EQ(e.getLocation().key, "--out") << e.what();
+      EXPECT_NE(std::string(e.what()).find(target.string()), std::string::npos) << e.what();
+    }
+  }
+  if (fs::exists(dir / "ro")) fs::permissions(dir / "ro", fs::perms::owner_all, fs::perm_options::replace);
+  fs::remove_all(dir);
+}
+
 // "--out ." (or "..", "x/..", or any folder that holds the working folder) would have the run replace
 // the folder it works in: refused at once, before any computing, and nothing is created.
 TEST(OutputFolder, TheWorkingFolderOrOneHoldingItIsRefused) {
@@ -180,6 +236,59 @@ TEST(OutputFolder, AFolderWithoutTheMarkerIsRefused) {
   EXPECT_EQ(listNames(dir / "empty"), withMarker({}));
 }
 
+// The marker lists what motostab wrote: a folder holding anything else (a subfolder of notes, a file
+// added inside a written subfolder) is refused naming those entries, at the start and at commit, and
+// nothing is lost; without them it is replaced as before. A marker without a list (older motostab)
+// still lets its folder be replaced whole.
+TEST(OutputFolder, AFolderHoldingEntriesNotWrittenIsRefused) {
+  const fs::path dir = freshDir("listed");
+  const fs::path target = dir / "A";
+  {
+    OutputFolder out(target);
+    fs::create_directories(out.getPath() / "plots");
+    std::ofstream(out.getPath() / "summary.json") << "{}";
+    std::ofstream(out.getPath() / "plots" / "x.svg") << "<svg/>";
+    out.commit();
+  }
+  const std::string marker = readText(target / kOutputMarker);
+  for (const char* entry : {"\nsummary.json\n", "\nplots\n", "\nplots/x.svg\n"})
+    EXPECT_NE(marker.find(entry), std::string::npos) << marker;
+  struct Case {
+    fs::path file;
+    std::string named;
+  };
+  for (const Case& c : {Case{"sub/notes.txt", "(sub)"}, Case{"plots/mine.txt", "(plots/mine.txt)"}, Case{"notes", "(notes)"}}) {
+    fs::create_directories((target / c.file).parent_path());
+    std::ofstream(target / c.file) << "mine";
+    try {
+      OutputFolder out(target);
+      ADD_FAILURE() << "replaced a folder holding " << c.file;
+    } catch (const InputError& e) {
+      EXPECT_EQ(e.getLocation().key, "--out");
+      EXPECT_NE(std::string(e.what()).find("did not write " + c.named), std::string::npos) << e.what();
+    }
+    fs::remove(target / c.file);
+    if (c.file.parent_path() == "sub") fs::remove(target / "sub");
+    OutputFolder late(target);  // accepted now; the entry added while it computes is refused at commit
+    fs::create_directories((target / c.file).parent_path());
+    std::ofstream(target / c.file) << "mine";
+    EXPECT_THROW(late.commit(), InputError);
+    EXPECT_EQ(readText(target / c.file), "mine");
+    fs::remove(target / c.file);
+    if (c.file.parent_path() == "sub") fs::remove(target / "sub");
+  }
+  {
+    OutputFolder out(target);
+    out.commit();
+  }
+  EXPECT_EQ(listNames(target), withMarker({}));
+  std::ofstream(target / kOutputMarker) << "This folder was written by motostab.\n";  // an older marker
+  std::ofstream(target / "notes.txt") << "x";
+  OutputFolder old(target);
+  old.commit();
+  EXPECT_EQ(listNames(target), withMarker({}));
+}
+
 // A folder put in the target's place while the run computed is checked again at commit.
 TEST(OutputFolder, TheCheckIsRepeatedAtCommit) {
   const fs::path dir = freshDir("late");
@@ -219,6 +328,13 @@ TEST(OutputFolder, FolderNamesAreNamesNotPaths) {
   for (const std::string& bad : std::vector<std::string>{"", ".", "..", "a/b", "../victim", "/tmp/x", "a\nb", std::string(201, 'n')})
     EXPECT_NE(describeBadFolderName(bad), "") << bad;
   for (const std::string& good : std::vector<std::string>{"whipple-benchmark", "Browser + Jason", "..a", "a..b", "x.y", std::string(200, 'n')})
+    EXPECT_EQ(describeBadFolderName(good), "") << good;
+  // Code points that hide how a name reads (U+0085 next line, U+202E right-to-left override, U+2066
+  // isolate, U+2028 line separator) and bytes that are not UTF-8 are refused; other scripts are names.
+  for (const std::string& bad : std::vector<std::string>{"a\xc2\x85" "b", "evil\xe2\x80\xaegpj.exe", "x\xe2\x81\xa6y",
+                                                         "l\xe2\x80\xa8m", "bad\xff", "cut\xc3", "\x7f"})
+    EXPECT_NE(describeBadFolderName(bad), "") << bad;
+  for (const std::string& good : std::vector<std::string>{"v\xc3\xa9lo", "\xe8\x87\xaa\xe8\xbb\xa2\xe8\xbb\x8a", "bike \xf0\x9f\x9a\xb2"})
     EXPECT_EQ(describeBadFolderName(good), "") << good;
 }
 

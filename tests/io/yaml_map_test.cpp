@@ -5,9 +5,11 @@
 #include "tests/support/temp_dir.h"
 #include "tests/support/catch_input_error.h"
 
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <random>
+#include <sstream>
 
 #include "io/yaml_map.h"
 
@@ -77,6 +79,29 @@ TEST(YamlMap, NumbersMustBeFinite) {
   EXPECT_EQ(e.getLocation().column, 11);
 }
 
+// A delay or relaxation length is 0 (off) or at least its physical floor: 1e-300 gave a root of -2e300
+// (or non-finite ones). Values drawn (seeded) on a log scale below and above the floor.
+TEST(YamlMap, ZeroOrAtLeastAFloor) {
+  std::mt19937 rng(1029);
+  std::uniform_real_distribution<double> below(-300, -0.01), above(0, 3);
+  const double floor = 1e-4;
+  for (int i = 0; i < 20; ++i) {
+    const double tiny = floor * std::pow(10.0, below(rng)), fine = floor * std::pow(10.0, above(rng));
+    std::ostringstream text;
+    text.precision(17);
+    text << "sec:\n  zero: 0\n  tiny: " << tiny << "\n  fine: " << fine << "\n";
+    YamlMap root = loadYamlFile(writeYaml("floor.yaml", text.str()));
+    YamlMap sec = root.getMap("sec");
+    EXPECT_EQ(sec.getZeroOrAtLeast("zero", floor, "s"), 0);
+    EXPECT_EQ(sec.getZeroOrAtLeast("fine", floor, "s"), fine);
+    EXPECT_EQ(sec.getZeroOrAtLeast("absent", floor, "s", 0.5), 0.5);
+    const InputError e = catchInputError([&] { sec.getZeroOrAtLeast("tiny", floor, "s", 0.5); });
+    EXPECT_EQ(e.getLocation().key, "sec.tiny");
+    EXPECT_EQ(e.getLocation().line, 3);
+    EXPECT_NE(e.getReason().find("must be 0 (off) or at least 0.0001 s"), std::string::npos) << e.what();
+  }
+}
+
 TEST(YamlMap, RelativePathsAreRelativeToTheNamingFile) {
   const std::string file = writeYaml("paths.yaml", "a: data/x.csv\nb: /abs/y.csv\nc: [../z.so, ./w.so]\n");
   YamlMap m = loadYamlFile(file);
@@ -88,6 +113,12 @@ TEST(YamlMap, RelativePathsAreRelativeToTheNamingFile) {
   EXPECT_EQ(list[0], (dir.parent_path() / "z.so").string());
   EXPECT_EQ(list[1], (dir / "w.so").string());
   m.finish();
+  // A naming file in the working folder: the result keeps a folder ("./"), never a bare name.
+  EXPECT_EQ(resolveRelativeTo("p.yaml", "./w.so"), "./w.so");
+  EXPECT_EQ(resolveRelativeTo("p.yaml", "w.so"), "./w.so");
+  EXPECT_EQ(resolveRelativeTo("sub/p.yaml", "../w.so"), "./w.so");
+  EXPECT_EQ(resolveRelativeTo("sub/p.yaml", "w.so"), "sub/w.so");
+  EXPECT_EQ(resolveRelativeTo("p.yaml", "lib/w.so"), "lib/w.so");
 }
 
 TEST(YamlMap, MapListsAreStrictPerElement) {

@@ -76,6 +76,14 @@ TEST(UncertaintyOutput, FewSamplesLeaveOutTheEmptySensitivityCharts) {
     EXPECT_FALSE(fs::exists(dir / ("sensitivity_" + c.mode + ".gp"))) << c.mode;
   }
   EXPECT_NE(test::readText(dir / "report.md").find("needs at least 8 samples"), std::string::npos);
+  // The undefined indices (and the wobble, which does not cross here) are empty cells as the JSON's
+  // null, never "nan" (sensitivity.csv, samples.csv, mode_quantiles.csv carried it with exit 0).
+  for (const char* f : {"samples.csv", "mode_quantiles.csv", "sensitivity.csv"}) {
+    const std::string text = test::readText(dir / f);
+    EXPECT_EQ(text.find("nan"), std::string::npos) << f << "\n" << text;
+    EXPECT_EQ(text.find("inf"), std::string::npos) << f << "\n" << text;
+  }
+  EXPECT_NE(test::readText(dir / "sensitivity.csv").find(",,"), std::string::npos);  // the empty index cells
 
   // p + 2 to p + 4 samples: the indices exist and their charts are drawn.
   const size_t enough = p + 2 + g.drawIndex(3);

@@ -240,5 +240,26 @@ TEST(Plugins, RelativeLibraryPathIsRelativeToTheScenario) {
   EXPECT_NO_THROW(VehicleModel model(s));
 }
 
+// A library next to its scenario, both in the working folder (`plugins: [./lib.so]` in p.yaml, run as
+// `motostab check p.yaml`): the resolved name keeps its "./" and loads (it was refused as a bare name).
+TEST(Plugins, LibraryNextToAScenarioInTheWorkingFolder) {
+  namespace fs = std::filesystem;
+  const fs::path dir = makeTempDir("plugin_cwd");
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  fs::copy_file(MOTOSTAB_EXAMPLE_PLUGIN, dir / "libspring.so");
+  const std::string file =
+      scenarioWith("cwd", "contact: {model: example_vertical_spring, stiffness_N_per_m: 1.0e5}", "./libspring.so", dir);
+  const fs::path before = fs::current_path();
+  fs::current_path(dir);
+  Scenario s;
+  EXPECT_NO_THROW(s = loadScenario(fs::path(file).filename().string()));
+  ASSERT_EQ(s.plugins.size(), 1u);
+  EXPECT_EQ(s.plugins[0], "./libspring.so");
+  EXPECT_NO_THROW(VehicleModel model(s));
+  fs::current_path(before);
+  fs::remove_all(dir);
+}
+
 }  // namespace
 }  // namespace motostab::plugins

@@ -4,9 +4,13 @@
 // an axis near x, exceeding I_yy + the smallest (I_yy raised onto |l_1 - l_2|).
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <sstream>
 
+#include "tests/support/catch_input_error.h"
 #include "tests/support/temp_dir.h"
 #include "tests/apps/cli_support.h"
 #include "io/atomic_file.h"
@@ -60,6 +64,40 @@ TEST(BicycleParameters, ImpossibleInertiaIsExplainedWithTheExcess) {
       EXPECT_NE(what.find(by), std::string::npos) << what << " (expected '" << by << "')";
       EXPECT_NE(what.find("--repair-inertia"), std::string::npos) << what;
     }
+  }
+}
+
+// A frame inertia with a principal moment <= 0 (IBxx = 0.5, IBzz = 2.8, IBxz = 2.4: the x-z block's
+// smaller moment m - r = 1.65 - 2.65 = -1.01, computed here) is not positive definite: said at IBxx's
+// line, with or without --repair-inertia, and never offered the repair (it was reported as a
+// triangle-inequality problem that --repair-inertia would fix).
+TEST(BicycleParameters, InertiaNotPositiveDefiniteIsSaidAtItsLine) {
+  const auto dir = makeTempDir("bp_not_pd");
+  std::ifstream in(getParameterFile("Benchmark"));
+  std::stringstream text;
+  text << in.rdbuf();
+  std::string t = text.str();
+  const std::vector<std::pair<std::string, std::string>> edits{{"IBxx", "0.5"}, {"IByy", "11.0"}, {"IBzz", "2.8"}, {"IBxz", "2.4"}};
+  int line = 0;
+  for (const auto& [key, value] : edits) {
+    const size_t at = t.find("\n" + key + " ") + 1;
+    ASSERT_GT(at, 0u) << key;
+    t.replace(at, t.find('\n', at) - at, key + " = " + value);
+    if (key == "IBxx") line = static_cast<int>(std::count(t.begin(), t.begin() + at, '\n')) + 1;
+  }
+  const std::string file = (dir / "notpd.txt").string();
+  writeFileAtomically(file, t);
+  const double m = 0.5 * (0.5 + 2.8), r = std::hypot(0.5 * (0.5 - 2.8), 2.4);
+  ASSERT_LT(m - r, 0);
+  for (const bool repair : {false, true}) {
+    const InputError e = test::catchInputError([&] { convertBicycleParametersToScenario(file, "x", {repair}); });
+    EXPECT_EQ(e.getLocation().key, "IBxx") << e.what();
+    EXPECT_EQ(e.getLocation().line, line) << e.what();
+    EXPECT_NE(e.getReason().find("not positive definite"), std::string::npos) << e.what();
+    EXPECT_EQ(e.getReason().find("--repair-inertia"), std::string::npos) << e.what();
+    char moment[32];
+    std::snprintf(moment, sizeof moment, "%.6g", m - r);
+    EXPECT_NE(e.getReason().find(moment), std::string::npos) << e.what() << " (expected " << moment << ")";
   }
 }
 

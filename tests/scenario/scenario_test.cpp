@@ -109,13 +109,15 @@ TEST(Scenario, InertiaViolatesTriangleInequality) {
 
 // A speed range whose step count overflows (or would fill the memory) is an input error, not a crash.
 TEST(Scenario, SpeedRangeWithTooManySteps) {
-  expectError(variant("speeds", "{start: 0, stop: 10, step: 0.1}", "{start: 0, stop: 1e11, step: 1e-9}"),
-              "speeds_mps", "speeds_mps.step", "more than 1e6 speeds");
+  expectError(variant("speeds", "{start: 0, stop: 10, step: 0.1}", "{start: 0, stop: 100, step: 1e-3}"),
+              "speeds_mps", "speeds_mps.step", "gives 100001 speeds; at most 10000");
+  expectError(variant("speeds4", "{start: 0, stop: 10, step: 0.1}", "{start: 0, stop: 9999, step: 1}"),
+              "speeds_mps", "speeds_mps.stop", "speeds above 150 m/s");
   // A number beyond any physical magnitude is refused where it is read, before the range is formed.
   expectError(variant("speeds3", "{start: 0, stop: 10, step: 0.1}", "{start: 0, stop: 1e300, step: 1e-300}"),
               "speeds_mps", "speeds_mps.stop", "a magnitude above 1e12");
   expectError(variant("speeds2", "{start: 0, stop: 10, step: 0.1}", "{start: 0, stop: 1e9, step: 1e-3}"),
-              "speeds_mps", "speeds_mps.step", "more than 1e6 speeds");
+              "speeds_mps", "speeds_mps.stop", "speeds above 150 m/s");
 }
 
 TEST(Scenario, UnknownPlugin) {

@@ -2,7 +2,9 @@
 // self-stable speed, falls, pulse inputs, initial-rate projection, integrators and outputs.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <filesystem>
+#include <random>
 #include <iostream>
 
 #include "tests/support/temp_dir.h"
@@ -206,6 +208,21 @@ TEST(SimulationInputs, BadOptionsAreInputErrors) {
   o.duration = 1;
   o.accuracy = 0;
   EXPECT_THROW(runSimulation(getWhipple(), o), InputError);
+  // More than 1e5 output samples (duration / output step; drawn, seeded): 300000 s at 1e-4 s overflowed
+  // the sample count (exit 0, an empty run), 1 s at 1e-6 s took 3 GB. Refused at --output-step.
+  o.accuracy = 1e-6;
+  std::mt19937 rng(93);
+  for (int i = 0; i < 5; ++i) {
+    o.duration = std::pow(10.0, std::uniform_real_distribution<double>(-1, 6)(rng));
+    o.outputStep = o.duration / std::pow(10.0, std::uniform_real_distribution<double>(5.01, 12)(rng));
+    try {
+      runSimulation(getWhipple(), o);
+      ADD_FAILURE() << o.duration << " / " << o.outputStep;
+    } catch (const InputError& e) {
+      EXPECT_EQ(e.getLocation().key, "--output-step") << e.what();
+      EXPECT_NE(e.getReason().find("at most 1e5"), std::string::npos) << e.what();
+    }
+  }
 }
 
 // Outputs: timeseries columns by model name, the plot, and modes.json.

@@ -229,6 +229,8 @@ TEST(MagicFormulaContact, ScenarioErrorsNameTheKey) {
        "contact.front.scaling.LGAY", "not a scaling factor"},
       {"{model: magic_formula, front: {tir: " + tir + ", relaxation_length_m: -1}, rear: {tir: " + tir + "}}",
        "contact.front.relaxation_length_m", ""},
+      {"{model: magic_formula, front: {tir: " + tir + ", relaxation_length_m: 1e-300}, rear: {tir: " + tir + "}}",
+       "contact.front.relaxation_length_m", "at least 0.0001 m"},
       {"{model: magic_formula, front: {tir: " + tir + "}, rear: {variant: motorcycle, coefficients: {FNOMIN: 1000}}}",
        "contact.rear.coefficients.UNLOADED_RADIUS", "missing coefficient"},
       {"{model: magic_formula, front: {tir: " + tir + "}, rear: {tir: " + tir + ", colour: red}}", "contact.rear.colour", ""},

@@ -8,6 +8,7 @@
 #include "../support/catch_input_error.h"
 #include "analysis/linearize.h"
 #include "core/portable_random.h"
+#include "io/csv.h"
 #include "tyres/relaxation_linear.h"
 
 namespace motostab::tyres {
@@ -107,6 +108,24 @@ TEST(RelaxationLinear, UnphysicalSignsAreRefusedAtTheirKey) {
   }
   EXPECT_NO_THROW(VehicleModel(loadScenario(supersport, {"contact.front.twisting_stiffness_m_per_rad=-0.01"})));
   EXPECT_NO_THROW(VehicleModel(loadScenario(supersport, {"contact.front.camber_stiffness_per_rad=0"})));
+}
+
+// A relaxation length is 0 (no lag) or at least kMinRelaxationLength: 1e-300 m gave non-finite roots
+// (a crash of the mode tracking) or a root of -1e301 1/s. Drawn (seeded) on a log scale below the floor,
+// given directly, over a preset and inline; the floor itself is accepted.
+TEST(RelaxationLinear, RelaxationLengthHasAPhysicalFloor) {
+  const std::string bicycle = std::string(MOTOSTAB_SOURCE_DIR) + "/scenarios/whipple-benchmark-tyres.yaml";
+  core::PortableRandom rng(2029);
+  for (int i = 0; i < 4; ++i) {
+    const std::string tiny = io::formatNumber(kMinRelaxationLength * std::pow(10.0, rng.drawUniform(-300, -0.01)));
+    for (const std::string& set : {"contact.front.relaxation_length_m=" + tiny, "contact.rear={relaxation_length_m: " + tiny + "}"}) {
+      const InputError e = test::catchInputError([&] { VehicleModel(loadScenario(bicycle, {set})); });
+      EXPECT_NE(e.getLocation().key.find("relaxation_length_m"), std::string::npos) << e.what();
+      EXPECT_NE(e.getReason().find("must be 0 (off) or at least 0.0001 m"), std::string::npos) << e.what();
+    }
+  }
+  EXPECT_NO_THROW(VehicleModel(loadScenario(bicycle, {"contact.front.relaxation_length_m=1e-4"})));
+  EXPECT_NO_THROW(VehicleModel(loadScenario(bicycle, {"contact.front.relaxation_length_m=0"})));
 }
 
 // The steady-state law motostab tyre draws: the header's equations in ISO-W signs (alpha_ISO = -atan

@@ -2,9 +2,12 @@
 // MF61-sample-tir) and files broken on purpose, each an InputError naming file:line and the key.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <random>
 #include <regex>
+#include <sstream>
 
 #include "../support/catch_input_error.h"
 #include "../support/temp_dir.h"
@@ -95,6 +98,25 @@ TEST(TirFile, BrokenFilesNameTheLineAndKey) {
   EXPECT_EQ(TirFile::load(kSample).find("PKY1")->column, 28);
   const InputError none = test::catchInputError([&] { parseBroken(editLine("FITTYP", "$ no FITTYP")); });
   EXPECT_NE(none.getReason().find("missing [MODEL] FITTYP"), std::string::npos) << none.what();
+}
+
+// Every number of a .tir file is at most 1e12 in magnitude, as in YAML and --set (QDZ1 = 1e200 gave an
+// aligning moment of 1e201 N m with exit 0; LFZO = 1e30 a failed trim). Coefficients and magnitudes
+// drawn (seeded); 1e12 itself is read.
+TEST(TirFile, MagnitudesAbove1e12AreRefusedAtTheirLine) {
+  const std::vector<std::string> keys{"QDZ1", "LFZO", "PKY1", "FNOMIN", "PCY1", "QSY1", "VERTICAL_STIFFNESS"};
+  std::mt19937 rng(1200);
+  for (int i = 0; i < 8; ++i) {
+    const std::string key = keys[std::uniform_int_distribution<size_t>(0, keys.size() - 1)(rng)];
+    std::ostringstream value;
+    value << (i % 2 ? "-" : "") << std::pow(10.0, std::uniform_real_distribution<double>(12.01, 300)(rng));
+    const InputError e = test::catchInputError([&] { parseBroken(editLine(key + " ", key + " = " + value.str())); });
+    EXPECT_EQ(e.getLocation().line, lineOf(key + " ")) << value.str();
+    EXPECT_EQ(e.getLocation().key, key) << value.str();
+    EXPECT_EQ(e.getLocation().column, static_cast<int>(key.size()) + 4) << value.str();
+    EXPECT_NE(e.getReason().find("a magnitude above 1e12"), std::string::npos) << e.what();
+  }
+  EXPECT_EQ(parseBroken(editLine("QDZ1 ", "QDZ1 = -1e12")).find("QDZ1")->number, -1e12);
 }
 
 TEST(TirFile, MissingOrUnsupportedCoefficientsAreErrorsOfTheFile) {

@@ -217,6 +217,8 @@ TEST(SteerController, MalformedInputNamesFileLineColumnAndKey) {
                    {"steer_controller:\n  roll_rate_Nms_per_rad: .nan\n", 3, "steer_controller.roll_rate_Nms_per_rad"},
                    {"steer_controller:\n  roll_rate_Nms_per_rad: fast\n", 3, "steer_controller.roll_rate_Nms_per_rad"},
                    {"steer_controller:\n  delay_s: -0.01\n", 3, "steer_controller.delay_s"},
+                   {"steer_controller:\n  delay_s: 1e-300\n", 3, "steer_controller.delay_s"},
+                   {"steer_controller:\n  delay_s: 9.9e-5\n", 3, "steer_controller.delay_s"},
                    {"steer_controller:\n  torque_limit_Nm: 0\n", 3, "steer_controller.torque_limit_Nm"},
                    {"steer_controller:\n  gain_factor: -1\n", 3, "steer_controller.gain_factor"},
                    {"steer_controller:\n  schedule: {below_mps: 5, table: [[0, 1], [1, 2]]}\n", 13, "steer_controller.schedule"},
