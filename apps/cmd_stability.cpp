@@ -259,10 +259,14 @@ void registerStudyCommand(CLI::App& app) {
     checkStudyOptions(opt, {"--shape-speeds", 0, 0, ""}, getSpeedsLocation(!st->speeds.empty()));
     studies::VerdictOptions vo;
     vo.findingsFile = findFindingsFile(st->findings, st->noFindings, st->scenario);
-    if (!st->candidates.empty()) vo.candidates = io::splitFields(st->candidates, ',');
+    if (!st->candidates.empty()) vo.candidates = io::splitFields(st->candidates, ','), vo.candidatesGiven = true;
     vo.threads = st->threads;
     vo.overrides = changes;
-    if (!vo.findingsFile.empty()) diagnosis::loadMeasuredData(vo.findingsFile);  // bad input before any work
+    if (!vo.findingsFile.empty()) {  // bad input before any work
+      diagnosis::loadMeasuredData(vo.findingsFile);
+      std::vector<std::string> unavailable;
+      studies::selectStudyCandidates(*ScenarioSource::open(st->scenario), vo, unavailable);
+    }
     const std::string out = getOutputFolder(st->out, scenario.name, "study");
     OutputFolder folder(out);
     const auto t0 = std::chrono::steady_clock::now();
@@ -276,6 +280,10 @@ void registerStudyCommand(CLI::App& app) {
     writeScenarioJson(folder.getPath(), scenario);
     folder.commit();
     std::cout << makeStudyReport(result, findings, opt) << "\n";
+    if (v && st->rollDeg != 0)
+      std::cout << "The findings are judged on straight running, as the seed states them; the variants above are "
+                   "compared at "
+                << io::formatNumber(st->rollDeg, 4) << " deg of roll.\n";
     if (v) std::cout << output::makeVerdictSummary(*v);
     else std::cout << "No findings set against the motorcycle (--findings FILE; docs/commands.md).\n";
     std::cout << "Sweeps " << io::formatNumber(sweepSeconds, 3) << " s"

@@ -8,6 +8,7 @@
 #include "io/input_error.h"
 #include "io/input_file.h"
 #include "io/number.h"
+#include "io/result_error.h"
 
 namespace motostab::io {
 namespace {
@@ -142,7 +143,7 @@ std::string formatNumber(double value, int significantDigits) {
   return buf;
 }
 
-CsvWriter::CsvWriter(const std::vector<std::string>& header) {
+CsvWriter::CsvWriter(const std::vector<std::string>& header) : header_(header) {
   for (size_t j = 0; j < header.size(); ++j) text_ += (j ? "," : "") + header[j];
   text_ += "\n";
 }
@@ -150,17 +151,29 @@ CsvWriter::CsvWriter(const std::vector<std::string>& header) {
 CsvWriter& CsvWriter::beginRow() {
   if (rowStarted_) text_ += "\n";
   rowStarted_ = true;
-  firstCell_ = true;
+  column_ = 0;
+  ++rows_;
   return *this;
 }
 
 CsvWriter& CsvWriter::add(const std::string& cell) {
-  if (!firstCell_) text_ += ",";
+  if (column_ > 0) text_ += ",";
   text_ += cell;
-  firstCell_ = false;
+  ++column_;
   return *this;
 }
 
-CsvWriter& CsvWriter::add(double value) { return add(formatNumber(value)); }
+CsvWriter& CsvWriter::add(double value) {
+  if (!std::isfinite(value)) {
+    const std::string column = column_ < header_.size() ? "'" + header_[column_] + "'" : std::to_string(column_ + 1);
+    const size_t lineStart = text_.rfind('\n');
+    throw ResultError("a computed value is not finite (" + formatNumber(value) + "): column " + column + " of row " +
+                      std::to_string(rows_) + ", which begins '" + text_.substr(lineStart + 1) +
+                      "'; no output was written");
+  }
+  return add(formatNumber(value));
+}
+
+CsvWriter& CsvWriter::addOrEmpty(double value) { return std::isfinite(value) ? add(value) : add(std::string()); }
 
 }  // namespace motostab::io

@@ -42,19 +42,27 @@ std::vector<std::string> splitFields(const std::string& text, char separator);
 std::string formatNumber(double value, int significantDigits = 17);
 
 /// Builds CSV text row by row; cells are strings or numbers (written with 17 significant digits).
+/// Every number is checked: a non-finite one is a ResultError naming its column and row, so no output
+/// holds "nan" or "inf". A value that may be undefined by design (no crossing, a root at the origin's
+/// damping ratio) goes through addOrEmpty: an empty cell where the JSON outputs have null.
 class CsvWriter {
  public:
   explicit CsvWriter(const std::vector<std::string>& header);
   CsvWriter& beginRow();
+  /// A finite number; a NaN or infinity throws ResultError.
   CsvWriter& add(double value);
+  /// A number, or an empty cell when it is not finite (undefined).
+  CsvWriter& addOrEmpty(double value);
   CsvWriter& add(const std::string& text);
   /// The whole CSV text, newline-terminated.
   std::string getText() const { return rowStarted_ ? text_ + "\n" : text_; }
 
  private:
+  std::vector<std::string> header_;
   std::string text_;
+  size_t rows_ = 0;    ///< rows begun
+  size_t column_ = 0;  ///< cells of the current row so far
   bool rowStarted_ = false;
-  bool firstCell_ = true;
 };
 
 }  // namespace motostab::io

@@ -309,7 +309,7 @@ std::string makeResidualCsv(const DiagnosisResult& r) {
   CsvWriter w({"component", "speed_mps", "time_s", "measured", "sigma", "predicted_before", "predicted_after",
                "residual_before", "residual_after", "whitened_before", "whitened_after"});
   for (size_t i = 0; i < r.observed.size(); ++i)
-    w.beginRow().add(r.observationComponent[i]).add(r.observationSpeed[i]).add(r.observationTime[i]).add(r.observed[i])
+    w.beginRow().add(r.observationComponent[i]).addOrEmpty(r.observationSpeed[i]).addOrEmpty(r.observationTime[i]).add(r.observed[i])
         .add(r.sigma[i]).add(r.predictedBefore[i]).add(r.predictedAfter[i])
         .add((r.observed[i] - r.predictedBefore[i]) / r.sigma[i]).add((r.observed[i] - r.predictedAfter[i]) / r.sigma[i])
         .add(i < r.whitenedBefore.size() ? r.whitenedBefore[i] : 0.0).add(i < r.whitenedAfter.size() ? r.whitenedAfter[i] : 0.0);
@@ -347,7 +347,7 @@ void writeEigenvaluePlots(const std::filesystem::path& dir, const DiagnosisResul
     writeFileAtomically(dir / ("eigen_" + mode + ".csv"), w.getText());
     const std::string f = "'eigen_" + mode + ".csv'";
     renderGnuplot(dir, "eigen_" + mode,
-                  "set datafile separator ','\nset key autotitle columnhead\nset multiplot layout 2,1 title " +
+                  "set datafile separator ','\nset key autotitle columnhead outside right top\nset multiplot layout 2,1 title " +
                   gnuplotText(mode + " eigenvalues: measured (error bars: sigma), baseline model, extended model") + "\n"
                   "set xlabel 'forward speed v (m/s)'\nset ylabel 'real part (1/s)'\nset grid\n"
                   "plot " + f + " u 1:2:4 w yerrorbars t 'measured', '' u 1:6 w p pt 6 t 'baseline', '' u 1:8 w p pt 7 t 'extended'\n"

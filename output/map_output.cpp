@@ -114,7 +114,7 @@ void writeMapCsv(const std::filesystem::path& dir, const TurnMapResult& map) {
       for (size_t k = 0; k < map.sweeps[j].speeds.size(); ++k) {
         const auto l = b.eigenvalue[k];
         csv.beginRow().add(toDegrees(map.rolls[j])).add(map.sweeps[j].speeds[k]).add(toString(b.labels[k])).add(l.real()).add(l.imag())
-            .add(calcFrequencyHz(l)).add(calcDampingRatio(l));
+            .add(calcFrequencyHz(l)).addOrEmpty(calcDampingRatio(l));
       }
   writeFileAtomically(dir / "map.csv", csv.getText());
 }
@@ -193,6 +193,19 @@ void writeTurnMapOutputs(const std::filesystem::path& dir, const std::string& na
                     formatRange("y", calcAxisRange(reals)) + realParts + "\n");
 }
 
+namespace {
+
+// A damping ratio for the terminal table, "-" where the mode is absent (never "nan").
+std::string formatZeta(std::complex<double> l) {
+  const double z = calcDampingRatio(l);
+  if (!std::isfinite(z)) return "-";
+  std::ostringstream os;
+  os << std::fixed << std::setprecision(4) << z;
+  return os.str();
+}
+
+}  // namespace
+
 std::string formatTurnMapTable(const TurnMapResult& map) {
   std::ostringstream os;
   os << std::setw(10) << "roll (deg)" << std::setw(10) << "v (m/s)" << std::setw(16) << "weave zeta" << std::setw(16)
@@ -203,8 +216,8 @@ std::string formatTurnMapTable(const TurnMapResult& map) {
     for (size_t k = 0; k < s.speeds.size(); k += stride)
       os << std::fixed << std::setprecision(1) << std::setw(10) << toDegrees(map.rolls[j]) << std::setprecision(2)
          << std::setw(10) << s.speeds[k] << std::setprecision(4) << std::setw(16)
-         << calcDampingRatio(findModeEigenvalue(s, ModeLabel::Weave, k)) << std::setw(16)
-         << calcDampingRatio(findModeEigenvalue(s, ModeLabel::Wobble, k)) << "\n";
+         << formatZeta(findModeEigenvalue(s, ModeLabel::Weave, k)) << std::setw(16)
+         << formatZeta(findModeEigenvalue(s, ModeLabel::Wobble, k)) << "\n";
     for (const auto& c : s.criticalSpeeds)
       os << "    critical: " << toString(c.mode) << " " << std::setprecision(4) << c.speed << " m/s ("
          << (c.stabilising ? "stabilising" : "destabilising") << ")\n";

@@ -178,7 +178,7 @@ std::string makeWeaveShapesFigure(const StudyResult& st, const StudyOptions& opt
   os << "  set datafile separator ','\n  set grid\n  set size ratio -1\n  set xrange [-1.15:1.15]\n  set yrange [-1.15:1.15]\n"
      << "  set xtics 0.5\n  set ytics 0.5\n  set xzeroaxis lt -1\n  set yzeroaxis lt -1\n"
      << "  set xlabel 'in phase with steer'\n  set ylabel 'leading steer by 90 deg'\n"
-     << "  set multiplot layout 1," << n << " margins 0.07, 0.98, 0.3, 0.9 spacing 0.06 title "
+     << "  set multiplot layout 1," << n << " margins 0.1, 0.98, 0.3, 0.88 spacing 0.06 title "
      << gnuplotText("Weave mode shapes (" + opt.shapeVariant + " model; angles in rad, lateral = rear-hub displacement / "
                     "wheelbase; largest component 1)") << "\n";
   for (size_t i = 0; i < st.weaveShapes.size(); ++i) {
@@ -220,6 +220,9 @@ std::string makeStudyReport(const StudyResult& st, const StudyFindings& findings
                             const studies::StudyVerdicts* verdicts) {
   std::ostringstream r;
   appendIntroduction(r, st, opt);
+  if (verdicts && opt.sweep.trim.roll != 0)
+    r << "\nThe findings below are judged on straight running, as the seed states them; the variants of this report "
+         "are compared at " << fmt(opt.sweep.trim.roll * 180 / M_PI, 4) << " deg of roll.\n";
   if (verdicts) r << makeVerdictSection(*verdicts);
   appendWobble(r, findings.wobble);
   appendWeave(r, st, findings.weave);

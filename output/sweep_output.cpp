@@ -267,7 +267,7 @@ void writeSweepData(const std::filesystem::path& dir, const std::string& name, c
   for (size_t k = 0; k < sweep.speeds.size(); ++k)
     for (const auto& b : sweep.branches) {
       const auto l = b.eigenvalue[k];
-      csv.beginRow().add(sweep.speeds[k]).add(toString(b.labels[k])).add(l.real()).add(l.imag()).add(calcFrequencyHz(l)).add(
+      csv.beginRow().add(sweep.speeds[k]).add(toString(b.labels[k])).add(l.real()).add(l.imag()).add(calcFrequencyHz(l)).addOrEmpty(
           calcDampingRatio(l));
     }
   writeFileAtomically(dir / "eigenvalues.csv", csv.getText());
@@ -368,7 +368,7 @@ void writeLinearModel(const std::filesystem::path& dir, const LinearModel& lin, 
   std::vector<std::string> vecHeader{"state"};
   for (int k = 0; k < lin.eigenvalues.size(); ++k) {
     const auto l = lin.eigenvalues[k];
-    ev.beginRow().add(std::to_string(k)).add(toString(lin.labels[k])).add(l.real()).add(l.imag()).add(calcFrequencyHz(l)).add(calcDampingRatio(l));
+    ev.beginRow().add(std::to_string(k)).add(toString(lin.labels[k])).add(l.real()).add(l.imag()).add(calcFrequencyHz(l)).addOrEmpty(calcDampingRatio(l));
     vecHeader.push_back("re_" + std::to_string(k));
     vecHeader.push_back("im_" + std::to_string(k));
   }

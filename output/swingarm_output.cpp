@@ -133,11 +133,11 @@ void writeModesTable(const FrfResult& r, const std::filesystem::path& dir) {
                 "loss_factor_stderr", "half_power_frequency_hz", "half_power_damping_ratio", "arm_m", "arm_m_stderr",
                 "beta_deg", "beta_deg_stderr", "mpc", "model_order", "stable_poles", "coherence"});
   for (const auto& m : r.modes)
-    mw.beginRow().add(m.frequencyHz).add(m.frequencyStderrHz).add(m.dampingRatio).add(m.dampingStderr)
-        .add(m.lossFactor).add(m.lossFactorStderr).add(m.halfPowerFrequencyHz).add(m.halfPowerDampingRatio)
-        .add(m.hasAxis ? m.axis.arm : kNaN).add(m.armStderr).add(m.hasAxis ? m.axis.betaDeg : kNaN)
-        .add(m.betaStderrDeg).add(m.mpc).add(static_cast<double>(m.order)).add(static_cast<double>(m.stableCount))
-        .add(m.coherence);
+    mw.beginRow().add(m.frequencyHz).addOrEmpty(m.frequencyStderrHz).add(m.dampingRatio).addOrEmpty(m.dampingStderr)
+        .add(m.lossFactor).addOrEmpty(m.lossFactorStderr).addOrEmpty(m.halfPowerFrequencyHz).addOrEmpty(m.halfPowerDampingRatio)
+        .addOrEmpty(m.hasAxis ? m.axis.arm : kNaN).addOrEmpty(m.armStderr).addOrEmpty(m.hasAxis ? m.axis.betaDeg : kNaN)
+        .addOrEmpty(m.betaStderrDeg).addOrEmpty(m.mpc).add(static_cast<double>(m.order)).add(static_cast<double>(m.stableCount))
+        .addOrEmpty(m.coherence);
   writeFileAtomically(dir / "modes.csv", mw.getText());
 }
 

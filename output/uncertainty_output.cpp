@@ -115,13 +115,6 @@ nlohmann::json makeUncertaintyJson(const std::string& name, const UncertaintySet
   return j;
 }
 
-// A CSV cell of a value that may be undefined (no crossing, no sample of a mode, a failed sample's
-// parameters): empty where the JSON has null, never "nan" (docs/uncertainty.md).
-void addValue(CsvWriter& csv, double v) {
-  if (std::isfinite(v)) csv.add(v);
-  else csv.add(std::string());
-}
-
 std::string makeSamplesCsv(const UncertaintySetup& s, const std::vector<TaskResult>& results) {
   std::vector<std::string> header{"task", "kind", "row", "status", "redraws"};
   for (const auto& p : s.params) header.push_back(p.path);
@@ -134,8 +127,8 @@ std::string makeSamplesCsv(const UncertaintySetup& s, const std::vector<TaskResu
     const UncertaintyTask task = getTask(s, t);
     csv.beginRow().add(std::to_string(t)).add(getKindName(s, task)).add(std::to_string(task.row));
     csv.add(r.ok ? "ok" : "failed").add(std::to_string(r.redraws));
-    for (size_t p = 0; p < s.params.size(); ++p) addValue(csv, p < r.parameters.size() ? r.parameters[p] : NAN);
-    for (double v : r.firstCrossing) addValue(csv, v);
+    for (size_t p = 0; p < s.params.size(); ++p) csv.addOrEmpty(p < r.parameters.size() ? r.parameters[p] : NAN);
+    for (double v : r.firstCrossing) csv.addOrEmpty(v);
     csv.add(quoteCell(r.crossings)).add(quoteCell(r.reason));
   }
   return csv.getText();
@@ -191,8 +184,8 @@ std::string makeModeQuantilesCsv(const UncertaintySummary& sum) {
   for (const auto& q : sum.modes)
     for (size_t k = 0; k < sum.speeds.size(); ++k) {
       csv.beginRow().add(sum.speeds[k]).add(q.mode).add(std::to_string(q.count[k]));
-      for (double v : q.real[k]) addValue(csv, v);
-      for (double v : q.frequency[k]) addValue(csv, v);
+      for (double v : q.real[k]) csv.addOrEmpty(v);
+      for (double v : q.frequency[k]) csv.addOrEmpty(v);
     }
   return csv.getText();
 }
@@ -209,8 +202,8 @@ std::string makeSensitivityCsv(const UncertaintySetup& s, const UncertaintySumma
     int rank = 0;
     for (size_t p : rankParameters(c.sensitivity)) {
       csv.beginRow().add(c.mode).add(std::to_string(++rank)).add(s.params[p].path);
-      addValue(csv, c.sensitivity[p]);
-      addValue(csv, c.derivatives[p]);
+      csv.addOrEmpty(c.sensitivity[p]);
+      csv.addOrEmpty(c.derivatives[p]);
       ++line;
     }
   }
@@ -238,7 +231,7 @@ std::string makeFanBody(const UncertaintySummary& sum, int c, const std::string&
     if (hasFiniteBand(sum.modes[m], c == 7)) shown.push_back(m);
   if (shown.empty()) return "";
   const std::string lo = std::to_string(c), mid = std::to_string(c + 1), hi = std::to_string(c + 2);
-  std::string b = "  set datafile separator ','\n  set grid\n  set key top right\n  set xzeroaxis lt -1\n"
+  std::string b = "  set datafile separator ','\n  set grid\n  set key top right opaque\n  set xzeroaxis lt -1\n"
                   "  set style fill transparent solid 0.35 noborder\n  set multiplot layout " +
                   std::to_string(shown.size()) + ",2 title " + gnuplotText(title) + "\n";
   for (size_t i = 0; i < shown.size(); ++i) {

@@ -6,7 +6,7 @@ test, a response CSV, or command-line option values), applies one mutation drawn
 motostab must refuse (numbers replaced by extreme or non-finite values, keys deleted, repeated or misspelt,
 YAML aliases nested, a second YAML document, a byte order mark, duplicated CSV columns, truncation, byte
 flips, a path that is a device or a folder, a range without a bound...), runs the command that reads it,
-and checks the one exit-code scheme: 0 (outputs complete: every JSON parses and holds no NaN), 2 (the
+and checks the one exit-code scheme: 0 (outputs complete: every JSON parses and holds no NaN, no CSV cell is nan or inf), 2 (the
 message names the input), 3 (valid input, no result), never 1 (a bug), a signal or a hang.
 
   scripts/mutate_cli.py [--count N] [--seed S] [--motostab PATH] [--timeout SECONDS] [--keep DIR]
@@ -287,13 +287,29 @@ def non_finite_json(path):
     return ""
 
 
+NON_FINITE_CELL = re.compile(r"^[+-]?(nan|inf|infinity)$", re.IGNORECASE)
+
+
+def non_finite_csv(path):
+    """The first cell of a CSV output that reads as NaN or infinity (an undefined value is an empty cell)."""
+    with open(path, encoding="utf-8", errors="replace") as f:
+        for n, line in enumerate(f, 1):
+            for cell in line.rstrip("\n").split(","):
+                if NON_FINITE_CELL.match(cell.strip().strip('"')):
+                    return "%s:%d: %s" % (os.path.basename(path), n, cell.strip())
+    return ""
+
+
 def check_outputs(work):
     for root, _, files in os.walk(work):
         for f in files:
+            bad = ""
             if f.endswith(".json"):
                 bad = non_finite_json(os.path.join(root, f))
-                if bad:
-                    return bad
+            elif f.endswith(".csv"):
+                bad = non_finite_csv(os.path.join(root, f))
+            if bad:
+                return bad
     return ""
 
 

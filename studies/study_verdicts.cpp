@@ -22,6 +22,14 @@ using io::formatNumber;
 
 namespace {
 
+// The model-extension candidates of `all` (not the one-parameter `parameter:<path>` ones), comma-separated.
+std::string listCandidateNames(const std::vector<diagnosis::Candidate>& all) {
+  std::string out;
+  for (const auto& c : all)
+    if (c.name.rfind("parameter:", 0) != 0) out += (out.empty() ? "" : ", ") + c.name;
+  return out.empty() ? "none" : out;
+}
+
 std::string num(double x, int digits = 3) { return formatNumber(x, digits); }
 
 std::string signedNum(double x, int digits = 3) { return (x > 0 ? "+" : "") + num(x, digits); }
@@ -51,9 +59,10 @@ CauseFit summariseFit(const FitSummary& f) {
   return c;
 }
 
-// The candidate names of `wanted` the scenario admits; the others go to `unavailable` with why.
-std::vector<std::string> selectCandidates(const scenario::ScenarioSource& source, const VerdictOptions& opt,
-                                          std::vector<std::string>& unavailable) {
+}  // namespace
+
+std::vector<std::string> selectStudyCandidates(const scenario::ScenarioSource& source, const VerdictOptions& opt,
+                                               std::vector<std::string>& unavailable) {
   std::vector<std::string> why;
   const auto all = diagnosis::listCandidates(source.makeTree(opt.overrides), {}, &why);
   std::vector<std::string> out;
@@ -62,13 +71,16 @@ std::vector<std::string> selectCandidates(const scenario::ScenarioSource& source
       out.push_back(name);
       continue;
     }
-    std::string reason = name + ": not offered for this scenario";
-    for (const auto& w : why)
-      if (w.rfind(name + ":", 0) == 0) reason = w;
-    unavailable.push_back(reason);
+    const auto reason = std::find_if(why.begin(), why.end(), [&](const auto& w) { return w.rfind(name + ":", 0) == 0; });
+    if (reason == why.end() && opt.candidatesGiven)
+      throw io::InputError({"--candidates", 0, 0, name}, "is not a candidate cause this scenario admits (offered: " +
+                                                             listCandidateNames(all) + ")");
+    unavailable.push_back(reason != why.end() ? *reason : name + ": not offered for this scenario");
   }
   return out;
 }
+
+namespace {
 
 // runDiagnosis on the checkable findings: a finding the scenario cannot evaluate (no such mode, a
 // variant or change it refuses) is an InputError at the finding's entry; it is marked and left out.
@@ -186,7 +198,7 @@ StudyVerdicts runStudyVerdicts(std::shared_ptr<const scenario::ScenarioSource> s
     kept.push_back(static_cast<int>(k));
   }
   DiagnosisOptions dopt;
-  dopt.candidates = out.candidates = selectCandidates(*source, opt, out.unavailable);
+  dopt.candidates = out.candidates = selectStudyCandidates(*source, opt, out.unavailable);
   dopt.maxCauses = opt.maxCauses;
   dopt.threads = opt.threads;
   dopt.overrides = opt.overrides;

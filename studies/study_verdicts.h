@@ -84,10 +84,19 @@ struct VerdictOptions {
   /// Candidate names offered where the scenario admits them (others are listed as unavailable): the
   /// seed's own list of what FastBike models carry and Table 6 does not give.
   std::vector<std::string> candidates{"steer_damper", "rider_arms", "fork_compliance", "tyre_relaxation"};
+  /// True when the user named the candidates (--candidates): a name this build does not offer for the
+  /// scenario without a reason why (a misspelling) is then an InputError at --candidates.
+  bool candidatesGiven = false;
   int maxCauses = 2;
   int threads = 2;
   scenario::ParameterOverrides overrides;   ///< applied to the scenario first (the study's --set)
 };
+
+/// The candidate names of `options` the scenario admits, in order; the others go to `unavailable` with
+/// why (e.g. "rider_arms: the rear frame (80 kg) is lighter than a 80 kg rider ..."). With
+/// `candidatesGiven`, a name offered nowhere and unavailable for no stated reason is an InputError.
+std::vector<std::string> selectStudyCandidates(const scenario::ScenarioSource& source, const VerdictOptions& options,
+                                               std::vector<std::string>& unavailable);
 
 /// The verdicts, the diagnosis of the disagreements and the extended motorcycle's verdicts.
 StudyVerdicts runStudyVerdicts(std::shared_ptr<const scenario::ScenarioSource> source, const VerdictOptions& options);

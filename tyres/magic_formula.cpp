@@ -96,6 +96,10 @@ void checkMf61Signs(const CoefficientSource& s, const Mf61& c) {
   if (!(c.PKY2 > 0))
     s.fail("PKY2", "must be positive (got " + io::formatNumber(c.PKY2, 6) +
                        "): the load at which the cornering stiffness peaks, PKY2 FNOMIN, divides Fz (0/0 at zero load)");
+  // (1 - PKY3 |gamma|) keeps its sign up to the checked camber, 60 deg.
+  if (!(1 - c.PKY3 * M_PI / 3 > 0))
+    s.fail("PKY3", "must be below 3/pi = 0.955 (got " + io::formatNumber(c.PKY3, 6) +
+                       "): the cornering stiffness's factor 1 - PKY3 |camber| would reach zero below 60 deg of camber");
   for (const auto& name : kMf61Scaling) {
     const std::string problem = findScalingProblem(name, s.getScaling(name));
     if (!problem.empty()) s.fail(name, problem);

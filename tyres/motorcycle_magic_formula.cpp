@@ -147,6 +147,11 @@ void checkSigns(const CoefficientSource& s, const Coefficients& c) {
       {"PKX1", c.PKX1},     {"PCY1", c.PCY1},          {"PCY2", c.PCY2},         {"PDY1", c.PDY1}, {"PKY1", c.PKY1}};
   for (const auto& [name, v] : positive)
     if (!(v > 0)) s.fail(name, "must be positive (got " + std::to_string(v) + ")");
+  // K_ya's divisors PKY3 + PKY4 g^2 and 1 + PKY5 g^2 stay positive up to 90 degrees of camber.
+  if (!(c.PKY3 > 0)) s.fail("PKY3", "must be positive (got " + std::to_string(c.PKY3) + "): PKY3 FNOMIN divides Fz in the cornering stiffness");
+  if (!(c.PKY3 + c.PKY4 * M_PI * M_PI / 4 > 0))
+    s.fail("PKY4", "with PKY3 makes PKY3 + PKY4 camber^2 zero or negative below 90 deg of camber");
+  if (!(1 + c.PKY5 * M_PI * M_PI / 4 > 0)) s.fail("PKY5", "must be above -4/pi^2 (the cornering stiffness would change sign with camber)");
   // 1 + PDY3 g^2 > 0 up to 90 degrees of camber.
   if (!(c.PDY3 > -4 / (M_PI * M_PI))) s.fail("PDY3", "must be above -4/pi^2 (the friction would change sign with camber)");
   for (const char* name : {"LFZO", "LMUX", "LKX", "LMUY", "LKY", "LKYC", "LTR", "LRES"}) {

@@ -130,8 +130,9 @@ int checkSweep(const SweepResult& s, const SweepResult& damped, const std::strin
     EXPECT_EQ(lin.labels.size(), static_cast<size_t>(lin.eigenvalues.size()));
     if (lin.labels.size() != static_cast<size_t>(lin.eigenvalues.size())) continue;
     for (int e = 0; e < lin.eigenvalues.size(); ++e)
-      if (lin.eigenvalues[e].real() > 0)
+      if (lin.eigenvalues[e].real() > 0) {
         EXPECT_NE(lin.labels[e], ModeLabel::Other) << what << " at " << s.speeds[k] << " m/s: unstable root " << lin.eigenvalues[e];
+      }
     // Below 12 m/s the wobble is strongly damped (or real) and the weave carries most of the steer rate.
     if (s.speeds[k] < 12 || k >= damped.models.size() || damped.speeds[k] != s.speeds[k]) continue;
     const int best = findMostDampedBySteerDamper(lin, damped.models[k]);

@@ -237,7 +237,9 @@ TEST(TurnTrim, EveryHandsFreeTurnListedAndTheOneFromStraightRunningMarked) {
     for (size_t i = 0; i < turns.size(); ++i) {
       const TrimResult t = restoreTrim(model, turns[i].trim);
       EXPECT_NEAR(model.getInput(t.state, Input::SteerTorque), 0.0, 1e-9) << deg << " deg, turn " << i;
-      if (i > 0) EXPECT_LT(turns[i - 1].trim.speed, turns[i].trim.speed);
+      if (i > 0) {
+        EXPECT_LT(turns[i - 1].trim.speed, turns[i].trim.speed);
+      }
       if (turns[i].continuesFromStraight) {
         EXPECT_EQ(marked, -1) << "two turns marked at " << deg << " deg";
         marked = static_cast<int>(i);
@@ -248,7 +250,9 @@ TEST(TurnTrim, EveryHandsFreeTurnListedAndTheOneFromStraightRunningMarked) {
     EXPECT_EQ(static_cast<size_t>(marked), nearest) << deg << " deg";
     EXPECT_EQ(chooseHandsFreeTurn(turns), static_cast<size_t>(marked));
     EXPECT_LT(turns[marked].trim.speed, previous);
-    if (deg == 2.0) EXPECT_NEAR(turns[marked].trim.speed, previous, 0.05);
+    if (deg == 2.0) {
+      EXPECT_NEAR(turns[marked].trim.speed, previous, 0.05);
+    }
     previous = turns[marked].trim.speed;
     if (deg != 20.0) continue;
     auto findTurn = [&](double v) {

@@ -202,6 +202,22 @@ TEST(CliCommands, StudyGivesAVerdictPerFinding) {
   EXPECT_EQ(bad.exitCode, 2) << bad.output;
   EXPECT_NE(bad.output.find("bad.yaml:2:"), std::string::npos) << bad.output;
   EXPECT_FALSE(fs::exists(dir / "bad"));
+  // A misspelled candidate is refused before any work, naming it.
+  const CliRun typo = runCli({"study", kEnduro, "--findings", (dir / "f.yaml").string(), "--candidates", "steer_dampr",
+                              "--out", (dir / "typo").string()});
+  EXPECT_EQ(typo.exitCode, 2) << typo.output;
+  EXPECT_NE(typo.output.find("--candidates"), std::string::npos) << typo.output;
+  EXPECT_NE(typo.output.find("steer_dampr"), std::string::npos) << typo.output;
+  EXPECT_FALSE(fs::exists(dir / "typo"));
+  // In a turn the findings are still judged on straight running, and the report and terminal say so.
+  const CliRun turn = runCli({"study", kEnduro, "--speeds", "10:30:10", "--compare", "rigid", "--shape-speeds", "10", "--roll-deg",
+                              "10", "--findings", (dir / "f.yaml").string(), "--candidates", "steer_damper", "--out",
+                              (dir / "turn").string()});
+  ASSERT_EQ(turn.exitCode, 0) << turn.output;
+  EXPECT_NE(turn.output.find("judged on straight running"), std::string::npos) << turn.output;
+  std::ifstream turnReport(dir / "turn" / "report.md");
+  const std::string turnText((std::istreambuf_iterator<char>(turnReport)), std::istreambuf_iterator<char>());
+  EXPECT_NE(turnText.find("judged on straight running"), std::string::npos);
 }
 
 // The study's variants are the sweeps of the same scenario with the variant's --set overrides; the

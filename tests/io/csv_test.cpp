@@ -1,6 +1,10 @@
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <filesystem>
+#include <limits>
+#include <random>
+#include <string>
 #include <fstream>
 #include <utility>
 #include <vector>
@@ -8,6 +12,7 @@
 #include "tests/support/temp_dir.h"
 #include "io/csv.h"
 #include "io/input_error.h"
+#include "io/result_error.h"
 
 namespace {
 
@@ -94,6 +99,45 @@ TEST(Csv, WriterRoundTripsDoublesExactly) {
   w.beginRow().add(v);
   auto p = writeTemp("motostab_csv_rt.csv", w.getText());
   EXPECT_EQ(motostab::io::readCsv(p).rows[0][0], v);
+}
+
+// No "nan" or "inf" cell: a non-finite number is a ResultError naming its column and row (drawn at
+// random among finite neighbours); addOrEmpty leaves the cell empty instead.
+TEST(Csv, WriterRefusesNonFiniteNumbersNamingTheCell) {
+  std::mt19937 rng(20261128);
+  std::uniform_real_distribution<double> value(-1e6, 1e6);
+  std::uniform_int_distribution<int> pick(0, 2);
+  const double bad[] = {std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::infinity(),
+                        -std::numeric_limits<double>::infinity()};
+  for (int trial = 0; trial < 20; ++trial) {
+    const int rows = 1 + trial % 5, badRow = 1 + static_cast<int>(rng() % rows), badColumn = pick(rng);
+    const std::vector<std::string> header{"speed_mps", "real", "imag"};
+    std::vector<std::vector<double>> table(rows, std::vector<double>(3));
+    for (int r = 0; r < rows; ++r)
+      for (int c = 0; c < 3; ++c) table[r][c] = (r + 1 == badRow && c == badColumn) ? bad[trial % 3] : value(rng);
+    motostab::io::CsvWriter w(header), lenient(header);
+    for (const auto& row : table) {
+      lenient.beginRow();
+      for (double x : row) lenient.addOrEmpty(x);
+    }
+    std::string message;
+    try {
+      for (const auto& row : table) {
+        w.beginRow();
+        for (double x : row) w.add(x);
+      }
+    } catch (const motostab::io::ResultError& e) {
+      message = e.what();
+    }
+    EXPECT_NE(message.find("column '" + header[badColumn] + "' of row " + std::to_string(badRow)), std::string::npos) << message;
+    const std::string text = lenient.getText();
+    EXPECT_EQ(text.find("nan"), std::string::npos);
+    EXPECT_EQ(text.find("inf"), std::string::npos);
+    std::vector<std::string> lines;
+    for (size_t at = 0, next; at < text.size(); at = next + 1) lines.push_back(text.substr(at, (next = text.find('\n', at)) - at));
+    ASSERT_EQ(lines.size(), static_cast<size_t>(rows + 1));
+    EXPECT_EQ(motostab::io::splitFields(lines[badRow], ',').at(badColumn), "") << lines[badRow];
+  }
 }
 
 }  // namespace

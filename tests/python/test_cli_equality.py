@@ -14,7 +14,8 @@ KOOIJMAN = SOURCE / "scenarios" / "kooijman-silvercity.yaml"
 
 
 def number(text):
-    return float(text)
+    """A CSV cell as a float; an empty cell is an undefined value (NaN in Python, null in JSON)."""
+    return float(text) if text != "" else math.nan
 
 
 def check_sweep_csv(rows, sweep):

@@ -96,9 +96,13 @@ TEST(StudyVerdictsTest, ExtendedYamlReproducesTheReportedFigures) {
     const auto& w = getWobble(s);
     double reMax = -INFINITY, reMin = INFINITY, hz = 0;
     for (const auto& l : w.eigenvalue) reMax = std::max(reMax, l.real()), reMin = std::min(reMin, l.real()), hz = std::abs(l.imag()) / (2 * M_PI);
-    if (f.finding.kind == diagnosis::FindingKind::Stable) EXPECT_NEAR(f.extended.value, reMax, 1e-3) << f.statement;
-    if (f.finding.kind == diagnosis::FindingKind::Unstable) EXPECT_NEAR(f.extended.value, reMin, 1e-3) << f.statement;
-    if (f.finding.kind == diagnosis::FindingKind::FrequencyWithin) EXPECT_NEAR(f.extended.value, hz, 1e-3) << f.statement;
+    const double expected = f.finding.kind == diagnosis::FindingKind::Stable     ? reMax
+                            : f.finding.kind == diagnosis::FindingKind::Unstable ? reMin
+                                                                                 : hz;
+    if (f.finding.kind == diagnosis::FindingKind::Stable || f.finding.kind == diagnosis::FindingKind::Unstable ||
+        f.finding.kind == diagnosis::FindingKind::FrequencyWithin) {
+      EXPECT_NEAR(f.extended.value, expected, 1e-3) << f.statement;
+    }
   }
   const auto json = output::makeVerdictJson(v);
   EXPECT_EQ(json["extended_scenario"], "extended.yaml");

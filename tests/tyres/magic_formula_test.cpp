@@ -331,7 +331,9 @@ TEST(MagicFormula61, CoefficientsOfTheWrongSignAreRefusedAtTheirLine) {
                                    {{{"LKYC", "-0.5"}}, "LKYC"}, {{{"LONGVL", "-16.7"}}, "LONGVL"},
                                    // K_ya = PKY1 Fz0 sin(PKY4 atan(Fz/(PKY2 Fz0))): PKY1 = 0 gives none, PKY2 = 0
                                    // is 0/0 at zero load (both were refused without naming the coefficient).
-                                   {{{"PKY1", "0"}}, "PKY1"}, {{{"PKY1", "15.3"}}, "PKY1"}, {{{"PKY2", "0"}}, "PKY2"}};
+                                   {{{"PKY1", "0"}}, "PKY1"}, {{{"PKY1", "15.3"}}, "PKY1"}, {{{"PKY2", "0"}}, "PKY2"},
+                                   // (1 - PKY3 |gamma|) is zero at 1/PKY3 rad: 1.2 reaches it at 48 deg of camber.
+                                   {{{"PKY3", "1.2"}}, "PKY3"}};
   for (const auto& c : cases) {
     const TirFile f = sampleWithValues(c.values);
     const InputError e = test::catchInputError([&] { makeTyreForceLaw(MagicFormulaVariant::MF61, *makeTirSource(f, nullptr)); });
@@ -654,7 +656,10 @@ TEST(MotorcycleMagicFormula, RelaxationLengthPositiveAtEverySpeed) {
 // The motorcycle coefficients' signs, and laws that are degenerate or not finite in their range.
 TEST(MotorcycleMagicFormula, MeaninglessCoefficientsAreRefused) {
   for (const auto& [key, value] : std::vector<std::pair<std::string, double>>{
-           {"PCY1", 0}, {"PCY2", -0.8}, {"PKY1", -22.8}, {"PKX1", 0}, {"PDX1", -1}, {"PDY3", -1}, {"CROWN_RADIUS", 0}}) {
+           {"PCY1", 0}, {"PCY2", -0.8}, {"PKY1", -22.8}, {"PKX1", 0}, {"PDX1", -1}, {"PDY3", -1}, {"CROWN_RADIUS", 0},
+           // PKY3 + PKY4 g^2 and 1 + PKY5 g^2 divide in K_ya: zero at 0, and at 90 deg for PKY4 = -PKY3 4/pi^2,
+           // PKY5 = -4/pi^2 (the set's PKY3 is 2.5058).
+           {"PKY3", 0}, {"PKY4", -1.1}, {"PKY5", -0.41}}) {
     auto m = kFront120;
     m[key] = value;
     const InputError e = test::catchInputError([&] { makeMotorcycleMagicFormula(MapSource(m, nullptr)); });
