@@ -179,8 +179,8 @@ std::string makeWeaveShapesFigure(const StudyResult& st, const StudyOptions& opt
      << "  set xtics 0.5\n  set ytics 0.5\n  set xzeroaxis lt -1\n  set yzeroaxis lt -1\n"
      << "  set xlabel 'in phase with steer'\n  set ylabel 'leading steer by 90 deg'\n"
      << "  set multiplot layout 1," << n << " margins 0.1, 0.98, 0.3, 0.88 spacing 0.06 title "
-     << gnuplotText("Weave mode shapes (" + opt.shapeVariant + " model; angles in rad, lateral = rear-hub displacement / "
-                    "wheelbase; largest component 1)") << "\n";
+     << gnuplotText("Weave mode shapes, " + opt.shapeVariant + " model: angles in rad, lateral = rear-hub displacement / "
+                    "wheelbase, largest 1") << "\n";
   for (size_t i = 0; i < st.weaveShapes.size(); ++i) {
     const std::string here = "abs($1 - " + fmt(st.weaveShapes[i].speed, 9) + ") < 1e-6";  // the CSV holds more digits
     os << "  set title " << gnuplotText(fmt(st.weaveShapes[i].speed, 1) + " m/s, " +

@@ -231,9 +231,11 @@ std::string makeFanBody(const UncertaintySummary& sum, int c, const std::string&
     if (hasFiniteBand(sum.modes[m], c == 7)) shown.push_back(m);
   if (shown.empty()) return "";
   const std::string lo = std::to_string(c), mid = std::to_string(c + 1), hi = std::to_string(c + 2);
-  std::string b = "  set datafile separator ','\n  set grid\n  set key top right opaque\n  set xzeroaxis lt -1\n"
+  // No key inside the panels (it would cover the curves): the title says what the line and the band are.
+  std::string b = "  set datafile separator ','\n  set grid\n  unset key\n  set xzeroaxis lt -1\n"
                   "  set style fill transparent solid 0.35 noborder\n  set multiplot layout " +
-                  std::to_string(shown.size()) + ",2 title " + gnuplotText(title) + "\n";
+                  std::to_string(shown.size()) + ",2 title " + gnuplotText(title) +
+                  " margins 0.1, 0.98, 0.1, 0.9 spacing 0.14, 0.08\n";
   for (size_t i = 0; i < shown.size(); ++i) {
     const std::string mode = sum.modes[shown[i]].mode, lt = std::to_string(shown[i] + 1);
     const std::string sel = "(strcol(2) eq '" + mode + "' ? $";
@@ -241,7 +243,7 @@ std::string makeFanBody(const UncertaintySummary& sum, int c, const std::string&
     b += "  set xlabel " + xlabel + "\n  set ylabel " + gnuplotText(mode + " " + quantity + " (" + unit + ")") + "\n" +
          "  plot 'mode_quantiles.csv' skip 1 using 1:" + sel + lo + " : NaN):" + sel + hi + " : NaN) with filledcurves lt " + lt +
          " title '5-95 %', \\\n       'mode_quantiles.csv' skip 1 using 1:" + sel + mid + " : NaN) with lines lt " + lt +
-         " lw 2 title 'median'\n" + "  set ylabel " + gnuplotText(mode + " band width (" + unit + ")") + "\n" +
+         " lw 2 title 'median'\n" + "  set ylabel " + gnuplotText("p95 - p05 (" + unit + ")") + "\n" +
          "  plot 'mode_quantiles.csv' skip 1 using 1:" + sel + hi + " - $" + lo + " : NaN) with lines lt " + lt +
          " lw 2 title 'p95 - p05'\n";
   }
@@ -279,8 +281,8 @@ void writeUncertaintyOutputs(const std::filesystem::path& dir, const std::string
   writeFileAtomically(dir / "sensitivity.csv", makeSensitivityCsv(s, sum, rows));
   writeFileAtomically(dir / "report.md", makeUncertaintyReport(name, s, sum));
   // A chart is drawn only when it has a finite value to show (few samples can leave none).
-  const std::string fanReal = makeFanBody(sum, 4, "Real part against speed, 5-95 % band: " + name, "real part", "1/s");
-  const std::string fanFrequency = makeFanBody(sum, 7, "Frequency against speed, 5-95 % band: " + name, "frequency", "Hz");
+  const std::string fanReal = makeFanBody(sum, 4, "Real part against speed: median (line), 5-95 % band (shaded); right, the band's width: " + name, "real part", "1/s");
+  const std::string fanFrequency = makeFanBody(sum, 7, "Frequency against speed: median (line), 5-95 % band (shaded); right, the band's width: " + name, "frequency", "Hz");
   if (!fanReal.empty()) renderGnuplot(dir, "fan_real_part", fanReal);
   if (!fanFrequency.empty()) renderGnuplot(dir, "fan_frequency", fanFrequency);
   const bool sobol = s.options.method == SamplingMethod::Sobol;
