@@ -220,7 +220,7 @@ std::string makeStudyReport(const StudyResult& st, const StudyFindings& findings
                             const studies::StudyVerdicts* verdicts) {
   std::ostringstream r;
   appendIntroduction(r, st, opt);
-  if (verdicts && opt.sweep.trim.roll != 0)
+  if (verdicts && opt.sweep.trim.isTurn())
     r << "\nThe findings below are judged on straight running, as the seed states them; the variants of this report "
          "are compared at " << fmt(opt.sweep.trim.roll * 180 / M_PI, 4) << " deg of roll.\n";
   if (verdicts) r << makeVerdictSection(*verdicts);

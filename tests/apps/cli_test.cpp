@@ -197,6 +197,10 @@ TEST(CliCommands, StudyGivesAVerdictPerFinding) {
   EXPECT_EQ(j["findings"][1]["verdict"], "disagrees");
   EXPECT_EQ(j["extended_scenario"], "extended.yaml");
   EXPECT_EQ(runCli({"check", (dir / "study" / "extended.yaml").string()}).exitCode, 0);
+  std::ifstream straightReport(dir / "study" / "report.md");
+  const std::string straightText((std::istreambuf_iterator<char>(straightReport)), std::istreambuf_iterator<char>());
+  EXPECT_EQ(straightText.find("judged on straight running"), std::string::npos);  // said only in a turn
+  EXPECT_EQ(straightText.find("nan"), std::string::npos);
   std::ofstream(dir / "bad.yaml") << "findings:\n  - {kind: stable, mode: weave, speeds_mps: [1, 2], tolerance_per_s: 1, colour: red}\n";
   const CliRun bad = runCli({"study", kEnduro, "--findings", (dir / "bad.yaml").string(), "--out", (dir / "bad").string()});
   EXPECT_EQ(bad.exitCode, 2) << bad.output;
