@@ -377,13 +377,15 @@ void labelLateralModes(std::vector<Root>& roots, Capacity& cap, double zero) {
   } else if (Root* w = pickBest(roots, [&](const Root& r) { return wobbleCandidate(r) && r.steer > roll(r); }, moreSteer)) {
     cap.take(*w, ModeLabel::Wobble);
   }
-  // In a turn the capsize root may join another into a slow pair: at most half the weave's |lambda|.
+  // In a turn the capsize root may join another into a slow pair: at most half the weave's |lambda|, or
+  // diverging (a tight turn's fall, as the diverging second real root above).
   const Root* weave = nullptr;
   for (const Root& r : roots)
     if (r.label == ModeLabel::Weave) weave = &r;
   if (!std::any_of(roots.begin(), roots.end(), [](const Root& r) { return r.label == ModeLabel::Capsize; }))
     if (Root* c = pickBest(roots, [&](const Root& r) {
-          return r.oscillatory && lateralFamily(r) && rollLed(r) && (!weave || std::abs(r.lambda) < 0.5 * std::abs(weave->lambda));
+          return r.oscillatory && lateralFamily(r) && rollLed(r) &&
+                 (!weave || std::abs(r.lambda) < 0.5 * std::abs(weave->lambda) || r.lambda.real() > 0);
         }, slower))
       cap.take(*c, ModeLabel::Capsize);
 }

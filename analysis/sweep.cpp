@@ -1,5 +1,7 @@
 #include "analysis/sweep.h"
 
+#include "analysis/state_function.h"
+
 #include "core/parallel.h"
 #include "io/csv.h"
 #include "io/result_error.h"
@@ -261,6 +263,24 @@ class SweepRun {
     bool mirrorPending = false;    // lateral symmetry proposed by the grouping, not yet checked
   };
 
+  // A turn's trim at `speed` that a chain would warm-start without a secant slope (its second speed, or
+  // the first after a failure): cold instead, since the last trim alone can start Newton's method near
+  // another, unstable equilibrium (a tight turn's steer is far from the next speed's: 26 deg at 4 m/s
+  // and 35 deg on the supersport-mf), and the secant from `work`'s speed to it starts the predictor.
+  void trimTurnCold(const VehicleModel& m, double speed, TrimResult& work) {
+    const StateFunction fn(m);
+    const std::vector<StateEntry> unknowns = getTrimUnknowns(m, opt_.trim);
+    const int n = static_cast<int>(unknowns.size());
+    Eigen::VectorXd before(n);
+    for (int j = 0; j < n; ++j) before[j] = fn.get(work.state, unknowns[j]);
+    const double from = work.speed;
+    work = calcTrim(m, speed, opt_.trim);
+    if (std::abs(speed - from) < 1e-12) return;
+    work.unknownsPerSpeed.resize(n);
+    for (int j = 0; j < n; ++j) work.unknownsPerSpeed[j] = (fn.get(work.state, unknowns[j]) - before[j]) / (speed - from);
+    work.secantStartSpeed = from;
+  }
+
   // Trims and linearises speed k from the chain's last trim (or cold); false (the failure recorded)
   // when the trim fails and failed speeds are kept: the chain then goes on from its last trim. With
   // failed speeds kept, a warm-started trim that fails is tried once more cold (a tight turn at low
@@ -271,7 +291,15 @@ class SweepRun {
         linearizeFirst(m, k, lead, c.work, c.lo);
       } else {
         try {
-          updTrim(m, out_.speeds[k], opt_.trim, c.work);
+          if (opt_.trim.isTurn() && c.work.unknownsPerSpeed.size() == 0) {
+            try {
+              trimTurnCold(m, out_.speeds[k], c.work);
+            } catch (const TrimError&) {  // the roll continuation failed there: warm after all
+              updTrim(m, out_.speeds[k], opt_.trim, c.work);
+            }
+          } else {
+            updTrim(m, out_.speeds[k], opt_.trim, c.work);
+          }
         } catch (const TrimError&) {
           if (!opt_.keepFailedSpeeds) throw;
           c.work = calcTrim(m, out_.speeds[k], opt_.trim);
