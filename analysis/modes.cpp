@@ -378,13 +378,18 @@ void labelLateralModes(std::vector<Root>& roots, Capacity& cap, double zero) {
     cap.take(*w, ModeLabel::Wobble);
   }
   // In a turn the capsize root may join another into a slow pair: at most half the weave's |lambda|, or
-  // diverging (a tight turn's fall, as the diverging second real root above).
+  // diverging (a tight turn's fall, as the diverging second real root above). Joined with the speed
+  // root (a turn at a fixed roll ties the speed to the lean) the forward motion may lead it: a slow pair
+  // with a lateral share of at least 0.2 is then a capsize too.
+  auto lateralOrWithSpeed = [&](const Root& r) {
+    return lateralFamily(r) || (findFamily(r) == Family::Longitudinal && r.rollYawLateral + r.steer >= 0.2);
+  };
   const Root* weave = nullptr;
   for (const Root& r : roots)
     if (r.label == ModeLabel::Weave) weave = &r;
   if (!std::any_of(roots.begin(), roots.end(), [](const Root& r) { return r.label == ModeLabel::Capsize; }))
     if (Root* c = pickBest(roots, [&](const Root& r) {
-          return r.oscillatory && lateralFamily(r) && rollLed(r) &&
+          return r.oscillatory && lateralOrWithSpeed(r) && rollLed(r) &&
                  (!weave || std::abs(r.lambda) < 0.5 * std::abs(weave->lambda) || r.lambda.real() > 0);
         }, slower))
       cap.take(*c, ModeLabel::Capsize);
