@@ -256,12 +256,6 @@ class TrimNewton {
     }
     res_.iterations = it;
     res_.residualNorm = norm;
-    // The iterations spent creeping along the round-off floor (stiff tyres: Sharp's machine at 4 m/s and
-    // 15 deg of roll ends at 2.3e-11 against a floor of about 1e-6): converged as well.
-    if (!converged && !(norm <= opt_.tolerance) && J_.size() > 0) {
-      for (int j = 0; j < n_; ++j) x0[j] = fn_.get(s_, unknowns_[j]);
-      converged = norm <= calcRoundOffFloor(x0);
-    }
     if (J_.size() == 0 && norm <= opt_.tolerance) computeJacobian();
     res_.jacobian.swap(J_);
     if (!(norm <= opt_.tolerance) && !converged) throw TrimError(speed_, norm, it, opt_.roll);
