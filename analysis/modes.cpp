@@ -54,6 +54,8 @@ double ModeContent::calcAuxiliary() const {
 
 namespace {
 
+bool isInPlaneRole(StateRole r) { return r == StateRole::Pitch || r == StateRole::Height || r == StateRole::Suspension; }
+
 // A mechanical degree of freedom of a linear model: a rate state, the coordinate state of the same
 // mobility (-1 if that coordinate is not a state), and the diagonal stiffness that weighs the latter.
 struct MechanicalDof {
@@ -67,6 +69,8 @@ struct MechanicalDof {
 struct ContentLayout {
   std::vector<MechanicalDof> dofs;
   Eigen::MatrixXd mass;        // over the rate states (identity without lin.massMatrix)
+  // K = -M A_uq over the dofs: column b acts on dof b's coordinate (zero where it is not a state)
+  Eigen::MatrixXd stiffness;
   std::vector<int> auxiliary;  // indices of the auxiliary (z) states
   // Straight running with the yaw angle and the ground-frame lateral velocity as states: the lateral
   // rate's dof and the yaw angle's state, to take the heading's turn out of the lateral velocity
@@ -92,14 +96,18 @@ ContentLayout calcContentLayout(const LinearModel& lin) {
     for (size_t j = 0; j < lin.states.size(); ++j)
       if (lin.states[j].entry.slot == Slot::Q && lin.states[j].entry.index == lin.states[d.rate].entry.index)
         d.coordinate = static_cast<int>(j);
-    if (d.coordinate >= 0) {
-      double k = 0;  // (M A_uq)_aa
-      for (Eigen::Index b = 0; b < nr; ++b) k += layout.mass(a, b) * lin.A(rates[b], d.coordinate);
-      d.stiffness = std::abs(k);
-    }
     if (d.role == StateRole::Lateral && !lin.headingFrame) layout.lateralDof = static_cast<int>(layout.dofs.size());
     layout.dofs.push_back(d);
   }
+  layout.stiffness = Eigen::MatrixXd::Zero(nr, nr);
+  for (Eigen::Index b = 0; b < nr; ++b) {
+    const int q = layout.dofs[b].coordinate;
+    if (q < 0) continue;
+    Eigen::VectorXd aq(nr);  // A_uq's column of this coordinate
+    for (Eigen::Index c = 0; c < nr; ++c) aq[c] = lin.A(rates[c], q);
+    layout.stiffness.col(b) = -(layout.mass * aq);
+  }
+  for (Eigen::Index a = 0; a < nr; ++a) layout.dofs[a].stiffness = std::abs(layout.stiffness(a, a));
   layout.yaw = lin.findState(StateRole::Yaw, StateKind::Coordinate);
   return layout;
 }
@@ -142,11 +150,16 @@ ModeContent calcContent(const LinearModel& lin, const ContentLayout& layout, con
   // The velocity across the heading: a yaw of the ground-frame velocity (lin.speed along x) is no sideslip.
   if (layout.lateralDof >= 0 && layout.yaw >= 0) u[layout.lateralDof] -= lin.speed * lin.eigenvectors(layout.yaw, k);
   const Eigen::VectorXcd Mu = layout.mass * u;
+  Eigen::VectorXcd q = Eigen::VectorXcd::Zero(nr);
+  for (Eigen::Index i = 0; i < nr; ++i)
+    if (layout.dofs[i].coordinate >= 0) q[i] = lin.eigenvectors(layout.dofs[i].coordinate, k);
+  const Eigen::VectorXcd Kq = layout.stiffness * q;
   std::array<double, kNumStateRoles> energy{};
   for (Eigen::Index i = 0; i < nr; ++i) {
     const MechanicalDof& d = layout.dofs[i];
     double e = (std::conj(u[i]) * Mu[i]).real();
-    if (d.coordinate >= 0) e += d.stiffness * std::norm(lin.eigenvectors(d.coordinate, k));
+    if (d.coordinate >= 0)
+      e += isInPlaneRole(d.role) ? std::abs((std::conj(q[i]) * Kq[i]).real()) : d.stiffness * std::norm(q[i]);
     energy[static_cast<int>(d.role)] += e;
   }
   double total = 0;
@@ -326,7 +339,11 @@ void labelLateralModes(std::vector<Root>& roots, Capacity& cap, double zero) {
     Root* split2 = pickBest(roots, [&](const Root& r) { return splitRoot(r) && &r != split1; }, moreRoll);
     if (split2) cap.take(*split1, ModeLabel::Weave), cap.take(*split2, ModeLabel::Weave);
   }
-  if (Root* c = pickBest(roots, [&](const Root& r) { return !r.oscillatory && lateralFamily(r) && rollLed(r); }, slower))
+  auto capsizeRoot = [&](const Root& r) { return !r.oscillatory && lateralFamily(r) && rollLed(r); };
+  if (Root* c = pickBest(roots, capsizeRoot, slower)) cap.take(*c, ModeLabel::Capsize);
+  // A second roll-led real root that diverges is the vehicle falling over as well (in a tight turn at
+  // walking pace, beside a slower decaying one): a capsize too.
+  if (Root* c = pickBest(roots, [&](const Root& r) { return capsizeRoot(r) && r.lambda.real() > 0; }, slower))
     cap.take(*c, ModeLabel::Capsize);
   if (Root* c = pickBest(roots, [&](const Root& r) { return !r.oscillatory && lateralFamily(r) && r.steer > r.rollYawLateral; },
                          [](const Root& a, const Root& b) { return a.lambda.real() < b.lambda.real(); }))
@@ -360,13 +377,20 @@ void labelLateralModes(std::vector<Root>& roots, Capacity& cap, double zero) {
   } else if (Root* w = pickBest(roots, [&](const Root& r) { return wobbleCandidate(r) && r.steer > roll(r); }, moreSteer)) {
     cap.take(*w, ModeLabel::Wobble);
   }
-  // In a turn the capsize root may join another into a slow pair: at most half the weave's |lambda|.
+  // In a turn the capsize root may join another into a slow pair: at most half the weave's |lambda|, or
+  // diverging (a tight turn's fall, as the diverging second real root above). Joined with the speed
+  // root (a turn at a fixed roll ties the speed to the lean) the forward motion may lead it: a slow pair
+  // with a lateral share of at least 0.2 is then a capsize too.
+  auto lateralOrWithSpeed = [&](const Root& r) {
+    return lateralFamily(r) || (findFamily(r) == Family::Longitudinal && r.rollYawLateral + r.steer >= 0.2);
+  };
   const Root* weave = nullptr;
   for (const Root& r : roots)
     if (r.label == ModeLabel::Weave) weave = &r;
   if (!std::any_of(roots.begin(), roots.end(), [](const Root& r) { return r.label == ModeLabel::Capsize; }))
     if (Root* c = pickBest(roots, [&](const Root& r) {
-          return r.oscillatory && lateralFamily(r) && rollLed(r) && (!weave || std::abs(r.lambda) < 0.5 * std::abs(weave->lambda));
+          return r.oscillatory && lateralOrWithSpeed(r) && rollLed(r) &&
+                 (!weave || std::abs(r.lambda) < 0.5 * std::abs(weave->lambda) || r.lambda.real() > 0);
         }, slower))
       cap.take(*c, ModeLabel::Capsize);
 }

@@ -1,5 +1,7 @@
 #include "analysis/sweep.h"
 
+#include "analysis/state_function.h"
+
 #include "core/parallel.h"
 #include "io/csv.h"
 #include "io/result_error.h"
@@ -30,13 +32,34 @@ std::vector<double> makeSpeedGrid(double start, double stop, double step) {
   return v;
 }
 
-RootAtSpeed calcBranchRoot(const VehicleModel& model, const SweepResult& sweep, const ModeBranch& branch, size_t k,
-                           double v, const SweepOptions& opt, bool withLabel) {
+namespace {
+
+// The linear model at speed v, trimmed from the sweep's trim at speed index k.
+LinearModel linearizeFrom(const VehicleModel& model, const SweepResult& sweep, size_t k, double v, const SweepOptions& opt,
+                          bool withLabels) {
   TrimResult trim = restoreTrim(model, sweep.trims[k]);
   updTrim(model, v, opt.trim, trim);
   LinearizeOptions linearize = opt.linearize;
-  linearize.labelModes = withLabel;
-  const LinearModel lin = linearizeInPlace(model, trim, linearize);
+  linearize.labelModes = withLabels;
+  return linearizeInPlace(model, trim, linearize);
+}
+
+// The roots of lin below its noise (labelModes' neutral threshold) count as zero.
+double calcZeroRoot(const LinearModel& lin) { return std::max(1e-6, 1e-9 * lin.A.cwiseAbs().rowwise().sum().maxCoeff()); }
+
+// Eigenvalues of lin with a positive real part, the zero roots excepted.
+int countUnstable(const LinearModel& lin) {
+  const double zero = calcZeroRoot(lin);
+  int n = 0;
+  for (Eigen::Index k = 0; k < lin.eigenvalues.size(); ++k) n += lin.eigenvalues[k].real() > 0 && std::abs(lin.eigenvalues[k]) >= zero;
+  return n;
+}
+
+}  // namespace
+
+RootAtSpeed calcBranchRoot(const VehicleModel& model, const SweepResult& sweep, const ModeBranch& branch, size_t k,
+                           double v, const SweepOptions& opt, bool withLabel) {
+  const LinearModel lin = linearizeFrom(model, sweep, k, v, opt, withLabel);
   const int kb = findBestMatch(sweep.models[k], branch.index[k], lin);
   return {lin.eigenvalues[kb], withLabel ? std::optional<ModeLabel>(lin.labels[kb]) : std::nullopt};
 }
@@ -261,6 +284,24 @@ class SweepRun {
     bool mirrorPending = false;    // lateral symmetry proposed by the grouping, not yet checked
   };
 
+  // A turn's trim at `speed` that a chain would warm-start without a secant slope (its second speed, or
+  // the first after a failure): cold instead, since the last trim alone can start Newton's method near
+  // another, unstable equilibrium (a tight turn's steer is far from the next speed's: 26 deg at 4 m/s
+  // and 35 deg on the supersport-mf), and the secant from `work`'s speed to it starts the predictor.
+  void trimTurnCold(const VehicleModel& m, double speed, TrimResult& work) {
+    const StateFunction fn(m);
+    const std::vector<StateEntry> unknowns = getTrimUnknowns(m, opt_.trim);
+    const int n = static_cast<int>(unknowns.size());
+    Eigen::VectorXd before(n);
+    for (int j = 0; j < n; ++j) before[j] = fn.get(work.state, unknowns[j]);
+    const double from = work.speed;
+    work = calcTrim(m, speed, opt_.trim);
+    if (std::abs(speed - from) < 1e-12) return;
+    work.unknownsPerSpeed.resize(n);
+    for (int j = 0; j < n; ++j) work.unknownsPerSpeed[j] = (fn.get(work.state, unknowns[j]) - before[j]) / (speed - from);
+    work.secantStartSpeed = from;
+  }
+
   // Trims and linearises speed k from the chain's last trim (or cold); false (the failure recorded)
   // when the trim fails and failed speeds are kept: the chain then goes on from its last trim. With
   // failed speeds kept, a warm-started trim that fails is tried once more cold (a tight turn at low
@@ -271,7 +312,15 @@ class SweepRun {
         linearizeFirst(m, k, lead, c.work, c.lo);
       } else {
         try {
-          updTrim(m, out_.speeds[k], opt_.trim, c.work);
+          if (opt_.trim.isTurn() && c.work.unknownsPerSpeed.size() == 0) {
+            try {
+              trimTurnCold(m, out_.speeds[k], c.work);
+            } catch (const TrimError&) {  // the roll continuation failed there: warm after all
+              updTrim(m, out_.speeds[k], opt_.trim, c.work);
+            }
+          } else {
+            updTrim(m, out_.speeds[k], opt_.trim, c.work);
+          }
         } catch (const TrimError&) {
           if (!opt_.keepFailedSpeeds) throw;
           c.work = calcTrim(m, out_.speeds[k], opt_.trim);
@@ -381,6 +430,34 @@ std::vector<Crossing> listCrossings(const SweepResult& out) {
   return crossings;
 }
 
+// Where the tracked root jumps from one eigenvalue to another between the grid speeds (across a double
+// root: a complex pair splitting into two real roots, one of them then crossing zero), Brent's method
+// ends at the jump, not at a zero. The crossing is then where the number of unstable roots changes
+// (bisection to the tolerance), named by the label of the root nearest the imaginary axis there; where
+// that number is the same at both grid speeds (two roots crossing in opposite directions) the speed of
+// the jump is kept.
+void findCrossingByCount(const VehicleModel& m, const SweepOptions& fixed, const SweepOptions& opt, const SweepResult& out,
+                         Crossing& c) {
+  const int n0 = countUnstable(out.models[c.k]), n1 = countUnstable(out.models[c.k + 1]);
+  if (n0 == n1) return;
+  double a = out.speeds[c.k], b = out.speeds[c.k + 1];
+  while (b - a > opt.criticalSpeedTolerance) {
+    const double mid = 0.5 * (a + b);
+    (countUnstable(linearizeFrom(m, out, c.k, mid, fixed, false)) == n0 ? a : b) = mid;
+  }
+  c.found.speed = 0.5 * (a + b);
+  c.found.stabilising = n1 < n0;
+  const LinearModel lin = linearizeFrom(m, out, c.k, c.found.speed, fixed, true);
+  const double zero = calcZeroRoot(lin);
+  int best = -1;
+  for (int e = 0; e < lin.eigenvalues.size(); ++e)
+    if (std::abs(lin.eigenvalues[e]) >= zero && (best < 0 || std::abs(lin.eigenvalues[e].real()) < std::abs(lin.eigenvalues[best].real())))
+      best = e;
+  if (best < 0) return;
+  c.found.mode = lin.labels[best];
+  c.found.frequency = std::abs(lin.eigenvalues[best].imag()) / (2 * M_PI);
+}
+
 // The crossing's speed by Brent's method to the tolerance, named by the root's label at both grid speeds
 // when they agree, else by its label at the critical speed (where a double root, e.g. the capsize root
 // meeting the zero forward-speed root, can leave the eigenvectors ill-defined). Where a speed in the
@@ -405,6 +482,7 @@ void refineCrossing(const VehicleModel& m, const SweepOptions& opt, const SweepO
                                                            : calcBranchRoot(m, out, br, c.k, c.found.speed, fixed, !sameLabel);
     c.found.mode = sameLabel ? br.labels[c.k] : *root.label;
     c.found.frequency = std::abs(root.lambda.imag()) / (2 * M_PI);
+    if (std::abs(root.lambda.real()) > 1e-3 * std::max(std::abs(f0), std::abs(f1))) findCrossingByCount(m, fixed, opt, out, c);
   } catch (const TrimError&) {
     if (!opt.keepFailedSpeeds) throw;
     c.found.speed = out.speeds[c.k] + (out.speeds[c.k + 1] - out.speeds[c.k]) * f0 / (f0 - f1);

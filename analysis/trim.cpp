@@ -103,6 +103,11 @@ void setFixedPart(const VehicleModel& model, const TrimOptions& opt, double spee
   }
   for (int i : {ix.x, ix.y, ix.rearSpin, ix.frontSpin}) s.updU()[i] = oldU[i] * scale;
   s.updU()[ix.yaw] = oldU[ix.yaw] / scale;
+  // At a fixed roll the path curvature goes as 1/V^2 (point-mass turn, g tan(roll) = V^2 / R) and the
+  // steer with it: kept as it was, a tight turn's steer (26 deg at 4 m/s and 35 deg) would start the
+  // next speed's Newton iteration far enough away to reach another, unstable equilibrium. A predictor
+  // with a secant slope (predictUnknowns) overrides this.
+  if (scaled && ix.steer >= 0) s.updQ()[ix.steer] /= scale * scale;
   s.updQ()[ix.yaw] = 0;
   s.updQ()[ix.roll] = opt.roll;
   if (opt.condition == TurnCondition::Steer) s.updQ()[ix.steer] = opt.steer;

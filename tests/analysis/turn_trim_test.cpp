@@ -9,6 +9,7 @@
 #include <sstream>
 
 #include "analysis/linearize.h"
+#include "analysis/sweep.h"
 #include "analysis/trim.h"
 #include "core/portable_random.h"
 #include "scenario/scenario.h"
@@ -286,4 +287,26 @@ TEST(TurnTrim, FailureNamesSpeedAndRoll) {
 }
 
 }  // namespace
+// A sweep of turns that starts in a tight turn (radius 2-3 m: 26 deg of steer at 4 m/s and 35 deg) stays
+// on the branch of turns a cold trim finds (roll stepped up from straight running at each speed): its next
+// speed's steer and pitch are the cold trim's. Roll and first speed drawn at random (seeded).
+TEST(TurnTrim, SweepFromATightTurnStaysOnTheColdTrimsBranch) {
+  const VehicleModel model(loadScenario(std::string(MOTOSTAB_SOURCE_DIR) + "/scenarios/supersport-mf.yaml"));
+  const CoordinateIndices& ix = model.getIndices();
+  PortableRandom g(2811);
+  for (int draw = 0; draw < 3; ++draw) {
+    const double roll = g.drawUniform(30, 38) * M_PI / 180, v0 = g.drawUniform(3.5, 4.5);
+    SweepOptions opt;
+    opt.trim.roll = roll;
+    opt.findCriticalSpeeds = false;
+    const SweepResult s = runSweep(model, std::vector<double>{v0, v0 + 2}, opt);
+    TrimOptions cold;
+    cold.roll = roll;
+    const TrimResult t = calcTrim(model, v0 + 2, cold);
+    ASSERT_EQ(s.trims.size(), 2u);
+    EXPECT_NEAR(s.trims[1].y[ix.steer], t.state.getQ()[ix.steer], 1e-6) << "draw " << draw << ": roll " << roll << " rad, " << v0 + 2 << " m/s";
+    EXPECT_NEAR(s.trims[1].y[ix.pitch], t.state.getQ()[ix.pitch], 1e-6) << "draw " << draw;
+  }
+}
+
 }  // namespace motostab::analysis
