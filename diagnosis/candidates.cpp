@@ -11,6 +11,7 @@
 #include "diagnosis/priors.h"
 #include "io/csv.h"
 #include "io/input_error.h"
+#include "io/yaml_map.h"
 #include "scenario/parameter_paths.h"
 #include "scenario/scenario.h"
 #include "tyres/relaxation_linear.h"
