@@ -2,6 +2,7 @@
 
 #include <fnmatch.h>
 
+#include <array>
 #include <cmath>
 #include <optional>
 #include <stdexcept>
@@ -10,8 +11,10 @@
 #include "diagnosis/priors.h"
 #include "io/csv.h"
 #include "io/input_error.h"
+#include "io/yaml_map.h"
 #include "scenario/parameter_paths.h"
 #include "scenario/scenario.h"
+#include "tyres/relaxation_linear.h"
 
 namespace motostab::diagnosis {
 
@@ -298,6 +301,62 @@ void addTyreRelaxationCandidate(const YAML::Node& tree, std::vector<Candidate>& 
   out.push_back({"tyre_relaxation", {}, {p}});
 }
 
+// Sharp, Evangelou & Limebeer (2004) sec. 4, Evangelou (2004) Table 9.5: sigma = K_ya (C1 + C2 V + C3 V^2)
+// for the 120/70 ZR17 front and 180/55 ZR17 rear sport tyres, i.e. a lateral compliance 1/k_y = C1 (1 +
+// b1 V + b2 V^2) with b1 = C2/C1, b2 = C3/C1 (tyres/relaxation_linear.h).
+struct PublishedCarcass {
+  double C1, C2, C3;  // m/N, s/N, s^2/(N m)
+  double getB1() const { return C2 / C1; }
+  double getB2() const { return C3 / C1; }
+};
+constexpr PublishedCarcass kSharpFront{8.633e-6, 3.725e-8, 8.389e-10}, kSharpRear{9.694e-6, -1.333e-8, 1.898e-9};
+
+// Tyre carcass (relaxation_linear tyres with constant relaxation lengths): each tyre's sigma becomes
+// the carcass's, Fz k_alpha (1 + lambda (b1 V + b2 V^2)) / k_y0 (tyres/relaxation_linear.h), with k_y0 =
+// Fz0 k_alpha / sigma0 at the static load Fz0 (so that sigma is the scenario's at rest) and the published
+// speed coefficients b1, b2 of each wheel's tyre (kSharpFront, kSharpRear) times one factor lambda, free
+// in [0, 4], off at the bound 0 (the load dependence alone, a fixed part of the candidate). Prior:
+// Student-t about 1 (the published speed dependence) with sigma 0.5: only one published set is known to
+// us, so the width is our choice (no speed dependence and twice the published at 2 sigma).
+void addTyreCarcassCandidate(const YAML::Node& tree, std::vector<Candidate>& out, std::vector<std::string>& unavailable) {
+  const YAML::Node c = tree["contact"];
+  if (!c || !c.IsMap() || !c["model"] || c["model"].Scalar() != "relaxation_linear") return;
+  std::pair<tyres::LinearTyreParameters, tyres::LinearTyreParameters> parsed;
+  std::array<double, 2> loads{};
+  try {
+    const scenario::Scenario s = scenario::readScenarioTree(tree, "", {});
+    io::YamlMap contact(s.contact.params, s.contact.file, s.contact.path);
+    contact.markUsed("model");
+    parsed = tyres::readRelaxationLinearTyres(contact);
+    loads = scenario::calcStaticWheelLoads(s);
+  } catch (const io::InputError&) {
+    return;  // the loader reports it
+  }
+  auto& [front, rear] = parsed;
+  if (front.lateralCarcassStiffness > 0 || rear.lateralCarcassStiffness > 0) {
+    unavailable.push_back("tyre_carcass: the tyres have a lateral carcass stiffness already (set its keys with --set)");
+    return;
+  }
+  if (!(front.relaxationLength > 0 && rear.relaxationLength > 0)) return;
+  const double sigmaFront = front.relaxationLength, sigmaRear = rear.relaxationLength;
+  front.lateralCarcassStiffness = loads[1] * front.corneringStiffness / sigmaFront;
+  rear.lateralCarcassStiffness = loads[0] * rear.corneringStiffness / sigmaRear;
+  const std::string contact = "contact={model: relaxation_linear, front: " + tyres::formatLinearTyre(front) +
+                              ", rear: " + tyres::formatLinearTyre(rear) + "}";
+  CandidateParameter p = makeFreeParameter("speed_dependence", "contact.front.carcass_compliance_speed_coefficient_s_per_m", 0, 4, 1, 1e-3);
+  p.keyScale = kSharpFront.getB1();
+  p.alsoPaths = {"contact.front.carcass_compliance_speed_coefficient_s2_per_m2", "contact.rear.carcass_compliance_speed_coefficient_s_per_m",
+                 "contact.rear.carcass_compliance_speed_coefficient_s2_per_m2"};
+  p.alsoScales = {kSharpFront.getB2(), kSharpRear.getB1(), kSharpRear.getB2()};
+  p.off = 0, p.offAtBound = true;
+  p.priorMean = 1, p.priorSigma = 0.5;
+  p.note = "times the speed dependence of Sharp, Evangelou & Limebeer (2004); carcass stiffness front " +
+           formatNumber(front.lateralCarcassStiffness, 4) + " N/m, rear " + formatNumber(rear.lateralCarcassStiffness, 4) +
+           " N/m (the scenario's relaxation lengths " + formatNumber(sigmaFront, 4) + ", " + formatNumber(sigmaRear, 4) +
+           " m at the static loads)";
+  out.push_back({"tyre_carcass", {contact}, {p}});
+}
+
 }  // namespace
 
 std::vector<Candidate> listCandidates(const YAML::Node& tree,
@@ -314,6 +373,7 @@ std::vector<Candidate> listCandidates(const YAML::Node& tree,
   addSwingarmCandidates(tree, out);
   addTyreSlipCandidate(tree, out);
   addTyreRelaxationCandidate(tree, out);
+  addTyreCarcassCandidate(tree, out, unavailable ? *unavailable : none);
   addSteerControllerCandidates(tree, out);
   addTyreScalingCandidates(tree, out);
   addPhysicalCandidates(tree, out);

@@ -64,7 +64,9 @@ struct Candidate {
 /// `steer_controller_delay` (delay_s free).
 /// `steer_friction` (physical_candidates.h) where `steerRate` holds a steer-rate amplitude; else a
 /// line in `unavailable` says why not. `tyre_relaxation` (both tyres' relaxation lengths scaled by one
-/// factor) for scenarios with relaxation_linear tyres.
+/// factor) for scenarios with relaxation_linear tyres; `tyre_carcass` (their relaxation lengths from
+/// the load and a lateral carcass stiffness whose compliance grows with speed, the published speed
+/// dependence times one factor, candidates.cpp) for such tyres with constant relaxation lengths.
 std::vector<Candidate> listCandidates(const YAML::Node& scenarioTree,
                                       const std::vector<std::pair<std::string, double>>& uncertainty,
                                       std::vector<std::string>* unavailable = nullptr,

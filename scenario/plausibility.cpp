@@ -150,6 +150,15 @@ void checkLinearTyres(const Scenario& s, Checker& c) {
     if (value("relaxation_length_m", v) && v > 1)
       c.warn(Check::RelaxationLength, at + "relaxation_length_m",
              format(v) + " m is longer than any measured tyre's (0.05-0.5 m): millimetres given as metres?");
+    // A carcass stiffness gives sigma = Fz k_alpha / k_y at rest (tyres/relaxation_linear.h).
+    double ky = 0, kAlpha = 0;
+    if (value("lateral_carcass_stiffness_N_per_m", ky) && ky > 0 && value("cornering_stiffness_per_rad", kAlpha)) {
+      const double sigma = calcStaticWheelLoads(s)[end == std::string("front") ? 1 : 0] * kAlpha / ky;
+      if (sigma > 1)
+        c.warn(Check::RelaxationLength, at + "lateral_carcass_stiffness_N_per_m",
+               format(ky) + " N/m gives a relaxation length of " + format(sigma) +
+                   " m at the static load, longer than any measured tyre's (0.05-0.5 m): N/mm given as N/m?");
+    }
   }
 }
 

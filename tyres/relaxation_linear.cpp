@@ -6,6 +6,8 @@
 #include <map>
 #include <stdexcept>
 
+#include "io/csv.h"
+#include "scenario/scenario.h"
 #include "tyres/tyre_contact.h"
 
 namespace motostab::tyres {
@@ -18,6 +20,53 @@ using plugins::WheelSite;
 
 
 namespace {
+
+constexpr const char* kCarcassKey = "lateral_carcass_stiffness_N_per_m";
+constexpr const char* kSpeedKey = "carcass_compliance_speed_coefficient_s_per_m";
+constexpr const char* kSpeedKey2 = "carcass_compliance_speed_coefficient_s2_per_m2";
+
+// The smallest of 1 + b1 V + b2 V^2 over 0 <= V <= vMax, and the speed where it is.
+std::pair<double, double> findComplianceMinimum(double b1, double b2, double vMax) {
+  auto f = [&](double V) { return 1 + b1 * V + b2 * V * V; };
+  std::pair<double, double> best{f(vMax), vMax};
+  if (best.first > 1) best = {1, 0};
+  const double vertex = b2 > 0 ? -b1 / (2 * b2) : -1;
+  if (vertex > 0 && vertex < vMax && f(vertex) < best.first) best = {f(vertex), vertex};
+  return best;
+}
+
+// The relaxation keys (header): relaxation_length_m or the carcass stiffness with its speed
+// coefficients. Over a preset the one given replaces the preset's.
+void readRelaxation(YamlMap& m, LinearTyreParameters& p, bool overPreset) {
+  const bool length = m.has("relaxation_length_m"), carcass = m.has(kCarcassKey);
+  if (length && carcass)
+    m.fail(kCarcassKey, "give relaxation_length_m (a constant sigma) or lateral_carcass_stiffness_N_per_m (sigma = Fz k_alpha / k_y), not both");
+  if (!overPreset && !length && !carcass)
+    m.fail("relaxation_length_m", "required (0: no lag), unless lateral_carcass_stiffness_N_per_m gives the relaxation length");
+  if (length) {
+    p.relaxationLength = m.getZeroOrAtLeast("relaxation_length_m", kMinRelaxationLength, "m");
+    p.lateralCarcassStiffness = p.carcassSpeedCoefficient = p.carcassSpeedCoefficient2 = 0;
+  }
+  if (carcass) {
+    p.lateralCarcassStiffness = m.getPositive(kCarcassKey);
+    p.carcassWhere = m.locate(kCarcassKey);
+    p.relaxationLength = 0;
+  }
+  for (const char* key : {kSpeedKey, kSpeedKey2}) {
+    if (!m.has(key)) continue;
+    if (!(p.lateralCarcassStiffness > 0))
+      m.fail(key, "needs lateral_carcass_stiffness_N_per_m (the speed coefficient is of the carcass's lateral compliance)");
+    (key == kSpeedKey ? p.carcassSpeedCoefficient : p.carcassSpeedCoefficient2) = m.getDouble(key);
+  }
+  const double vMax = scenario::SpeedRange::kMaxSpeed;
+  const auto [factor, at] = findComplianceMinimum(p.carcassSpeedCoefficient, p.carcassSpeedCoefficient2, vMax);
+  if (!(factor > 0)) {
+    const char* key = m.has(kSpeedKey) ? kSpeedKey : kSpeedKey2;
+    m.fail(key, "makes the lateral compliance factor 1 + b1 V + b2 V^2 " + io::formatNumber(factor, 4) + " at " +
+                    io::formatNumber(at, 4) + " m/s: it must stay positive (a positive carcass stiffness) from 0 to " +
+                    io::formatNumber(vMax) + " m/s");
+  }
+}
 
 // One tyre's keys. With a preset every key is optional (given ones override the preset's value).
 LinearTyreParameters readTyre(YamlMap m, const LinearTyreParameters* preset) {
@@ -37,8 +86,7 @@ LinearTyreParameters readTyre(YamlMap m, const LinearTyreParameters* preset) {
     m.fail("self_aligning_stiffness_m_per_rad",
            "must not be positive: the self-aligning moment of a slip turns the wheel towards its velocity (k_mz = -trail k_alpha)");
   read("twisting_stiffness_m_per_rad", p.twistingStiffness, &YamlMap::getDouble);
-  if (!preset || m.has("relaxation_length_m"))
-    p.relaxationLength = m.getZeroOrAtLeast("relaxation_length_m", kMinRelaxationLength, "m");
+  readRelaxation(m, p, preset != nullptr);
   read("radial_stiffness_N_per_m", p.radialStiffness, &YamlMap::getPositive);
   read("radial_damping_Ns_per_m", p.radialDamping, &YamlMap::getNonNegative);
   read("longitudinal_stiffness", p.longitudinalStiffness, &YamlMap::getPositive);
@@ -50,13 +98,15 @@ LinearTyreParameters readTyre(YamlMap m, const LinearTyreParameters* preset) {
 class LinearTyreForce : public TyreForceElement {
  public:
   LinearTyreForce(SimTK::GeneralForceSubsystem& forces, const WheelSite& w, const LinearTyreParameters& p)
-      : TyreForceElement(forces, w, {p.radialStiffness, p.radialDamping}, p.relaxationLength > 0), p_(p) {}
+      : TyreForceElement(forces, w, {p.radialStiffness, p.radialDamping}, isLagged(p)), p_(p),
+        loadFloor_(kCarcassLoadFloor * w.staticLoad) {
+    checkCarcass(w);
+  }
 
  protected:
   TyreContactForces calcTyreForces(const TyreKinematics& k, double z, double& slipDot) const override {
     const double ratio = p_.camberStiffness / p_.corneringStiffness;
-    const LaggedSlip s = calcLaggedSlip(k.alpha + ratio * k.camber, k.alpha, p_.relaxationLength > 0, z, k.V,
-                                        p_.relaxationLength);
+    const LaggedSlip s = calcLaggedSlip(k.alpha + ratio * k.camber, k.alpha, isLagged(p_), z, k.V, calcRelaxationLength(k));
     slipDot = s.slipDot;
     TyreContactForces f;
     f.Fx = k.Fz * p_.longitudinalStiffness * k.kappa;
@@ -65,10 +115,30 @@ class LinearTyreForce : public TyreForceElement {
     f.Mz = k.Fz * (p_.selfAligningStiffness * s.alphaLagged + p_.twistingStiffness * k.camber);
     return f;
   }
-  double calcRelaxationLength(const TyreKinematics&) const override { return p_.relaxationLength; }
+  // The carcass's sigma at the load, floored at kCarcassLoadFloor of the static load (an unloading
+  // wheel's lag rate V/sigma stays finite; its force Fz k_alpha s vanishes anyway).
+  double calcRelaxationLength(const TyreKinematics& k) const override {
+    if (!(p_.lateralCarcassStiffness > 0)) return p_.relaxationLength;
+    return tyres::calcRelaxationLength(p_, std::max(k.Fz, loadFloor_), k.forwardSpeed);
+  }
 
  private:
+  // The carcass's sigma at the static load is at least kMinRelaxationLength over the speed range.
+  void checkCarcass(const WheelSite& w) const {
+    if (!(p_.lateralCarcassStiffness > 0)) return;
+    const double vMax = scenario::SpeedRange::kMaxSpeed;
+    const auto [factor, at] = findComplianceMinimum(p_.carcassSpeedCoefficient, p_.carcassSpeedCoefficient2, vMax);
+    const double sigma = tyres::calcRelaxationLength(p_, w.staticLoad, at);
+    if (!(sigma >= kMinRelaxationLength))
+      throw io::InputError(p_.carcassWhere, "gives the " + w.name + "'s tyre a relaxation length of " + io::formatNumber(sigma, 4) +
+                                                " m at its static load " + io::formatNumber(w.staticLoad, 6) + " N and " +
+                                                io::formatNumber(at, 4) + " m/s (Fz k_alpha / k_y): at least " +
+                                                io::formatNumber(kMinRelaxationLength) + " m");
+  }
+
+  static constexpr double kCarcassLoadFloor = 0.05;
   LinearTyreParameters p_;
+  double loadFloor_;
 };
 
 class RelaxationLinear : public TyreContactModel {
@@ -80,7 +150,7 @@ class RelaxationLinear : public TyreContactModel {
   TyreForceElement* makeForceElement(BuildContext& ctx, const WheelSite& w) const override {
     return new LinearTyreForce(ctx.forces, w, paramsFor(w));
   }
-  bool isLagged(const WheelSite& w) const override { return paramsFor(w).relaxationLength > 0; }
+  bool isLagged(const WheelSite& w) const override { return tyres::isLagged(paramsFor(w)); }
 
  private:
   const LinearTyreParameters& paramsFor(const WheelSite& w) const { return w.side == plugins::WheelSide::Front ? front_ : rear_; }
@@ -105,7 +175,7 @@ class LinearTyreForceLaw : public TyreForceLaw {
   double calcCorneringStiffness(double Fz) const override { return -Fz * p_.corneringStiffness; }
   double calcCamberStiffness(double Fz) const override { return -Fz * p_.camberStiffness; }
   double calcLongitudinalStiffness(double Fz) const override { return Fz * p_.longitudinalStiffness; }
-  double calcRelaxationLength(double, double, double) const override { return p_.relaxationLength; }
+  double calcRelaxationLength(double Fz, double, double Vx) const override { return tyres::calcRelaxationLength(p_, Fz, Vx); }
   double getNominalLoad() const override { return std::numeric_limits<double>::quiet_NaN(); }
   double getUnloadedRadius() const override { return std::numeric_limits<double>::quiet_NaN(); }
 
@@ -129,6 +199,30 @@ LinearTyreParameters getRelaxationLinearPreset(const std::string& name) {
 }
 
 std::vector<std::string> getRelaxationLinearPresetNames() { return {"bicycle"}; }
+
+bool isLagged(const LinearTyreParameters& p) { return p.relaxationLength > 0 || p.lateralCarcassStiffness > 0; }
+
+double calcCarcassComplianceFactor(const LinearTyreParameters& p, double speed) {
+  const double V = std::min(std::abs(speed), scenario::SpeedRange::kMaxSpeed);
+  return 1 + p.carcassSpeedCoefficient * V + p.carcassSpeedCoefficient2 * V * V;
+}
+
+double calcRelaxationLength(const LinearTyreParameters& p, double Fz, double speed) {
+  if (!(p.lateralCarcassStiffness > 0)) return p.relaxationLength;
+  return Fz * p.corneringStiffness * calcCarcassComplianceFactor(p, speed) / p.lateralCarcassStiffness;
+}
+
+std::string formatLinearTyre(const LinearTyreParameters& p) {
+  auto f = [](double v) { return io::formatNumber(v, 17); };
+  std::string s = "{cornering_stiffness_per_rad: " + f(p.corneringStiffness) + ", camber_stiffness_per_rad: " +
+                  f(p.camberStiffness) + ", self_aligning_stiffness_m_per_rad: " + f(p.selfAligningStiffness) +
+                  ", twisting_stiffness_m_per_rad: " + f(p.twistingStiffness) + ", radial_stiffness_N_per_m: " +
+                  f(p.radialStiffness) + ", radial_damping_Ns_per_m: " + f(p.radialDamping) +
+                  ", longitudinal_stiffness: " + f(p.longitudinalStiffness) + ", ";
+  if (!(p.lateralCarcassStiffness > 0)) return s + "relaxation_length_m: " + f(p.relaxationLength) + "}";
+  return s + kCarcassKey + ": " + f(p.lateralCarcassStiffness) + ", " + kSpeedKey + ": " + f(p.carcassSpeedCoefficient) +
+         ", " + kSpeedKey2 + ": " + f(p.carcassSpeedCoefficient2) + "}";
+}
 
 std::unique_ptr<TyreForceLaw> makeLinearTyreForceLaw(const LinearTyreParameters& p) {
   return std::make_unique<LinearTyreForceLaw>(p);

@@ -119,6 +119,28 @@ TEST(CliInput, BadSteerControllerNamesFileLineColumn) {
   std::filesystem::remove_all(dir);
 }
 
+// A relaxation_linear tyre given both a relaxation length and a lateral carcass stiffness exits 2 naming
+// file:line:col of the stiffness key, for check and for a command that builds models.
+TEST(CliInput, TyreWithLengthAndCarcassNamesFileLineColumn) {
+  const auto dir = makeTempDir("cli_carcass");
+  std::ifstream in(std::string(MOTOSTAB_SOURCE_DIR) + "/scenarios/supersport.yaml");
+  std::string text, line, needle;
+  for (int n = 1; std::getline(in, line); ++n) {
+    const size_t at = line.find("relaxation_length_m: 0.122");  // the rear tyre
+    if (at != std::string::npos) {
+      line.insert(at, "lateral_carcass_stiffness_N_per_m: 1.1e5, ");
+      needle = ":" + std::to_string(n) + ":" + std::to_string(at + 1) + ": contact.rear.lateral_carcass_stiffness_N_per_m";
+    }
+    text += line + "\n";
+  }
+  ASSERT_FALSE(needle.empty());
+  const std::string file = (dir / "both.yaml").string();
+  std::ofstream(file) << text;
+  expectInputError({"check", file}, file + needle);
+  expectInputError({"sweep", file, "--speeds", "10:10:1", "--out", (dir / "out").string()}, file + needle);
+  EXPECT_FALSE(std::filesystem::exists(dir / "out"));
+}
+
 std::string readFile(const std::filesystem::path& p) {
   std::ifstream in(p);
   return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());

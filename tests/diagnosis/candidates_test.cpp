@@ -7,9 +7,12 @@
 
 #include "diagnosis/candidates.h"
 
+#include <algorithm>
 #include <cmath>
 #include <map>
 
+#include "analysis/linearize.h"
+#include "analysis/trim.h"
 #include "core/portable_random.h"
 #include "diagnosis/fit_problem.h"
 #include "diagnosis/diagnosis.h"
@@ -82,6 +85,53 @@ TEST(Candidates, TyreRelaxationScalesBothTyres) {
   EXPECT_NEAR(set["contact.front.relaxation_length_m"], 0.129 * f, 1e-12);
   EXPECT_NEAR(set["contact.rear.relaxation_length_m"], 0.122 * f, 1e-12);
   EXPECT_EQ(find(listCandidates(makeScenarioTree(kDir + "/scenarios/whipple-benchmark.yaml", {}), {}), "tyre_relaxation"), nullptr);
+}
+
+// tyre_carcass on relaxation_linear tyres: each tyre's relaxation length becomes the carcass's,
+// sigma = sigma0 (Fz/Fz0)(1 + lambda (b1 V + b2 V^2)), with the supersport's sigma0 (0.129, 0.122 m) at the
+// static loads Fz0 and Sharp, Evangelou & Limebeer's (2004) speed coefficients b1 = C2/C1, b2 = C3/C1
+// (Evangelou 2004 Table 9.5) times the free factor lambda. At a drawn lambda and speed the built model's
+// lag rate of each tyre, read off the linearisation, is -V/sigma with that sigma at the trim's load.
+TEST(Candidates, TyreCarcassGivesThePublishedSpeedDependenceTimesItsFactor) {
+  const std::string file = kDir + "/scenarios/supersport.yaml";
+  const std::vector<Candidate> all = listCandidates(makeScenarioTree(file, {}), {});
+  const Candidate* c = find(all, "tyre_carcass");
+  ASSERT_NE(c, nullptr);
+  ASSERT_EQ(c->parameters.size(), 1u);
+  EXPECT_DOUBLE_EQ(c->parameters[0].priorMean, 1);
+  EXPECT_TRUE(c->parameters[0].offAtBound);
+  EXPECT_EQ(c->parameters[0].off, 0);
+  core::PortableRandom rng(78);
+  const double lambda = rng.drawUniform(0.2, 2.5), V = rng.drawUniform(10, 45);
+  ModelSpec m;
+  m.parts = {c};
+  Eigen::VectorXd x(1);
+  x << lambda;
+  const std::vector<std::string> ov = m.makeOverrides(x).format();
+  const vehicle::VehicleModel model(loadScenario(file, ov));
+  const auto trim = analysis::calcTrim(model, V);
+  const auto lin = analysis::linearize(model, trim);
+  const auto static0 = scenario::calcStaticWheelLoads(loadScenario(file));  // rear, front
+  const auto names = model.getContactOutputNames();
+  const auto values = model.calcContactOutputs(trim.state);
+  auto output = [&](const std::string& n) { return values[std::find(names.begin(), names.end(), n) - names.begin()]; };
+  struct Tyre {
+    std::string name;
+    double sigma0, Fz0, C1, C2, C3;
+  };
+  for (const Tyre& t : {Tyre{"front", 0.129, static0[1], 8.633e-6, 3.725e-8, 8.389e-10},
+                        Tyre{"rear", 0.122, static0[0], 9.694e-6, -1.333e-8, 1.898e-9}}) {
+    const double sigma = t.sigma0 * output(t.name + "_tyre_Fz_N") / t.Fz0 * (1 + lambda * (t.C2 / t.C1 * V + t.C3 / t.C1 * V * V));
+    const int z = lin.findState(t.name + "_tyre_lagged_slip");
+    ASSERT_GE(z, 0);
+    const double Veps = std::sqrt(V * V + 0.01);
+    EXPECT_NEAR(lin.A(z, z), -Veps / sigma, 1e-7 * Veps / sigma) << t.name << ", lambda " << lambda << ", " << V << " m/s";
+  }
+  // Not offered without relaxation_linear tyres, nor twice.
+  EXPECT_EQ(find(listCandidates(makeScenarioTree(kDir + "/scenarios/whipple-benchmark.yaml", {}), {}), "tyre_carcass"), nullptr);
+  std::vector<std::string> unavailable;
+  EXPECT_EQ(find(listCandidates(makeScenarioTree(file, ov), {}, &unavailable), "tyre_carcass"), nullptr);
+  EXPECT_TRUE(std::any_of(unavailable.begin(), unavailable.end(), [](const std::string& u) { return u.find("tyre_carcass") == 0; }));
 }
 
 // rider_arms where the rear frame holds a rider: Sharp's (1994) hands-on steer inertia 0.20 kg m^2

@@ -106,6 +106,15 @@ TEST(Plausibility, TyreCoefficientsAgainstTheConvention) {
   ASSERT_EQ(find(s, Check::CorneringStiffness).size(), 1u);
   s = loadVariant("supersport.yaml", "cornering_stiffness_per_rad: 12.3", "cornering_stiffness_per_rad: " + num(perDegree * 180 / M_PI * 30), line);
   EXPECT_EQ(find(s, Check::CorneringStiffness).size(), 1u);  // per load not divided out
+  // A lateral carcass stiffness in N/mm (Sharp et al. 2004: about 100 N/mm) gives sigma = Fz k_alpha / k_y
+  // of tens of metres at the static load; in N/m, 0.1-0.2 m.
+  const double kyPerMm = rng.drawUniform(60, 200);
+  s = loadVariant("supersport.yaml", "relaxation_length_m: 0.122", "lateral_carcass_stiffness_N_per_m: " + num(kyPerMm), line);
+  ASSERT_EQ(find(s, Check::RelaxationLength).size(), 1u);
+  EXPECT_EQ(find(s, Check::RelaxationLength)[0].where.key, "contact.rear.lateral_carcass_stiffness_N_per_m");
+  EXPECT_EQ(find(s, Check::RelaxationLength)[0].where.line, line);
+  s = loadVariant("supersport.yaml", "relaxation_length_m: 0.122", "lateral_carcass_stiffness_N_per_m: " + num(kyPerMm * 1000), line);
+  EXPECT_EQ(find(s, Check::RelaxationLength).size(), 0u);
 }
 
 // Mass properties: kg cm^2 for kg m^2, pitch below roll, a wheel spinning about a diameter, a CoM ahead of
