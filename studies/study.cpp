@@ -4,6 +4,7 @@
 #include <future>
 #include <memory>
 
+#include "io/result_error.h"
 #include "scenario/scenario_source.h"
 
 namespace motostab::studies {
@@ -33,7 +34,7 @@ const ModeBranch* findBranch(const SweepResult& sweep, analysis::ModeLabel label
 
 ModeShape calcWeaveShape(const VehicleModel& model, const SweepResult& sweep, double speed, const SweepOptions& opt) {
   const ModeBranch* weave = findBranch(sweep, analysis::ModeLabel::Weave);
-  if (!weave) throw std::runtime_error("no weave mode in the sweep");
+  if (!weave) throw io::ResultError("no weave mode in the sweep: no mode shape at " + std::to_string(speed) + " m/s");
   size_t k = 0;
   for (size_t i = 0; i < sweep.speeds.size(); ++i)
     if (std::abs(sweep.speeds[i] - speed) < std::abs(sweep.speeds[k] - speed)) k = i;
