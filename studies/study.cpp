@@ -1,9 +1,9 @@
 #include "studies/study.h"
 
 #include <cmath>
-#include <future>
 #include <memory>
 
+#include "core/parallel.h"
 #include "io/result_error.h"
 #include "scenario/scenario_source.h"
 
@@ -107,13 +107,7 @@ StudyResult runStudy(const ScenarioSource& source, const StudyOptions& opt) {
     const VehicleModel model(source.load(jobs[j].overrides));
     results[j] = runSweep(model, opt.sweep);
   };
-  const int threads = std::max(1, opt.threads);
-  for (size_t start = 0; start < jobs.size(); start += threads) {
-    std::vector<std::future<void>> running;
-    for (size_t j = start; j < std::min(jobs.size(), start + threads); ++j)
-      running.push_back(std::async(std::launch::async, runJob, j));
-    for (auto& f : running) f.get();
-  }
+  core::runParallel(jobs.size(), opt.threads, runJob);
   for (size_t j = 0; j < jobs.size(); ++j)
     (jobs[j].halved ? out.halved : out.nominal).push_back({jobs[j].name, jobs[j].overrides, std::move(results[j])});
 
