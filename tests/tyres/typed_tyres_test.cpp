@@ -37,8 +37,9 @@ LinearModel linearizeWithContact(Scenario scenario, const std::function<std::uni
   PluginRegistry registry = plugins::makeBuiltinRegistry();
   registry.addContactModel("typed", [&](io::YamlMap&) { return make(); });
   scenario.contact.model = "typed";
-  scenario.contact.params = YAML::Node(YAML::NodeType::Map);
-  scenario.contact.params["model"] = "typed";
+  YAML::Node params(YAML::NodeType::Map);
+  params["model"] = "typed";
+  scenario.contact.params.reset(params);  // rebinds: assignment would write into the node `scenario` shares
   const VehicleModel model(scenario, registry);
   return linearize(model, calcTrim(model, speed));
 }
