@@ -7,6 +7,7 @@
 
 #include "analysis/linearize_detail.h"
 #include "analysis/modes.h"
+#include "io/result_error.h"
 
 namespace motostab::analysis {
 
@@ -124,7 +125,7 @@ TangentSpace chooseTangentSpace(const LinearizeContext& c, const ConstraintJacob
     t.depU = chooseDependentColumns(cj.G.bottomRightCorner(m - mp, nu),
                                     withPriority({ix.height, ix.pitch, ix.rearSpin, ix.frontSpin, ix.y, ix.yaw}, nu));
     if (static_cast<int>(t.depQ.size()) != mp || static_cast<int>(t.depU.size()) != m - mp)
-      throw std::runtime_error("linearize: constraints are redundant or singular at the trim");
+      throw io::ResultError("linearize: constraints are redundant or singular at the trim");
   }
   for (int q : t.depQ) t.depCols.push_back(q);
   for (int u : t.depU) t.depCols.push_back(nq + u);

@@ -243,7 +243,7 @@ size_t addTurn(const VehicleModel& model, const TrimResult& trim, std::vector<Ha
 std::vector<HandsFreeTurn> calcHandsFreeTurns(const VehicleModel& model, const std::vector<double>& speeds,
                                               const TrimOptions& opt) {
   if (speeds.size() < 2 || !std::is_sorted(speeds.begin(), speeds.end()))
-    throw std::invalid_argument("calcHandsFreeTurns needs at least two speeds in ascending order");
+    throw std::logic_error("calcHandsFreeTurns needs at least two speeds in ascending order");
   const std::vector<TrimPoint> scan = scanFixedSpeedTurns(model, speeds, opt);
   const int torque = static_cast<int>(Input::SteerTorque);
   std::vector<HandsFreeTurn> turns;
@@ -272,7 +272,7 @@ std::vector<HandsFreeTurn> calcHandsFreeTurns(const VehicleModel& model, const s
 }
 
 size_t chooseHandsFreeTurn(const std::vector<HandsFreeTurn>& turns, double preferredSpeed) {
-  if (turns.empty()) throw std::invalid_argument("chooseHandsFreeTurn: no turn");
+  if (turns.empty()) throw std::logic_error("chooseHandsFreeTurn: no turn");
   size_t best = 0;
   for (size_t i = 1; i < turns.size(); ++i) {
     const double d = std::abs(turns[i].trim.speed - preferredSpeed), dBest = std::abs(turns[best].trim.speed - preferredSpeed);

@@ -25,7 +25,7 @@ std::vector<double> makeSpeedGrid(double start, double stop, double step) {
   std::string why;
   const long n = scenario::countSpeeds(start, stop, step, why);
   if (!why.empty())
-    throw std::invalid_argument("speed grid " + std::to_string(start) + ":" + std::to_string(stop) + ":" +
+    throw std::logic_error("speed grid " + std::to_string(start) + ":" + std::to_string(stop) + ":" +
                                 std::to_string(step) + ": " + why);
   std::vector<double> v;
   for (long i = 0; i < n; ++i) v.push_back(start + i * step);
@@ -527,7 +527,7 @@ SweepResult runSweep(const VehicleModel& model, const SweepOptions& opt) {
 SweepResult runSweep(const VehicleModel& model, const std::vector<double>& speeds, const SweepOptions& opt) {
   if (speeds.empty() || !std::is_sorted(speeds.begin(), speeds.end()) ||
       std::adjacent_find(speeds.begin(), speeds.end()) != speeds.end())
-    throw std::invalid_argument("runSweep: the speeds must be sorted, unique and not empty");
+    throw std::logic_error("runSweep: the speeds must be sorted, unique and not empty");
   SweepRun run(model, speeds, opt);
   run.prepareReference();
   run.runChains();

@@ -77,7 +77,8 @@ struct SweepResult {
 };
 
 /// The speeds start, start+step, ..., stop, m/s (stop included when it falls on the grid within 1e-9 of
-/// a step). Throws std::invalid_argument unless start <= stop, step > 0 and there are at most 1e6 steps.
+/// a step). Throws std::logic_error (a caller's bug: the readers check user grids with
+/// scenario::countSpeeds) unless start <= stop, step > 0 and there are at most 1e6 steps.
 std::vector<double> makeSpeedGrid(double start, double stop, double step);
 
 /// Trims and linearises at every speed (each trim warm-started from the previous one), labels and

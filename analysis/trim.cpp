@@ -376,7 +376,7 @@ TrimResult restoreTrim(const VehicleModel& model, const TrimPoint& point) {
   static_cast<TrimSummary&>(t) = point;
   t.state = model.getDefaultState();
   SimTK::Vector& y = t.state.updY();
-  if (y.size() != point.y.size()) throw std::invalid_argument("restoreTrim: the point belongs to another model");
+  if (y.size() != point.y.size()) throw std::logic_error("restoreTrim: the point belongs to another model");
   for (int i = 0; i < y.size(); ++i) y[i] = point.y[i];
   for (int k = 0; k < kNumInputs; ++k) model.setInput(t.state, static_cast<Input>(k), point.inputs[k]);
   return t;

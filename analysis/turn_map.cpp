@@ -26,7 +26,7 @@ const TrimPoint* findTrimAt(const SweepResult& sweep, double v) {
 }  // namespace
 
 TurnMapResult runTurnMap(const VehicleModel& model, const TurnMapOptions& opt) {
-  if (opt.rolls.empty()) throw std::invalid_argument("runTurnMap: no roll angle");
+  if (opt.rolls.empty()) throw std::logic_error("runTurnMap: no roll angle");
   TurnMapResult map;
   const std::vector<double> speeds = makeSpeedGrid(opt.sweep.start, opt.sweep.stop, opt.sweep.step);
   // The sweeps' lead chains start at the first speed of at least 1 m/s (at the first speed when none is).

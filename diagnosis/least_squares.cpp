@@ -2,8 +2,11 @@
 
 #include <math.h>  // lgamma_r
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
+
+#include "core/levenberg_marquardt.h"
 
 namespace motostab::diagnosis {
 namespace {
@@ -38,23 +41,6 @@ Eigen::VectorXi findFrozen(const LeastSquaresProblem& p, const Eigen::VectorXd& 
   return frozen;
 }
 
-Eigen::VectorXd solveDampedStep(const Eigen::MatrixXd& JtJ, const Eigen::VectorXd& g, const Eigen::VectorXi& frozen,
-                                double mu) {
-  Eigen::MatrixXd H = JtJ;
-  for (int i = 0; i < H.rows(); ++i) {
-    H(i, i) += mu * std::max(JtJ(i, i), 1e-12);
-    if (frozen(i)) {
-      H.row(i).setZero();
-      H.col(i).setZero();
-      H(i, i) = 1;
-    }
-  }
-  Eigen::VectorXd rhs = -g;
-  for (int i = 0; i < rhs.size(); ++i)
-    if (frozen(i)) rhs(i) = 0;
-  return H.ldlt().solve(rhs);
-}
-
 void calcStatistics(const LeastSquaresProblem& p, const Eigen::MatrixXd& J, LeastSquaresResult& res) {
   const int n = p.numData > 0 ? p.numData : static_cast<int>(res.residual.size());
   const int np = static_cast<int>(res.x.size());
@@ -80,50 +66,42 @@ LeastSquaresResult solveBoundedLeastSquares(const LeastSquaresProblem& p, const 
   res.residual = p.residual(res.x);
   res.chi2 = res.residual.squaredNorm();
   res.evaluations = 1;
-  res.stop = "iteration limit";
-  double mu = 1e-3;
-  Eigen::MatrixXd J = calcJacobian(p, res.x, res.residual, res.evaluations);
-  for (res.iterations = 0; res.iterations < options.maxIterations; ++res.iterations) {
-    const Eigen::MatrixXd JtJ = J.transpose() * J;
-    const Eigen::VectorXd g = J.transpose() * res.residual;
-    const Eigen::VectorXi frozen = findFrozen(p, res.x, g);
-    bool improved = false;
-    double drop = 0;
-    for (int tries = 0; tries < 12 && !improved; ++tries, mu *= 10) {
-      const Eigen::VectorXd x = (res.x + solveDampedStep(JtJ, g, frozen, mu)).cwiseMax(p.lower).cwiseMin(p.upper);
-      if ((x - res.x).norm() == 0) break;
-      Eigen::VectorXd r;
-      try {
-        r = p.residual(x);
-        ++res.evaluations;
-      } catch (const std::exception&) {
-        continue;
-      }
-      const double chi2 = r.squaredNorm();
-      if (std::isfinite(chi2) && chi2 < res.chi2) {
-        drop = res.chi2 - chi2;
-        res.x = x, res.residual = r, res.chi2 = chi2;
-        improved = true;
-        mu = std::max(mu / 30, 1e-9);
-      }
-    }
-    if (!improved) {
-      res.stop = "step too small";
-      break;
-    }
-    const bool converged = drop <= options.relativeTolerance * std::max(res.chi2, 1e-300);
-    if (converged && !options.statistics) {
-      res.stop = "converged";
-      break;
-    }
+  double drop = 0;  // fall of chi2 in the last accepted step
+  core::LevenbergMarquardtProblem lm;
+  lm.linearize = [&](Eigen::MatrixXd& J, Eigen::VectorXd& r) {
     J = calcJacobian(p, res.x, res.residual, res.evaluations);
-    if (converged) {
-      res.stop = "converged";
-      break;
+    r = res.residual;
+  };
+  lm.scaleDamping = [](const Eigen::VectorXd& d) { return d.cwiseMax(1e-12).eval(); };
+  lm.findFrozen = [&](const Eigen::VectorXd& g) { return findFrozen(p, res.x, g); };
+  lm.tryStep = [&](const Eigen::VectorXd& step) {
+    const Eigen::VectorXd x = (res.x + step).cwiseMax(p.lower).cwiseMin(p.upper);
+    if ((x - res.x).norm() == 0) return core::LmTrial::NoMove;
+    Eigen::VectorXd r;
+    try {
+      r = p.residual(x);
+      ++res.evaluations;
+    } catch (const std::exception&) {
+      return core::LmTrial::Rejected;
     }
-  }
-  if (res.stop == "step too small") res.stop = "converged";  // no descent left from the solution
-  if (options.statistics) calcStatistics(p, J, res), res.jacobian = J;
+    const double chi2 = r.squaredNorm();
+    if (!(std::isfinite(chi2) && chi2 < res.chi2)) return core::LmTrial::Rejected;
+    drop = res.chi2 - chi2;
+    res.x = x, res.residual = r, res.chi2 = chi2;
+    return core::LmTrial::Accepted;
+  };
+  lm.hasConverged = [&] { return drop <= options.relativeTolerance * std::max(res.chi2, 1e-300); };
+  core::LevenbergMarquardtSettings settings;  // mu from 1e-3, x10 per rejection, net /3 per acceptance
+  settings.maxIterations = options.maxIterations;
+  settings.maxTries = 12;
+  settings.increase = 10;
+  settings.decrease = 30, settings.minDamping = 1e-9, settings.rebound = 10;
+  settings.jacobianAtSolution = options.statistics;
+  const core::LevenbergMarquardtSummary s = core::runLevenbergMarquardt(lm, settings);
+  res.iterations = s.iterations;
+  // no descent left from the solution also counts as converged
+  res.stop = s.stop == core::LmStop::IterationLimit ? "iteration limit" : "converged";
+  if (options.statistics) calcStatistics(p, s.jacobian, res), res.jacobian = s.jacobian;
   else res.atBound = Eigen::VectorXi::Zero(res.x.size());
   return res;
 }

@@ -1,6 +1,7 @@
 #pragma once
-// Bounded nonlinear least squares (Levenberg-Marquardt, Marquardt 1963, with the box handled by
-// clamping the step and freezing parameters held at a bound by the gradient) and the statistics of
+// Bounded nonlinear least squares (the Levenberg-Marquardt iterations of core/levenberg_marquardt.h,
+// with the box handled by clamping the step and freezing parameters held at a bound by the gradient,
+// and a forward-difference Jacobian) and the statistics of
 // its solution: covariance s^2 (J'J)^-1 with s^2 = chi2 / (n - p), standard errors, correlation.
 #include <Eigen/Dense>
 #include <functional>

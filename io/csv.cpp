@@ -137,12 +137,6 @@ CsvTable readCsv(const std::filesystem::path& path, const std::vector<std::strin
   return table;
 }
 
-std::string formatNumber(double value, int significantDigits) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, "%.*g", significantDigits, value);
-  return buf;
-}
-
 CsvWriter::CsvWriter(const std::vector<std::string>& header) : header_(header) {
   for (size_t j = 0; j < header.size(); ++j) text_ += (j ? "," : "") + header[j];
   text_ += "\n";

@@ -4,6 +4,8 @@
 #include <string>
 #include <vector>
 
+#include "io/number.h"  // formatNumber, the cells' format
+
 namespace motostab::io {
 
 /// A numeric table read from a CSV file with a header row. Lines starting with '#' and blank
@@ -37,9 +39,6 @@ CsvTable readCsv(const std::filesystem::path& path, const std::vector<std::strin
 
 /// Splits `text` at every `separator`; a trailing separator yields a trailing empty field.
 std::vector<std::string> splitFields(const std::string& text, char separator);
-
-/// Formats a number with `significantDigits` (17 round-trips a double exactly).
-std::string formatNumber(double value, int significantDigits = 17);
 
 /// Builds CSV text row by row; cells are strings or numbers (written with 17 significant digits).
 /// Every number is checked: a non-finite one is a ResultError naming its column and row, so no output

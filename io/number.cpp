@@ -1,6 +1,7 @@
 #include "io/number.h"
 
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <string>
 
@@ -17,6 +18,22 @@ std::optional<double> parseFiniteNumber(std::string_view text) {
   const double v = std::strtod(t.c_str(), &end);
   if (end != t.c_str() + t.size() || !std::isfinite(v)) return std::nullopt;
   return v;
+}
+
+std::string formatNumber(double value, int significantDigits) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.*g", significantDigits, value);
+  return buf;
+}
+
+std::string formatShortest(double value) {
+  char buf[40];
+  for (int digits = 15; digits <= 17; ++digits) {
+    std::snprintf(buf, sizeof buf, "%.*g", digits, value);
+    const auto back = parseFiniteNumber(buf);
+    if (back && *back == value) break;
+  }
+  return buf;
 }
 
 }  // namespace motostab::io

@@ -5,6 +5,8 @@
 #include <cstdio>
 #include <stdexcept>
 
+#include "io/result_error.h"
+
 namespace motostab::modal {
 namespace {
 
@@ -68,7 +70,7 @@ BandChoice chooseBand(const FrfEstimate& frf, const AutomaticSettingsOptions& o)
     char why[160];
     std::snprintf(why, sizeof why, "no usable band: the coherence (median over %d bins) stays below %.3g up to the "
                   "force limit %.6g Hz", o.coherenceWindowBins, o.bandCoherence, frf.frequency[forceBin]);
-    throw std::runtime_error(why);
+    throw io::ResultError(why);
   }
   BandChoice b;
   b.fMin = frf.frequency[lo];

@@ -64,7 +64,7 @@ struct OrderChoice {
   int minOrder = 4, maxOrder = 40;
 };
 
-/// Band from the data (see the file comment). Throws std::runtime_error if no bin qualifies.
+/// Band from the data (see the file comment). Throws io::ResultError if no bin qualifies.
 BandChoice chooseBand(const FrfEstimate& frf, const AutomaticSettingsOptions& options = {});
 
 /// Exponential window from the responses (see the file comment).

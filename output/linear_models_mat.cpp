@@ -55,14 +55,14 @@ std::vector<double> stack(const std::vector<LinearModel>& models, Eigen::Index r
 }
 
 void checkModels(const std::vector<LinearModel>& models) {
-  if (models.empty()) throw std::invalid_argument("writeLinearModelsMat: no models");
+  if (models.empty()) throw std::logic_error("writeLinearModelsMat: no models");
   const LinearModel& first = models.front();
   for (const LinearModel& lm : models) {
     bool same = lm.states.size() == first.states.size() && lm.inputNames == first.inputNames;
     for (size_t i = 0; same && i < lm.states.size(); ++i) same = lm.states[i].name == first.states[i].name;
-    if (!same) throw std::invalid_argument("writeLinearModelsMat: the models differ in their states or inputs");
+    if (!same) throw std::logic_error("writeLinearModelsMat: the models differ in their states or inputs");
     if (lm.B.rows() != lm.A.rows() || lm.B.cols() != static_cast<Eigen::Index>(lm.inputNames.size()))
-      throw std::invalid_argument("writeLinearModelsMat: a model without its input matrix B");
+      throw std::logic_error("writeLinearModelsMat: a model without its input matrix B");
   }
 }
 

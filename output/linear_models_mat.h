@@ -16,7 +16,7 @@ namespace motostab::output {
 ///   state_names  n x 1 cell of char rows (LinearModel::states, the rows and columns of A)
 ///   input_names  m x 1 cell of char rows (LinearModel::inputNames, the columns of B)
 /// for the K models in order. Every model needs the states and inputs of the first and a B
-/// (std::invalid_argument otherwise, e.g. a sweep run without SweepOptions::linearize.computeB).
+/// (std::logic_error otherwise, a caller's bug, e.g. a sweep run without SweepOptions::linearize.computeB).
 /// Written completely or not at all (io/atomic_file.h); std::runtime_error if matio fails.
 void writeLinearModelsMat(const std::filesystem::path& file, const std::vector<analysis::LinearModel>& models);
 

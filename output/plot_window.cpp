@@ -6,10 +6,13 @@
 #include <limits>
 #include <sstream>
 
+#include "io/number.h"
+
 namespace motostab::output {
 
 using analysis::ModeBranch;
 using analysis::ModeLabel;
+using io::formatNumber;
 
 namespace {
 
@@ -20,11 +23,7 @@ bool isNamed(ModeLabel label, const std::vector<ModeLabel>& modes) {
 }
 
 // A number for a legend: 3 significant digits.
-std::string formatShort(double x) {
-  std::ostringstream os;
-  os << std::setprecision(3) << x;
-  return os.str();
-}
+std::string formatShort(double x) { return formatNumber(x, 3); }
 
 }  // namespace
 

@@ -70,11 +70,9 @@ std::string plotLocus(const SweepResult& sweep, const std::string& note) {
 }
 
 std::string formatSpeed(double v, int decimals) {
+  if (decimals < 0) return formatNumber(v);
   std::ostringstream os;
-  if (decimals < 0)
-    os << std::setprecision(17) << v;
-  else
-    os << std::fixed << std::setprecision(decimals) << v;
+  os << std::fixed << std::setprecision(decimals) << v;
   return os.str();
 }
 

@@ -45,7 +45,7 @@ YAML::Node toYaml(const py::handle& v, const std::string& path) {
   if (isArray(v)) return toYaml(object.attr("tolist")(), path);
   if (PyIndex_Check(v.ptr())) return YAML::Node(py::str(py::int_(object)).cast<std::string>());
   if (PyFloat_Check(v.ptr()) || py::hasattr(v, "__float__"))
-    return YAML::Node(scenario::formatShortest(py::float_(object).cast<double>()));
+    return YAML::Node(io::formatShortest(py::float_(object).cast<double>()));
   throw InputError({"", 0, 0, path}, "a " + py::str(v.get_type().attr("__name__")).cast<std::string>() +
                                          " cannot be a scenario value (numbers, strings, booleans, None, dicts and lists can)");
 }

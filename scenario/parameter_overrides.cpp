@@ -1,6 +1,5 @@
 #include "scenario/parameter_overrides.h"
 
-#include <cstdio>
 
 #include "io/number.h"
 #include "io/yaml_map.h"
@@ -9,20 +8,11 @@ namespace motostab::scenario {
 
 using io::ParsedOverride;
 using io::copyTree;
+using io::formatShortest;
 using io::makeOverrideScalar;
 using io::parseFiniteNumber;
 using io::parseOverride;
 using io::setKeyPath;
-
-std::string formatShortest(double value) {
-  char buf[40];
-  for (int digits = 15; digits <= 17; ++digits) {
-    std::snprintf(buf, sizeof buf, "%.*g", digits, value);
-    const auto back = parseFiniteNumber(buf);
-    if (back && *back == value) break;
-  }
-  return buf;
-}
 
 std::string ParameterOverride::format() const {
   if (!text.empty()) return text;

@@ -58,7 +58,4 @@ class ParameterOverrides {
   std::vector<ParameterOverride> items_;
 };
 
-/// The shortest decimal text (up to 17 significant digits) that reads back to exactly `value`.
-std::string formatShortest(double value);
-
 }  // namespace motostab::scenario

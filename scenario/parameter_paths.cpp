@@ -3,9 +3,9 @@
 #include <cmath>
 #include <utility>
 #include <vector>
-#include <cstdio>
 
 #include "io/input_error.h"
+#include "io/number.h"
 #include "io/yaml_map.h"
 
 namespace motostab::scenario {
@@ -103,11 +103,7 @@ double getScalarParameter(const YAML::Node& tree, const std::string& path) {
   return v;
 }
 
-std::string formatOverride(const std::string& path, double value) {
-  char buf[40];
-  std::snprintf(buf, sizeof buf, "%.17g", value);
-  return path + "=" + buf;
-}
+std::string formatOverride(const std::string& path, double value) { return path + "=" + io::formatNumber(value); }
 
 double getDefaultSigma(const ScalarParameter& p) {
   switch (p.kind) {

@@ -1,8 +1,8 @@
 #include "scenario/plausibility.h"
 
 #include <cmath>
-#include <sstream>
 
+#include "io/number.h"
 #include "io/yaml_map.h"
 #include "scenario/whole_vehicle.h"
 
@@ -32,11 +32,7 @@ io::InputLocation locateKey(const YAML::Node& tree, const std::string& file, con
   return where;
 }
 
-std::string format(double v) {
-  std::ostringstream os;
-  os << v;
-  return os.str();
-}
+std::string format(double v) { return io::formatNumber(v, 6); }
 
 class Checker {
  public:

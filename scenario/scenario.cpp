@@ -9,6 +9,7 @@
 #include "scenario/plausibility.h"
 #include "scenario/scenario_source.h"
 #include "io/csv.h"
+#include "io/number.h"
 #include "io/output_folder.h"
 #include "scenario/whole_vehicle.h"
 #include "io/yaml_map.h"
@@ -52,11 +53,7 @@ BodySpec readBody(YamlMap m) {
   return b;
 }
 
-std::string formatAssumed(double value, const std::string& unit) {
-  std::ostringstream os;
-  os << value << " " << unit;
-  return os.str();
-}
+std::string formatAssumed(double value, const std::string& unit) { return io::formatNumber(value, 6) + " " + unit; }
 
 // A wheel. With `assumed` (a scenario with `total:`) its mass and inertias may be left out: the
 // defaults of getDefaultWheel, each recorded in `assumed`.

@@ -4,6 +4,7 @@
 #include "analysis/linearize.h"
 #include "analysis/state_function.h"
 #include "io/input_error.h"
+#include "io/result_error.h"
 #include "simulation/simulation_detail.h"
 
 namespace motostab::simulation {
@@ -65,14 +66,14 @@ void applyInitialRates(const VehicleModel& model, State& s, const std::vector<Pe
       priority.push_back(j);
   const std::vector<int> dep = chooseDependentColumns(G, priority);
   if (static_cast<int>(dep.size()) != mv)
-    throw std::runtime_error("initial rates: the velocity constraints cannot be solved for the dependent rates");
+    throw io::ResultError("initial rates: the velocity constraints cannot be solved for the dependent rates");
   Eigen::MatrixXd Gdep(mv, mv);
   for (int k = 0; k < mv; ++k) Gdep.col(k) = G.col(dep[k]);
   const Eigen::VectorXd du = Gdep.partialPivLu().solve(-err0.tail(mv));
   for (int k = 0; k < mv; ++k) s.updU()[dep[k]] += du[k];
   fn.calcConstraintErrors(s, err);
   if (err.tail(mv).lpNorm<Eigen::Infinity>() > 1e-9)
-    throw std::runtime_error("initial rates: velocity constraint error remains after the solve");
+    throw io::ResultError("initial rates: velocity constraint error remains after the solve");
 }
 
 namespace detail {

@@ -97,7 +97,7 @@ SimulationResult runSimulation(const scenario::Scenario& scenario, plugins::Plug
 
 /// Sets the initial rate offsets of `perturbations` on `state` (rad/s added to roll_rate or
 /// steer_rate) and re-solves the velocity constraints for the dependent rates, keeping the
-/// perturbed rates, roll_rate, steer_rate and the forward speed vx. Throws std::runtime_error if the
+/// perturbed rates, roll_rate, steer_rate and the forward speed vx. Throws io::ResultError if the
 /// constraints cannot be solved.
 void applyInitialRates(const vehicle::VehicleModel& model, SimTK::State& state, const std::vector<Perturbation>& perturbations);
 

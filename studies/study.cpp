@@ -1,9 +1,10 @@
 #include "studies/study.h"
 
 #include <cmath>
-#include <future>
 #include <memory>
 
+#include "core/parallel.h"
+#include "io/result_error.h"
 #include "scenario/scenario_source.h"
 
 namespace motostab::studies {
@@ -33,7 +34,7 @@ const ModeBranch* findBranch(const SweepResult& sweep, analysis::ModeLabel label
 
 ModeShape calcWeaveShape(const VehicleModel& model, const SweepResult& sweep, double speed, const SweepOptions& opt) {
   const ModeBranch* weave = findBranch(sweep, analysis::ModeLabel::Weave);
-  if (!weave) throw std::runtime_error("no weave mode in the sweep");
+  if (!weave) throw io::ResultError("no weave mode in the sweep: no mode shape at " + std::to_string(speed) + " m/s");
   size_t k = 0;
   for (size_t i = 0; i < sweep.speeds.size(); ++i)
     if (std::abs(sweep.speeds[i] - speed) < std::abs(sweep.speeds[k] - speed)) k = i;
@@ -106,13 +107,7 @@ StudyResult runStudy(const ScenarioSource& source, const StudyOptions& opt) {
     const VehicleModel model(source.load(jobs[j].overrides));
     results[j] = runSweep(model, opt.sweep);
   };
-  const int threads = std::max(1, opt.threads);
-  for (size_t start = 0; start < jobs.size(); start += threads) {
-    std::vector<std::future<void>> running;
-    for (size_t j = start; j < std::min(jobs.size(), start + threads); ++j)
-      running.push_back(std::async(std::launch::async, runJob, j));
-    for (auto& f : running) f.get();
-  }
+  core::runParallel(jobs.size(), opt.threads, runJob);
   for (size_t j = 0; j < jobs.size(); ++j)
     (jobs[j].halved ? out.halved : out.nominal).push_back({jobs[j].name, jobs[j].overrides, std::move(results[j])});
 

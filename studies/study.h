@@ -53,6 +53,7 @@ struct StudyResult {
 StudyResult runStudy(const scenario::ScenarioSource& source, const StudyOptions& options);
 
 /// The weave shape of `model` at `speed`, continuing the weave of `sweep` (seed Fig. 12).
+/// io::ResultError if the sweep has no weave.
 ModeShape calcWeaveShape(const vehicle::VehicleModel& model, const analysis::SweepResult& sweep, double speed, const analysis::SweepOptions& options);
 
 /// The branch labelled `label` (at most speeds) with a non-negative imaginary part at the last speed

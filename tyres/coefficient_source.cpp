@@ -83,6 +83,25 @@ class YamlSource : public CoefficientSource {
   YamlMap& m_;
 };
 
+class MapSource : public CoefficientSource {
+ public:
+  MapSource(const std::map<std::string, double>& m, const std::map<std::string, double>* scaling, const std::string& origin)
+      : CoefficientSource(scaling), m_(m), origin_(origin) {}
+  [[noreturn]] void fail(const std::string& name, const std::string& message) const override {
+    throw io::InputError({origin_, 0, 0, name}, message);
+  }
+
+ protected:
+  std::optional<double> findOwn(const std::string& name) const override {
+    const auto it = m_.find(name);
+    return it == m_.end() ? std::nullopt : std::optional<double>(it->second);
+  }
+
+ private:
+  std::map<std::string, double> m_;
+  std::string origin_;
+};
+
 }  // namespace
 
 std::unique_ptr<CoefficientSource> makeTirSource(const TirFile& file, const std::map<std::string, double>* scaling) {
@@ -91,6 +110,11 @@ std::unique_ptr<CoefficientSource> makeTirSource(const TirFile& file, const std:
 
 std::unique_ptr<CoefficientSource> makeYamlSource(YamlMap& coefficients, const std::map<std::string, double>* scaling) {
   return std::make_unique<YamlSource>(coefficients, scaling);
+}
+
+std::unique_ptr<CoefficientSource> makeMapSource(const std::map<std::string, double>& coefficients,
+                                                 const std::map<std::string, double>* scaling, const std::string& origin) {
+  return std::make_unique<MapSource>(coefficients, scaling, origin);
 }
 
 void warnUnused(const CoefficientSource& source, const std::string& name, std::ostream& out) {

@@ -46,6 +46,12 @@ class CoefficientSource {
 std::unique_ptr<CoefficientSource> makeTirSource(const TirFile& file, const std::map<std::string, double>* scaling);
 /// Coefficients of an inline YAML map (each key must be read, unknown keys are errors at finish()).
 std::unique_ptr<CoefficientSource> makeYamlSource(io::YamlMap& coefficients, const std::map<std::string, double>* scaling);
+/// Coefficients given in code (the typed source: name -> value, names of the .tir keys), with scaling
+/// factors from `scaling` (may be null) taking precedence. A missing or refused coefficient is an
+/// InputError at {origin, key: the coefficient's name}. The map is copied.
+std::unique_ptr<CoefficientSource> makeMapSource(const std::map<std::string, double>& coefficients,
+                                                 const std::map<std::string, double>* scaling,
+                                                 const std::string& origin = "coefficients");
 
 /// Writes one warning line to `out` naming the source's unused nonzero coefficients (listUnused), if any;
 /// `name` names the source (a file path).

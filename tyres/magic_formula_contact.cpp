@@ -87,9 +87,13 @@ class MagicFormulaContact : public TyreContactModel {
 
 }  // namespace
 
+std::unique_ptr<ContactModel> makeMagicFormulaContact(MagicFormulaTyre front, MagicFormulaTyre rear) {
+  return std::make_unique<MagicFormulaContact>(std::move(front), std::move(rear));
+}
+
 void registerMagicFormula(PluginRegistrar& registry) {
   registry.addContactModel("magic_formula", [](YamlMap& m) -> std::unique_ptr<ContactModel> {
-    return std::make_unique<MagicFormulaContact>(readMagicFormulaTyre(m.getMap("front")), readMagicFormulaTyre(m.getMap("rear")));
+    return makeMagicFormulaContact(readMagicFormulaTyre(m.getMap("front")), readMagicFormulaTyre(m.getMap("rear")));
   });
 }
 

@@ -21,9 +21,18 @@
 //
 // Scenario: a map per tyre under `front` and `rear`, keys in tyres/magic_formula_tyre.h. A law with a
 // crown radius (motorcycle: CROWN_RADIUS) must sit on a wheel of that crown_radius_m.
+#include <memory>
+
 #include "plugins/plugin_api.h"
+#include "tyres/magic_formula_tyre.h"
 
 namespace motostab::tyres {
+
+/// The `magic_formula` contact model of two typed tyres, apart from the scenario reader (whose factory
+/// builds each with readMagicFormulaTyre). A tyre's law comes from makeTyreForceLaw of a coefficient
+/// source (a .tir file, or makeMapSource for coefficients given in code); its relaxation length is NaN
+/// (the law's), 0 (no lag) or at least kMinRelaxationLength, m.
+std::unique_ptr<plugins::ContactModel> makeMagicFormulaContact(MagicFormulaTyre front, MagicFormulaTyre rear);
 
 /// Registers `magic_formula`.
 void registerMagicFormula(plugins::PluginRegistrar& registry);

@@ -242,10 +242,14 @@ std::pair<LinearTyreParameters, LinearTyreParameters> readRelaxationLinearTyres(
   return {front, side("rear")};
 }
 
+std::unique_ptr<ContactModel> makeRelaxationLinear(const LinearTyreParameters& front, const LinearTyreParameters& rear) {
+  return std::make_unique<RelaxationLinear>(front, rear);
+}
+
 void registerRelaxationLinear(PluginRegistrar& registry) {
   registry.addContactModel("relaxation_linear", [](YamlMap& m) -> std::unique_ptr<ContactModel> {
     const auto [front, rear] = readRelaxationLinearTyres(m);
-    return std::make_unique<RelaxationLinear>(front, rear);
+    return makeRelaxationLinear(front, rear);
   });
 }
 

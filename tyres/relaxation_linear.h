@@ -80,6 +80,12 @@ std::pair<LinearTyreParameters, LinearTyreParameters> readRelaxationLinearTyres(
 /// calcRelaxationLength's; it has no nominal load and no radius of its own (NaN).
 std::unique_ptr<TyreForceLaw> makeLinearTyreForceLaw(const LinearTyreParameters& p);
 
+/// The `relaxation_linear` contact model of two typed tyres, apart from the scenario reader (whose
+/// factory builds it from readRelaxationLinearTyres): the values are not checked again, so give ones
+/// the reader accepts.
+std::unique_ptr<plugins::ContactModel> makeRelaxationLinear(const LinearTyreParameters& front,
+                                                            const LinearTyreParameters& rear);
+
 /// Registers `relaxation_linear` (readRelaxationLinearTyres).
 void registerRelaxationLinear(plugins::PluginRegistrar& registry);
 

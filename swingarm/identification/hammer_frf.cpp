@@ -81,7 +81,7 @@ void chooseLscfOptions(const FrfTest& test, FrfResult& res) {
   if (res.automaticBand) {
     try {
       res.band = modal::chooseBand(frf);
-    } catch (const std::runtime_error& e) {  // no usable band: analyse the whole record, say why
+    } catch (const io::ResultError& e) {  // no usable band: analyse the whole record, say why
       res.band.fMin = 5 * frf.df;
       res.band.fMax = 0.8 * frf.frequency.back();
       res.band.description = formatNumber(res.band.fMin, 6) + "-" + formatNumber(res.band.fMax, 6) +

@@ -102,7 +102,7 @@ TEST(Trim, TrimPointRestoresTheTrimmedState) {
   EXPECT_LE(res.lpNorm<Eigen::Infinity>(), TrimOptions().tolerance);
   EXPECT_EQ(r.speed, 15.0);
   const VehicleModel other(loadScenario(kScenario));
-  EXPECT_THROW(restoreTrim(other, p), std::invalid_argument);
+  EXPECT_THROW(restoreTrim(other, p), std::logic_error);
 }
 
 }  // namespace

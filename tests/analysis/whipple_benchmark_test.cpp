@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "analysis/sweep.h"
+#include "tests/support/benchmark_equations.h"
 #include "scenario/scenario.h"
 
 namespace motostab::analysis {
@@ -141,13 +142,12 @@ TEST_F(WhippleBenchmark, CyclicColumnsAreZero) {
   }
 }
 
-// M q'' + v C1 q' + (g K0 + v^2 K2) q = f with q = [phi, delta] (benchmark: steer positive right,
+// M q'' + v C1 q' + (g K0 + v^2 K2) q = f with q = [phi, delta], the published matrices of
+// tests/support/benchmark_equations.h (benchmark: steer positive right,
 // ours positive left, so S = diag(1, -1) maps one onto the other).
 TEST_F(WhippleBenchmark, LinearEquationsReproduceMC1K0K2) {
-  const Eigen::Matrix2d Mref = (Eigen::Matrix2d() << 80.81722, 2.31941332208709, 2.31941332208709, 0.29784188199686).finished();
-  const Eigen::Matrix2d C1ref = (Eigen::Matrix2d() << 0, 33.86641391492494, -0.85035641456978, 1.68540397397560).finished();
-  const Eigen::Matrix2d K0ref = (Eigen::Matrix2d() << -80.95, -2.59951685249872, -2.59951685249872, -0.80329488458618).finished();
-  const Eigen::Matrix2d K2ref = (Eigen::Matrix2d() << 0, 76.59734589573222, 0, 2.65431523794604).finished();
+  const testing::Benchmark ref = testing::getTable1Matrices();
+  const Eigen::Matrix2d &Mref = ref.M, &C1ref = ref.C1, &K0ref = ref.K0, &K2ref = ref.K2;
   const Eigen::Matrix2d S = Eigen::Vector2d(1, -1).asDiagonal();
   const double g = 9.81;
   auto blocks = [&](double v, Eigen::Matrix2d& M, Eigen::Matrix2d& C, Eigen::Matrix2d& K) {

@@ -45,6 +45,22 @@ TEST(ExitCodes, Sweep) {
   expectExit({"sweep", kWhipple, "--speeds", "1:2:1", "--roll-deg", "85"}, 3, "trim failed at speed 1 m/s, roll 85 deg", dir);
 }
 
+// A speed x roll map whose every roll fails to trim (the roll continuation stalls near 11 deg at 1 m/s).
+TEST(ExitCodes, SweepMap) {
+  const fs::path dir = makeTempDir("exit_sweep_map");
+  expectExit({"sweep", kWhipple, "--speeds", "1:2:1", "--roll-deg", "80:85:0"}, 2, "--roll-deg", dir);
+  expectExit({"sweep", kWhipple, "--speeds", "1:2:1", "--roll-deg", "80:85:5"}, 3,
+             "no roll angle of the map could be trimmed", dir);
+}
+
+// The Magic Formula supersport has no straight-running trim at 150 m/s: nothing to compare.
+TEST(ExitCodes, Compare) {
+  const fs::path dir = makeTempDir("exit_compare");
+  const std::string mf = kScenarios + "supersport-mf.yaml";
+  expectExit({"compare", mf}, 2, "scenarios", dir);
+  expectExit({"compare", mf, mf, "--speeds", "150:150:1"}, 3, "trim failed at speed 150 m/s", dir);
+}
+
 TEST(ExitCodes, Linearize) {
   const fs::path dir = makeTempDir("exit_linearize");
   expectExit({"linearize", kWhipple, "--speed", "-1"}, 2, "--speed", dir);

@@ -9,6 +9,7 @@
 
 #include "diagnosis/prediction.h"
 #include "core/portable_random.h"
+#include "io/number.h"
 #include "scenario/parameter_overrides.h"
 #include "tests/support/temp_dir.h"
 
@@ -19,7 +20,7 @@ namespace motostab::diagnosis {
 using analysis::LinearModel;
 using core::PortableRandom;
 using io::InputError;
-using scenario::formatShortest;
+using io::formatShortest;
 
 namespace {
 

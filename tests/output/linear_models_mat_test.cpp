@@ -70,9 +70,9 @@ TEST(LinearModelsMat, RefusesModelsItCannotStack) {
   LinearModel renamed = a;
   renamed.states[0].name = "other";
   const auto file = makeTempDir("mat_refused") / "linear_models.mat";
-  EXPECT_THROW(writeLinearModelsMat(file, {a, noB}), std::invalid_argument);
-  EXPECT_THROW(writeLinearModelsMat(file, {a, renamed}), std::invalid_argument);
-  EXPECT_THROW(writeLinearModelsMat(file, {}), std::invalid_argument);
+  EXPECT_THROW(writeLinearModelsMat(file, {a, noB}), std::logic_error);
+  EXPECT_THROW(writeLinearModelsMat(file, {a, renamed}), std::logic_error);
+  EXPECT_THROW(writeLinearModelsMat(file, {}), std::logic_error);
   EXPECT_FALSE(std::filesystem::exists(file));
 }
 

@@ -11,6 +11,7 @@
 #include <functional>
 
 #include "core/portable_random.h"
+#include "io/number.h"
 #include "io/yaml_map.h"
 #include "tests/support/temp_dir.h"
 
@@ -19,6 +20,7 @@ namespace motostab::scenario {
 using core::PortableRandom;
 using io::InputError;
 using io::copyTree;
+using io::formatShortest;
 using io::getYamlFileOpenCount;
 using io::loadYamlFile;
 

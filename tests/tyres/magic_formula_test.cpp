@@ -391,24 +391,6 @@ const std::map<std::string, double> kFront120 = {
     {"QDZ10", 0.25439},   {"QDZ11", -0.17873},     {"RBX1", 13.476},    {"RBX2", 11.354},    {"RCX1", 1.1231},
     {"RBY1", 7.7856},     {"RBY2", 8.1697},        {"RBY3", -0.05914},  {"RCY1", 1.0533}};
 
-class MapSource : public CoefficientSource {
- public:
-  MapSource(const std::map<std::string, double>& m, const std::map<std::string, double>* scaling)
-      : CoefficientSource(scaling), m_(m) {}
-  [[noreturn]] void fail(const std::string& name, const std::string& message) const override {
-    throw InputError({"map", 0, 0, name}, message);
-  }
-
- protected:
-  std::optional<double> findOwn(const std::string& name) const override {
-    const auto it = m_.find(name);
-    return it == m_.end() ? std::nullopt : std::optional<double>(it->second);
-  }
-
- private:
-  std::map<std::string, double> m_;
-};
-
 // The motorcycle Magic Formula written out from Sharp, Evangelou & Limebeer (2004) sec. 4 and Evangelou
 // (2004) ch. 9, in the paper's variables: a slip a and a camber g (rad) that both push the tyre to +y,
 // cos a written 1/sqrt(1 + a^2), with the scaling factors L (1 when absent). R0 of the moments is the
@@ -496,7 +478,7 @@ TEST(MotorcycleMagicFormula, MatchesSharpEvangelouLimebeerAtDrawnPoints) {
       coefficients["PDY2"] = rng.drawUniform(-0.2, 0.2);
       coefficients["PDY3"] = rng.drawUniform(0, 0.5);
     }
-    const auto law = makeMotorcycleMagicFormula(MapSource(coefficients, &scaling), cv);
+    const auto law = makeMotorcycleMagicFormula(*makeMapSource(coefficients, &scaling), cv);
     const SharpTyre ref{coefficients, scaling, coefficients.at("CROWN_RADIUS")};
     const double Fz = rng.drawUniform(200, 3000), alpha = rng.drawUniform(-0.25, 0.25), gamma = rng.drawUniform(-M_PI / 3, M_PI / 3);
     const double s = rng.drawUniform(-0.15, 0.15), V = rng.drawUniform(2, 60);
@@ -519,7 +501,7 @@ TEST(MotorcycleMagicFormula, MatchesSharpEvangelouLimebeerAtDrawnPoints) {
   // negative in ISO signs whatever the convention.
   auto c = [](const char* k) { return kFront120.at(k); };
   for (const auto& cv : kAllConventions) {
-    const auto law = makeMotorcycleMagicFormula(MapSource(kFront120, nullptr), cv);
+    const auto law = makeMotorcycleMagicFormula(*makeMapSource(kFront120, nullptr), cv);
     for (double Fz : {600.0, 1100.0, 1900.0}) {
       const double Kya = c("PKY1") * c("FNOMIN") * std::sin(c("PKY2") * std::atan(Fz / (c("PKY3") * c("FNOMIN"))));
       const double Kyg = (c("PKY6") + c("PKY7") * (Fz - c("FNOMIN")) / c("FNOMIN")) * Fz;
@@ -543,10 +525,10 @@ TEST(MotorcycleMagicFormula, OnlyTheRby3TermTellsThePaperAxesApart) {
   const MotorcycleConventions up{MotorcyclePaperAxes::ZUp, MotorcycleSlipVariable::Angle};
   auto symmetric = kFront120;
   symmetric["RBY3"] = 0;
-  const auto lawDown = makeMotorcycleMagicFormula(MapSource(kFront120, nullptr), down);
-  const auto lawUp = makeMotorcycleMagicFormula(MapSource(kFront120, nullptr), up);
-  const auto symDown = makeMotorcycleMagicFormula(MapSource(symmetric, nullptr), down);
-  const auto symUp = makeMotorcycleMagicFormula(MapSource(symmetric, nullptr), up);
+  const auto lawDown = makeMotorcycleMagicFormula(*makeMapSource(kFront120, nullptr), down);
+  const auto lawUp = makeMotorcycleMagicFormula(*makeMapSource(kFront120, nullptr), up);
+  const auto symDown = makeMotorcycleMagicFormula(*makeMapSource(symmetric, nullptr), down);
+  const auto symUp = makeMotorcycleMagicFormula(*makeMapSource(symmetric, nullptr), up);
   PortableRandom rng(7341);
   for (int i = 0; i < 100; ++i) {
     const double Fz = rng.drawUniform(300, 3000), alpha = rng.drawUniform(-0.3, 0.3), gamma = rng.drawUniform(-1, 1);
@@ -586,7 +568,7 @@ TEST(MotorcycleMagicFormula, OnlyTheRby3TermTellsThePaperAxesApart) {
 // 0.116 m/rad.
 TEST(MotorcycleMagicFormula, CamberTwistsTowardsTheLeanAndSlipAlignsTowardsTheVelocity) {
   for (const auto& cv : kAllConventions) {
-    const auto law = makeMotorcycleMagicFormula(MapSource(kFront120, nullptr), cv);
+    const auto law = makeMotorcycleMagicFormula(*makeMapSource(kFront120, nullptr), cv);
     const double Fz = kFront120.at("FNOMIN");
     for (double gamma : {0.2, 0.4, 0.8, 1.0}) {
       const TyreForces right = law->calcForces({Fz, 0, 0, gamma, 25});
@@ -612,8 +594,8 @@ TEST(MotorcycleMagicFormula, CamberTwistsTowardsTheLeanAndSlipAlignsTowardsTheVe
 TEST(MotorcycleMagicFormula, SlipVariableIsTheAngleOrItsTangent) {
   const SharpTyre ref{kFront120, {}, kFront120.at("CROWN_RADIUS")};
   const double Fz = 1100, alpha = 10 * M_PI / 180;
-  const auto angle = makeMotorcycleMagicFormula(MapSource(kFront120, nullptr), {MotorcyclePaperAxes::ZDown, MotorcycleSlipVariable::Angle});
-  const auto tangent = makeMotorcycleMagicFormula(MapSource(kFront120, nullptr), {MotorcyclePaperAxes::ZDown, MotorcycleSlipVariable::Tangent});
+  const auto angle = makeMotorcycleMagicFormula(*makeMapSource(kFront120, nullptr), {MotorcyclePaperAxes::ZDown, MotorcycleSlipVariable::Angle});
+  const auto tangent = makeMotorcycleMagicFormula(*makeMapSource(kFront120, nullptr), {MotorcyclePaperAxes::ZDown, MotorcycleSlipVariable::Tangent});
   EXPECT_NEAR(angle->calcForces({Fz, 0, alpha, 0, 20}).Fy, -ref.Fy0(Fz, alpha, 0), 1e-9 * Fz);
   EXPECT_NEAR(tangent->calcForces({Fz, 0, alpha, 0, 20}).Fy, -ref.Fy0(Fz, std::tan(alpha), 0), 1e-9 * Fz);
   EXPECT_NE(angle->calcForces({Fz, 0, alpha, 0, 20}).Fy, tangent->calcForces({Fz, 0, alpha, 0, 20}).Fy);
@@ -622,10 +604,10 @@ TEST(MotorcycleMagicFormula, SlipVariableIsTheAngleOrItsTangent) {
 TEST(MotorcycleMagicFormula, RelaxationCoefficientsAllOrNone) {
   auto m = kFront120;
   m.erase("RELAX_C2");
-  EXPECT_THROW(makeMotorcycleMagicFormula(MapSource(m, nullptr)), InputError);
+  EXPECT_THROW(makeMotorcycleMagicFormula(*makeMapSource(m, nullptr)), InputError);
   m.erase("RELAX_C1");
   m.erase("RELAX_C3");
-  EXPECT_TRUE(std::isnan(makeMotorcycleMagicFormula(MapSource(m, nullptr))->calcRelaxationLength(1100, 0, 20)));
+  EXPECT_TRUE(std::isnan(makeMotorcycleMagicFormula(*makeMapSource(m, nullptr))->calcRelaxationLength(1100, 0, 20)));
 }
 
 // A relaxation length that is zero or negative at some speed (unstable "relaxation" roots) is refused,
@@ -633,7 +615,7 @@ TEST(MotorcycleMagicFormula, RelaxationCoefficientsAllOrNone) {
 // c2 < 0 and passes: 1.78e-16 < 7.36e-14).
 TEST(MotorcycleMagicFormula, RelaxationLengthPositiveAtEverySpeed) {
   auto refuses = [](std::map<std::string, double> m, const std::string& key) {
-    const InputError e = test::catchInputError([&] { makeMotorcycleMagicFormula(MapSource(m, nullptr)); });
+    const InputError e = test::catchInputError([&] { makeMotorcycleMagicFormula(*makeMapSource(m, nullptr)); });
     EXPECT_EQ(e.getLocation().key, key) << e.what();
   };
   for (double c1 : {-8.633e-6, 0.0}) {
@@ -649,7 +631,7 @@ TEST(MotorcycleMagicFormula, RelaxationLengthPositiveAtEverySpeed) {
   refuses(m, "RELAX_C2");
   m = kFront120;
   m["RELAX_C2"] = -1.333e-8;  // the rear set's sign
-  const auto law = makeMotorcycleMagicFormula(MapSource(m, nullptr));
+  const auto law = makeMotorcycleMagicFormula(*makeMapSource(m, nullptr));
   for (double V = 0; V <= 200; V += 5) EXPECT_GT(law->calcRelaxationLength(1100, 0, V), 0) << V;
 }
 
@@ -662,25 +644,25 @@ TEST(MotorcycleMagicFormula, MeaninglessCoefficientsAreRefused) {
            {"PKY3", 0}, {"PKY4", -1.1}, {"PKY5", -0.41}}) {
     auto m = kFront120;
     m[key] = value;
-    const InputError e = test::catchInputError([&] { makeMotorcycleMagicFormula(MapSource(m, nullptr)); });
+    const InputError e = test::catchInputError([&] { makeMotorcycleMagicFormula(*makeMapSource(m, nullptr)); });
     EXPECT_EQ(e.getLocation().key, key) << e.what();
   }
   const std::map<std::string, double> scaling{{"LTR", -1.0}};
-  EXPECT_EQ(test::catchInputError([&] { makeMotorcycleMagicFormula(MapSource(kFront120, &scaling)); }).getLocation().key, "LTR");
+  EXPECT_EQ(test::catchInputError([&] { makeMotorcycleMagicFormula(*makeMapSource(kFront120, &scaling)); }).getLocation().key, "LTR");
   // PDY2 = 1000: exp(1000 dfz) overflows above about 1.7 FNOMIN; PKY2 = 5: sin(5 atan(Fz/(PKY3 Fz0))) < 0
   // above 0.73 PKY3 Fz0 = 2000 N. Both pass the sign checks; the range check refuses them at the set ("").
   auto overflow = kFront120;
   overflow["PDY2"] = 1000;
-  const InputError inf = test::catchInputError([&] { makeTyreForceLaw(MagicFormulaVariant::Motorcycle, MapSource(overflow, nullptr)); });
+  const InputError inf = test::catchInputError([&] { makeTyreForceLaw(MagicFormulaVariant::Motorcycle, *makeMapSource(overflow, nullptr)); });
   EXPECT_EQ(inf.getLocation().key, "");
   EXPECT_NE(inf.getReason().find("not finite at Fz 2200 N"), std::string::npos) << inf.what();
   auto turning = kFront120;
   turning["PKY2"] = 5;
-  const InputError flip = test::catchInputError([&] { makeTyreForceLaw(MagicFormulaVariant::Motorcycle, MapSource(turning, nullptr)); });
+  const InputError flip = test::catchInputError([&] { makeTyreForceLaw(MagicFormulaVariant::Motorcycle, *makeMapSource(turning, nullptr)); });
   EXPECT_NE(flip.getReason().find("cornering stiffness"), std::string::npos) << flip.what();
   // The published sets load, in every convention.
   for (const auto& cv : kAllConventions)
-    EXPECT_NO_THROW(makeTyreForceLaw(MagicFormulaVariant::Motorcycle, MapSource(kFront120, nullptr), std::nullopt, cv));
+    EXPECT_NO_THROW(makeTyreForceLaw(MagicFormulaVariant::Motorcycle, *makeMapSource(kFront120, nullptr), std::nullopt, cv));
 }
 
 }  // namespace

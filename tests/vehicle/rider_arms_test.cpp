@@ -10,7 +10,7 @@
 #include "extension_test_util.h"
 #include "io/csv.h"
 #include "io/input_error.h"
-#include "meijaard_benchmark.h"
+#include "tests/support/benchmark_equations.h"
 #include "scenario/whole_vehicle.h"
 #include "vehicle/rider_arms.h"
 

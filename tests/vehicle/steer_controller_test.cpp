@@ -10,7 +10,7 @@
 #include "extension_test_util.h"
 #include "io/csv.h"
 #include "core/portable_random.h"
-#include "meijaard_benchmark.h"
+#include "tests/support/benchmark_equations.h"
 #include "vehicle/steer_controller.h"
 
 namespace motostab::vehicle {

@@ -7,7 +7,7 @@
 
 #include "core/portable_random.h"
 #include "extension_test_util.h"
-#include "meijaard_benchmark.h"
+#include "tests/support/benchmark_equations.h"
 #include "vehicle/steer_damper.h"
 
 namespace motostab::vehicle {
