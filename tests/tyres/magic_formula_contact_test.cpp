@@ -23,6 +23,7 @@
 #include "analysis/trim.h"
 #include "tyres/tir_file.h"
 #include "tests/support/analysis_chain.h"
+#include "tests/support/contact_outputs.h"
 
 namespace motostab::tyres {
 
@@ -56,15 +57,6 @@ std::string tyreOverride(const std::string& tir) {
          " rear: {tir: " + tir + ", radial_stiffness_N_per_m: 120000, radial_damping_Ns_per_m: 200}}";
 }
 
-double findOutput(const VehicleModel& m, const SimTK::State& s, const std::string& name) {
-  const auto names = m.getContactOutputNames();
-  const auto values = m.calcContactOutputs(s);
-  for (size_t i = 0; i < names.size(); ++i)
-    if (names[i] == name) return values[i];
-  ADD_FAILURE() << "no output " << name;
-  return 0;
-}
-
 // relaxation_linear parameters equivalent to the zeroed sample at load Fz (N), Pacejka 2012 sec. 4.3.2
 // at nominal pressure; project signs (alpha = -alpha_ISO, phi = -gamma_ISO).
 std::string linearTyre(const TirFile& f, double Fz, double kr) {
@@ -93,10 +85,10 @@ TEST(MagicFormulaContact, StraightRunningLinearisationEqualsRelaxationLinear) {
     const VehicleModel mf(loadScenario(kEnduro, {"aerodynamics.drag_area_m2=0", tyreOverride(tir)}));
     TrimOptions opt;
     const TrimResult trimMf = calcTrim(mf, speed, opt);
-    const double FzFront = findOutput(mf, trimMf.state, "front_tyre_Fz_N"), FzRear = findOutput(mf, trimMf.state, "rear_tyre_Fz_N");
+    const double FzFront = test::findContactOutput(mf, trimMf.state, "front_tyre_Fz_N"), FzRear = test::findContactOutput(mf, trimMf.state, "rear_tyre_Fz_N");
     ASSERT_GT(FzFront, 500);
     ASSERT_GT(FzRear, 500);
-    EXPECT_NEAR(findOutput(mf, trimMf.state, "rear_tyre_slip_ratio"), 0, 1e-12);
+    EXPECT_NEAR(test::findContactOutput(mf, trimMf.state, "rear_tyre_slip_ratio"), 0, 1e-12);
     const VehicleModel lin(loadScenario(kEnduro, {"aerodynamics.drag_area_m2=0",
                                                   "contact={model: relaxation_linear, front: " + linearTyre(f, FzFront, 100000) +
                                                       ", rear: " + linearTyre(f, FzRear, 120000) + "}"}));
@@ -127,7 +119,7 @@ TEST(MagicFormulaContact, TrimsASampleWithShiftsFromAColdStartAndFromStandstill)
   const VehicleModel m(loadScenario(kEnduro, {tyreOverride(tir)}));
   const TrimResult t = calcTrim(m, 10.0);
   EXPECT_LT(t.residualNorm, 1e-10);
-  const double FyFront = findOutput(m, t.state, "front_tyre_Fy_N"), FyRear = findOutput(m, t.state, "rear_tyre_Fy_N");
+  const double FyFront = test::findContactOutput(m, t.state, "front_tyre_Fy_N"), FyRear = test::findContactOutput(m, t.state, "rear_tyre_Fy_N");
   EXPECT_GT(std::abs(FyRear), 0.5) << "the tyres run at slips that balance their shifts";
   EXPECT_GT(std::abs(FyFront), 0.5);
   EXPECT_GT(std::abs(t.state.getQ()[m.getIndices().yaw]), 1e-5);
@@ -187,7 +179,7 @@ TEST(MagicFormulaContact, MotorcycleTurnAtSmallRollIsItsLinearisedTyresTurn) {
     TrimOptions opt;
     opt.roll = rollDeg * M_PI / 180;
     const TrimResult a = calcTrim(mf, speed, opt);
-    const double FzFront = findOutput(mf, a.state, "front_tyre_Fz_N"), FzRear = findOutput(mf, a.state, "rear_tyre_Fz_N");
+    const double FzFront = test::findContactOutput(mf, a.state, "front_tyre_Fz_N"), FzRear = test::findContactOutput(mf, a.state, "rear_tyre_Fz_N");
     const VehicleModel lin(loadScenario(
         supersportMf, {"contact={model: relaxation_linear, front: " + linearFromMotorcycle(contact["front"]["coefficients"], FzFront, speed, 130000) +
                            ", rear: " + linearFromMotorcycle(contact["rear"]["coefficients"], FzRear, speed, 140000) + "}"}));
@@ -198,8 +190,8 @@ TEST(MagicFormulaContact, MotorcycleTurnAtSmallRollIsItsLinearisedTyresTurn) {
     const double torqueA = mf.getInput(a.state, Input::SteerTorque), torqueB = lin.getInput(b.state, Input::SteerTorque);
     const double steerA = a.state.getQ()[ix.steer], steerB = b.state.getQ()[ix.steer];
     const double yawA = a.state.getU()[ix.yaw], yawB = b.state.getU()[ix.yaw];
-    const double mzA = findOutput(mf, a.state, "front_tyre_Mz_Nm"), mzB = findOutput(lin, b.state, "front_tyre_Mz_Nm");
-    const double slipRearA = findOutput(mf, a.state, "rear_tyre_slip_angle_rad"), slipRearB = findOutput(lin, b.state, "rear_tyre_slip_angle_rad");
+    const double mzA = test::findContactOutput(mf, a.state, "front_tyre_Mz_Nm"), mzB = test::findContactOutput(lin, b.state, "front_tyre_Mz_Nm");
+    const double slipRearA = test::findContactOutput(mf, a.state, "rear_tyre_slip_angle_rad"), slipRearB = test::findContactOutput(lin, b.state, "rear_tyre_slip_angle_rad");
     const double error = std::max({std::abs(torqueA - torqueB) / torqueScale, std::abs(steerA - steerB) / std::abs(steerB),
                                    std::abs(yawA - yawB) / std::abs(yawB), std::abs(mzA - mzB) / std::abs(mzB),
                                    std::abs(slipRearA - slipRearB) / std::abs(slipRearB)});

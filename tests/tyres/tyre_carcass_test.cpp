@@ -19,6 +19,7 @@
 #include "core/portable_random.h"
 #include "io/csv.h"
 #include "tyres/relaxation_linear.h"
+#include "tests/support/contact_outputs.h"
 
 namespace motostab::tyres {
 
@@ -61,15 +62,6 @@ std::string makeTyre(const YAML::Node& tyre, const Carcass* carcass, double leng
   return t.str();
 }
 
-double findOutput(const VehicleModel& m, const SimTK::State& s, const std::string& name) {
-  const auto names = m.getContactOutputNames();
-  const auto values = m.calcContactOutputs(s);
-  for (size_t i = 0; i < names.size(); ++i)
-    if (names[i] == name) return values[i];
-  ADD_FAILURE() << "no output " << name;
-  return 0;
-}
-
 // The forward speed of a wheel centre along the wheel's heading in the ground plane, v_C . (a x z), a
 // the spin axis (tyres/tyre_contact.h): in a turn each wheel's differs from the trim speed.
 double calcWheelSpeed(const VehicleModel& m, const SimTK::State& s, const std::string& tyre) {
@@ -106,7 +98,7 @@ TEST(TyreCarcass, LagRateIsSpeedOverTheCarcassRelaxationLength) {
     const LinearModel lin = linearize(m, trim);
     const double Veps = std::sqrt(V * V + 0.01);
     for (const auto& [tyre, c] : {std::pair<std::string, Carcass>{"front", front}, {"rear", rear}}) {
-      const double Fz = findOutput(m, trim.state, tyre + "_tyre_Fz_N");
+      const double Fz = test::findContactOutput(m, trim.state, tyre + "_tyre_Fz_N");
       const double sigma = calcSigma(Fz, contact[tyre]["cornering_stiffness_per_rad"].as<double>(), c, V);
       const int z = lin.findState(tyre + "_tyre_lagged_slip");
       ASSERT_GE(z, 0);
@@ -145,7 +137,7 @@ TEST(TyreCarcass, EigenvaluesAreTheConstantLengthModelsAtTheTrimLoadAndSpeed) {
     auto sigma = [&](const char* tyre, const Carcass& c) {
       const double speed = calcWheelSpeed(carcass, trimC.state, tyre);
       if (opt.roll == 0) EXPECT_NEAR(speed, V, 1e-9 * V);
-      return calcSigma(findOutput(carcass, trimC.state, std::string(tyre) + "_tyre_Fz_N"),
+      return calcSigma(test::findContactOutput(carcass, trimC.state, std::string(tyre) + "_tyre_Fz_N"),
                        contact[tyre]["cornering_stiffness_per_rad"].as<double>(), c, speed);
     };
     const VehicleModel constant(loadScenario(file, {"contact.front=" + makeTyre(contact["front"], nullptr, sigma("front", front)),
