@@ -73,14 +73,28 @@ void restoreContactHeights(const VehicleModel& model, const Eigen::Vector2d& tar
   }
 }
 
+// Newton's method from a roll step can land on an equilibrium with a wheel in the air (Sharp's stiff
+// radial tyres at 6 m/s and 15 deg: the rear frame pitched by -63 deg, the front tyre unloaded, the
+// residual zero). Not a turn of the vehicle: a wheel whose lowest point is above the ground by more
+// than the trim's residual allows fails the step (TrimError), which is then retried with half the step.
+void checkWheelsOnGround(const VehicleModel& model, double speed, const TrimOptions& opt, const TrimResult& res) {
+  const Eigen::Vector2d z = calcContactHeights(model, res.state);
+  const double allowed = std::max(opt.tolerance, res.residualNorm);
+  for (int k = 0; k < 2; ++k)
+    if (!(z[k] <= allowed))
+      throw TrimError(speed, res.residualNorm, res.iterations, opt.roll,
+                      std::string(k == 0 ? "rear" : "front") + " wheel off the ground");
+}
+
 }  // namespace
 
 namespace detail {
 
 // A turn from `res` (a trim at another roll, or straight running: roll 0) to opt.roll, in roll steps of
-// at most opt.rollStep at `speed`, each started from the last two by linear extrapolation (a failed step
-// is retried from the last roll reached with half the step, at most four times); then the turn with
-// opt's condition.
+// at most opt.rollStep at `speed`, each started from the last two by linear extrapolation. A failed step
+// is retried from the last roll reached with half the step, at most four times in a row; a step that
+// succeeds doubles the step again (up to the first), so one hard stretch of roll (where the Jacobian is
+// nearly singular) does not spend the halvings of the others. Then the turn with opt's condition.
 void continueTurn(const VehicleModel& model, double speed, const TrimOptions& opt, TrimResult& res, bool stepWithCondition) {
   const StateFunction fn(model);
   const CoordinateIndices& ix = model.getIndices();
@@ -99,8 +113,9 @@ void continueTurn(const VehicleModel& model, double speed, const TrimOptions& op
   const int n = std::max(1, static_cast<int>(std::ceil(std::abs(full) / opt.rollStep - 1e-9)));
   const auto unknowns = getTrimUnknowns(model, step);
   const bool fromStraight = !res.turn;
-  double h = full / n, done = 0, lastStep = 0;  // rad: the step, the roll stepped so far, the last step
-  int halvings = 0, steps = 0;
+  const double h0 = full / n;
+  double h = h0, done = 0, lastStep = 0;  // rad: the step, the roll stepped so far, the last step
+  int halvings = 0, steps = 0, failures = 0;
   Eigen::VectorXd last, beforeLast;  // unknowns at the last two rolls reached
   SimTK::State saved;
   while (steps == 0 || std::abs(full - done) > 1e-15) {  // at least one trim as a turn (roll 0 too)
@@ -122,18 +137,21 @@ void continueTurn(const VehicleModel& model, double speed, const TrimOptions& op
     res.unknownsPerSpeed.resize(0), res.unknownsCurvature.resize(0);
     try {
       solveTrim(model, speed, step, res, true);
+      checkWheelsOnGround(model, speed, step, res);
     } catch (const TrimError& e) {
       s = saved;  // back to the last roll reached, with half the step
-      if (++halvings > 4) {
+      if (++halvings > 4 || ++failures > 4 * (n + 1)) {
         std::ostringstream os;
         os << "stepping the roll from " << from * 180 / M_PI << " deg: failed at " << step.roll * 180 / M_PI
-           << " deg with the step halved 4 times";
+           << (halvings > 4 ? " deg with the step halved 4 times" : " deg after too many halved steps");
         throw TrimError(speed, e.residual, res.iterations, opt.roll, os.str());
       }
       h /= 2;
       res.jacobian.resize(0, 0);
       continue;
     }
+    if (halvings > 0 || std::abs(h) < std::abs(h0)) h = std::abs(2 * h) > std::abs(h0) ? h0 : 2 * h;
+    halvings = 0;
     beforeLast.swap(last);
     last.resize(unknowns.size());
     for (size_t j = 0; j < unknowns.size(); ++j) last[j] = fn.get(s, unknowns[j]);

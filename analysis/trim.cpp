@@ -228,6 +228,7 @@ class TrimNewton {
       ++it;
       if (J_.size() == 0 || refresh_) computeJacobian();
       refresh_ = false;
+      const bool fresh = jacobianIsCurrent_;
       if (!factored_) decomposition_.compute(J_), factored_ = true;
       const Eigen::VectorXd dx = decomposition_.solve(-r_);
       for (int j = 0; j < n_; ++j) x0[j] = fn_.get(s_, unknowns_[j]);
@@ -251,8 +252,18 @@ class TrimNewton {
       // A Jacobian that no longer gives fast convergence is refreshed before the next step, if any.
       refresh_ = trialNorm > 0.25 * norm;
       jacobianIsCurrent_ = false;
+      // A step of a fresh Jacobian that no longer halves the residual, ending at its round-off floor:
+      // what is left is rounding, which further steps only shuffle.
+      const bool stalled = fresh && trialNorm > 0.5 * norm;
       r_ = rTrial;
       norm = trialNorm;
+      if (stalled && norm > opt_.tolerance) {
+        for (int j = 0; j < n_; ++j) x0[j] = fn_.get(s_, unknowns_[j]);
+        if (norm <= calcRoundOffFloor(x0)) {
+          converged = true;
+          break;
+        }
+      }
     }
     res_.iterations = it;
     res_.residualNorm = norm;
@@ -262,18 +273,18 @@ class TrimNewton {
   }
 
  private:
-  // The residual's round-off floor at the unknowns x (with J_ current there): what rounding the unknowns
-  // to machine precision moves it by, 1000 eps max_i sum_j |J_ij| max(1, |x_j|). Stiff tyres (Sharp's
-  // radial 1e7 N/m) put it above opt.tolerance; elsewhere it is far below, and it is used only when
-  // Newton stops descending with a fresh Jacobian.
+  // The residual's round-off floor at the unknowns x (J_ differentiated near x): the largest change of
+  // a residual row when every unknown moves by its rounding error, eps max_i sum_j |J_ij| |x_j|. Stiff
+  // tyres put it above opt.tolerance (Sharp's radial 1e7 N/m: about 2e-10 against 1e-11); it is used
+  // only when Newton stops descending, or stops converging, with a fresh Jacobian.
   double calcRoundOffFloor(const std::vector<double>& x) const {
     double floor = 0;
     for (Eigen::Index i = 0; i < J_.rows(); ++i) {
       double row = 0;
-      for (int j = 0; j < n_; ++j) row += std::abs(J_(i, j)) * std::max(1.0, std::abs(x[j]));
+      for (int j = 0; j < n_; ++j) row += std::abs(J_(i, j)) * std::abs(x[j]);
       floor = std::max(floor, row);
     }
-    return 1e3 * std::numeric_limits<double>::epsilon() * floor;
+    return std::numeric_limits<double>::epsilon() * floor;
   }
 
   // Central differences of the residual along each unknown at the current iterate.
