@@ -34,11 +34,54 @@ std::vector<double> makeSpeedGrid(double start, double stop, double step) {
 
 namespace {
 
-// The linear model at speed v, trimmed from the sweep's trim at speed index k.
+// A warm start at speed v (m/s) from the linear interpolation in speed of the sweep's trims at indices
+// k and k + 1, without predictor data (slopes, curvature).
+TrimResult interpolateTrims(const VehicleModel& model, const SweepResult& sweep, size_t k, double v) {
+  const TrimPoint &a = sweep.trims[k], &b = sweep.trims[k + 1];
+  const double w = (v - sweep.speeds[k]) / (sweep.speeds[k + 1] - sweep.speeds[k]);
+  TrimPoint start = a;
+  start.y += w * (b.y - a.y);
+  start.inputs += w * (b.inputs - a.inputs);
+  start.speed = v;
+  start.unknownsPerSpeed.resize(0), start.unknownsCurvature.resize(0), start.jacobianPerSpeed.resize(0, 0);
+  return restoreTrim(model, start);
+}
+
+// The trim at speed v between the grid speeds of indices k and k + 1 (m/s), for refining a crossing:
+// warm from the trim at k with its predictor; where that fails, from the linear interpolation of the two
+// bracketing trims (both converged; it starts O(dv^2) from their branch); where that fails too, by
+// continuation in speed from the nearer of them, in 2, 4, ..., 64 equal steps. Throws the first TrimError.
+TrimResult trimBetween(const VehicleModel& model, const SweepResult& sweep, size_t k, double v, const TrimOptions& opt) {
+  TrimResult trim = restoreTrim(model, sweep.trims[k]);
+  try {
+    updTrim(model, v, opt, trim);
+    return trim;
+  } catch (const TrimError& first) {
+    if (k + 1 >= sweep.trims.size()) throw;
+    try {
+      trim = interpolateTrims(model, sweep, k, v);
+      updTrim(model, v, opt, trim);
+      return trim;
+    } catch (const TrimError&) {
+    }
+    const size_t g = v - sweep.speeds[k] <= sweep.speeds[k + 1] - v ? k : k + 1;
+    for (int steps = 2; steps <= 64; steps *= 2) {
+      try {
+        trim = restoreTrim(model, sweep.trims[g]);
+        trim.unknownsPerSpeed.resize(0), trim.unknownsCurvature.resize(0), trim.jacobianPerSpeed.resize(0, 0);
+        for (int i = 1; i <= steps; ++i) updTrim(model, sweep.speeds[g] + (v - sweep.speeds[g]) * i / steps, opt, trim);
+        return trim;
+      } catch (const TrimError&) {
+      }
+    }
+    throw first;
+  }
+}
+
+// The linear model at speed v, trimmed from the sweep's trims at speed index k and k + 1 (trimBetween).
 LinearModel linearizeFrom(const VehicleModel& model, const SweepResult& sweep, size_t k, double v, const SweepOptions& opt,
                           bool withLabels) {
-  TrimResult trim = restoreTrim(model, sweep.trims[k]);
-  updTrim(model, v, opt.trim, trim);
+  TrimResult trim = trimBetween(model, sweep, k, v, opt.trim);
   LinearizeOptions linearize = opt.linearize;
   linearize.labelModes = withLabels;
   return linearizeInPlace(model, trim, linearize);
