@@ -459,6 +459,7 @@ struct Crossing {
   const ModeBranch* branch = nullptr;
   size_t k = 0;
   CriticalSpeed found;
+  std::vector<CriticalSpeed> more;  ///< further crossings of the same grid interval (findCrossingByCount)
 };
 
 std::vector<Crossing> listCrossings(const SweepResult& out) {
@@ -473,32 +474,57 @@ std::vector<Crossing> listCrossings(const SweepResult& out) {
   return crossings;
 }
 
-// Where the tracked root jumps from one eigenvalue to another between the grid speeds (across a double
-// root: a complex pair splitting into two real roots, one of them then crossing zero), Brent's method
-// ends at the jump, not at a zero. The crossing is then where the number of unstable roots changes
-// (bisection to the tolerance), named by the label of the root nearest the imaginary axis there; where
-// that number is the same at both grid speeds (two roots crossing in opposite directions) the speed of
-// the jump is kept.
-void findCrossingByCount(const VehicleModel& m, const SweepOptions& fixed, const SweepOptions& opt, const SweepResult& out,
-                         Crossing& c) {
-  const int n0 = countUnstable(out.models[c.k]), n1 = countUnstable(out.models[c.k + 1]);
-  if (n0 == n1) return;
-  double a = out.speeds[c.k], b = out.speeds[c.k + 1];
+// Interior speeds at which the count of unstable roots is sampled between two grid speeds before
+// bisecting it (findCrossingByCount): roots can cross several times there.
+constexpr int kCountSamples = 8;
+
+// The critical speed where the count of unstable roots goes from n0 at speed a to n1 != n0 at speed b
+// (m/s), by bisection to the tolerance, named by the label of the root nearest the imaginary axis there.
+CriticalSpeed bisectCount(const VehicleModel& m, const SweepOptions& fixed, const SweepOptions& opt, const SweepResult& out,
+                          size_t k, double a, double b, int n0, int n1) {
   while (b - a > opt.criticalSpeedTolerance) {
     const double mid = 0.5 * (a + b);
-    (countUnstable(linearizeFrom(m, out, c.k, mid, fixed, false)) == n0 ? a : b) = mid;
+    (countUnstable(linearizeFrom(m, out, k, mid, fixed, false)) == n0 ? a : b) = mid;
   }
-  c.found.speed = 0.5 * (a + b);
-  c.found.stabilising = n1 < n0;
-  const LinearModel lin = linearizeFrom(m, out, c.k, c.found.speed, fixed, true);
+  CriticalSpeed found;
+  found.speed = 0.5 * (a + b);
+  found.stabilising = n1 < n0;
+  const LinearModel lin = linearizeFrom(m, out, k, found.speed, fixed, true);
   const double zero = calcZeroRoot(lin);
   int best = -1;
   for (int e = 0; e < lin.eigenvalues.size(); ++e)
     if (std::abs(lin.eigenvalues[e]) >= zero && (best < 0 || std::abs(lin.eigenvalues[e].real()) < std::abs(lin.eigenvalues[best].real())))
       best = e;
-  if (best < 0) return;
-  c.found.mode = lin.labels[best];
-  c.found.frequency = std::abs(lin.eigenvalues[best].imag()) / (2 * M_PI);
+  if (best >= 0) {
+    found.mode = lin.labels[best];
+    found.frequency = std::abs(lin.eigenvalues[best].imag()) / (2 * M_PI);
+  }
+  return found;
+}
+
+// Where the tracked root jumps from one eigenvalue to another between the grid speeds (across a double
+// root: a complex pair splitting into two real roots, one of them then crossing zero), Brent's method
+// ends at the jump, not at a zero. The crossings are then where the number of unstable roots changes:
+// sampled at kCountSamples - 1 interior speeds (a real root crossing, then joining another into a pair
+// that crosses back, changes it twice), each change bisected to the tolerance (bisectCount). The first
+// is c.found, the others c.more; where the number never changes the speed of the jump is kept.
+void findCrossingByCount(const VehicleModel& m, const SweepOptions& fixed, const SweepOptions& opt, const SweepResult& out,
+                         Crossing& c) {
+  const double lo = out.speeds[c.k], hi = out.speeds[c.k + 1];
+  std::vector<double> v{lo};
+  std::vector<int> n{countUnstable(out.models[c.k])};
+  for (int i = 1; i < kCountSamples; ++i) {
+    v.push_back(lo + (hi - lo) * i / kCountSamples);
+    n.push_back(countUnstable(linearizeFrom(m, out, c.k, v.back(), fixed, false)));
+  }
+  v.push_back(hi);
+  n.push_back(countUnstable(out.models[c.k + 1]));
+  std::vector<CriticalSpeed> found;
+  for (size_t i = 0; i + 1 < v.size(); ++i)
+    if (n[i] != n[i + 1]) found.push_back(bisectCount(m, fixed, opt, out, c.k, v[i], v[i + 1], n[i], n[i + 1]));
+  if (found.empty()) return;
+  c.found = found.front();
+  c.more.assign(found.begin() + 1, found.end());
 }
 
 // The crossing's speed by Brent's method to the tolerance, named by the root's label at both grid speeds
@@ -551,11 +577,14 @@ void findCriticalSpeeds(const VehicleModel& model, const SweepOptions& opt, cons
     });
   }
   for (const auto& c : crossings) {
-    bool duplicate = false;  // both members of a complex pair (or a pair forming at the crossing) cross together
-    for (const auto& e : out.criticalSpeeds)
-      if (e.mode == c.found.mode && e.stabilising == c.found.stabilising && std::abs(e.speed - c.found.speed) < 1e-6)
-        duplicate = true;
-    if (!duplicate) out.criticalSpeeds.push_back(c.found);
+    std::vector<CriticalSpeed> all{c.found};
+    all.insert(all.end(), c.more.begin(), c.more.end());
+    for (const CriticalSpeed& f : all) {
+      bool duplicate = false;  // both members of a complex pair (or a pair forming at the crossing) cross together
+      for (const auto& e : out.criticalSpeeds)
+        if (e.mode == f.mode && e.stabilising == f.stabilising && std::abs(e.speed - f.speed) < 1e-6) duplicate = true;
+      if (!duplicate) out.criticalSpeeds.push_back(f);
+    }
   }
   std::stable_sort(out.criticalSpeeds.begin(), out.criticalSpeeds.end(),
                    [](const CriticalSpeed& a, const CriticalSpeed& b) { return a.speed < b.speed; });
