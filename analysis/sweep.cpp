@@ -459,6 +459,7 @@ struct Crossing {
   const ModeBranch* branch = nullptr;
   size_t k = 0;
   CriticalSpeed found;
+  bool byCount = false;             ///< found (and more) by the count of unstable roots, named by the nearest root
   std::vector<CriticalSpeed> more;  ///< further crossings of the same grid interval (findCrossingByCount)
 };
 
@@ -523,6 +524,7 @@ void findCrossingByCount(const VehicleModel& m, const SweepOptions& fixed, const
   for (size_t i = 0; i + 1 < v.size(); ++i)
     if (n[i] != n[i + 1]) found.push_back(bisectCount(m, fixed, opt, out, c.k, v[i], v[i + 1], n[i], n[i + 1]));
   if (found.empty()) return;
+  c.byCount = true;
   c.found = found.front();
   c.more.assign(found.begin() + 1, found.end());
 }
@@ -576,16 +578,25 @@ void findCriticalSpeeds(const VehicleModel& model, const SweepOptions& opt, cons
       for (size_t i = w; i < crossings.size(); i += refiners) refineCrossing(w > 0 ? *replicas[w] : model, opt, fixed, out, crossings[i]);
     });
   }
-  for (const auto& c : crossings) {
-    std::vector<CriticalSpeed> all{c.found};
-    all.insert(all.end(), c.more.begin(), c.more.end());
-    for (const CriticalSpeed& f : all) {
-      bool duplicate = false;  // both members of a complex pair (or a pair forming at the crossing) cross together
-      for (const auto& e : out.criticalSpeeds)
-        if (e.mode == f.mode && e.stabilising == f.stabilising && std::abs(e.speed - f.speed) < 1e-6) duplicate = true;
-      if (!duplicate) out.criticalSpeeds.push_back(f);
+  // Both members of a complex pair (or a pair forming at the crossing) cross together: one critical speed
+  // per mode, direction and speed (within 1e-6 m/s). A crossing found by the count is named by the root
+  // nearest the axis, less surely than one followed along its branch: it yields to any other there.
+  std::vector<bool> named;  // out.criticalSpeeds[i] followed along its branch
+  for (int pass = 0; pass < 2; ++pass)
+    for (const auto& c : crossings) {
+      if (c.byCount != (pass == 1)) continue;
+      std::vector<CriticalSpeed> all{c.found};
+      all.insert(all.end(), c.more.begin(), c.more.end());
+      for (const CriticalSpeed& f : all) {
+        bool duplicate = false;
+        for (size_t i = 0; i < out.criticalSpeeds.size(); ++i) {
+          const CriticalSpeed& e = out.criticalSpeeds[i];
+          if ((e.mode == f.mode || (c.byCount && named[i])) && e.stabilising == f.stabilising && std::abs(e.speed - f.speed) < 1e-6)
+            duplicate = true;
+        }
+        if (!duplicate) out.criticalSpeeds.push_back(f), named.push_back(!c.byCount);
+      }
     }
-  }
   std::stable_sort(out.criticalSpeeds.begin(), out.criticalSpeeds.end(),
                    [](const CriticalSpeed& a, const CriticalSpeed& b) { return a.speed < b.speed; });
 }
