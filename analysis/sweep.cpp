@@ -375,6 +375,10 @@ class SweepRun {
     } catch (const TrimError& e) {
       if (!opt_.keepFailedSpeeds) throw;
       failed_[k] = FailedSpeed{out_.speeds[k], e.residual, e.what()};
+      {
+        std::lock_guard<std::mutex> hold(failureLock_);
+        if (!firstError_) firstError_ = e;
+      }
       if (c.valid) c.work = restoreTrim(m, out_.trims[c.previous]);  // the last trim, without its State
       c.lastJ.resize(0, 0);
       return false;
@@ -401,8 +405,15 @@ class SweepRun {
       if (lead && i == 0 && plan_.leadDown > 1) c.turn = c.work, c.turnJ = c.lastJ, c.turnValid = true;  // one State copy
       c.previous = k, c.valid = true, ++c.trimmed;
     }
-    if (lead) settleReference(std::make_exception_ptr(TrimError(out_.speeds[plan_.leadFirst], NAN, 0, opt_.trim.roll,
-                                                                "no speed of the sweep's first chain could be trimmed")));
+    if (lead) settleReference(std::make_exception_ptr(makeNoneTrimmedError("no speed of the sweep's first chain could be trimmed")));
+  }
+
+  // `what` (no speed of some set trimmed) with the sweep's first failure; without one (no speed was tried),
+  // `what` alone at the lead's first speed.
+  TrimError makeNoneTrimmedError(const std::string& what) {
+    std::lock_guard<std::mutex> hold(failureLock_);
+    if (firstError_) return TrimError(what, *firstError_);
+    return TrimError(what, out_.speeds[plan_.leadFirst], opt_.trim.roll);
   }
 
   // A linearised model whose roots are not finite has no modes to track: no result (exit 3), at its speed.
@@ -423,8 +434,7 @@ class SweepRun {
       else kept.push_back(k);
     }
     if (out_.failures.empty()) return;
-    if (kept.empty()) throw TrimError(out_.failures.front().speed, out_.failures.front().residual, 0, opt_.trim.roll,
-                                      "no speed of the sweep could be trimmed; first: " + out_.failures.front().message);
+    if (kept.empty()) throw makeNoneTrimmedError("no speed of the sweep could be trimmed");
     SweepResult kept_;
     std::vector<Eigen::MatrixXd> costs;
     for (size_t j = 0; j < kept.size(); ++j) {
@@ -451,6 +461,8 @@ class SweepRun {
   std::promise<void> refPromise_;
   std::shared_future<void> refReady_;
   std::atomic<bool> refSettled_{false}, stopped_{false};
+  std::mutex failureLock_;
+  std::optional<TrimError> firstError_;  // the first trim failure of any chain (failed speeds kept)
 };
 
 // Every sign change of a root's real part between neighbouring speeds (neutral roots excepted; one

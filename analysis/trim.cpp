@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "analysis/trim_detail.h"
+#include "io/number.h"
 
 namespace motostab::analysis {
 
@@ -31,6 +32,12 @@ std::string trimMessage(double speed, double residual, int iterations, double ro
 
 TrimError::TrimError(double v, double r, int it, double phi, const std::string& detail)
     : io::ResultError(trimMessage(v, r, it, phi, detail)), speed(v), residual(r), roll(phi) {}
+
+TrimError::TrimError(const std::string& what, const TrimError& first)
+    : io::ResultError(what + "; first: " + first.what()), speed(first.speed), residual(first.residual), roll(first.roll) {}
+
+TrimError::TrimError(const std::string& what, double v, double phi)
+    : io::ResultError(what + " (from " + io::formatNumber(v, 6) + " m/s)"), speed(v), residual(NAN), roll(phi) {}
 
 std::vector<StateEntry> getTrimUnknowns(const VehicleModel& model) {
   std::vector<StateEntry> out;

@@ -88,6 +88,11 @@ class TrimError : public io::ResultError {
  public:
   /// `detail`, if any, is appended in parentheses (e.g. the continuation step that failed).
   TrimError(double speed, double residual, int iterations, double roll = NAN, const std::string& detail = "");
+  /// None of a set of trims (a sweep's speeds, a map's roll angles) converged: `what` says which set, and
+  /// `first` is the first failure, whose speed, residual and roll this error carries.
+  TrimError(const std::string& what, const TrimError& first);
+  /// No trim was tried (another worker failed first): `what` at `speed` (m/s) and roll; residual NaN.
+  TrimError(const std::string& what, double speed, double roll);
   double speed, residual, roll;
 };
 

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <stdexcept>
 
 namespace motostab::analysis {
@@ -32,6 +33,7 @@ TurnMapResult runTurnMap(const VehicleModel& model, const TurnMapOptions& opt) {
   // The sweeps' lead chains start at the first speed of at least 1 m/s (at the first speed when none is).
   const size_t atLeast1 = std::find_if(speeds.begin(), speeds.end(), [](double v) { return v >= 1.0; }) - speeds.begin();
   const double first = speeds[atLeast1 < speeds.size() ? atLeast1 : 0];
+  std::optional<TrimError> firstError;  // of the first roll angle none of whose speeds trimmed
   for (double roll : opt.rolls) {
     SweepOptions o = opt.sweep;
     o.trim.roll = roll;
@@ -46,11 +48,10 @@ TurnMapResult runTurnMap(const VehicleModel& model, const TurnMapOptions& opt) {
       map.sweeps.push_back(std::move(s));
     } catch (const TrimError& e) {
       map.failedRolls.push_back({roll, e.what()});
+      if (!firstError) firstError = e;
     }
   }
-  if (map.sweeps.empty())
-    throw TrimError(first, NAN, 0, opt.rolls.front(), "no roll angle of the map could be trimmed at any speed: " +
-                                                          map.failedRolls.front().message);
+  if (map.sweeps.empty()) throw TrimError("no roll angle of the map could be trimmed at any speed", *firstError);
   return map;
 }
 

@@ -222,11 +222,11 @@ std::string formatTurnMapTable(const TurnMapResult& map) {
       os << "    critical: " << toString(c.mode) << " " << std::setprecision(4) << c.speed << " m/s ("
          << (c.stabilising ? "stabilising" : "destabilising") << ")\n";
     for (const auto& f : s.failures)
-      os << "    not trimmed: " << std::setprecision(4) << f.speed << " m/s (residual " << f.residual << ")\n";
+      os << "    not trimmed: " << std::setprecision(4) << f.speed << " m/s (residual " << io::formatNumber(f.residual, 3) << ")\n";
   }
   for (const FailedRoll& f : map.failedRolls)
     os << std::fixed << std::setprecision(1) << std::setw(10) << toDegrees(f.roll) << "  no speed trimmed: " << f.message << "\n";
-  os << "(nan: the mode is absent at that speed)\n";
+  os << "(-: the mode is absent at that speed)\n";
   return os.str();
 }
 

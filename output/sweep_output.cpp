@@ -340,7 +340,7 @@ std::string formatSweepTable(const SweepResult& sweep, int rows) {
   for (const StableRange& r : stable)
     os << "Stable from " << formatSpeed(r.start, 4) << " to " << formatSpeed(r.stop, 4) << " m/s\n";
   for (const FailedSpeed& f : sweep.failures)
-    os << "Not trimmed: " << formatSpeed(f.speed, 4) << " m/s (residual " << f.residual << ")\n";
+    os << "Not trimmed: " << formatSpeed(f.speed, 4) << " m/s (residual " << io::formatNumber(f.residual, 3) << ")\n";
   return os.str();
 }
 
