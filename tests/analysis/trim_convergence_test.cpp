@@ -12,7 +12,7 @@
 #include "analysis/trim.h"
 #include "analysis/turn_map.h"
 #include "scenario/scenario.h"
-#include "support/contact_outputs.h"
+#include "tests/support/contact_outputs.h"
 
 namespace motostab::analysis {
 
@@ -27,8 +27,10 @@ std::string scenarioPath(const std::string& name) { return std::string(MOTOSTAB_
 // N/m) put the residual's round-off floor above the absolute tolerance. The trim must converge, and be
 // a steady turn of the vehicle checked here from the nonlinear model alone: every acceleration is the
 // turn's centripetal one (xddot = -r ydot, yddot = r xdot, the rest zero) to 1e-8 of g / wheelbase (the
-// scale of the gravity and tyre terms it balances, per rad or per m), both tyres carry load, and the
-// path radius is within 15 % of the point-mass turn's V^2 / (g tan(roll)).
+// scale of the gravity and tyre terms it balances, per rad or per m), both tyres carry load (an
+// equilibrium with a wheel in the air has a zero residual too), and the rear contact point's path radius
+// is within 25 % of the point-mass turn's V^2 / (g tan(roll)) (the mass centre, half a wheelbase ahead,
+// runs on a wider circle: 6 % at 15 deg, 16 % at 35 deg).
 TEST(TrimConvergence, SharpTurnAtFourMetresPerSecondIsASteadyTurn) {
   const VehicleModel model(loadScenario(scenarioPath("sharp1971")));
   std::mt19937 rng(1971);
@@ -58,7 +60,7 @@ TEST(TrimConvergence, SharpTurnAtFourMetresPerSecondIsASteadyTurn) {
   EXPECT_GT(test::findContactOutput(model, s, "rear_tyre_Fz_N"), 0);
   const double radius = calcTurnFigures(model, s).pathRadius;
   const double pointMass = v * v / (g * std::tan(opt.roll));
-  EXPECT_NEAR(radius, pointMass, 0.15 * pointMass) << "roll " << rollDeg << " deg";
+  EXPECT_NEAR(radius, pointMass, 0.25 * pointMass) << "roll " << rollDeg << " deg";
 }
 
 // The supersport-mf's weave stabilises between 4 and 6 m/s at 35 deg of roll; the predictor of the 4 m/s
