@@ -416,6 +416,7 @@ struct Crossing {
   const ModeBranch* branch = nullptr;
   size_t k = 0;
   CriticalSpeed found;
+  bool isJump = false;  // the branch's sign change is a tracking jump, not a root crossing zero
 };
 
 std::vector<Crossing> listCrossings(const SweepResult& out) {
@@ -434,12 +435,14 @@ std::vector<Crossing> listCrossings(const SweepResult& out) {
 // root: a complex pair splitting into two real roots, one of them then crossing zero), Brent's method
 // ends at the jump, not at a zero. The crossing is then where the number of unstable roots changes
 // (bisection to the tolerance), named by the label of the root nearest the imaginary axis there; where
-// that number is the same at both grid speeds (two roots crossing in opposite directions) the speed of
-// the jump is kept.
+// that number is the same at both grid speeds no root crossed zero there: the sign change was the jump.
 void findCrossingByCount(const VehicleModel& m, const SweepOptions& fixed, const SweepOptions& opt, const SweepResult& out,
                          Crossing& c) {
   const int n0 = countUnstable(out.models[c.k]), n1 = countUnstable(out.models[c.k + 1]);
-  if (n0 == n1) return;
+  if (n0 == n1) {
+    c.isJump = true;
+    return;
+  }
   double a = out.speeds[c.k], b = out.speeds[c.k + 1];
   while (b - a > opt.criticalSpeedTolerance) {
     const double mid = 0.5 * (a + b);
@@ -480,7 +483,9 @@ void refineCrossing(const VehicleModel& m, const SweepOptions& opt, const SweepO
     // The label at the critical speed only where the grid labels differ (labelling costs a mass matrix).
     const RootAtSpeed root = at != seen.end() && sameLabel ? RootAtSpeed{at->second, br.labels[c.k]}
                                                            : calcBranchRoot(m, out, br, c.k, c.found.speed, fixed, !sameLabel);
-    c.found.mode = sameLabel ? br.labels[c.k] : *root.label;
+    // At the crossing the root is near zero, where a drift-like eigenvector is named neutral: the label
+    // of the unstable side's grid speed then.
+    c.found.mode = sameLabel || *root.label == ModeLabel::Neutral ? br.labels[f0 > 0 ? c.k : c.k + 1] : *root.label;
     c.found.frequency = std::abs(root.lambda.imag()) / (2 * M_PI);
     if (std::abs(root.lambda.real()) > 1e-3 * std::max(std::abs(f0), std::abs(f1))) findCrossingByCount(m, fixed, opt, out, c);
   } catch (const TrimError&) {
@@ -508,6 +513,7 @@ void findCriticalSpeeds(const VehicleModel& model, const SweepOptions& opt, cons
     });
   }
   for (const auto& c : crossings) {
+    if (c.isJump) continue;
     bool duplicate = false;  // both members of a complex pair (or a pair forming at the crossing) cross together
     for (const auto& e : out.criticalSpeeds)
       if (e.mode == c.found.mode && e.stabilising == c.found.stabilising && std::abs(e.speed - c.found.speed) < 1e-6)
