@@ -360,8 +360,10 @@ void labelLateralModes(std::vector<Root>& roots, Capacity& cap, double zero) {
   // Where no lateral oscillation exists, the weave is split into two real roots (unstable, as the
   // bicycle's at standstill or below the speed where they join in a tight turn): the two unstable real
   // lateral roots with the most roll, named before the capsize so that it cannot take one of them.
+  // A lateral oscillation that roll does not lead (a bicycle's tyre and frame modes at 15-20 Hz at walking
+  // pace) is not the weave they split from.
   auto splitRoot = [&](const Root& r) { return !r.oscillatory && lateralFamily(r) && r.lambda.real() > 0; };
-  if (!std::any_of(roots.begin(), roots.end(), [&](const Root& r) { return !r.label && r.oscillatory && lateralFamily(r); })) {
+  if (!std::any_of(roots.begin(), roots.end(), [&](const Root& r) { return !r.label && r.oscillatory && lateralFamily(r) && rollLed(r); })) {
     Root* split1 = pickBest(roots, splitRoot, moreRoll);
     Root* split2 = pickBest(roots, [&](const Root& r) { return splitRoot(r) && &r != split1; }, moreRoll);
     if (split2) cap.take(*split1, ModeLabel::Weave), cap.take(*split2, ModeLabel::Weave);
@@ -422,7 +424,11 @@ void labelLateralModes(std::vector<Root>& roots, Capacity& cap, double zero) {
     Root* w = pickBest(roots, dampedBySteerDamper, moreDampedBySteerDamper);
     if (!w) w = pickBest(roots, wobbleCandidate, moreSteer);
     if (w) cap.take(*w, ModeLabel::Wobble);
-    if (Root* osc = pickBest(roots, weaveCandidate, moreMechanicalRoll)) cap.take(*osc, ModeLabel::Weave);
+    Root* osc = pickBest(roots, weaveCandidate, moreMechanicalRoll);
+    if (osc) cap.take(*osc, ModeLabel::Weave);
+    // The wobble is the faster of the two: where the damper's root is the weave's frequency or less by
+    // half (a bicycle's weave at walking pace, which a steer damper damps most), they change names.
+    if (w && osc && std::abs(w->lambda.imag()) < 0.5 * std::abs(osc->lambda.imag())) w->label = ModeLabel::Weave, osc->label = ModeLabel::Wobble;
   } else if (Root* osc = pickBest(roots, weaveCandidate, moreMechanicalRoll)) {
     cap.take(*osc, ModeLabel::Weave);
   } else if (Root* w = pickBest(roots, [&](const Root& r) { return wobbleCandidate(r) && r.steer > roll(r); }, moreSteer)) {
