@@ -4,6 +4,7 @@
 
 #include "core/parallel.h"
 
+#include <Eigen/Cholesky>
 #include <Eigen/LU>
 #include <algorithm>
 #include <cmath>
@@ -200,6 +201,7 @@ struct Root {
   ModeContent c;
   double rollYawLateral = 0, steer = 0, inPlane = 0, longitudinal = 0, compliance = 0, auxiliary = 0;
   StateRole topCompliance = StateRole::Compliance;  // the compliance role with the largest share
+  std::optional<double> steerDamping;  // Re(d lambda / d c) of a steering damper c, 1/s per N m s/rad
   std::optional<ModeLabel> label;
   int size() const { return conjugate >= 0 ? 2 : 1; }
 };
@@ -217,9 +219,33 @@ ModeLabel getComplianceLabel(StateRole r) {
   }
 }
 
+// First-order sensitivity Re(d lambda_k / d c) (1/s per N m s/rad) of every eigenvalue to a steering
+// damper c about the steer axis: the damper adds -c M^-1 e_s delta' to the rates' derivatives, so
+// d lambda_k / d c = -(l_k . M^-1 e_s) v_sk with l_k row k of V^-1 (Wilkinson 1965, The Algebraic
+// Eigenvalue Problem, ch. 2). Empty without a steer rate state, the mass matrix, or with singular V.
+Eigen::VectorXd calcSteerDampingSensitivity(const LinearModel& lin) {
+  const int steerRate = lin.findState(StateRole::Steer, StateKind::Rate);
+  std::vector<int> rates;
+  for (size_t i = 0; i < lin.states.size(); ++i)
+    if (lin.states[i].entry.slot == Slot::U) rates.push_back(static_cast<int>(i));
+  const Eigen::Index nr = static_cast<Eigen::Index>(rates.size()), n = lin.eigenvectors.cols();
+  if (steerRate < 0 || n == 0 || lin.massMatrix.rows() != nr || lin.massMatrix.cols() != nr) return {};
+  const auto s = std::find(rates.begin(), rates.end(), steerRate) - rates.begin();
+  const Eigen::VectorXd column = lin.massMatrix.ldlt().solve(Eigen::VectorXd::Unit(nr, s));
+  Eigen::VectorXcd d = Eigen::VectorXcd::Zero(lin.eigenvectors.rows());
+  for (Eigen::Index a = 0; a < nr; ++a) d[rates[a]] = column[a];
+  const Eigen::MatrixXcd L = Eigen::PartialPivLU<Eigen::MatrixXcd>(lin.eigenvectors).inverse();
+  if (!L.allFinite() || !column.allFinite()) return {};
+  const Eigen::VectorXcd ld = L * d;
+  Eigen::VectorXd out(n);
+  for (Eigen::Index k = 0; k < n; ++k) out[k] = -(ld[k] * lin.eigenvectors(steerRate, k)).real();
+  return out;
+}
+
 // Roots of lin with their content: each complex pair once (the member with the positive imaginary part).
 std::vector<Root> collectRoots(const LinearModel& lin) {
   const std::vector<ModeContent> contents = calcModeContents(lin);
+  const Eigen::VectorXd steerDamping = calcSteerDampingSensitivity(lin);
   const Eigen::Index n = lin.eigenvalues.size();
   std::vector<bool> used(n, false);
   std::vector<Root> roots;
@@ -240,6 +266,7 @@ std::vector<Root> collectRoots(const LinearModel& lin) {
       if (r.conjugate >= 0 && l.imag() < 0) std::swap(r.k, r.conjugate), r.lambda = std::conj(l);
     }
     r.c = contents[r.k];
+    if (steerDamping.size() > 0) r.steerDamping = steerDamping[r.k];
     r.rollYawLateral = r.c.calcRollYawLateral();
     r.steer = r.c.get(StateRole::Steer);
     r.inPlane = r.c.calcInPlane();
@@ -333,14 +360,33 @@ void labelLateralModes(std::vector<Root>& roots, Capacity& cap, double zero) {
   // Where no lateral oscillation exists, the weave is split into two real roots (unstable, as the
   // bicycle's at standstill or below the speed where they join in a tight turn): the two unstable real
   // lateral roots with the most roll, named before the capsize so that it cannot take one of them.
+  // A lateral oscillation that roll does not lead (a bicycle's tyre and frame modes at 15-20 Hz at walking
+  // pace) is not the weave they split from.
   auto splitRoot = [&](const Root& r) { return !r.oscillatory && lateralFamily(r) && r.lambda.real() > 0; };
-  if (!std::any_of(roots.begin(), roots.end(), [&](const Root& r) { return !r.label && r.oscillatory && lateralFamily(r); })) {
+  if (!std::any_of(roots.begin(), roots.end(), [&](const Root& r) { return !r.label && r.oscillatory && lateralFamily(r) && rollLed(r); })) {
     Root* split1 = pickBest(roots, splitRoot, moreRoll);
     Root* split2 = pickBest(roots, [&](const Root& r) { return splitRoot(r) && &r != split1; }, moreRoll);
     if (split2) cap.take(*split1, ModeLabel::Weave), cap.take(*split2, ModeLabel::Weave);
   }
-  auto capsizeRoot = [&](const Root& r) { return !r.oscillatory && lateralFamily(r) && rollLed(r); };
-  if (Root* c = pickBest(roots, capsizeRoot, slower)) cap.take(*c, ModeLabel::Capsize);
+  // In a turn at a fixed roll the speed is tied to the lean: a root that the forward motion leads but
+  // with a lateral share of at least 0.2 can be the capsize.
+  auto lateralOrWithSpeed = [&](const Root& r) {
+    return lateralFamily(r) || (findFamily(r) == Family::Longitudinal && r.rollYawLateral + r.steer >= 0.2);
+  };
+  auto capsizeRoot = [&](const Root& r) { return !r.oscillatory && lateralOrWithSpeed(r) && rollLed(r); };
+  // The capsize is a slow motion. A real roll-led root faster than the weave (the lateral oscillation
+  // with the most roll) is not it where a roll-led pair at most half as fast as both exists: the capsize
+  // joined with another root in a turn (named below, once the weave is known).
+  const Root* firstWeave = pickBest(roots, [&](const Root& r) { return r.oscillatory && lateralFamily(r); }, moreMechanicalRoll);
+  auto slowPair = [&](const Root& r, double bound) {
+    return r.oscillatory && lateralOrWithSpeed(r) && rollLed(r) && &r != firstWeave && std::abs(r.lambda) < 0.5 * bound;
+  };
+  auto slowEnough = [&](const Root& c) {
+    if (!firstWeave || std::abs(c.lambda) <= std::abs(firstWeave->lambda)) return true;
+    const double bound = std::min(std::abs(c.lambda), std::abs(firstWeave->lambda));
+    return !std::any_of(roots.begin(), roots.end(), [&](const Root& r) { return !r.label && slowPair(r, bound); });
+  };
+  if (Root* c = pickBest(roots, capsizeRoot, slower); c && slowEnough(*c)) cap.take(*c, ModeLabel::Capsize);
   // A second roll-led real root that diverges is the vehicle falling over as well (in a tight turn at
   // walking pace, beside a slower decaying one): a capsize too.
   if (Root* c = pickBest(roots, [&](const Root& r) { return capsizeRoot(r) && r.lambda.real() > 0; }, slower))
@@ -350,11 +396,11 @@ void labelLateralModes(std::vector<Root>& roots, Capacity& cap, double zero) {
     cap.take(*c, ModeLabel::Castor);
   // Weave and wobble. A weave candidate is a lateral oscillation; a wobble candidate an oscillation with
   // a steer energy share of at least 0.02, above every compliance role's, not led by tyre lags. Where two
-  // or more oscillations are candidates, the wobble is named first: the one with the largest steer share
-  // (a steering damper's dissipation c |delta'|^2 goes where the steer rate is: the root it damps most),
-  // in-plane-led roots last; the weave is then the remaining lateral oscillation with the most roll times
-  // (1 - auxiliary share). Where only one oscillation is a candidate, it is the weave if lateral, else
-  // the wobble if its steer exceeds its roll.
+  // or more oscillations are candidates, the wobble is named first: the oscillation a steering damper
+  // damps most (first-order sensitivity; in a turn the steer share alone can point at another root), else
+  // the one with the largest steer share, in-plane-led roots last; the weave is then the remaining
+  // lateral oscillation with the most roll times (1 - auxiliary share). Where only one oscillation is a
+  // candidate, it is the weave if lateral, else the wobble if its steer exceeds its roll.
   auto weaveCandidate = [&](const Root& r) { return r.oscillatory && lateralFamily(r); };
   auto wobbleCandidate = [&](const Root& r) {
     return r.oscillatory && r.auxiliary <= 0.5 && r.steer >= kWobbleSteer && r.steer >= r.c.get(r.topCompliance);
@@ -369,9 +415,20 @@ void labelLateralModes(std::vector<Root>& roots, Capacity& cap, double zero) {
   const auto candidates = std::count_if(roots.begin(), roots.end(), [&](const Root& r) {
     return !r.label && (weaveCandidate(r) || wobbleCandidate(r));
   });
+  // The root a steering damper damps most, where the damper damps some candidate (sensitivities known).
+  auto dampedBySteerDamper = [&](const Root& r) {
+    return r.oscillatory && r.auxiliary <= 0.5 && r.steer >= r.c.get(r.topCompliance) && r.steerDamping && *r.steerDamping < 0;
+  };
+  auto moreDampedBySteerDamper = [](const Root& a, const Root& b) { return *a.steerDamping < *b.steerDamping; };
   if (candidates >= 2) {
-    if (Root* w = pickBest(roots, wobbleCandidate, moreSteer)) cap.take(*w, ModeLabel::Wobble);
-    if (Root* osc = pickBest(roots, weaveCandidate, moreMechanicalRoll)) cap.take(*osc, ModeLabel::Weave);
+    Root* w = pickBest(roots, dampedBySteerDamper, moreDampedBySteerDamper);
+    if (!w) w = pickBest(roots, wobbleCandidate, moreSteer);
+    if (w) cap.take(*w, ModeLabel::Wobble);
+    Root* osc = pickBest(roots, weaveCandidate, moreMechanicalRoll);
+    if (osc) cap.take(*osc, ModeLabel::Weave);
+    // The wobble is the faster of the two: where the damper's root is the weave's frequency or less by
+    // half (a bicycle's weave at walking pace, which a steer damper damps most), they change names.
+    if (w && osc && std::abs(w->lambda.imag()) < 0.5 * std::abs(osc->lambda.imag())) w->label = ModeLabel::Weave, osc->label = ModeLabel::Wobble;
   } else if (Root* osc = pickBest(roots, weaveCandidate, moreMechanicalRoll)) {
     cap.take(*osc, ModeLabel::Weave);
   } else if (Root* w = pickBest(roots, [&](const Root& r) { return wobbleCandidate(r) && r.steer > roll(r); }, moreSteer)) {
@@ -381,9 +438,6 @@ void labelLateralModes(std::vector<Root>& roots, Capacity& cap, double zero) {
   // diverging (a tight turn's fall, as the diverging second real root above). Joined with the speed
   // root (a turn at a fixed roll ties the speed to the lean) the forward motion may lead it: a slow pair
   // with a lateral share of at least 0.2 is then a capsize too.
-  auto lateralOrWithSpeed = [&](const Root& r) {
-    return lateralFamily(r) || (findFamily(r) == Family::Longitudinal && r.rollYawLateral + r.steer >= 0.2);
-  };
   const Root* weave = nullptr;
   for (const Root& r : roots)
     if (r.label == ModeLabel::Weave) weave = &r;

@@ -473,6 +473,7 @@ struct Crossing {
   CriticalSpeed found;
   bool byCount = false;             ///< found (and more) by the count of unstable roots, named by the nearest root
   std::vector<CriticalSpeed> more;  ///< further crossings of the same grid interval (findCrossingByCount)
+  bool isJump = false;              ///< the branch's sign change is a tracking jump, not a root crossing zero
 };
 
 std::vector<Crossing> listCrossings(const SweepResult& out) {
@@ -520,7 +521,8 @@ CriticalSpeed bisectCount(const VehicleModel& m, const SweepOptions& fixed, cons
 // ends at the jump, not at a zero. The crossings are then where the number of unstable roots changes:
 // sampled at kCountSamples - 1 interior speeds (a real root crossing, then joining another into a pair
 // that crosses back, changes it twice), each change bisected to the tolerance (bisectCount). The first
-// is c.found, the others c.more; where the number never changes the speed of the jump is kept.
+// is c.found, the others c.more; where the number never changes no root crossed zero there: the sign
+// change was the jump, no critical speed.
 void findCrossingByCount(const VehicleModel& m, const SweepOptions& fixed, const SweepOptions& opt, const SweepResult& out,
                          Crossing& c) {
   const double lo = out.speeds[c.k], hi = out.speeds[c.k + 1];
@@ -535,7 +537,10 @@ void findCrossingByCount(const VehicleModel& m, const SweepOptions& fixed, const
   std::vector<CriticalSpeed> found;
   for (size_t i = 0; i + 1 < v.size(); ++i)
     if (n[i] != n[i + 1]) found.push_back(bisectCount(m, fixed, opt, out, c.k, v[i], v[i + 1], n[i], n[i + 1]));
-  if (found.empty()) return;
+  if (found.empty()) {
+    c.isJump = true;
+    return;
+  }
   c.byCount = true;
   c.found = found.front();
   c.more.assign(found.begin() + 1, found.end());
@@ -563,7 +568,9 @@ void refineCrossing(const VehicleModel& m, const SweepOptions& opt, const SweepO
     // The label at the critical speed only where the grid labels differ (labelling costs a mass matrix).
     const RootAtSpeed root = at != seen.end() && sameLabel ? RootAtSpeed{at->second, br.labels[c.k]}
                                                            : calcBranchRoot(m, out, br, c.k, c.found.speed, fixed, !sameLabel);
-    c.found.mode = sameLabel ? br.labels[c.k] : *root.label;
+    // At the crossing the root is near zero, where a drift-like eigenvector is named neutral: the label
+    // of the unstable side's grid speed then.
+    c.found.mode = sameLabel || *root.label == ModeLabel::Neutral ? br.labels[f0 > 0 ? c.k : c.k + 1] : *root.label;
     c.found.frequency = std::abs(root.lambda.imag()) / (2 * M_PI);
     if (std::abs(root.lambda.real()) > 1e-3 * std::max(std::abs(f0), std::abs(f1))) findCrossingByCount(m, fixed, opt, out, c);
   } catch (const TrimError&) {
@@ -596,7 +603,7 @@ void findCriticalSpeeds(const VehicleModel& model, const SweepOptions& opt, cons
   std::vector<bool> named;  // out.criticalSpeeds[i] followed along its branch
   for (int pass = 0; pass < 2; ++pass)
     for (const auto& c : crossings) {
-      if (c.byCount != (pass == 1)) continue;
+      if (c.isJump || c.byCount != (pass == 1)) continue;
       std::vector<CriticalSpeed> all{c.found};
       all.insert(all.end(), c.more.begin(), c.more.end());
       for (const CriticalSpeed& f : all) {

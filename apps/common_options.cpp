@@ -42,7 +42,7 @@ std::vector<double> parseRangeFields(const std::string& text, const std::string&
 }
 
 void parseSpeedRange(const std::string& text, double& start, double& stop, double& step) {
-  const std::string expected = "START:STOP:STEP, finite, with 0 <= START <= STOP, STEP > 0 and at most 1e6 speeds";
+  const std::string expected = "START:STOP:STEP, finite, with 0 <= START <= STOP, STEP > 0, STOP <= 150 m/s and at most " + std::to_string(scenario::SpeedRange::kMaxSpeeds) + " speeds";
   const std::vector<double> v = parseRangeFields(text, "--speeds", false, expected);
   checkSpeedRange(v[0], v[1], v[2], {"--speeds", 0, 0, text});
   start = v[0], stop = v[1], step = v[2];

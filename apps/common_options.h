@@ -33,7 +33,7 @@ std::string getOutputFolder(const std::string& out, const std::string& name, con
 /// Adds the --out option of that convention to `command`; `name` says what NAME is in the help text.
 CLI::Option* addOutOption(CLI::App& command, std::string& out, const std::string& name);
 
-/// Parses "START:STOP:STEP" (m/s; 0 <= START <= STOP, STEP > 0, finite, at most 1e6 speeds);
+/// Parses "START:STOP:STEP" (m/s; 0 <= START <= STOP <= 150, STEP > 0, finite, at most scenario::SpeedRange::kMaxSpeeds speeds);
 /// throws InputError naming the option on bad input.
 void parseSpeedRange(const std::string& text, double& start, double& stop, double& step);
 

@@ -196,13 +196,16 @@ bool YamlMap::has(const std::string& key) const { return static_cast<bool>(node_
 
 void YamlMap::markUsed(const std::string& key) { used_->insert(key); }
 
+void YamlMap::failMissing(const std::string& key, const std::string& alternative) const {
+  std::string given;
+  for (const auto& kv : node_) given += (given.empty() ? "" : ", ") + kv.first.Scalar();
+  const std::string other = alternative.empty() ? "" : " (or '" + childPath(alternative) + "')";
+  fail("", "missing key '" + childPath(key) + "'" + other + " (keys given here: " + (given.empty() ? "none" : given) + ")");
+}
+
 YAML::Node YamlMap::require(const std::string& key) {
   const YAML::Node n = static_cast<const YAML::Node&>(node_)[key];
-  if (!n) {
-    std::string given;  // a typo of the missing key is usually among them
-    for (const auto& kv : node_) given += (given.empty() ? "" : ", ") + kv.first.Scalar();
-    fail("", "missing key '" + childPath(key) + "' (keys given here: " + (given.empty() ? "none" : given) + ")");
-  }
+  if (!n) failMissing(key);
   used_->insert(key);
   return n;
 }

@@ -59,6 +59,9 @@ class YamlMap {
   std::vector<std::string> getFilePathList(const std::string& key);
   /// Marks a key as handled by someone else (e.g. a plugin's own parameters).
   void markUsed(const std::string& key);
+  /// "missing key 'PATH.key' (keys given here: ...)": a typo of the missing key is usually among them.
+  /// `alternative`, if given, is named as the key that may replace it.
+  [[noreturn]] void failMissing(const std::string& key, const std::string& alternative = "") const;
   /// Throws InputError for the first key never read.
   void finish() const;
 

@@ -284,7 +284,7 @@ Scenario readScenario(const std::string& file, YamlMap& m) {
     s.geometry.steerAxisTilt = g.getDouble("steer_axis_tilt_deg") * M_PI / 180.0;
     if (std::abs(s.geometry.steerAxisTilt) >= M_PI / 2) g.fail("steer_axis_tilt_deg", "must lie in (-90, 90) degrees");
     if (!g.has("trail_m") && !g.has("normal_trail_m"))
-      g.fail("", "missing key 'geometry.trail_m' (or 'geometry.normal_trail_m')");
+      g.failMissing("trail_m", "normal_trail_m");
     if (g.has("trail_m") && g.has("normal_trail_m")) g.fail("normal_trail_m", "give only one of trail_m and normal_trail_m");
     s.geometry.trail = g.has("trail_m") ? g.getDouble("trail_m")
                                         : g.getDouble("normal_trail_m") / std::cos(s.geometry.steerAxisTilt);
