@@ -274,6 +274,16 @@ bool VehicleModel::applyLateralRoadStep(SimTK::State& state, WheelSide wheel, do
   return false;
 }
 
+plugins::ContactPoint VehicleModel::calcContactPoint(const SimTK::State& state, WheelSide wheel) const {
+  for (const WheelSite& site : wheelSites_)
+    if (site.side == wheel) {
+      const bool moving = state.getSystemStage() >= SimTK::Stage::Velocity;
+      return contacts_.front()->calcContactPoint(site, site.wheel.getBodyRotation(state),
+                                                 moving ? site.wheel.getBodyAngularVelocity(state) : Vec3(0));
+    }
+  throw std::logic_error("calcContactPoint: no such wheel");
+}
+
 std::vector<std::string> VehicleModel::getContactOutputNames() const {
   std::vector<std::string> out;
   for (const WheelSite& site : wheelSites_)
