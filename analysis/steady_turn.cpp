@@ -6,25 +6,20 @@
 
 #include "analysis/sweep.h"
 #include "analysis/trim_detail.h"
-#include "tyres/rolling_no_slip.h"
 
 namespace motostab::analysis {
 
-using scenario::Scenario;
-using scenario::WheelSpec;
-using tyres::TorusContact;
-using tyres::calcTorusContact;
+using plugins::ContactPoint;
+using plugins::WheelSide;
 using vehicle::CoordinateIndices;
 using vehicle::Input;
 using vehicle::VehicleModel;
 
 TurnFigures calcTurnFigures(const VehicleModel& model, const SimTK::State& s) {
   model.getSystem().realize(s, SimTK::Stage::Velocity);
-  const Scenario& sc = model.getScenario();
   const SimTK::MobilizedBody& wheel = model.getRearWheel();
   const SimTK::MobilizedBody& frame = model.getRearFrame();
-  const TorusContact contact = calcTorusContact(wheel.getBodyRotation(s), wheel.getBodyAngularVelocity(s),
-                                                sc.rearWheel.radius, sc.rearWheel.crownRadius);
+  const ContactPoint contact = model.calcContactPoint(s, WheelSide::Rear);
   const SimTK::Vec3 p_GP = wheel.getBodyOriginLocation(s) + contact.r_CP_G;
   const SimTK::Vec3 p_GO = frame.getBodyOriginLocation(s);
   const SimTK::Vec3 v_GP = frame.getBodyOriginVelocity(s) + frame.getBodyAngularVelocity(s) % (p_GP - p_GO);
@@ -38,20 +33,18 @@ TurnFigures calcTurnFigures(const VehicleModel& model, const SimTK::State& s) {
 
 namespace {
 
-// Heights (m) of the lowest points of both tyres' toroids (calcTorusContact), state realized to Position.
+// Heights (m) of both contact points (the contact model's, VehicleModel::calcContactPoint), state
+// realized to Position.
 Eigen::Vector2d calcContactHeights(const VehicleModel& model, const SimTK::State& s) {
   model.getSystem().realize(s, SimTK::Stage::Position);
   Eigen::Vector2d z;
   int k = 0;
-  for (const auto* w : {&model.getRearWheel(), &model.getFrontWheel()}) {
-    const WheelSpec& spec = k == 0 ? model.getScenario().rearWheel : model.getScenario().frontWheel;
-    const SimTK::Transform& X_GW = w->getBodyTransform(s);
-    z[k++] = X_GW.p()[2] + calcTorusContact(X_GW.R(), SimTK::Vec3(0), spec.radius, spec.crownRadius).r_CP_G[2];
-  }
+  for (const auto& [w, side] : {std::pair{&model.getRearWheel(), WheelSide::Rear}, {&model.getFrontWheel(), WheelSide::Front}})
+    z[k++] = w->getBodyTransform(s).p()[2] + model.calcContactPoint(s, side).r_CP_G[2];
   return z;
 }
 
-// Moves height and pitch so that both tyres' lowest points are back at `target` (m): a roll step
+// Moves height and pitch so that both contact points are back at `target` (m): a roll step
 // otherwise lifts stiff tyres off the ground, where the residual has no gradient. Geometry only,
 // whatever the contact model; a few Newton steps with differenced 2 x 2 Jacobians.
 void restoreContactHeights(const VehicleModel& model, const Eigen::Vector2d& target, SimTK::State& s) {

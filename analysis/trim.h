@@ -102,8 +102,8 @@ std::vector<StateEntry> getTrimUnknowns(const vehicle::VehicleModel& model);
 /// The unknowns of the trim `options` ask for (straight running, or a turn: see the header comment).
 std::vector<StateEntry> getTrimUnknowns(const vehicle::VehicleModel& model, const TrimOptions& options);
 
-/// Steady-turn figures of a state (realizes to Velocity). The rear contact point P is the lowest
-/// point of the rear tyre's toroid (calcTorusContact); its velocity is that of the rear-frame point
+/// Steady-turn figures of a state (realizes to Velocity). The rear contact point P is the contact
+/// model's (ContactModel::calcContactPoint; a torus by default); its velocity is that of the rear-frame point
 /// at P, v_P = v_O + w x (P - O), so in a steady turn (w = r z) |v_P| = R r with R its path radius.
 struct TurnFigures {
   double speed = 0;                  ///< |v_P| horizontal, m/s

@@ -69,7 +69,7 @@ void registerDiagnoseCommands(CLI::App& app) {
   addStrictOption(cmd, a->strict);
   cmd->callback([a]() {
     const ParameterOverrides changes(a->overrides);  // the --set text, parsed once
-    const Scenario scenario = ScenarioSource(a->scenario).load(changes);
+    Scenario scenario = ScenarioSource(a->scenario).load(changes);
     reportScenarioWarnings(scenario, a->strict);
     const MeasuredData data = loadMeasuredData(a->measurements);
     DiagnosisOptions opt;

@@ -242,7 +242,7 @@ void registerStudyCommand(CLI::App& app) {
   study->callback([st, dampingOption]() {
     const ParameterOverrides changes(st->overrides);  // the --set text, parsed once
     const ScenarioSource source(st->scenario);        // the file, read once for every variant
-    const Scenario scenario = source.load(changes);
+    Scenario scenario = source.load(changes);
     reportScenarioWarnings(scenario, st->strict);
     StudyOptions opt;
     opt.sweep.start = scenario.speeds.start;

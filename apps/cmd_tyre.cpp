@@ -86,7 +86,7 @@ std::string describeMagicFormula(const tyres::MagicFormulaTyre& t) {
 
 // The wheel's tyre of a scenario's contact section, read (both tyres, strictly) as its plugin reads it.
 InspectedTyre readContactTyre(const Scenario& s, const std::string& wheel) {
-  YamlMap contact(s.contact.params, s.contact.file, s.contact.path);
+  YamlMap contact(s.contact.params, s.contact.file, s.contact.path, s.inputs);
   contact.markUsed("model");
   InspectedTyre t;
   const bool front = wheel == "front";
@@ -117,7 +117,10 @@ InspectedTyre loadScenarioTyre(const TyreArgs& a) {
     throw InputError({"command line", 0, 0, "--wheel"}, "'" + a.wheel + "': expected front or rear");
   const Scenario s = loadScenario(a.file, a.overrides);
   try {
-    return readContactTyre(s, a.wheel);
+    InspectedTyre t = readContactTyre(s, a.wheel);
+    for (const io::InputWarning& w : s.inputs->getWarnings())
+      std::cerr << "motostab: warning: " << w.where.describe() << ": " << w.message << "\n";
+    return t;
   } catch (const InputError& e) {
     scenario::rethrowNamingOverride(e, s.overrides);
   }

@@ -112,7 +112,7 @@ void checkResultSize(const UncertaintyArgs& a, const UncertaintySetup& setup) {
 void runUncertainty(const UncertaintyArgs& a) {
   DistributedSession session;
   const ParameterOverrides changes(a.overrides);  // the --set text, parsed once
-  const Scenario scenario = ScenarioSource(a.scenario).load(changes);
+  Scenario scenario = ScenarioSource(a.scenario).load(changes);
   reportScenarioWarnings(scenario, a.strict, session.getRank() == 0);
   const UncertaintySetup setup = prepareUncertainty(a.scenario, changes, makeOptions(a, scenario));
   checkResultSize(a, setup);

@@ -12,6 +12,7 @@
 #include "io/input_error.h"
 #include "io/number.h"
 #include "io/output_folder.h"
+#include "plugins/builtin.h"
 #include "scenario/plausibility.h"
 #include "scenario/scenario.h"
 
@@ -131,9 +132,10 @@ void addStrictOption(CLI::App* command, bool& strict) {
                     "Plausibility warnings (likely unit slips or swapped quantities, docs/scenario-format.md) are errors");
 }
 
-void reportScenarioWarnings(const scenario::Scenario& s, bool strict, bool print) {
+void reportScenarioWarnings(scenario::Scenario& s, bool strict, bool print) {
+  plugins::makeBuiltinRegistry().readScenarioSections(s);
   for (const scenario::ScenarioWarning& w : s.warnings) {
-    if (strict) throw InputError(w.where, w.message + " (a plausibility warning; --strict makes it an error)");
+    if (strict && w.check != scenario::ScenarioWarning::Check::PluginInput) throw InputError(w.where, w.message + " (a plausibility warning; --strict makes it an error)");
     if (print) std::cerr << "motostab: warning: " << scenario::formatWarning(w) << "\n";
   }
 }

@@ -56,10 +56,11 @@ CLI::Validator makeThreadsCheck();
 
 /// Adds `--strict` (plausibility warnings are errors, exit 2) to a command that reads a scenario.
 void addStrictOption(CLI::App* command, bool& strict);
-/// Prints each plausibility warning of `scenario` (scenario/plausibility.h) to stderr as
-/// "motostab: warning: FILE:LINE:COL: KEY: ..." (when `print`), or with `strict` throws an InputError
-/// at the first one.
-void reportScenarioWarnings(const scenario::Scenario& scenario, bool strict, bool print = true);
+/// Completes the load of `scenario`: its plugin sections are read once (PluginRegistry::
+/// readScenarioSections: the files they name are kept, their warnings added), then each warning is
+/// printed to stderr as "motostab: warning: FILE:LINE:COL: KEY: ..." (when `print`), or with `strict`
+/// the first plausibility warning (scenario/plausibility.h) is an InputError.
+void reportScenarioWarnings(scenario::Scenario& scenario, bool strict, bool print = true);
 /// loadScenario(file, overrides), then reportScenarioWarnings.
 scenario::Scenario loadScenarioReporting(const std::string& file, const std::vector<std::string>& overrides, bool strict);
 

@@ -147,7 +147,8 @@ TirForceLaw loadTirForCurve(const std::string& path, std::ostream& warnings) {
   const auto source = tyres::makeTirSource(t.file, nullptr);
   t.law = tyres::makeTyreForceLaw(t.file.getFitType() == 62 ? tyres::MagicFormulaVariant::MF62 : tyres::MagicFormulaVariant::MF61,
                                   *source);
-  tyres::warnUnused(*source, path, warnings);
+  const std::string unused = tyres::describeUnused(*source, path);
+  if (!unused.empty()) warnings << "warning: " << unused << "\n";
   return t;
 }
 

@@ -150,8 +150,11 @@ YAML::Node parseYamlText(const std::string& text, const std::string& file, const
 }
 
 YamlMap::YamlMap(const YAML::Node& node, std::string file, std::string path)
+    : YamlMap(node, std::move(file), std::move(path), nullptr) {}
+
+YamlMap::YamlMap(const YAML::Node& node, std::string file, std::string path, std::shared_ptr<InputStore> inputs)
     : node_(node), file_(std::move(file)), path_(std::move(path)),
-      used_(std::make_shared<std::set<std::string>>()) {
+      used_(std::make_shared<std::set<std::string>>()), inputs_(std::move(inputs)) {
   if (!node_.IsMap()) fail("", "expected a mapping of keys to values");
   checkKeys(node_, file_, path_, false);
 }
@@ -304,7 +307,7 @@ std::vector<std::string> YamlMap::getStringList(const std::string& key) {
 YamlMap YamlMap::getMap(const std::string& key) {
   const YAML::Node n = require(key);
   if (!n.IsMap()) fail(key, "expected a mapping");
-  return YamlMap(n, file_, childPath(key));
+  return YamlMap(n, file_, childPath(key), inputs_);
 }
 
 std::vector<YamlMap> YamlMap::getMapList(const std::string& key) {
@@ -312,7 +315,7 @@ std::vector<YamlMap> YamlMap::getMapList(const std::string& key) {
   std::vector<YamlMap> out;
   for (size_t i = 0; i < n.size(); ++i) {
     if (!n[i].IsMap()) failElement(key, i, "expected a mapping");
-    out.emplace_back(n[i], file_, childPath(key) + "[" + std::to_string(i) + "]");
+    out.emplace_back(n[i], file_, childPath(key) + "[" + std::to_string(i) + "]", inputs_);
   }
   return out;
 }
@@ -359,6 +362,22 @@ long getYamlFileOpenCount(const std::string& file) {
   std::lock_guard<std::mutex> guard(gOpenCountLock);
   const auto it = gOpenCounts.find(file);
   return it == gOpenCounts.end() ? 0 : it->second;
+}
+
+std::string YamlMap::readFileText(const std::string& key, std::uintmax_t maxBytes) {
+  const std::string path = getFilePath(key);
+  return inputs_ ? inputs_->readText(path, maxBytes) : readInputFile(path, maxBytes);
+}
+
+YamlMap YamlMap::loadFileMap(const std::string& key) {
+  const std::string path = getFilePath(key);
+  const YAML::Node root = parseYamlText(readFileText(key, kMaxTextFileBytes), path, "");
+  checkKeys(root, path, "", true);
+  return YamlMap(root, path, "", inputs_);
+}
+
+void YamlMap::warn(const std::string& key, const std::string& message) const {
+  if (inputs_) inputs_->addWarning(locate(key), message);
 }
 
 YamlMap loadYamlFile(const std::string& file) {

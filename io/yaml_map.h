@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "io/input_error.h"
+#include "io/input_store.h"
 
 namespace motostab::io {
 
@@ -23,6 +24,9 @@ class YamlMap {
  public:
   /// `node` must be a mapping with unique scalar keys; else an InputError at it.
   YamlMap(const YAML::Node& node, std::string file, std::string path);
+  /// The same, reading the files it names through `inputs` (io/input_store.h) and recording its
+  /// warnings there; maps taken from it (getMap, getMapList, loadFileMap) share the store.
+  YamlMap(const YAML::Node& node, std::string file, std::string path, std::shared_ptr<InputStore> inputs);
 
   bool has(const std::string& key) const;
   double getDouble(const std::string& key);
@@ -57,6 +61,14 @@ class YamlMap {
   std::string getFilePath(const std::string& key);
   /// A list of such file names.
   std::vector<std::string> getFilePathList(const std::string& key);
+  /// The text of the file named at `key` (getFilePath), at most `maxBytes`: through the store, read
+  /// once and kept; without a store, read now (io/input_file.h).
+  std::string readFileText(const std::string& key, std::uintmax_t maxBytes);
+  /// The YAML file named at `key` as a root map (as loadYamlFile, read through readFileText).
+  YamlMap loadFileMap(const std::string& key);
+  /// Records a warning at `key` in the store (reported by the command that loaded the input; a
+  /// library never prints). Without a store the warning is dropped.
+  void warn(const std::string& key, const std::string& message) const;
   /// Marks a key as handled by someone else (e.g. a plugin's own parameters).
   void markUsed(const std::string& key);
   /// "missing key 'PATH.key' (keys given here: ...)": a typo of the missing key is usually among them.
@@ -86,6 +98,7 @@ class YamlMap {
   std::string file_;
   std::string path_;
   std::shared_ptr<std::set<std::string>> used_;
+  std::shared_ptr<InputStore> inputs_;
 };
 
 /// Nodes a YAML input may hold, each alias counted as the node it names.

@@ -13,11 +13,12 @@
 #include "Simbody.h"
 
 #include "io/yaml_map.h"
+#include "plugins/contact_geometry.h"
 #include "plugins/state_role.h"
 
 /// Version of this interface. A library built against another version is refused at load; bump it
 /// whenever a type in this header changes layout or meaning.
-#define MOTOSTAB_PLUGIN_API_VERSION 4
+#define MOTOSTAB_PLUGIN_API_VERSION 5
 
 namespace motostab::plugins {
 
@@ -46,6 +47,14 @@ class ContactModel {
   virtual ~ContactModel() = default;
   /// Adds the contact of one wheel with flat ground (z = 0) to the system.
   virtual void addWheel(BuildContext& context, const WheelSite& wheel) = 0;
+  /// Where `wheel` meets the ground when its centre frame has orientation R_GW and angular velocity
+  /// w_GW_G (rad/s, ground frame): the centre-to-contact vector and its rate (plugins/contact_geometry.h).
+  /// The trims use it (the speed of a turn is that of the rear contact point; a roll step keeps both
+  /// contact points at their heights), whatever the model. Default: the toroidal wheel of wheel.radius
+  /// and wheel.crownRadius (calcTorusContact), as every built-in model; override for another shape.
+  virtual ContactPoint calcContactPoint(const WheelSite& wheel, const SimTK::Rotation& R_GW, const SimTK::Vec3& w_GW_G) const {
+    return calcTorusContact(R_GW, w_GW_G, wheel.radius, wheel.crownRadius);
+  }
   /// The auxiliary states (z) this model allocates for a wheel, in allocation order: name and role
   /// (a tyre's relaxation state is StateRole::TyreLag with the wheel's side).
   virtual std::vector<AuxiliaryState> getStates(const WheelSite& wheel) const { return {}; }

@@ -108,8 +108,9 @@ void PluginRegistry::addSwingarmModel(const std::string& name, SwingarmModelFact
 std::vector<std::string> PluginRegistry::getContactModelNames() const { return namesOf(contactModels_); }
 std::vector<std::string> PluginRegistry::getSwingarmModelNames() const { return namesOf(swingarmModels_); }
 
-std::unique_ptr<SwingarmModel> PluginRegistry::createSwingarmModel(const SwingarmSpec& spec) const {
-  YamlMap params(spec.params, spec.file, "swingarm");
+std::unique_ptr<SwingarmModel> PluginRegistry::createSwingarmModel(const SwingarmSpec& spec,
+                                                                  std::shared_ptr<io::InputStore> inputs) const {
+  YamlMap params(spec.params, spec.file, "swingarm", std::move(inputs));
   const auto it = swingarmModels_.find(spec.compliance);
   if (it == swingarmModels_.end())
     params.fail("compliance", "unknown swingarm compliance plugin '" + spec.compliance + "' (known: " +
@@ -120,8 +121,9 @@ std::unique_ptr<SwingarmModel> PluginRegistry::createSwingarmModel(const Swingar
   return model;
 }
 
-std::unique_ptr<ContactModel> PluginRegistry::createContactModel(const PluginSpec& spec) const {
-  YamlMap params(spec.params, spec.file, spec.path);
+std::unique_ptr<ContactModel> PluginRegistry::createContactModel(const PluginSpec& spec,
+                                                                std::shared_ptr<io::InputStore> inputs) const {
+  YamlMap params(spec.params, spec.file, spec.path, std::move(inputs));
   const auto it = contactModels_.find(spec.model);
   if (it == contactModels_.end()) {
     params.fail("model", "unknown contact plugin '" + spec.model + "' (known: " + joinNames(getContactModelNames()) + ")");
@@ -130,6 +132,19 @@ std::unique_ptr<ContactModel> PluginRegistry::createContactModel(const PluginSpe
   auto model = it->second(params);
   params.finish();
   return model;
+}
+
+void PluginRegistry::readScenarioSections(scenario::Scenario& s) {
+  try {
+    for (size_t i = 0; i < s.plugins.size(); ++i)
+      loadLibrary(s.plugins[i], {s.sourceFile, 0, 0, "plugins[" + std::to_string(i) + "]"});
+    createContactModel(s.contact, s.inputs);
+    if (s.hasSwingarm) createSwingarmModel(s.swingarm, s.inputs);
+  } catch (const InputError& e) {
+    scenario::rethrowNamingOverride(e, s.overrides);
+  }
+  for (const io::InputWarning& w : s.inputs->getWarnings())
+    s.warnings.push_back({scenario::ScenarioWarning::Check::PluginInput, w.where, w.message});
 }
 
 void PluginRegistry::loadLibrary(const std::string& path, const InputLocation& where) {

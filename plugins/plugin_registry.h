@@ -19,12 +19,20 @@ class PluginRegistry : public PluginRegistrar {
   /// Registers a contact model; a duplicate name throws std::runtime_error.
   void addContactModel(const std::string& name, ContactModelFactory factory) override;
   /// Creates the contact model a scenario names; an unknown name is an InputError at spec.path.model.
-  std::unique_ptr<ContactModel> createContactModel(const scenario::PluginSpec& spec) const;
+  /// The plugin reads the files its section names through `inputs` and records its warnings there.
+  std::unique_ptr<ContactModel> createContactModel(const scenario::PluginSpec& spec,
+                                                   std::shared_ptr<io::InputStore> inputs = nullptr) const;
   std::vector<std::string> getContactModelNames() const;
   /// Registers a swingarm compliance model; a duplicate name throws std::runtime_error.
   void addSwingarmModel(const std::string& name, SwingarmModelFactory factory) override;
   /// Creates the model named by `swingarm.compliance`; unknown names are InputErrors there.
-  std::unique_ptr<SwingarmModel> createSwingarmModel(const scenario::SwingarmSpec& spec) const;
+  std::unique_ptr<SwingarmModel> createSwingarmModel(const scenario::SwingarmSpec& spec,
+                                                     std::shared_ptr<io::InputStore> inputs = nullptr) const;
+  /// Reads the plugin sections of a loaded scenario once, as building its model would: loads its
+  /// plugin libraries, creates its contact and swingarm models (the files they name are read into
+  /// `s.inputs` and kept for every later build) and appends the warnings they found to `s.warnings`
+  /// (ScenarioWarning::Check::PluginInput). Commands call it right after loading; InputError as a build.
+  void readScenarioSections(scenario::Scenario& s);
   std::vector<std::string> getSwingarmModelNames() const;
 
   /// Adds the plugins of the library at `path` (absolute, or relative to the working directory;

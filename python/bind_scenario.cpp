@@ -3,9 +3,11 @@
 #include <dlfcn.h>
 #include <yaml-cpp/yaml.h>
 
+#include <iostream>
 #include <mutex>
 
 #include "io/number.h"
+#include "plugins/builtin.h"
 #include "python/bind_scenario.h"
 #include "scenario/parameter_paths.h"
 
@@ -101,7 +103,15 @@ void exportSymbolsForPlugins() {
 ScenarioHandle::ScenarioHandle(std::shared_ptr<const ScenarioSource> src, ParameterOverrides ch)
     : source(std::move(src)), changes(std::move(ch)) {
   if (makeTree()["plugins"]) exportSymbolsForPlugins();
-  scenario = std::make_shared<const scenario::Scenario>(callQuietly([&] { return source->load(changes); }));
+  // The plugin sections are read once here (their files kept, their warnings logged, not printed).
+  scenario = std::make_shared<const scenario::Scenario>(callQuietly([&] {
+    scenario::Scenario s = source->load(changes);
+    plugins::makeBuiltinRegistry().readScenarioSections(s);
+    for (const scenario::ScenarioWarning& w : s.warnings)
+      if (w.check == scenario::ScenarioWarning::Check::PluginInput)
+        std::cerr << "warning: " << w.where.describe() << ": " << w.message << "\n";
+    return s;
+  }));
 }
 
 ScenarioHandle ScenarioHandle::withChanges(const py::dict& values) const {

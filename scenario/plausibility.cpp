@@ -189,6 +189,7 @@ const char* getCheckName(Check check) {
     case Check::TyreSign: return "tyre_sign";
     case Check::CorneringStiffness: return "cornering_stiffness";
     case Check::RelaxationLength: return "relaxation_length";
+    case Check::PluginInput: return "plugin_input";
   }
   return "unknown";
 }

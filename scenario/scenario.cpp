@@ -198,10 +198,12 @@ void rethrowNamingOverride(const InputError& e, const std::vector<std::string>& 
   throw e;
 }
 
-Scenario readScenarioTree(const YAML::Node& tree, const std::string& file, const std::vector<std::string>& overrides) {
+Scenario readScenarioTree(const YAML::Node& tree, const std::string& file, const std::vector<std::string>& overrides,
+                          std::shared_ptr<io::InputStore> inputs) {
   YamlMap m(tree, file, "");
   Scenario s = readScenario(file, m);
   s.overrides = overrides;
+  if (inputs) s.inputs = std::move(inputs);
   s.warnings = checkPlausibility(s, tree, file);
   return s;
 }

@@ -5,10 +5,12 @@
 #include <yaml-cpp/yaml.h>
 
 #include <array>
+#include <memory>
 #include <string>
 #include <vector>
 
 #include "io/input_error.h"
+#include "io/input_store.h"
 
 namespace motostab::scenario {
 
@@ -187,12 +189,13 @@ struct AssumedValue {
   std::string source;
 };
 
-/// A likely unit slip or swapped quantity found at load (scenario/plausibility.h): the check that
-/// found it, where the value is given, and what it means.
+/// A warning found at load: a likely unit slip or swapped quantity (scenario/plausibility.h), or what
+/// a plugin found reading its section (PluginInput, e.g. .tir coefficients its equations do not use);
+/// the check that found it, where the value is given, and what it means.
 struct ScenarioWarning {
   enum class Check {
     SteerAxisTilt, Wheelbase, Trail, ForkOffset, CentreOfMass, TotalMass, InertiaOrder, RadiusOfGyration,
-    WheelRadius, WheelInertia, DefaultWheel, Gravity, TyreSign, CorneringStiffness, RelaxationLength
+    WheelRadius, WheelInertia, DefaultWheel, Gravity, TyreSign, CorneringStiffness, RelaxationLength, PluginInput
   };
   Check check = Check::SteerAxisTilt;
   io::InputLocation where;
@@ -230,7 +233,10 @@ struct Scenario {
   std::vector<std::string> overrides;   ///< the --set assignments applied, for messages
   std::vector<ParameterUncertainty> uncertainty;  ///< stated parameter uncertainties (may be empty)
   std::vector<AssumedValue> assumed;    ///< values left out beside `total:` and taken from defaults
-  std::vector<ScenarioWarning> warnings;  ///< plausibility warnings found at load (never printed by a library)
+  std::vector<ScenarioWarning> warnings;  ///< warnings found at load (never printed by a library)
+  /// The files the plugin sections name, read once and shared by every copy and by every scenario
+  /// loaded from the same ScenarioSource, and the warnings the plugins found (io/input_store.h).
+  std::shared_ptr<io::InputStore> inputs = std::make_shared<io::InputStore>();
 };
 
 /// Loads and validates a scenario file. `overrides` are "a.b=value" assignments applied first.
@@ -240,7 +246,9 @@ Scenario loadScenario(const std::string& file, const std::vector<std::string>& o
 
 /// Validates a scenario from its YAML tree (as read from `file`, with the changes `overrides` name
 /// already applied; they are kept in Scenario::overrides for messages). InputError as loadScenario.
-Scenario readScenarioTree(const YAML::Node& tree, const std::string& file, const std::vector<std::string>& overrides);
+/// `inputs` is the store the scenario's plugins read their files through (a new one when null).
+Scenario readScenarioTree(const YAML::Node& tree, const std::string& file, const std::vector<std::string>& overrides,
+                          std::shared_ptr<io::InputStore> inputs = nullptr);
 
 /// Rethrows `error`, naming the override that set the value it is about ("(value from --set
 /// a.b=...)") when one did: for errors found after loading, e.g. by a plugin reading its section.

@@ -26,7 +26,7 @@ Scenario ScenarioSource::load(const ParameterOverrides& changes) const {
   const std::vector<std::string> texts = changes.format();
   const YAML::Node tree = makeTree(changes);
   try {
-    return readScenarioTree(tree, file_, texts);
+    return readScenarioTree(tree, file_, texts, inputs_);
   } catch (const InputError& e) {
     rethrowNamingOverride(e, texts);
   }

@@ -32,6 +32,8 @@ class ScenarioSource {
  private:
   std::string file_;
   YAML::Node tree_;  ///< never modified after construction (only copied)
+  /// Shared by every scenario loaded from this source: the files its plugins name are read once.
+  std::shared_ptr<io::InputStore> inputs_ = std::make_shared<io::InputStore>();
 };
 
 }  // namespace motostab::scenario

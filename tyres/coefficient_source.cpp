@@ -117,13 +117,13 @@ std::unique_ptr<CoefficientSource> makeMapSource(const std::map<std::string, dou
   return std::make_unique<MapSource>(coefficients, scaling, origin);
 }
 
-void warnUnused(const CoefficientSource& source, const std::string& name, std::ostream& out) {
+std::string describeUnused(const CoefficientSource& source, const std::string& name) {
   const auto unused = source.listUnused();
-  if (unused.empty()) return;
-  out << "warning: " << name << ": " << unused.size()
-      << " nonzero coefficient(s) that the implemented equations do not use, ignored:";
-  for (const auto& u : unused) out << " " << u;
-  out << "\n";
+  if (unused.empty()) return "";
+  std::string out = name + ": " + std::to_string(unused.size()) +
+                    " nonzero coefficient(s) that the implemented equations do not use, ignored:";
+  for (const auto& u : unused) out += " " + u;
+  return out;
 }
 
 }  // namespace motostab::tyres

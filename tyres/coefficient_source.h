@@ -53,8 +53,8 @@ std::unique_ptr<CoefficientSource> makeMapSource(const std::map<std::string, dou
                                                  const std::map<std::string, double>* scaling,
                                                  const std::string& origin = "coefficients");
 
-/// Writes one warning line to `out` naming the source's unused nonzero coefficients (listUnused), if any;
-/// `name` names the source (a file path).
-void warnUnused(const CoefficientSource& source, const std::string& name, std::ostream& out);
+/// One warning naming the source's unused nonzero coefficients (listUnused), "" if none; `name` names
+/// the source (a file path). Readers record it (YamlMap::warn); commands report it.
+std::string describeUnused(const CoefficientSource& source, const std::string& name);
 
 }  // namespace motostab::tyres

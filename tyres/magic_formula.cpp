@@ -5,7 +5,6 @@
 #include <array>
 #include <cctype>
 #include <cmath>
-#include <iostream>
 #include <sstream>
 #include <vector>
 
@@ -486,14 +485,6 @@ std::string findForceLawProblem(const TyreForceLaw& law) {
   if (!(std::isfinite(Fz0) && Fz0 > 0)) return "the nominal load is not positive";
   const std::string nonFinite = findNonFinitePoint(law, Fz0);
   return nonFinite.empty() ? findDegenerateLoad(law, Fz0) : nonFinite;
-}
-
-std::unique_ptr<TyreForceLaw> loadTirForceLaw(const std::string& path, const std::map<std::string, double>* scaling) {
-  const TirFile file = TirFile::load(path);
-  const auto source = makeTirSource(file, scaling);
-  auto law = makeTyreForceLaw(file.getFitType() == 62 ? MagicFormulaVariant::MF62 : MagicFormulaVariant::MF61, *source);
-  warnUnused(*source, path, std::cerr);
-  return law;
 }
 
 }  // namespace motostab::tyres

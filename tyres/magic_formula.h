@@ -113,8 +113,4 @@ constexpr double kMinRelaxationLength = 1e-4;
 /// (if the law has one) that is not finite and at least kMinRelaxationLength from 5 % of FNOMIN up.
 std::string findForceLawProblem(const TyreForceLaw& law);
 
-/// The force law of a .tir file (variant from its FITTYP), with optional scaling overrides; unused
-/// nonzero coefficients are reported on std::cerr (warnUnused).
-std::unique_ptr<TyreForceLaw> loadTirForceLaw(const std::string& path, const std::map<std::string, double>* scaling = nullptr);
-
 }  // namespace motostab::tyres

@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <filesystem>
-#include <iostream>
 #include <map>
 #include <optional>
 #include <string>
@@ -83,12 +82,13 @@ MagicFormulaTyre readMagicFormulaTyre(YamlMap m) {
   if (m.has("tir")) {
     const std::string path = m.getFilePath("tir");
     if (!std::filesystem::is_regular_file(path)) m.fail("tir", "cannot open the tyre property file " + path);
-    const TirFile file = TirFile::load(path);
+    const TirFile file = TirFile::parse(m.readFileText("tir", TirFile::kMaxBytes), path);
     if (!variant) variant = file.getFitType() == 62 ? MagicFormulaVariant::MF62 : MagicFormulaVariant::MF61;
     const auto scaling = readScaling(m, *variant);
     const auto source = makeTirSource(file, &scaling);
     build(*source);
-    warnUnused(*source, path, std::cerr);
+    const std::string unused = describeUnused(*source, path);
+    if (!unused.empty()) m.warn("tir", unused);
   } else {
     if (!variant) m.fail("variant", "required with inline coefficients (mf61, mf62 or motorcycle)");
     const auto scaling = readScaling(m, *variant);

@@ -6,6 +6,8 @@ namespace motostab::tyres {
 
 using io::YamlMap;
 using plugins::BuildContext;
+using plugins::ContactPoint;
+using plugins::calcTorusContact;
 using plugins::ContactModel;
 using plugins::PluginRegistrar;
 using plugins::WheelSite;
@@ -20,18 +22,6 @@ using SimTK::SpatialVec;
 using SimTK::State;
 using SimTK::Transform;
 using SimTK::Vec3;
-
-TorusContact calcTorusContact(const SimTK::Rotation& R_GW, const Vec3& w_GW_G, double R, double rho) {
-  const Vec3 n(0, 0, 1);
-  const Vec3 a = R_GW.y().asVec3();
-  const Vec3 aDot = w_GW_G % a;
-  const Vec3 m = n - (~n * a) * a;
-  const Vec3 mDot = -(~n * aDot) * a - (~n * a) * aDot;
-  const Real len = m.norm();
-  const Vec3 d = -m / len;
-  const Vec3 dDot = -(mDot / len - m * ((~m * mDot) / (len * len * len)));
-  return {(R - rho) * d - rho * n, (R - rho) * dDot};
-}
 
 namespace {
 
@@ -90,7 +80,7 @@ class RollingConstraint : public SimTK::Constraint::Custom::Implementation {
   }
 
  private:
-  TorusContact contact(const SimTK::Rotation& R_GW, const Vec3& w) const {
+  ContactPoint contact(const SimTK::Rotation& R_GW, const Vec3& w) const {
     return calcTorusContact(R_GW, w, radius_, crown_);
   }
   Vec3 r_CP(const State& s) const {
@@ -103,7 +93,7 @@ class RollingConstraint : public SimTK::Constraint::Custom::Implementation {
   // Its time derivative: a_C + alpha x r_CP + w x d/dt(r_CP).
   Vec3 contactPointAcceleration(const State& s, const SpatialVec& A_GW) const {
     const Vec3& w = getBodyAngularVelocityFromState(s, wheel_);
-    const TorusContact c = contact(getBodyRotationFromState(s, wheel_), w);
+    const ContactPoint c = contact(getBodyRotationFromState(s, wheel_), w);
     return A_GW[1] + A_GW[0] % c.r_CP_G + w % c.rDot_CP_G;
   }
   // Constraint force f_G at the contact point of the wheel; the reaction on Ground does no work.

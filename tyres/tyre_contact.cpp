@@ -3,11 +3,12 @@
 #include <algorithm>
 #include <cmath>
 
-#include "tyres/rolling_no_slip.h"
 
 namespace motostab::tyres {
 
 using plugins::BuildContext;
+using plugins::ContactPoint;
+using plugins::calcTorusContact;
 using plugins::WheelSite;
 
 
@@ -21,7 +22,7 @@ TyreKinematics calcTyreKinematics(const State& s, const SimTK::MobilizedBody& wh
   const SimTK::Transform& X_GW = wheel.getBodyTransform(s);
   const Vec3& w = wheel.getBodyAngularVelocity(s);
   const Vec3& vC = wheel.getBodyOriginVelocity(s);
-  const TorusContact c = calcTorusContact(X_GW.R(), w, R, rho);
+  const ContactPoint c = calcTorusContact(X_GW.R(), w, R, rho);
   const Vec3 n(0, 0, 1);
   const double deflection = -(X_GW.p()[2] + c.r_CP_G[2]);
   const double deflectionRate = -(vC[2] + c.rDot_CP_G[2]);

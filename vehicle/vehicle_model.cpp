@@ -91,7 +91,7 @@ RearAssembly addRearAssembly(const Scenario& s, PluginRegistry& registry, BuildC
     out.rearWheel = addPinAtDesignPose(out.rearFrame, Transform(), makeWheel(s.rearWheel), Vec3(0), Vec3(0, 1, 0));
     return out;
   }
-  out.swingarm = registry.createSwingarmModel(s.swingarm);
+  out.swingarm = registry.createSwingarmModel(s.swingarm, s.inputs);
   const SwingarmFrame f = calcSwingarmFrame(s);
   const Rotation R_RS(SimTK::Mat33(f.x[0], f.y[0], f.z[0], f.x[1], f.y[1], f.z[1], f.x[2], f.y[2], f.z[2]), true);
   // The swingarm hangs from the rear frame, or from the suspension link (compliance in series).
@@ -211,7 +211,7 @@ void VehicleModel::build(PluginRegistry& registry, const std::vector<ModelExtens
     registry.loadLibrary(s.plugins[i], {s.sourceFile, 0, 0, "plugins[" + std::to_string(i) + "]"});
   registry_ = registry;
   extensions_ = extensions;
-  auto contact = registry.createContactModel(s.contact);
+  auto contact = registry.createContactModel(s.contact, s.inputs);
   BuildContext ctx{system_, matter_, forces_, s.gravity};
 
   RearAssembly rear = addRearAssembly(s, registry, ctx);
@@ -272,6 +272,16 @@ bool VehicleModel::applyLateralRoadStep(SimTK::State& state, WheelSide wheel, do
   for (const WheelSite& site : wheelSites_)
     if (site.side == wheel) return contacts_.front()->applyLateralRoadStep(state, site, offset);
   return false;
+}
+
+plugins::ContactPoint VehicleModel::calcContactPoint(const SimTK::State& state, WheelSide wheel) const {
+  for (const WheelSite& site : wheelSites_)
+    if (site.side == wheel) {
+      const bool moving = state.getSystemStage() >= SimTK::Stage::Velocity;
+      return contacts_.front()->calcContactPoint(site, site.wheel.getBodyRotation(state),
+                                                 moving ? site.wheel.getBodyAngularVelocity(state) : Vec3(0));
+    }
+  throw std::logic_error("calcContactPoint: no such wheel");
 }
 
 std::vector<std::string> VehicleModel::getContactOutputNames() const {

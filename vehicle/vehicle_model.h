@@ -104,6 +104,11 @@ class VehicleModel {
   /// contact model has no road input (e.g. a rolling constraint).
   bool applyLateralRoadStep(SimTK::State& state, WheelSide wheel, double offset) const;
 
+  /// The contact point of a wheel as its contact model gives it (ContactModel::calcContactPoint), in
+  /// ground. State realized to Position; realized to Velocity the rate is the wheel's, else it is that of
+  /// a wheel at rest (zero angular velocity).
+  plugins::ContactPoint calcContactPoint(const SimTK::State& state, WheelSide wheel) const;
+
   /// Named contact outputs of both wheels (tyre forces, slips; none for rolling constraints).
   std::vector<std::string> getContactOutputNames() const;
   /// Their values, state realized to Velocity.

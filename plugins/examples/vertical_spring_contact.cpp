@@ -27,6 +27,12 @@ class VerticalSpringContact : public motostab::plugins::ContactModel {
   void addWheel(motostab::plugins::BuildContext& ctx, const motostab::plugins::WheelSite& w) override {
     SimTK::Force::Custom(ctx.forces, new VerticalSpring(w.wheel, w.radius, k_));
   }
+  // The spring stands straight under the wheel centre whatever the camber: so does the contact point
+  // (the trims take it from here, not from a torus).
+  motostab::plugins::ContactPoint calcContactPoint(const motostab::plugins::WheelSite& w, const SimTK::Rotation&,
+                                                   const SimTK::Vec3&) const override {
+    return {SimTK::Vec3(0, 0, -w.radius), SimTK::Vec3(0)};
+  }
 
  private:
   double k_;

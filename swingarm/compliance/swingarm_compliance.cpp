@@ -9,7 +9,6 @@
 namespace motostab::swingarm {
 
 using io::YamlMap;
-using io::loadYamlFile;
 using multibody::addPinAtDesignPose;
 using plugins::BuildContext;
 using plugins::PluginRegistrar;
@@ -146,9 +145,10 @@ SwingarmModelFactory makeFactory(std::vector<std::string> axisNames) {
     for (const char* key : {"bending", "torsion", "twist"})
       if (m.has(key)) present.push_back({key, readAxis(m.getMap(key), kScale, cScale)});
     if (m.has("identification")) m.markUsed("identification");  // provenance only
-    // Axes written by `motostab identify swingarm`, used unchanged (path relative to the scenario).
+    // Axes written by `motostab identify swingarm`, used unchanged (path relative to the scenario);
+    // read once, when the scenario is loaded (io/input_store.h), and kept for every later build.
     if (m.has("axes_from")) {
-      YamlMap fragment = loadYamlFile(m.getFilePath("axes_from"));
+      YamlMap fragment = m.loadFileMap("axes_from");
       if (fragment.has("identification")) fragment.markUsed("identification");
       for (const char* key : {"bending", "torsion", "twist"}) {
         const bool inline_ = std::any_of(present.begin(), present.end(), [&](const auto& p) { return p.first == key; });

@@ -4,12 +4,12 @@
 
 #include "analysis/sweep.h"
 #include "scenario/scenario.h"
-#include "tyres/rolling_no_slip.h"
+#include "plugins/contact_geometry.h"
 
 namespace motostab::analysis {
 
 using scenario::loadScenario;
-using tyres::calcTorusContact;
+using plugins::calcTorusContact;
 using vehicle::CoordinateIndices;
 using vehicle::Input;
 using vehicle::VehicleModel;

@@ -13,14 +13,15 @@
 #include "analysis/trim.h"
 #include "core/portable_random.h"
 #include "scenario/scenario.h"
-#include "tyres/rolling_no_slip.h"
+#include "plugins/builtin.h"
+#include "plugins/contact_geometry.h"
 
 namespace motostab::analysis {
 
 using core::PortableRandom;
 using scenario::WheelSpec;
 using scenario::loadScenario;
-using tyres::calcTorusContact;
+using plugins::calcTorusContact;
 using vehicle::CoordinateIndices;
 using vehicle::Input;
 using vehicle::VehicleModel;
@@ -284,6 +285,80 @@ TEST(TurnTrim, FailureNamesSpeedAndRoll) {
     EXPECT_NE(m.find("residual norm"), std::string::npos) << m;
     EXPECT_DOUBLE_EQ(e.roll, opt.roll);
   }
+}
+
+
+// A contact plugin with its own geometry: the rolling constraint of a wheel with a wide crown (rho, m)
+// whatever crown the scenario's wheel has. Its contact point is not the scenario wheel's torus.
+class WideCrownContact : public plugins::ContactModel {
+ public:
+  WideCrownContact(std::unique_ptr<plugins::ContactModel> rolling, double crown) : rolling_(std::move(rolling)), crown_(crown) {}
+  void addWheel(plugins::BuildContext& context, const plugins::WheelSite& wheel) override {
+    rolling_->addWheel(context, widen(wheel));
+  }
+  plugins::ContactPoint calcContactPoint(const plugins::WheelSite& wheel, const SimTK::Rotation& R_GW,
+                                         const SimTK::Vec3& w_GW_G) const override {
+    return rolling_->calcContactPoint(widen(wheel), R_GW, w_GW_G);
+  }
+
+ private:
+  plugins::WheelSite widen(plugins::WheelSite wheel) const {
+    wheel.crownRadius = crown_;
+    return wheel;
+  }
+  std::unique_ptr<plugins::ContactModel> rolling_;
+  double crown_;
+};
+
+// The lowest point of a torus (centre C, spin axis a, radii R and rho) on the ground z = 0, written out
+// here: from C down the wheel plane by R - rho, then down by rho.
+SimTK::Vec3 findTorusBottom(const SimTK::Transform& X_GW, double R, double rho) {
+  const SimTK::Vec3 a = X_GW.R().y().asVec3(), n(0, 0, 1);
+  SimTK::Vec3 down = -(n - (~n * a) * a);
+  down /= down.norm();
+  return X_GW.p() + (R - rho) * down - rho * n;
+}
+
+// The horizontal speed of the rear-frame point at p (m/s), state realized to Velocity.
+double calcRearFramePointSpeed(const VehicleModel& model, const SimTK::State& s, const SimTK::Vec3& p) {
+  const SimTK::MobilizedBody& frame = model.getRearFrame();
+  const SimTK::Vec3 v = frame.getBodyOriginVelocity(s) + frame.getBodyAngularVelocity(s) % (p - frame.getBodyOriginLocation(s));
+  return std::hypot(v[0], v[1]);
+}
+
+// The turn trim takes the contact point from the contact plugin: with a wide-crowned wheel the rear
+// contact point moves across the tread with roll, and the trimmed speed is that point's (computed here
+// from the trimmed pose), not the speed of the scenario's knife-edge contact. Roll, speed and crown
+// drawn at random (seeded).
+TEST(TurnTrim, TakesTheContactPointFromTheContactPlugin) {
+  PortableRandom g(3303);
+  const double crown = g.drawUniform(0.05, 0.1), roll = g.drawUniform(0.2, 0.4), speed = g.drawUniform(4.5, 6);
+  plugins::PluginRegistry registry = plugins::makeBuiltinRegistry();
+  const plugins::PluginRegistry builtin = registry;
+  registry.addContactModel("wide_crown", [&builtin, crown](io::YamlMap&) -> std::unique_ptr<plugins::ContactModel> {
+    scenario::PluginSpec rolling;
+    rolling.model = "rolling_no_slip";
+    rolling.params = YAML::Load("{model: rolling_no_slip}");
+    rolling.path = "contact";
+    return std::make_unique<WideCrownContact>(builtin.createContactModel(rolling), crown);
+  });
+  const VehicleModel model(loadScenario(kWhipple, {"contact.model=wide_crown"}), registry);
+  TrimOptions opt;
+  opt.roll = roll;
+  const TrimResult t = calcTrim(model, speed, opt);
+  const TurnFigures f = calcTurnFigures(model, t.state);  // realizes to Velocity
+  const auto& sc = model.getScenario();
+  ASSERT_EQ(sc.rearWheel.crownRadius, 0);
+  const SimTK::Transform& X_GR = model.getRearWheel().getBodyTransform(t.state);
+  const SimTK::Transform& X_GF = model.getFrontWheel().getBodyTransform(t.state);
+  const SimTK::Vec3 wideRear = findTorusBottom(X_GR, sc.rearWheel.radius, crown);
+  EXPECT_NEAR(wideRear[2], 0, 1e-9);  // the wide crown rolls on the ground
+  EXPECT_NEAR(findTorusBottom(X_GF, sc.frontWheel.radius, crown)[2], 0, 1e-9);
+  EXPECT_NEAR(f.speed, calcRearFramePointSpeed(model, t.state, wideRear), 1e-12);
+  EXPECT_NEAR(f.speed, speed, 1e-8);
+  // The scenario's knife edge is elsewhere (rho sin(roll) across) and moves at another speed.
+  const double knifeSpeed = calcRearFramePointSpeed(model, t.state, findTorusBottom(X_GR, sc.rearWheel.radius, 0));
+  EXPECT_GT(std::abs(knifeSpeed - speed), 1e-4) << knifeSpeed;
 }
 
 }  // namespace

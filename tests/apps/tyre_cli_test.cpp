@@ -309,4 +309,30 @@ TEST(CliTyre, UncertaintySamplesAScalingFactor) {
   EXPECT_TRUE(found);
 }
 
+
+// A .tir coefficient the equations do not use (the sample's PTX1, a longitudinal relaxation length) is
+// warned once by the command, named at the key that gives the file, not once per model built (the
+// sweep builds one model per worker, the trims and linearisations more).
+TEST(CliTyre, UnusedTirCoefficientsAreWarnedOnce) {
+  const auto dir = makeTempDir("cli_tyre_unused");
+  const std::string tir = std::string(MOTOSTAB_SOURCE_DIR) + "/" + kSampleTir;
+  std::ifstream in(tir);
+  std::string line;
+  int ptx1 = 0;
+  for (int n = 1; std::getline(in, line); ++n)
+    if (line.rfind("PTX1 ", 0) == 0) ptx1 = n;
+  ASSERT_GT(ptx1, 0);
+  const std::string contact = "contact={model: magic_formula, front: {tir: " + tir + ", radial_stiffness_N_per_m: 100000}," +
+                              " rear: {tir: " + tir + ", radial_stiffness_N_per_m: 120000}}";
+  const CliRun r = runCli({"sweep", "scenarios/enduro.yaml", "--set", contact, "--speeds", "10:12:1", "--threads", "2", "--out",
+                           (dir / "out").string()});
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  const std::string named = "PTX1 (line " + std::to_string(ptx1) + ")";
+  size_t count = 0;
+  for (size_t at = r.output.find(named); at != std::string::npos; at = r.output.find(named, at + 1)) ++count;
+  EXPECT_EQ(count, 1u) << r.output;
+  EXPECT_NE(r.output.find("motostab: warning: "), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find(".tir: " + tir + ": "), std::string::npos) << r.output;  // at contact.front.tir or .rear.tir
+}
+
 }  // namespace

@@ -271,10 +271,9 @@ TEST(MagicFormula61, UnusedNonzeroCoefficientsAreReported) {
   EXPECT_FALSE(has("QBZ4"));
   EXPECT_FALSE(has("PTY1"));
   EXPECT_FALSE(has("LSGKP"));
-  std::ostringstream out;
-  warnUnused(*source, "sample.tir", out);
-  EXPECT_NE(out.str().find("warning: sample.tir:"), std::string::npos);
-  EXPECT_NE(out.str().find("PTX1 (line 134)"), std::string::npos);
+  const std::string warning = describeUnused(*source, "sample.tir");
+  EXPECT_EQ(warning.rfind("sample.tir: ", 0), 0u);
+  EXPECT_NE(warning.find("PTX1 (line 134)"), std::string::npos);
 }
 
 TEST(MagicFormula61, RightHandFitsAreRefused) {

@@ -132,6 +132,7 @@ TEST(SwingarmCompliance, TiltedAxisTrimsWithSmallLateralStates) {
 
 #include <fstream>
 
+#include "plugins/builtin.h"
 #include "swingarm/identification/decomposition.h"
 
 namespace motostab::swingarm {
@@ -177,6 +178,36 @@ TEST(SwingarmCompliance, IdentificationFragmentIsUsedUnchanged) {
       EXPECT_LT(best, 1e-6 * (1 + std::abs(a.eigenvalues[k]))) << model;
     }
   }
+}
+
+
+// The `axes_from` file is read once, when the scenario's sections are read at load: it may be deleted
+// after that, and building the model (again, and on four sweep workers) still works and uses its axes.
+// Without that read at load, the same scenario loaded after the deletion cannot be built.
+TEST(SwingarmCompliance, AxesFileIsReadOnceAtLoad) {
+  const auto dir = makeTempDir("axes_once");
+  const auto axes = dir / "axes.yaml";
+  std::ofstream(axes) << "bending: {arm_m: 0.388, beta_deg: 90.0, stiffness_Nm_per_rad: 94200, damping_Nms_per_rad: 2.25}\n";
+  YAML::Node tree = YAML::LoadFile(kEnduro);
+  for (const char* k : {"bending", "torsion", "twist"}) tree["swingarm"].remove(k);
+  tree["swingarm"]["axes_from"] = "axes.yaml";  // relative to the scenario file
+  tree["swingarm"]["compliance"] = "bending";
+  const auto scenarioFile = dir / "enduro_axes.yaml";
+  std::ofstream(scenarioFile) << tree;
+  scenario::Scenario s = loadScenario(scenarioFile.string());
+  plugins::makeBuiltinRegistry().readScenarioSections(s);
+  EXPECT_EQ(s.inputs->getReadCount(axes.string()), 1);
+  std::filesystem::remove(axes);
+  const VehicleModel model(s);
+  const auto& names = model.getQNames();
+  EXPECT_NE(std::find(names.begin(), names.end(), "swingarm_bending"), names.end());
+  SweepOptions opt;
+  opt.start = 10, opt.stop = 13, opt.step = 1, opt.threads = 4;
+  const SweepResult sweep = runSweep(model, opt);
+  EXPECT_EQ(sweep.speeds.size(), 4u);
+  EXPECT_EQ(s.inputs->getReadCount(axes.string()), 1);
+  const scenario::Scenario late = loadScenario(scenarioFile.string());
+  EXPECT_THROW(VehicleModel{late}, io::InputError);
 }
 
 }  // namespace
