@@ -360,13 +360,23 @@ void labelLateralModes(std::vector<Root>& roots, Capacity& cap, double zero) {
   // Where no lateral oscillation exists, the weave is split into two real roots (unstable, as the
   // bicycle's at standstill or below the speed where they join in a tight turn): the two unstable real
   // lateral roots with the most roll, named before the capsize so that it cannot take one of them.
-  // A lateral oscillation that roll does not lead (a bicycle's tyre and frame modes at 15-20 Hz at walking
-  // pace) is not the weave they split from.
+  // A lateral oscillation that roll does not lead is not the weave they split from; nor is a stable one
+  // faster than both where a third, slower roll-led real root (the capsize) is there too (a bicycle on
+  // tyres at walking pace, with roll-led tyre and frame modes at 15-20 Hz).
   auto splitRoot = [&](const Root& r) { return !r.oscillatory && lateralFamily(r) && r.lambda.real() > 0; };
-  if (!std::any_of(roots.begin(), roots.end(), [&](const Root& r) { return !r.label && r.oscillatory && lateralFamily(r) && rollLed(r); })) {
-    Root* split1 = pickBest(roots, splitRoot, moreRoll);
-    Root* split2 = pickBest(roots, [&](const Root& r) { return splitRoot(r) && &r != split1; }, moreRoll);
-    if (split2) cap.take(*split1, ModeLabel::Weave), cap.take(*split2, ModeLabel::Weave);
+  Root* split1 = pickBest(roots, splitRoot, moreRoll);
+  Root* split2 = pickBest(roots, [&](const Root& r) { return splitRoot(r) && &r != split1; }, moreRoll);
+  if (split2) {
+    const double slow = std::min(std::abs(split1->lambda), std::abs(split2->lambda));
+    const double fast = std::max(std::abs(split1->lambda), std::abs(split2->lambda));
+    const bool slowerRoot = std::any_of(roots.begin(), roots.end(), [&](const Root& r) {
+      return &r != split1 && &r != split2 && !r.oscillatory && lateralFamily(r) && rollLed(r) && std::abs(r.lambda) <= slow;
+    });
+    const bool weaveLeft = std::any_of(roots.begin(), roots.end(), [&](const Root& r) {
+      return !r.label && r.oscillatory && lateralFamily(r) && rollLed(r) &&
+             !(slowerRoot && r.lambda.real() < 0 && std::abs(r.lambda) > fast);
+    });
+    if (!weaveLeft) cap.take(*split1, ModeLabel::Weave), cap.take(*split2, ModeLabel::Weave);
   }
   // In a turn at a fixed roll the speed is tied to the lean: a root that the forward motion leads but
   // with a lateral share of at least 0.2 can be the capsize.
