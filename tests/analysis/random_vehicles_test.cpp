@@ -240,6 +240,14 @@ TEST(RandomVehicles, CruiserWrittenFromTheDocsHasItsModesNamedAndOnlyTrueCrossin
   sweepAndCheck(cruiser, 4, 8, 1, {20.0}, "cruiser (1 m/s grid)");
 }
 
+// A city bicycle on tyres written from the documentation alone: at walking pace its weave has split into
+// two unstable real roots beside roll-led tyre and frame oscillations at 15-20 Hz (once an unstable
+// `other`), and in turns its weave is slow.
+TEST(RandomVehicles, CityBicycleWrittenFromTheDocsHasItsModesNamedAndOnlyTrueCrossings) {
+  const Scenario bike = loadScenario(std::string(MOTOSTAB_SOURCE_DIR) + "/tests/data/vehicles/citybike.yaml");
+  sweepAndCheck(bike, 1, 12, 0.5, {0.0, 10.0}, "city bicycle");
+}
+
 TEST(RandomVehicles, EnduroVariantsHaveTheirModesNamedAndEveryCrossing) {
   checkRandomVariants("enduro", 20261127, MOTOSTAB_RANDOM_VEHICLES);
 }
