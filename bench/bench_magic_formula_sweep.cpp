@@ -18,7 +18,9 @@
 #include "core/portable_random.h"
 #include "scenario/scenario.h"
 #include "io/yaml_map.h"
+#include "tyres/coefficient_source.h"
 #include "tyres/magic_formula.h"
+#include "tyres/tir_file.h"
 
 namespace {
 
@@ -104,7 +106,9 @@ void BM_TyreEvaluation(benchmark::State& st) {
     law = motostab::tyres::makeTyreForceLaw(motostab::tyres::MagicFormulaVariant::Motorcycle, *motostab::tyres::makeYamlSource(m, nullptr));
     Fz = 1100;
   } else {
-    law = motostab::tyres::loadTirForceLaw(kSampleTir);
+    const motostab::tyres::TirFile file = motostab::tyres::TirFile::load(kSampleTir);
+    const auto variant = file.getFitType() == 62 ? motostab::tyres::MagicFormulaVariant::MF62 : motostab::tyres::MagicFormulaVariant::MF61;
+    law = motostab::tyres::makeTyreForceLaw(variant, *motostab::tyres::makeTirSource(file, nullptr));
   }
   motostab::core::PortableRandom rng(5);
   std::vector<motostab::tyres::TyreSlip> slips(256);
