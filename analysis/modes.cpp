@@ -115,12 +115,10 @@ ContentLayout calcContentLayout(const LinearModel& lin) {
 
 // Participation factors |l_kj v_jk| of the auxiliary states j in each eigenvalue k, normalised by the sum
 // over all states (Perez-Arriaga, Verghese & Schweppe 1982, IEEE Trans. PAS 101(9):3117): rows follow
-// layout.auxiliary. Empty without auxiliary states or when the eigenvectors are singular.
-Eigen::MatrixXd calcAuxiliaryParticipation(const LinearModel& lin, const ContentLayout& layout) {
+// layout.auxiliary; L = V^-1 (calcLeftEigenvectors). Empty without auxiliary states or a finite L.
+Eigen::MatrixXd calcAuxiliaryParticipation(const LinearModel& lin, const ContentLayout& layout, const Eigen::MatrixXcd& L) {
   const Eigen::Index n = lin.eigenvectors.cols();
-  if (layout.auxiliary.empty() || n == 0) return {};
-  const Eigen::MatrixXcd L = Eigen::PartialPivLU<Eigen::MatrixXcd>(lin.eigenvectors).inverse();
-  if (!L.allFinite()) return {};
+  if (layout.auxiliary.empty() || n == 0 || L.rows() != n || !L.allFinite()) return {};
   Eigen::MatrixXd p(layout.auxiliary.size(), n);
   for (Eigen::Index k = 0; k < n; ++k) {
     double total = 0;
@@ -131,6 +129,12 @@ Eigen::MatrixXd calcAuxiliaryParticipation(const LinearModel& lin, const Content
     }
   }
   return p;
+}
+
+// The left eigenvectors as the rows of V^-1 (empty without eigenvectors).
+Eigen::MatrixXcd calcLeftEigenvectors(const LinearModel& lin) {
+  if (lin.eigenvectors.cols() == 0) return {};
+  return Eigen::PartialPivLU<Eigen::MatrixXcd>(lin.eigenvectors).inverse();
 }
 
 ModeContent calcContent(const LinearModel& lin, const ContentLayout& layout, const Eigen::MatrixXd& participation, int k) {
@@ -176,19 +180,23 @@ ModeContent calcContent(const LinearModel& lin, const ContentLayout& layout, con
   return c;
 }
 
-}  // namespace
-
-std::vector<ModeContent> calcModeContents(const LinearModel& lin) {
-  const ContentLayout layout = calcContentLayout(lin);
-  const Eigen::MatrixXd participation = calcAuxiliaryParticipation(lin, layout);
+// The content of every eigenvector, with L = V^-1.
+std::vector<ModeContent> calcContents(const LinearModel& lin, const ContentLayout& layout, const Eigen::MatrixXcd& L) {
+  const Eigen::MatrixXd participation = calcAuxiliaryParticipation(lin, layout, L);
   std::vector<ModeContent> out;
   for (Eigen::Index k = 0; k < lin.eigenvalues.size(); ++k) out.push_back(calcContent(lin, layout, participation, static_cast<int>(k)));
   return out;
 }
 
+}  // namespace
+
+std::vector<ModeContent> calcModeContents(const LinearModel& lin) {
+  return calcContents(lin, calcContentLayout(lin), calcLeftEigenvectors(lin));
+}
+
 ModeContent calcModeContent(const LinearModel& lin, int k) {
   const ContentLayout layout = calcContentLayout(lin);
-  return calcContent(lin, layout, calcAuxiliaryParticipation(lin, layout), k);
+  return calcContent(lin, layout, calcAuxiliaryParticipation(lin, layout, calcLeftEigenvectors(lin)), k);
 }
 
 namespace {
@@ -222,19 +230,16 @@ ModeLabel getComplianceLabel(StateRole r) {
 // First-order sensitivity Re(d lambda_k / d c) (1/s per N m s/rad) of every eigenvalue to a steering
 // damper c about the steer axis: the damper adds -c M^-1 e_s delta' to the rates' derivatives, so
 // d lambda_k / d c = -(l_k . M^-1 e_s) v_sk with l_k row k of V^-1 (Wilkinson 1965, The Algebraic
-// Eigenvalue Problem, ch. 2). Empty without a steer rate state, the mass matrix, or with singular V.
-Eigen::VectorXd calcSteerDampingSensitivity(const LinearModel& lin) {
+// Eigenvalue Problem, ch. 2); L = V^-1. Empty without a steer rate state, the mass matrix, or a finite L.
+Eigen::VectorXd calcSteerDampingSensitivity(const LinearModel& lin, const ContentLayout& layout, const Eigen::MatrixXcd& L) {
   const int steerRate = lin.findState(StateRole::Steer, StateKind::Rate);
-  std::vector<int> rates;
-  for (size_t i = 0; i < lin.states.size(); ++i)
-    if (lin.states[i].entry.slot == Slot::U) rates.push_back(static_cast<int>(i));
-  const Eigen::Index nr = static_cast<Eigen::Index>(rates.size()), n = lin.eigenvectors.cols();
-  if (steerRate < 0 || n == 0 || lin.massMatrix.rows() != nr || lin.massMatrix.cols() != nr) return {};
-  const auto s = std::find(rates.begin(), rates.end(), steerRate) - rates.begin();
-  const Eigen::VectorXd column = lin.massMatrix.ldlt().solve(Eigen::VectorXd::Unit(nr, s));
+  const Eigen::Index nr = static_cast<Eigen::Index>(layout.dofs.size()), n = lin.eigenvectors.cols();
+  if (steerRate < 0 || n == 0 || lin.massMatrix.rows() != nr || lin.massMatrix.cols() != nr || L.rows() != n) return {};
+  const auto s = std::find_if(layout.dofs.begin(), layout.dofs.end(), [&](const MechanicalDof& d) { return d.rate == steerRate; }) -
+                 layout.dofs.begin();
+  const Eigen::VectorXd column = layout.mass.ldlt().solve(Eigen::VectorXd::Unit(nr, s));
   Eigen::VectorXcd d = Eigen::VectorXcd::Zero(lin.eigenvectors.rows());
-  for (Eigen::Index a = 0; a < nr; ++a) d[rates[a]] = column[a];
-  const Eigen::MatrixXcd L = Eigen::PartialPivLU<Eigen::MatrixXcd>(lin.eigenvectors).inverse();
+  for (Eigen::Index a = 0; a < nr; ++a) d[layout.dofs[a].rate] = column[a];
   if (!L.allFinite() || !column.allFinite()) return {};
   const Eigen::VectorXcd ld = L * d;
   Eigen::VectorXd out(n);
@@ -244,8 +249,11 @@ Eigen::VectorXd calcSteerDampingSensitivity(const LinearModel& lin) {
 
 // Roots of lin with their content: each complex pair once (the member with the positive imaginary part).
 std::vector<Root> collectRoots(const LinearModel& lin) {
-  const std::vector<ModeContent> contents = calcModeContents(lin);
-  const Eigen::VectorXd steerDamping = calcSteerDampingSensitivity(lin);
+  // One layout and one V^-1 for the contents and the damper sensitivity.
+  const ContentLayout layout = calcContentLayout(lin);
+  const Eigen::MatrixXcd L = calcLeftEigenvectors(lin);
+  const std::vector<ModeContent> contents = calcContents(lin, layout, L);
+  const Eigen::VectorXd steerDamping = calcSteerDampingSensitivity(lin, layout, L);
   const Eigen::Index n = lin.eigenvalues.size();
   std::vector<bool> used(n, false);
   std::vector<Root> roots;
