@@ -346,9 +346,9 @@ class SweepRun {
   }
 
   // Trims and linearises speed k from the chain's last trim (or cold); false (the failure recorded)
-  // when the trim fails and failed speeds are kept: the chain then goes on from its last trim. With
-  // failed speeds kept, a warm-started trim that fails is tried once more cold (a tight turn at low
-  // speed can be too far from the next speed's for Newton's method).
+  // when the trim fails and failed speeds are kept: the chain then goes on from its last trim. A
+  // warm-started trim that fails is tried once more cold (a tight turn at low speed can be too far from
+  // the next speed's for Newton's method, or lead it to an equilibrium with a wheel in the air).
   bool trimAndLinearize(const VehicleModel& m, size_t k, bool lead, Chain& c) {
     try {
       if (!c.valid) {
@@ -364,8 +364,7 @@ class SweepRun {
           } else {
             updTrim(m, out_.speeds[k], opt_.trim, c.work);
           }
-        } catch (const TrimError&) {
-          if (!opt_.keepFailedSpeeds) throw;
+        } catch (const TrimError&) {  // e.g. a warm start that found a wheel in the air: cold
           c.work = calcTrim(m, out_.speeds[k], opt_.trim);
           c.lastJ.resize(0, 0);
         }
@@ -466,7 +465,9 @@ class SweepRun {
 };
 
 // Every sign change of a root's real part between neighbouring speeds (neutral roots excepted; one
-// member of a complex pair stands for both).
+// member of a complex pair stands for both while it stays one, a pair splitting into two real roots
+// having each go its own way), and every grid interval where the count of unstable roots changes with
+// no such sign change (a root the tracking lost: found by the count alone, branch null).
 struct Crossing {
   const ModeBranch* branch = nullptr;
   size_t k = 0;
@@ -478,13 +479,19 @@ struct Crossing {
 
 std::vector<Crossing> listCrossings(const SweepResult& out) {
   std::vector<Crossing> crossings;
+  std::vector<bool> seen(out.speeds.size(), false);
   for (const ModeBranch& br : out.branches)
     for (size_t k = 0; k + 1 < out.speeds.size(); ++k) {
       const double f0 = br.eigenvalue[k].real(), f1 = br.eigenvalue[k + 1].real();
-      if (!(f0 * f1 < 0 || (f1 == 0 && f0 != 0)) || br.eigenvalue[k].imag() < 0) continue;
+      if (!(f0 * f1 < 0 || (f1 == 0 && f0 != 0))) continue;
+      if (br.eigenvalue[k].imag() < 0 && br.eigenvalue[k + 1].imag() != 0) continue;
       if (br.labels[k] == ModeLabel::Neutral || br.labels[k + 1] == ModeLabel::Neutral) continue;
-      crossings.push_back({&br, k, {}});
+      Crossing& c = crossings.emplace_back();
+      c.branch = &br, c.k = k;
+      seen[k] = true;
     }
+  for (size_t k = 0; k + 1 < out.speeds.size(); ++k)
+    if (!seen[k] && countUnstable(out.models[k]) != countUnstable(out.models[k + 1])) crossings.emplace_back().k = k;
   return crossings;
 }
 
@@ -492,18 +499,69 @@ std::vector<Crossing> listCrossings(const SweepResult& out) {
 // bisecting it (findCrossingByCount): roots can cross several times there.
 constexpr int kCountSamples = 8;
 
+// The real root of lin nearest `near` (1/s), or NaN where lin has no real root.
+double findNearestRealRoot(const LinearModel& lin, double near) {
+  double best = std::nan("");
+  for (const std::complex<double>& l : lin.eigenvalues)
+    if (l.imag() == 0 && !(std::abs(l.real() - near) >= std::abs(best - near))) best = l.real();
+  return best;
+}
+
+// A real root is counted once it is above the zero-root threshold z, so the count of unstable roots
+// changes where the root passes +z, z / |d lambda/dv| past its zero. From lin at speed v (m/s), where
+// the count changed, the speed where the real root at lambda ~ +z is zero, by the secant method within
+// [lo, hi]: v itself where no real root is there (another root changed the count); none where the
+// root's zero is not within [lo, hi] (a slow root entering or leaving the band below z, which the
+// count of unstable roots ignores: no crossing).
+std::optional<double> findRealRootZero(const VehicleModel& m, const SweepOptions& fixed, const SweepOptions& opt,
+                                       const SweepResult& out, size_t k, const LinearModel& lin, double lo, double hi) {
+  const double v = lin.speed, z = calcZeroRoot(lin);
+  double fa = findNearestRealRoot(lin, z);
+  if (!(std::abs(fa - z) < 0.5 * z)) return v;
+  // Secant iterations on the root, each time the real root nearest its previous value.
+  double va = v, vb = v - 1e-4 * (hi - lo);
+  if (vb < lo) vb = v + 1e-4 * (hi - lo);
+  double fb = findNearestRealRoot(linearizeFrom(m, out, k, vb, fixed, false), fa);
+  for (int it = 0; it < 12; ++it) {
+    if (!std::isfinite(fb) || fb == fa) return v;
+    const double next = vb - fb * (vb - va) / (fb - fa);
+    if (!(next >= lo && next <= hi)) return std::nullopt;
+    va = vb, fa = fb, vb = next;
+    fb = findNearestRealRoot(linearizeFrom(m, out, k, vb, fixed, false), fa);
+    if (std::abs(vb - va) <= opt.criticalSpeedTolerance || fb == 0) return vb;
+  }
+  return std::abs(fb) < 0.01 * z ? vb : v;
+}
+
+// Whether the linear models at two speeds a tolerance apart belong to different equilibria (a jump
+// between steady-turn branches of the trims, not a root crossing zero): A changes by more than 1e-6 of
+// its largest entry, where a continuous branch changes it by about the tolerance times dA/dv.
+bool isTrimJump(const LinearModel& a, const LinearModel& b) {
+  return a.A.rows() != b.A.rows() || !((a.A - b.A).cwiseAbs().maxCoeff() <= 1e-6 * a.A.cwiseAbs().maxCoeff());
+}
+
 // The critical speed where the count of unstable roots goes from n0 at speed a to n1 != n0 at speed b
-// (m/s), by bisection to the tolerance, named by the label of the root nearest the imaginary axis there.
-CriticalSpeed bisectCount(const VehicleModel& m, const SweepOptions& fixed, const SweepOptions& opt, const SweepResult& out,
-                          size_t k, double a, double b, int n0, int n1) {
+// (m/s), by bisection to the tolerance (moved to the zero of a real root counted there, findRealRootZero),
+// named by the label of the root nearest the imaginary axis on the unstable side; none where the trims
+// there jump between equilibria (isTrimJump) or a slow root only passes the zero-root threshold.
+std::optional<CriticalSpeed> bisectCount(const VehicleModel& m, const SweepOptions& fixed, const SweepOptions& opt,
+                                         const SweepResult& out, size_t k, double a, double b, int n0, int n1) {
+  const double lo = a, hi = b;
   while (b - a > opt.criticalSpeedTolerance) {
     const double mid = 0.5 * (a + b);
     (countUnstable(linearizeFrom(m, out, k, mid, fixed, false)) == n0 ? a : b) = mid;
   }
+  if (isTrimJump(linearizeFrom(m, out, k, a, fixed, false), linearizeFrom(m, out, k, b, fixed, false))) return std::nullopt;
+  const double counted = 0.5 * (a + b);
+  const LinearModel atCount = linearizeFrom(m, out, k, counted, fixed, false);
+  const std::optional<double> atZero = findRealRootZero(m, fixed, opt, out, k, atCount, out.speeds[k], out.speeds[k + 1]);
+  if (!atZero) return std::nullopt;
   CriticalSpeed found;
-  found.speed = 0.5 * (a + b);
+  found.speed = *atZero;
   found.stabilising = n1 < n0;
-  const LinearModel lin = linearizeFrom(m, out, k, found.speed, fixed, true);
+  // Named where the count changed, or as far again past the zero (a real root at about +2 z).
+  const double named = std::clamp(2 * counted - found.speed, lo, hi);
+  const LinearModel lin = linearizeFrom(m, out, k, named, fixed, true);
   const double zero = calcZeroRoot(lin);
   int best = -1;
   for (int e = 0; e < lin.eigenvalues.size(); ++e)
@@ -521,8 +579,9 @@ CriticalSpeed bisectCount(const VehicleModel& m, const SweepOptions& fixed, cons
 // ends at the jump, not at a zero. The crossings are then where the number of unstable roots changes:
 // sampled at kCountSamples - 1 interior speeds (a real root crossing, then joining another into a pair
 // that crosses back, changes it twice), each change bisected to the tolerance (bisectCount). The first
-// is c.found, the others c.more; where the number never changes no root crossed zero there: the sign
-// change was the jump, no critical speed.
+// is c.found, the others c.more; where the number never changes, or changes only where the trims jump
+// between equilibria, no root crossed zero there: the sign change was the jump, no
+// critical speed.
 void findCrossingByCount(const VehicleModel& m, const SweepOptions& fixed, const SweepOptions& opt, const SweepResult& out,
                          Crossing& c) {
   const double lo = out.speeds[c.k], hi = out.speeds[c.k + 1];
@@ -536,7 +595,8 @@ void findCrossingByCount(const VehicleModel& m, const SweepOptions& fixed, const
   n.push_back(countUnstable(out.models[c.k + 1]));
   std::vector<CriticalSpeed> found;
   for (size_t i = 0; i + 1 < v.size(); ++i)
-    if (n[i] != n[i + 1]) found.push_back(bisectCount(m, fixed, opt, out, c.k, v[i], v[i + 1], n[i], n[i + 1]));
+    if (n[i] != n[i + 1])
+      if (auto f = bisectCount(m, fixed, opt, out, c.k, v[i], v[i + 1], n[i], n[i + 1])) found.push_back(*f);
   if (found.empty()) {
     c.isJump = true;
     return;
@@ -553,6 +613,7 @@ void findCrossingByCount(const VehicleModel& m, const SweepOptions& fixed, const
 // real parts between the grid speeds, named by the grid label of the unstable side.
 void refineCrossing(const VehicleModel& m, const SweepOptions& opt, const SweepOptions& fixed, const SweepResult& out,
                     Crossing& c) {
+  if (!c.branch) return findCrossingByCount(m, fixed, opt, out, c);
   const ModeBranch& br = *c.branch;
   const double f0 = br.eigenvalue[c.k].real(), f1 = br.eigenvalue[c.k + 1].real();
   c.found.stabilising = f0 > 0;

@@ -327,7 +327,10 @@ class TrimNewton {
 // in roll (continueTurn) otherwise.
 void solveAny(const VehicleModel& model, double speed, const TrimOptions& opt, TrimResult& res, bool warm) {
   if (!opt.isTurn()) return solveTrim(model, speed, opt, res, warm);
-  if (warm && res.turn && std::abs(res.roll - opt.roll) < 1e-12) return solveTrim(model, speed, opt, res, true);
+  if (warm && res.turn && std::abs(res.roll - opt.roll) < 1e-12) {
+    solveTrim(model, speed, opt, res, true);
+    return detail::checkWheelsOnGround(model, speed, opt, res);
+  }
   if (!warm) {
     TrimOptions straight = opt;
     straight.roll = NAN;

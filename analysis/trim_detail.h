@@ -14,4 +14,8 @@ void solveTrim(const vehicle::VehicleModel& model, double speed, const TrimOptio
 void continueTurn(const vehicle::VehicleModel& model, double speed, const TrimOptions& opt, TrimResult& res,
                   bool stepWithCondition = false);
 
+// Throws TrimError where a wheel's lowest point is above the ground by more than the trim's residual
+// allows: an equilibrium with a wheel in the air is not a turn of the vehicle (steady_turn.cpp).
+void checkWheelsOnGround(const vehicle::VehicleModel& model, double speed, const TrimOptions& opt, const TrimResult& res);
+
 }  // namespace motostab::analysis::detail

@@ -147,7 +147,7 @@ TEST(TyreCarcass, EigenvaluesAreTheConstantLengthModelsAtTheTrimLoadAndSpeed) {
     EXPECT_LT(dq, 1e-9) << name;
     EXPECT_LT(dz, 1e-9) << name;
     // In a turn the differences also see the curvature of the load dependence (sigma changes by some
-    // 10 % per mm of tyre deflection): at the default step 1e-3 the eigenvalues differ by 1e-6
+    // 10 % per mm of tyre deflection): at a step of 1e-3 the eigenvalues differ by 1e-6
     // (relative), at a quarter of it by 4e-9, the fourth-order differences' truncation.
     analysis::LinearizeOptions lo;
     lo.step = 2.5e-4;
