@@ -490,8 +490,10 @@ std::vector<Crossing> listCrossings(const SweepResult& out) {
       c.branch = &br, c.k = k;
       seen[k] = true;
     }
+  std::vector<int> unstable(out.models.size());
+  for (size_t k = 0; k < out.models.size(); ++k) unstable[k] = countUnstable(out.models[k]);
   for (size_t k = 0; k + 1 < out.speeds.size(); ++k)
-    if (!seen[k] && countUnstable(out.models[k]) != countUnstable(out.models[k + 1])) crossings.emplace_back().k = k;
+    if (!seen[k] && unstable[k] != unstable[k + 1]) crossings.emplace_back().k = k;
   return crossings;
 }
 

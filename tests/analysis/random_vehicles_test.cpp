@@ -165,10 +165,16 @@ int checkSweep(const SweepResult& s, const SweepResult& damped, const std::strin
 // Every refined critical speed of `s` is a crossing (the header's last check).
 void checkCriticalSpeedsAreCrossings(const VehicleModel& model, const SweepOptions& opt, const SweepResult& s,
                                      const std::string& what) {
-  auto countUnstable = [&](double v) {
-    const LinearModel lin = linearize(model, calcTrim(model, v, opt.trim));
+  auto linearizeAt = [&](double v) { return linearize(model, calcTrim(model, v, opt.trim)); };
+  auto countUnstable = [](const LinearModel& lin) {
     return std::count_if(lin.eigenvalues.begin(), lin.eigenvalues.end(),
                          [](std::complex<double> l) { return l.real() > 0 && std::abs(l) >= 1e-8; });
+  };
+  // Roots within 5e-7 1/s of the imaginary axis: oscillations (complex) or real roots.
+  auto countNearZero = [](const LinearModel& lin, bool complex) {
+    return std::count_if(lin.eigenvalues.begin(), lin.eigenvalues.end(), [&](std::complex<double> l) {
+      return (l.imag() > 1e-6) == complex && std::abs(l.real()) < 5e-7;
+    });
   };
   for (size_t i = 0; i < s.criticalSpeeds.size(); ++i) {
     const CriticalSpeed& c = s.criticalSpeeds[i];
@@ -177,23 +183,20 @@ void checkCriticalSpeedsAreCrossings(const VehicleModel& model, const SweepOptio
     double d = 0.01;
     if (i > 0) d = std::min(d, 0.5 * (c.speed - s.criticalSpeeds[i - 1].speed));
     if (i + 1 < s.criticalSpeeds.size()) d = std::min(d, 0.5 * (s.criticalSpeeds[i + 1].speed - c.speed));
+    const LinearModel at = linearizeAt(c.speed);
+    const bool apart = d > 1e-6;  // else two crossings at one speed (a pair): the count may not change
+    const std::optional<LinearModel> below = apart ? std::optional(linearizeAt(c.speed - d)) : std::nullopt;
+    const std::optional<LinearModel> above = apart ? std::optional(linearizeAt(c.speed + d)) : std::nullopt;
     // A root is on the imaginary axis at the critical speed, within 5e-7 1/s (below the sweep's smallest
     // zero-root threshold, 1e-6 1/s, so that a real root found where it passes that threshold, not
     // where it is zero, fails): an oscillation there, or one more real root within it than d away on
     // either side (the neutral roots, heading and speed drift, are within it everywhere).
-    auto countNearZero = [&](double v, bool complex) {
-      const LinearModel lin = linearize(model, calcTrim(model, v, opt.trim));
-      return std::count_if(lin.eigenvalues.begin(), lin.eigenvalues.end(), [&](std::complex<double> l) {
-        return (l.imag() > 1e-6) == complex && std::abs(l.real()) < 5e-7;
-      });
-    };
-    const bool onAxis = c.frequency > 0 ? countNearZero(c.speed, true) > 0
-                        : !(d > 1e-6) || countNearZero(c.speed, false) > std::max(countNearZero(c.speed - d, false),
-                                                                                countNearZero(c.speed + d, false));
+    const bool onAxis = c.frequency > 0 ? countNearZero(at, true) > 0
+                        : !apart || countNearZero(at, false) > std::max(countNearZero(*below, false), countNearZero(*above, false));
     EXPECT_TRUE(onAxis) << what << ": no root on the imaginary axis at the critical speed " << c.speed << " m/s ("
                         << toString(c.mode) << ", " << c.frequency << " Hz)";
-    if (!(d > 1e-6)) continue;  // two crossings at one speed (a pair): the count may not change
-    EXPECT_NE(countUnstable(c.speed - d), countUnstable(c.speed + d))
+    if (!apart) continue;
+    EXPECT_NE(countUnstable(*below), countUnstable(*above))
         << what << ": the number of unstable roots is the same at " << c.speed - d << " and " << c.speed + d
         << " m/s, around the critical speed " << c.speed << " m/s (" << toString(c.mode) << ")";
   }
