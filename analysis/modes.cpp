@@ -2,6 +2,7 @@
 // tracking across speed.
 #include "analysis/modes.h"
 
+#include "io/result_error.h"
 #include "core/parallel.h"
 
 #include <Eigen/Cholesky>
@@ -660,7 +661,8 @@ std::vector<int> assignNext(const std::vector<ModeBranch>& branches, const Eigen
       if (cost(kp, k) < best) best = cost(kp, k), assigned[b] = k;
     }
     if (!finite || assigned[b] < 0)
-      throw std::runtime_error("trackModes: non-finite eigenvalues or eigenvectors at speed index " + std::to_string(s));
+      throw io::ResultError("mode tracking: non-finite eigenvalues or eigenvectors at speed index " + std::to_string(s) +
+                            " (a linearisation that diverged there)");
     distinct = distinct && !taken[assigned[b]];
     taken[assigned[b]] = true;
   }
@@ -684,7 +686,7 @@ std::vector<ModeBranch> trackModes(const std::vector<LinearModel>& models, int t
   if (models.empty()) return branches;
   const int n = static_cast<int>(models[0].eigenvalues.size());
   for (const auto& m : models)
-    if (m.eigenvalues.size() != n) throw std::runtime_error("trackModes: model size changed with speed");
+    if (m.eigenvalues.size() != n) throw std::logic_error("trackModes: model size changed with speed");
   // Match costs between every pair of consecutive speeds not given, and the labels of models that
   // have none, independent of the assignment: in parallel.
   costs.resize(models.size());

@@ -15,10 +15,8 @@ namespace motostab::cli {
 
 using io::writeFileAtomically;
 using output::formatVehicleTable;
-using scenario::ForkComplianceSpec;
 using scenario::InertiaRepair;
 using scenario::Scenario;
-using scenario::SteerControllerSpec;
 using scenario::calcStaticPivotMoment;
 using scenario::calcSuspensionLever;
 using scenario::loadScenario;
@@ -26,41 +24,6 @@ using scenario::writeBicycleParametersScenario;
 using vehicle::VehicleModel;
 
 namespace {
-
-// The steer controller's law, schedule, delay and limit (vehicle/steer_controller.h).
-void printSteerController(const SteerControllerSpec& c) {
-  using S = SteerControllerSpec::Schedule;
-  std::cout << "  steer controller      T = " << (c.schedule == S::None ? "" : "f(v) ") << c.gainFactor << " ("
-            << c.rollAngleGain << " roll + " << c.rollRateGain << " roll_rate + " << c.steerAngleGain << " steer + "
-            << c.steerRateGain << " steer_rate) N m (ISO signs: T > 0 steers left";
-  if (c.rollAngleGain < 0 || c.rollRateGain < 0) std::cout << "; negative roll gains steer into the fall";
-  std::cout << ")\n";
-  if (c.schedule == S::Below) std::cout << "    schedule            f(v) = " << c.scheduleBelow << " - v below " << c.scheduleBelow << " m/s, 0 above\n";
-  if (c.schedule == S::Table)
-    std::cout << "    schedule            f(v) interpolated in " << c.scheduleTable.size() << " rows, "
-              << c.scheduleTable.front()[0] << " to " << c.scheduleTable.back()[0] << " m/s\n";
-  if (c.delay > 0) std::cout << "    delay               " << c.delay << " s (first-order Pade; state steer_controller_delay)\n";
-  if (c.torqueLimit > 0) std::cout << "    torque limit        " << c.torqueLimit << " N m (time domain; linear models see the unsaturated law)\n";
-}
-
-// The model extensions present, one line each (docs/scenario-format.md).
-void printExtensions(const Scenario& s) {
-  if (s.hasSteerDamper)
-    std::cout << "  steer damper          " << s.steerDamper.damping << " N m s/rad, Coulomb " << s.steerDamper.coulomb
-              << " N m (smoothing " << s.steerDamper.coulombSmoothing << " rad/s; linearised "
-              << s.steerDamper.damping + s.steerDamper.coulomb / s.steerDamper.coulombSmoothing << " N m s/rad)\n";
-  if (s.hasForkCompliance) {
-    const ForkComplianceSpec& f = s.forkCompliance;
-    std::cout << "  fork compliance       bending " << f.stiffness << " N m/rad, " << f.damping << " N m s/rad, axis "
-              << f.axisDistance << " m up the steer axis, carrier " << f.carrier.mass << " kg";
-    if (f.hasTorsion) std::cout << "; torsion " << f.torsionStiffness << " N m/rad, " << f.torsionDamping << " N m s/rad";
-    std::cout << "\n";
-  }
-  if (s.hasRiderLean)
-    std::cout << "  rider lean            upper body " << s.riderLean.body.mass << " kg, hinge at " << s.riderLean.hingeHeight
-              << " m, " << s.riderLean.stiffness << " N m/rad, " << s.riderLean.damping << " N m s/rad\n";
-  if (s.hasSteerController) printSteerController(s.steerController);
-}
 
 void printInertiaRepairs(const std::vector<InertiaRepair>& repairs) {
   for (const auto& r : repairs)
@@ -101,7 +64,7 @@ void registerScenarioCommands(CLI::App& app) {
                   << " N s/m; lever " << l << " m); static pivot moment " << calcStaticPivotMoment(s) << " N m\n";
       }
     }
-    printExtensions(s);
+    model.describeExtensions(std::cout);
   });
 
   struct ImportArgs {

@@ -91,7 +91,7 @@ Candidate makeSteerFriction(const YAML::Node& tree, const SteerRateAmplitude& om
   return c;
 }
 
-// A steer controller's effective gain and delay (vehicle/steer_controller.h): `steer_controller_gain`
+// A steer controller's effective gain and delay (extensions/steer_controller.h): `steer_controller_gain`
 // scales every gain (gain_factor, log scale over [0.05, 20], off at 1), `steer_controller_delay` adds
 // a Pade delay (delay_s in [0, 0.3] s, off at the bound 0; absent when the scenario has one).
 void addSteerControllerCandidates(const YAML::Node& tree, std::vector<Candidate>& out) {
@@ -246,7 +246,7 @@ void addTyreScalingCandidates(const YAML::Node& tree, std::vector<Candidate>& ou
   }
 }
 
-// The rider's arms on the handlebar (vehicle/rider_arms.h): added steer inertia fixed at Sharp's
+// The rider's arms on the handlebar (extensions/rider_arms.h): added steer inertia fixed at Sharp's
 // (1994) hands-on 0.20 kg m^2 (front-frame steer inertia 0.71 -> 0.91), stiffness and damping free with
 // Student-t priors from the published hands-on values: Sharp (1994) k = 50 N m/rad, c = 6 - 1 = 5 N m s/rad
 // added by the hands; the "arms yaw" spring-damper of the sport-bike model of Passigato et al. (2020, Appl.

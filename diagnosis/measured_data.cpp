@@ -7,7 +7,7 @@
 
 #include "diagnosis/findings.h"
 #include "io/csv.h"
-#include "scenario/extension_specs.h"
+#include "extensions/steer_controller.h"
 #include "scenario/parameter_paths.h"
 #include "io/yaml_map.h"
 
@@ -20,8 +20,8 @@ using io::formatNumber;
 using io::loadYamlFile;
 using io::readCsv;
 using scenario::formatOverride;
-using scenario::getSteerControllerScalarKeys;
-using scenario::readSteerController;
+using extensions::getSteerControllerScalarKeys;
+using extensions::readSteerController;
 
 namespace {
 
@@ -84,6 +84,12 @@ int findColumn(const CsvTable& t, const std::string& name) {
   return it == t.header.end() ? -1 : static_cast<int>(it - t.header.begin());
 }
 
+// Checks a steer_controller mapping as the scenario's section is read (InputError at its keys).
+void checkSteerController(YamlMap m) {
+  readSteerController(m);
+  m.finish();
+}
+
 // "steer_controller.<scalar key>": a per-row controller setting; else "".
 std::string getControllerKey(const std::string& column) {
   const std::string prefix = "steer_controller.";
@@ -100,7 +106,7 @@ std::vector<std::string> readController(YamlMap& m) {
   std::vector<std::string> out;
   if (!m.has("controller")) return out;
   YamlMap c = m.getMap("controller");
-  readSteerController(YamlMap(c.getNode(), c.getFile(), c.getPath()));
+  checkSteerController(YamlMap(c.getNode(), c.getFile(), c.getPath()));
   const auto& keys = getSteerControllerScalarKeys();
   for (const auto& kv : c.getNode()) {
     const std::string key = kv.first.Scalar();
@@ -143,7 +149,7 @@ MeasuredEigenvalue readEigenvalueRow(const CsvTable& t, size_t i) {
     YAML::Node cell(YAML::NodeType::Map);  // checked as the scenario's steer_controller.<key> is
     cell[key] = formatNumber(r[j]);
     try {
-      readSteerController(YamlMap(cell, t.source, "steer_controller"));
+      checkSteerController(YamlMap(cell, t.source, "steer_controller"));
     } catch (const InputError& bad) {
       failRow(t, i, t.header[j], bad.getReason());
     }

@@ -351,6 +351,13 @@ void YamlMap::finish() const {
   }
 }
 
+std::vector<std::string> YamlMap::getUnreadKeys() const {
+  std::vector<std::string> out;
+  for (const auto& kv : node_)
+    if (!used_->count(kv.first.Scalar())) out.push_back(kv.first.Scalar());
+  return out;
+}
+
 namespace {
 
 std::mutex gOpenCountLock;

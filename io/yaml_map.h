@@ -76,6 +76,8 @@ class YamlMap {
   [[noreturn]] void failMissing(const std::string& key, const std::string& alternative = "") const;
   /// Throws InputError for the first key never read.
   void finish() const;
+  /// The keys never read (nor marked used), in file order.
+  std::vector<std::string> getUnreadKeys() const;
 
   /// Location of a key (or of this map when key is empty) for error messages.
   InputLocation locate(const std::string& key = "") const;

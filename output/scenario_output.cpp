@@ -6,6 +6,7 @@
 #include "output/writer_tools.h"
 #include "scenario/plausibility.h"
 #include "scenario/whole_vehicle.h"
+#include "vehicle/vehicle_model.h"
 
 namespace motostab::output {
 
@@ -59,7 +60,7 @@ nlohmann::json makeScenarioJson(const Scenario& s) {
   j["rear_frame"] = makeBodyJson(s.rearFrame);
   j["rear_frame"]["derived_from_total"] = s.hasTotal;
   j["bodies"] = nlohmann::json::array();
-  for (const NamedBody& b : scenario::listModelBodies(s)) {
+  for (const NamedBody& b : vehicle::listModelBodies(s)) {
     nlohmann::json body = makeBodyJson(b.body);
     body["name"] = b.name;
     j["bodies"].push_back(body);
@@ -100,11 +101,13 @@ std::string formatVehicleTable(const Scenario& s) {
      << "  trail, normal trail      " << t.trail << " m, " << t.normalTrail << " m\n"
      << "  fork offset              " << t.forkOffset << " m\n"
      << "Bodies (mass; CoM in the design frame; inertia about the CoM, design axes)\n";
-  for (const NamedBody& b : scenario::listModelBodies(s))
+  const std::vector<NamedBody> bodies = vehicle::listModelBodies(s);
+  for (const NamedBody& b : bodies)
     os << "  " << std::left << std::setw(17) << b.name << std::right << formatBody(b.body) << "\n";
   if (s.hasTotal)
     os << "  rear_frame is derived: the total minus every other body"
-       << (s.hasRiderLean ? " (with the whole rider: " + formatBody(s.rearFrame) + ")" : "") << "\n";
+       << (bodies.front().body.mass != s.rearFrame.mass ? " (with the whole rider: " + formatBody(s.rearFrame) + ")" : "")
+       << "\n";
   if (!s.assumed.empty()) os << "Assumed values (not given in the scenario)\n";
   for (const AssumedValue& a : s.assumed) os << "  " << a.key << " = " << a.value << "; " << a.source << "\n";
   return os.str();

@@ -1,10 +1,13 @@
 #pragma once
 // The motostab plugin API: the narrow, versioned interface a plugin sees. A plugin is a named
-// factory with its own validated parameters (a strict YamlMap of its scenario section). Built-in
-// plugins live in tyres/ and swingarm/; third-party plugins are shared libraries that define
-// MOTOSTAB_PLUGIN_ENTRY (see docs/plugins.md). This header needs Simbody and the YAML reader only,
-// not the scenario model; the registry that loads libraries is plugins/plugin_registry.h.
+// factory with its own validated parameters (a strict YamlMap of its scenario section). Three kinds:
+// contact models (tyres/), swingarm models (swingarm/compliance/) and model extensions (extensions/:
+// steer damper, rider lean, fork compliance, ...). Third-party plugins are shared libraries that define
+// MOTOSTAB_PLUGIN_ENTRY (see docs/plugins.md). This header needs Simbody, the YAML reader and the
+// body mass properties of scenario/body_spec.h only, not the scenario model; the registry that loads
+// libraries is plugins/plugin_registry.h.
 #include <functional>
+#include <iosfwd>
 #include <memory>
 #include <string>
 #include <utility>
@@ -15,10 +18,11 @@
 #include "io/yaml_map.h"
 #include "plugins/contact_geometry.h"
 #include "plugins/state_role.h"
+#include "scenario/body_spec.h"
 
 /// Version of this interface. A library built against another version is refused at load; bump it
 /// whenever a type in this header changes layout or meaning.
-#define MOTOSTAB_PLUGIN_API_VERSION 5
+#define MOTOSTAB_PLUGIN_API_VERSION 6
 
 namespace motostab::plugins {
 
@@ -102,6 +106,88 @@ class SwingarmModel {
 /// `compliance` are consumed by the loader; the plugin reads its own keys).
 using SwingarmModelFactory = std::function<std::unique_ptr<SwingarmModel>(io::YamlMap& params)>;
 
+/// The vehicle as a model extension reads it (design frame D, scenario/body_spec.h; SI units): what
+/// the scenario gives before any extension is applied.
+struct VehicleLayout {
+  double gravity = 9.81;        ///< m/s^2
+  double wheelbase = 0;         ///< w, m
+  double trail = 0;             ///< c, m
+  double steerAxisTilt = 0;     ///< lambda, rad from vertical
+  double rearWheelRadius = 0;   ///< m
+  double frontWheelRadius = 0;  ///< m
+  scenario::BodySpec rearFrame;   ///< rear frame with the whole rider
+  scenario::BodySpec frontFrame;  ///< fork and handlebar, without the wheel
+};
+
+/// The two frames' mass properties while the vehicle is assembled (D). An extension whose bodies
+/// carry mass the scenario gives to a frame (a rider's upper body, a fork's hub carrier) takes it out.
+struct FrameMasses {
+  scenario::BodySpec rearFrame;
+  scenario::BodySpec frontFrame;
+};
+
+/// A body an extension built with mass taken from a frame (adjustFrames): its name, its mass
+/// properties in D and the frame it came from, for reports.
+struct ExtensionBody {
+  enum class Frame { Rear, Front };
+  Frame takenFrom = Frame::Rear;
+  scenario::NamedBody body;
+};
+
+/// What an extension attaches to. Body frames have their axes parallel to D at the design pose and
+/// their origins at the wheel centres: the rear frame's at the rear hub p_DR, the front frame's at the
+/// front hub p_DF (both in D, m). The rear frame's mobilizer is the 6-DOF Bushing (q: yaw, roll,
+/// pitch, height, x, y); the front frame's the steer Pin (q: steer angle relative to the rear frame).
+struct VehicleFrames {
+  SimTK::MobilizedBody rearFrame, frontFrame;
+  SimTK::Vec3 p_DR, p_DF;
+};
+
+/// What an extension put between the front frame and the front wheel: the body that carries the wheel
+/// (origin at the front hub, axes parallel to D at the design pose) and its one-DOF mobilizers.
+struct FrontHubCarrier {
+  SimTK::MobilizedBody carrier;
+  std::vector<NamedMobilizer> coordinates;
+};
+
+/// The common interface of model extensions: elements a scenario section adds to the vehicle (a
+/// damper, a controller, a leaning rider, a compliant fork). The vehicle is assembled in stages and
+/// calls each extension at every stage, in the order the extensions were registered:
+///   adjustFrames -> rear frame built -> addRearBodies -> front frame built -> addFrontHubCarrier
+///   -> wheels and contacts -> addForces -> topology realized
+/// Each stage's default does nothing.
+class ExtensionModel {
+ public:
+  virtual ~ExtensionModel() = default;
+  /// Takes the mass of the extension's own bodies out of the frames (or moves it between them),
+  /// before the frames are built: the vehicle's totals stay as the scenario gives them.
+  virtual void adjustFrames(FrameMasses& frames) const {}
+  /// Adds bodies hanging from the rear frame; returns their one-DOF mobilizers with names and roles.
+  virtual std::vector<NamedMobilizer> addRearBodies(BuildContext& context, const VehicleFrames& frames) { return {}; }
+  /// Puts a carrier between the front frame and the front wheel; an empty carrier handle: none. At
+  /// most one extension of a model may give one (the vehicle checks).
+  virtual FrontHubCarrier addFrontHubCarrier(BuildContext& context, const VehicleFrames& frames) { return {}; }
+  /// Adds force elements (after the wheels and contacts).
+  virtual void addForces(BuildContext& context, const VehicleFrames& frames) {}
+  /// The auxiliary states (z) it allocates, in allocation order, with their roles.
+  virtual std::vector<AuxiliaryState> getStates() const { return {}; }
+  /// The bodies it built that take mass from the frames (adjustFrames), for reports.
+  virtual std::vector<ExtensionBody> getBodies() const { return {}; }
+  /// Names (with units) of the quantities calcOutputs reports, e.g. an applied torque.
+  virtual std::vector<std::string> getOutputNames() const { return {}; }
+  /// Their values in a state realized to Velocity.
+  virtual std::vector<double> calcOutputs(const SimTK::State& state) const { return {}; }
+  /// Writes what it adds, with its values and units, for the model listing of `scenario check`: one
+  /// or more lines, each indented by two spaces and ending in a newline (the stream's number format
+  /// is the listing's).
+  virtual void describe(std::ostream& out) const = 0;
+};
+
+/// Makes a model extension from its scenario section (`params`: the section's mapping) and the
+/// vehicle it extends. The factory reads and checks every key (InputError at file:line:col).
+using ExtensionModelFactory =
+    std::function<std::unique_ptr<ExtensionModel>(io::YamlMap& params, const VehicleLayout& vehicle)>;
+
 /// What a plugin's entry point registers into: factories by name. Names are unique across all
 /// plugins (built-in and loaded); a duplicate is reported when the registration is committed.
 class PluginRegistrar {
@@ -109,6 +195,8 @@ class PluginRegistrar {
   virtual ~PluginRegistrar() = default;
   virtual void addContactModel(const std::string& name, ContactModelFactory factory) = 0;
   virtual void addSwingarmModel(const std::string& name, SwingarmModelFactory factory) = 0;
+  /// Registers a model extension under the name of its scenario section (e.g. "steer_damper").
+  virtual void addExtensionModel(const std::string& name, ExtensionModelFactory factory) = 0;
 };
 
 }  // namespace motostab::plugins

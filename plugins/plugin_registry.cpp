@@ -2,6 +2,7 @@
 
 #include <dlfcn.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <mutex>
 #include <stdexcept>
@@ -33,8 +34,10 @@ std::string joinNames(const std::vector<std::string>& names) {
 struct LibraryRegistrations : PluginRegistrar {
   std::vector<std::pair<std::string, ContactModelFactory>> contacts;
   std::vector<std::pair<std::string, SwingarmModelFactory>> swingarms;
+  std::vector<std::pair<std::string, ExtensionModelFactory>> extensions;
   void addContactModel(const std::string& name, ContactModelFactory f) override { contacts.emplace_back(name, std::move(f)); }
   void addSwingarmModel(const std::string& name, SwingarmModelFactory f) override { swingarms.emplace_back(name, std::move(f)); }
+  void addExtensionModel(const std::string& name, ExtensionModelFactory f) override { extensions.emplace_back(name, std::move(f)); }
 };
 
 // Opens `file` (canonical) and runs its entry point into a fresh record; the handle is never closed,
@@ -91,7 +94,9 @@ std::string resolveLibraryPath(const std::string& path, const InputLocation& whe
 }  // namespace
 
 void PluginRegistry::checkUnique(const std::string& name) const {
-  if (contactModels_.count(name) || swingarmModels_.count(name))
+  bool extension = false;
+  for (const auto& e : extensionModels_) extension = extension || e.first == name;
+  if (contactModels_.count(name) || swingarmModels_.count(name) || extension)
     throw std::runtime_error("plugin name '" + name + "' is registered twice");
 }
 
@@ -107,6 +112,45 @@ void PluginRegistry::addSwingarmModel(const std::string& name, SwingarmModelFact
 
 std::vector<std::string> PluginRegistry::getContactModelNames() const { return namesOf(contactModels_); }
 std::vector<std::string> PluginRegistry::getSwingarmModelNames() const { return namesOf(swingarmModels_); }
+std::vector<std::string> PluginRegistry::getExtensionModelNames() const { return namesOf(extensionModels_); }
+
+void PluginRegistry::addExtensionModel(const std::string& name, ExtensionModelFactory factory) {
+  checkUnique(name);
+  extensionModels_.emplace_back(name, std::move(factory));
+}
+
+VehicleLayout makeVehicleLayout(const scenario::Scenario& s) {
+  VehicleLayout v;
+  v.gravity = s.gravity;
+  v.wheelbase = s.geometry.wheelbase;
+  v.trail = s.geometry.trail;
+  v.steerAxisTilt = s.geometry.steerAxisTilt;
+  v.rearWheelRadius = s.rearWheel.radius;
+  v.frontWheelRadius = s.frontWheel.radius;
+  v.rearFrame = s.rearFrame;
+  v.frontFrame = s.frontFrame;
+  return v;
+}
+
+std::vector<std::unique_ptr<ExtensionModel>> PluginRegistry::createExtensionModels(const scenario::Scenario& s,
+                                                                                   std::shared_ptr<io::InputStore> inputs) const {
+  const std::vector<std::string> known = getExtensionModelNames();
+  for (const PluginSpec& section : s.extensions)
+    if (std::find(known.begin(), known.end(), section.model) == known.end())
+      YamlMap(section.params, section.file, section.path).fail("",
+          "unknown section '" + section.model + "': not a scenario section, nor a model extension (known: " +
+              joinNames(known) + "; a plugin library listed under plugins: may register more)");
+  const VehicleLayout vehicle = makeVehicleLayout(s);
+  std::vector<std::unique_ptr<ExtensionModel>> out;
+  for (const auto& [name, factory] : extensionModels_) {
+    const PluginSpec* section = scenario::findExtension(s, name);
+    if (!section) continue;
+    YamlMap params(section->params, section->file, section->path, inputs);
+    out.push_back(factory(params, vehicle));
+    params.finish();
+  }
+  return out;
+}
 
 std::unique_ptr<SwingarmModel> PluginRegistry::createSwingarmModel(const SwingarmSpec& spec,
                                                                   std::shared_ptr<io::InputStore> inputs) const {
@@ -140,6 +184,7 @@ void PluginRegistry::readScenarioSections(scenario::Scenario& s) {
       loadLibrary(s.plugins[i], {s.sourceFile, 0, 0, "plugins[" + std::to_string(i) + "]"});
     createContactModel(s.contact, s.inputs);
     if (s.hasSwingarm) createSwingarmModel(s.swingarm, s.inputs);
+    createExtensionModels(s, s.inputs);
   } catch (const InputError& e) {
     scenario::rethrowNamingOverride(e, s.overrides);
   }
@@ -157,6 +202,7 @@ void PluginRegistry::loadLibrary(const std::string& path, const InputLocation& w
   try {
     for (const auto& [name, f] : record->contacts) staged.addContactModel(name, f);
     for (const auto& [name, f] : record->swingarms) staged.addSwingarmModel(name, f);
+    for (const auto& [name, f] : record->extensions) staged.addExtensionModel(name, f);
   } catch (const std::exception& e) {
     throw InputError(where, std::string(e.what()) + " (by " + file + ")");
   }

@@ -12,6 +12,9 @@
 
 namespace motostab::plugins {
 
+/// The vehicle an extension sees (plugin_api.h VehicleLayout): the scenario's geometry, wheel radii and frames.
+VehicleLayout makeVehicleLayout(const scenario::Scenario& scenario);
+
 /// Plugins registered by name. Names are unique across built-in and loaded plugins. A registry is a
 /// value: copying it copies the factories (sweep workers build their models from a copy).
 class PluginRegistry : public PluginRegistrar {
@@ -29,11 +32,21 @@ class PluginRegistry : public PluginRegistrar {
   std::unique_ptr<SwingarmModel> createSwingarmModel(const scenario::SwingarmSpec& spec,
                                                      std::shared_ptr<io::InputStore> inputs = nullptr) const;
   /// Reads the plugin sections of a loaded scenario once, as building its model would: loads its
-  /// plugin libraries, creates its contact and swingarm models (the files they name are read into
+  /// plugin libraries, creates its contact, swingarm and extension models (the files they name are read into
   /// `s.inputs` and kept for every later build) and appends the warnings they found to `s.warnings`
   /// (ScenarioWarning::Check::PluginInput). Commands call it right after loading; InputError as a build.
   void readScenarioSections(scenario::Scenario& s);
   std::vector<std::string> getSwingarmModelNames() const;
+  /// Registers a model extension under its section name; a duplicate name throws std::runtime_error.
+  /// Extensions run their assembly stages in registration order.
+  void addExtensionModel(const std::string& name, ExtensionModelFactory factory) override;
+  /// The model extensions of the scenario's extension sections, in registration order (not file
+  /// order: the stages and the order of forces do not depend on how a file is laid out). A section no
+  /// extension is registered for is an InputError at it, naming the known ones.
+  std::vector<std::unique_ptr<ExtensionModel>> createExtensionModels(const scenario::Scenario& scenario,
+                                                                     std::shared_ptr<io::InputStore> inputs = nullptr) const;
+  /// Names of the registered extensions, in registration order.
+  std::vector<std::string> getExtensionModelNames() const;
 
   /// Adds the plugins of the library at `path` (absolute, or relative to the working directory;
   /// a bare file name is refused rather than searched on the system path). The library is opened
@@ -49,6 +62,7 @@ class PluginRegistry : public PluginRegistrar {
   void checkUnique(const std::string& name) const;
   std::map<std::string, ContactModelFactory> contactModels_;
   std::map<std::string, SwingarmModelFactory> swingarmModels_;
+  std::vector<std::pair<std::string, ExtensionModelFactory>> extensionModels_;
   std::vector<std::string> libraries_;
 };
 

@@ -4,7 +4,6 @@
 #include <cmath>
 #include <sstream>
 
-#include "scenario/extension_specs.h"
 #include "scenario/parameter_paths.h"
 #include "scenario/plausibility.h"
 #include "scenario/scenario_source.h"
@@ -320,15 +319,6 @@ Scenario readScenario(const std::string& file, YamlMap& m) {
     // The compliance plugin reads and checks the rest of this mapping.
   }
   if (s.hasTotal) readTotal(m, s);
-  if (m.has("aerodynamics")) {
-    YamlMap a = m.getMap("aerodynamics");
-    s.hasAerodynamics = true;
-    s.aerodynamics.dragArea = a.getNonNegative("drag_area_m2");
-    s.aerodynamics.airDensity = a.getPositive("air_density_kgpm3");
-    s.aerodynamics.centreOfPressure = a.getVec3("centre_of_pressure_m");
-    a.finish();
-  }
-  readExtensions(m, s);
   if (m.has("plugins")) {
     // Plugin libraries by path only (never searched by bare name), relative to the scenario.
     const auto names = m.getStringList("plugins");
@@ -339,6 +329,13 @@ Scenario readScenario(const std::string& file, YamlMap& m) {
     s.plugins = m.getFilePathList("plugins");
   }
   if (m.has("uncertainty")) s.uncertainty = readUncertainty(m.getMap("uncertainty"), m.getNode());
+  // Every other mapping is a model-extension section, read by the plugin of its name at build.
+  for (const std::string& key : m.getUnreadKeys()) {
+    const YAML::Node section = m.getNode()[key];
+    if (!section.IsMap()) m.fail(key, "unknown key: not a scenario key, nor a model-extension section (a mapping of its own keys)");
+    s.extensions.push_back({key, section, file, key});
+    m.markUsed(key);
+  }
   m.finish();
   return s;
 }
@@ -369,14 +366,10 @@ BodySpec calcBodyRemainder(const BodySpec& whole, const BodySpec& part) {
   return r;
 }
 
-BodySpec calcDefaultForkCarrier(const Scenario& s, double fraction) {
-  BodySpec c;
-  const BodySpec& H = s.frontFrame;
-  c.mass = fraction * H.mass;
-  c.com = H.com;
-  const InertiaSpec& I = H.inertia;
-  c.inertia = {fraction * I.xx, fraction * I.yy, fraction * I.zz, fraction * I.xy, fraction * I.xz, fraction * I.yz};
-  return c;
+const PluginSpec* findExtension(const Scenario& s, const std::string& name) {
+  for (const PluginSpec& e : s.extensions)
+    if (e.model == name) return &e;
+  return nullptr;
 }
 
 MassSummary calcMassSummary(const Scenario& s) {

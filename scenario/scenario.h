@@ -10,24 +10,11 @@
 #include <vector>
 
 #include "io/input_error.h"
+#include "scenario/body_spec.h"
 #include "io/input_store.h"
+#include "io/yaml_map.h"
 
 namespace motostab::scenario {
-
-using Vec3d = std::array<double, 3>;
-
-/// Inertia tensor components about the centre of mass, in the design frame, kg m^2.
-/// Off-diagonal entries are tensor components (I_xz = -sum m x z), as in Meijaard et al. 2007.
-struct InertiaSpec {
-  double xx = 0, yy = 0, zz = 0, xy = 0, xz = 0, yz = 0;
-};
-
-/// A rigid body: mass (kg), centre of mass in D (m), inertia about the CoM in D.
-struct BodySpec {
-  double mass = 0;
-  Vec3d com{0, 0, 0};
-  InertiaSpec inertia;
-};
 
 /// A wheel: rolling (outer) radius and crown radius (0 = knife edge), mass, and the spin (axial)
 /// and diametral moments of inertia about its centre (kg m^2).
@@ -66,86 +53,6 @@ struct SwingarmSpec {
   SuspensionSpec suspension;
   YAML::Node params;        ///< the whole swingarm mapping, for the compliance plugin
   std::string file;
-};
-
-/// Aerodynamic drag on the rear frame: F = -1/2 rho CdA |v| v at the centre of pressure.
-struct AerodynamicsSpec {
-  double dragArea = 0;      ///< Cd A, m^2
-  double airDensity = 1.2;  ///< kg/m^3
-  Vec3d centreOfPressure{0, 0, 0};  ///< in D, m
-};
-
-/// A steering damper between front and rear frames about the steer axis (vehicle/steer_damper.h):
-/// T = -c delta' - f tanh(delta'/omega_s) on the front frame, its reaction on the rear frame.
-struct SteerDamperSpec {
-  double damping = 0;            ///< c, N m s/rad (>= 0)
-  double coulomb = 0;            ///< f, N m (>= 0): smoothed Coulomb friction
-  double coulombSmoothing = 0.1; ///< omega_s, rad/s (> 0): steer rate at which tanh reaches 76 % of f
-};
-
-/// Lateral bending of the front fork (vehicle/fork_compliance.h): the hub carrier (lower legs, axle,
-/// brake) turns relative to the front frame about an axis perpendicular to the steer axis in the plane
-/// of symmetry, through the steer-axis point `axisDistance` above the steer axis's ground point.
-/// Optional torsion about the steer-axis direction in series (between carrier and wheel).
-struct ForkComplianceSpec {
-  double stiffness = 0;          ///< bending stiffness, N m/rad (> 0)
-  double damping = 0;            ///< bending damping, N m s/rad (>= 0)
-  double axisDistance = 0;       ///< m along the steer axis from its ground point (default: the crown, see reader)
-  BodySpec carrier;              ///< moving part's mass properties in D (default: a fraction of the front frame)
-  double carrierFraction = 0;    ///< the fraction used for the default carrier (0 when given explicitly)
-  bool hasTorsion = false;
-  double torsionStiffness = 0;   ///< N m/rad (> 0)
-  double torsionDamping = 0;     ///< N m s/rad (>= 0)
-};
-
-/// A passive rider upper body (vehicle/rider_lean.h) hinged to the rear frame about the longitudinal
-/// axis (design x) at height `hingeHeight`, against a torsional spring and damper. `body` is taken out
-/// of the rear frame, whose mass properties include the whole rider: the vehicle's totals are unchanged.
-struct RiderLeanSpec {
-  double hingeHeight = 0;        ///< m above the ground, in the plane of symmetry
-  BodySpec body;                 ///< upper body: mass (kg), CoM in D (m), inertia about its CoM in D
-  double stiffness = 0;          ///< N m/rad (> 0)
-  double damping = 0;            ///< N m s/rad (>= 0)
-};
-
-/// The rider's arms on the handlebar (vehicle/rider_arms.h): a steer impedance between the front
-/// frame and the rear frame (the rider rigid on it), after Sharp's hands-on steer model (added steer
-/// inertia, a torsional spring and a damper about the steer axis; Sharp 1994, "Vibrational modes of
-/// motorcycles and their design parameter sensitivities", IMechE Vehicle NVH and Refinement) and
-/// Cossalter, Doria, Lot, Massaro (2011) "The effect of rider's passive steering impedance on
-/// motorcycle stability: identification and analysis", Meccanica 46:279-292. The inertia is carried
-/// by two point masses at the grips, `gripHalfWidth` either side of the steer axis at the height of the
-/// front frame's centre of mass, moved from the rear frame (which holds the whole rider) to the front
-/// frame: the vehicle's totals are unchanged.
-struct RiderArmsSpec {
-  double inertia = 0;            ///< J_a, added steer inertia about the steer axis, kg m^2 (> 0)
-  double stiffness = 0;          ///< k_a, N m/rad (>= 0)
-  double damping = 0;            ///< c_a, N m s/rad (>= 0)
-  double gripHalfWidth = 0.25;   ///< d, m (> 0): grip distance from the steer axis
-  BodySpec body;                 ///< the grip masses (2 x J_a / (2 d^2)) in D: what moved to the front frame
-};
-
-/// The shortest steer controller delay, s: a tenth of a millisecond, below any rider's or actuator's
-/// (human reaction ~0.1-0.3 s, electric steer actuators ~1-10 ms). The Pade pole -2/tau of a shorter
-/// delay swamps every other root (1e-300 s gives -2e300 1/s and loses the weave).
-constexpr double kMinSteerDelay = 1e-4;
-
-/// Linear state feedback on the steer torque (vehicle/steer_controller.h), ISO 8855 signs (roll > 0
-/// leans right, steer > 0 steers left, torque > 0 steers left):
-///   u = f(v) g (k_phi phi + k_phid phi' + k_delta delta + k_deltad delta')            (N m)
-/// f(v) the speed schedule (1 without one), g the gain factor; then the optional delay and limit.
-struct SteerControllerSpec {
-  enum class Schedule { None, Below, Table };
-  double rollAngleGain = 0;   ///< k_phi, N m/rad (per m/s with a `below_mps` schedule)
-  double rollRateGain = 0;    ///< k_phid, N m s/rad (likewise)
-  double steerAngleGain = 0;  ///< k_delta, N m/rad
-  double steerRateGain = 0;   ///< k_deltad, N m s/rad
-  double gainFactor = 1;      ///< g, dimensionless (> 0): scales every gain
-  Schedule schedule = Schedule::None;
-  double scheduleBelow = 0;   ///< v0, m/s: f = v0 - v for v < v0, else 0
-  std::vector<std::array<double, 2>> scheduleTable;  ///< (v m/s, f) sorted by v: f interpolated linearly
-  double delay = 0;           ///< tau, s (0: none, else >= kMinSteerDelay): first-order Pade delay
-  double torqueLimit = 0;     ///< N m (> 0 when given; 0: none): |T| <= limit
 };
 
 /// A plugin selected by name with its own parameters (validated by the plugin itself).
@@ -217,18 +124,11 @@ struct Scenario {
   PluginSpec contact;                   ///< contact/tyre model for both wheels
   bool hasSwingarm = false;
   SwingarmSpec swingarm;
-  bool hasAerodynamics = false;
-  AerodynamicsSpec aerodynamics;
-  bool hasSteerDamper = false;
-  SteerDamperSpec steerDamper;
-  bool hasForkCompliance = false;
-  ForkComplianceSpec forkCompliance;
-  bool hasRiderLean = false;
-  RiderLeanSpec riderLean;
-  bool hasSteerController = false;
-  SteerControllerSpec steerController;
-  bool hasRiderArms = false;
-  RiderArmsSpec riderArms;                ///< its grip masses are already in frontFrame, out of rearFrame
+  /// The model-extension sections (steer_damper, rider_lean, ... and those a plugin library registers),
+  /// in file order: every top-level mapping that is not one of the sections above. Each is read and
+  /// checked by the extension plugin of its name (plugins/plugin_api.h ExtensionModel) when the model is
+  /// built, or at once by PluginRegistry::readScenarioSections; an unknown name is an InputError then.
+  std::vector<PluginSpec> extensions;
   std::vector<std::string> plugins;     ///< shared libraries to load before building
   std::vector<std::string> overrides;   ///< the --set assignments applied, for messages
   std::vector<ParameterUncertainty> uncertainty;  ///< stated parameter uncertainties (may be empty)
@@ -254,18 +154,11 @@ Scenario readScenarioTree(const YAML::Node& tree, const std::string& file, const
 /// a.b=...)") when one did: for errors found after loading, e.g. by a plugin reading its section.
 [[noreturn]] void rethrowNamingOverride(const io::InputError& error, const std::vector<std::string>& overrides);
 
-/// Checks an inertia tensor: symmetric positive definite and principal moments satisfying the
-/// triangle inequality. Returns an empty string if valid, else the reason.
-std::string checkInertia(const InertiaSpec& inertia);
+/// The extension section named `name` of `scenario`, or null when it has none.
+const PluginSpec* findExtension(const Scenario& scenario, const std::string& name);
 
-/// The mass properties of `whole` without `part` (all in D): mass, CoM and inertia about the new CoM.
-/// Parallel-axis theorem about the design origin; the caller checks the result (mass > 0, checkInertia).
-BodySpec calcBodyRemainder(const BodySpec& whole, const BodySpec& part);
-
-/// The default hub carrier of a fork_compliance section: the front frame scaled by `fraction` (that
-/// fraction of its mass at its CoM, that fraction of its inertia), so that the rest, the front frame
-/// scaled by 1 - fraction, is a valid body for every valid front frame.
-BodySpec calcDefaultForkCarrier(const Scenario& scenario, double fraction);
+/// Reads `mass_kg`, `com_m` and `inertia_kgm2` (checked) from `m`; the caller finishes the map.
+BodySpec readBodyKeys(io::YamlMap& m);
 
 /// Total mass (kg) and centre of mass in D (m) of frames and wheels.
 struct MassSummary {

@@ -50,25 +50,6 @@ std::vector<NamedBody> listOtherBodies(const Scenario& s) {
   return out;
 }
 
-std::vector<NamedBody> listModelBodies(const Scenario& s) {
-  std::vector<NamedBody> out;
-  if (s.hasRiderLean) {
-    out.push_back({"rear_frame", calcBodyRemainder(s.rearFrame, s.riderLean.body)});
-    out.push_back({"rider_upper_body", s.riderLean.body});
-  } else {
-    out.push_back({"rear_frame", s.rearFrame});
-  }
-  for (NamedBody& b : listOtherBodies(s)) {
-    if (b.name == "front_frame" && s.hasForkCompliance) {
-      out.push_back({"front_frame", calcBodyRemainder(s.frontFrame, s.forkCompliance.carrier)});
-      out.push_back({"fork_carrier", s.forkCompliance.carrier});
-    } else {
-      out.push_back(std::move(b));
-    }
-  }
-  return out;
-}
-
 BodySpec composeBodies(const std::vector<BodySpec>& parts) {
   BodySpec t;
   Eigen::Vector3d moment = Eigen::Vector3d::Zero();

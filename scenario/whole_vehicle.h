@@ -11,12 +11,6 @@
 
 namespace motostab::scenario {
 
-/// One rigid body of the vehicle in D: mass (kg), CoM (m), inertia about its CoM in D axes (kg m^2).
-struct NamedBody {
-  std::string name;
-  BodySpec body;
-};
-
 /// A wheel as a body in D: its mass at its hub `hub_D` (m), inertia diag(diametral, spin, diametral).
 BodySpec makeWheelBody(const WheelSpec& wheel, const Vec3d& hub_D);
 
@@ -27,15 +21,6 @@ BodySpec calcSwingarmBodyInD(const Scenario& scenario);
 /// The bodies beside the scenario's rear frame (which holds the whole rider): `front_frame` (with
 /// a fork's hub carrier), `rear_wheel`, `front_wheel` and `swingarm` when there is one, in D.
 std::vector<NamedBody> listOtherBodies(const Scenario& scenario);
-
-/// Every body as the vehicle model builds it, in D: `rear_frame` (without the rider's upper body when
-/// rider_lean), `rider_upper_body`, `front_frame` (without the hub carrier when fork_compliance),
-/// `fork_carrier`, and the bodies of listOtherBodies otherwise.
-std::vector<NamedBody> listModelBodies(const Scenario& scenario);
-
-/// Parallel-axis composition: the total mass, the common CoM, the inertia about it (D axes).
-/// Needs a positive total mass.
-BodySpec composeBodies(const std::vector<BodySpec>& parts);
 
 /// The whole vehicle with rider: the rear frame and listOtherBodies composed.
 BodySpec calcVehicleTotal(const Scenario& scenario);

@@ -21,7 +21,7 @@ std::vector<std::string> listColumns(const VehicleModel& model, const Simulation
   for (const auto& n : model.getZNames()) columns.push_back(n);
   for (const char* n : {"steer_torque", "drive_torque", "lateral_force", "forward_speed", "energy"}) columns.push_back(n);
   for (const auto& n : model.getContactOutputNames()) columns.push_back(n);
-  if (model.hasSteerController()) columns.push_back("steer_controller_torque");
+  for (const auto& n : model.getExtensionOutputNames()) columns.push_back(n);
   for (const auto& c : opt.extraOutputs) columns.push_back(c.name);
   return columns;
 }
@@ -41,7 +41,7 @@ std::vector<double> SampleRecorder::makeRow(double t, const SimTK::Vector& y, in
   row.push_back(calcHeadingSpeed(model_, w_));
   row.push_back(model_.getSystem().calcEnergy(w_));
   for (double v : model_.calcContactOutputs(w_)) row.push_back(v);
-  if (model_.hasSteerController()) row.push_back(model_.calcSteerControllerTorque(w_));
+  for (double v : model_.calcExtensionOutputs(w_)) row.push_back(v);
   for (const auto& c : opt_.extraOutputs) row.push_back(c.calc(model_, w_));
   return row;
 }

@@ -62,9 +62,9 @@ enum class SimulationStatus {
 /// Sampled time histories. Columns: time (s); every q (rad, m) and u (rad/s, m/s) by model name;
 /// every z by name; steer_torque (total applied, N m); drive_torque (total, N m); lateral_force
 /// (sum of lateral-force pulses, N); forward_speed (rear wheel centre along the heading, m/s);
-/// energy (kinetic + gravitational, J); the contact outputs; steer_controller_torque (N m, the
-/// steer_controller's applied torque, not included in steer_torque) when the scenario has one; then
-/// SimulationOptions::extraOutputs.
+/// energy (kinetic + gravitational, J); the contact outputs; the model extensions' outputs (e.g.
+/// steer_controller_torque, N m, the steer_controller's applied torque, not included in steer_torque);
+/// then SimulationOptions::extraOutputs.
 struct SimulationResult {
   SimulationStatus status = SimulationStatus::Completed;
   std::string message;                      ///< why a run ended early (fall or failure), else empty

@@ -1,5 +1,7 @@
 #include "uncertainty/distributed.h"
 
+#include "io/result_error.h"
+
 #include <cstdlib>
 #include <cstring>
 #include <limits>
@@ -101,7 +103,7 @@ std::vector<TaskResult> gatherResults(const DistributedSession& session, const s
       MPI_Gather(&n, 1, MPI_INT, counts.data(), 1, MPI_INT, root, MPI_COMM_WORLD);
       long total = 0;
       for (int r = 0; r < size; ++r) offsets[r] = static_cast<int>(total), total += counts[r];
-      if (total > std::numeric_limits<int>::max()) throw std::runtime_error("gather too large for one MPI_Gatherv");
+      if (total > std::numeric_limits<int>::max()) throw io::ResultError("the results of the ranks exceed one MPI_Gatherv (2^31 values): run fewer samples per job");
       std::vector<char> all(session.getRank() == root ? static_cast<size_t>(total) * bytes : 0);
       MPI_Gatherv(buf, n, type, all.data(), counts.data(), offsets.data(), type, root, MPI_COMM_WORLD);
       if (session.getRank() != root) return;
@@ -122,7 +124,7 @@ std::vector<TaskResult> gatherResults(const DistributedSession& session, const s
     const auto tasks = getRankTasks(count, r, session.getSize());
     const auto texts = splitTexts(rankText[r]);
     if (rankData[r].size() != tasks.size() * width || texts.size() != tasks.size())
-      throw std::runtime_error("rank " + std::to_string(r) + " returned an incomplete set of results");
+      throw io::ResultError("rank " + std::to_string(r) + " returned an incomplete set of results");
     for (size_t i = 0; i < tasks.size(); ++i)
       out[tasks[i]] = unpackResult(rankData[r].data() + i * width, parameters, modeValues, texts[i]);
   }

@@ -3,19 +3,19 @@
 #include "multibody/pin_joint.h"
 #include "plugins/builtin.h"
 #include "plugins/pin_spring_damper.h"
-#include "vehicle/aerodynamics.h"
-#include "vehicle/body_builder.h"
-#include "vehicle/fork_compliance.h"
-#include "vehicle/rider_lean.h"
-#include "vehicle/steer_controller.h"
-#include "vehicle/rider_arms.h"
-#include "vehicle/steer_damper.h"
+#include "plugins/rigid_body.h"
+#include "scenario/whole_vehicle.h"
 
 namespace motostab::vehicle {
 
 using io::InputError;
 using multibody::addPinAtDesignPose;
 using plugins::BuildContext;
+using plugins::ExtensionBody;
+using plugins::ExtensionModel;
+using plugins::FrameMasses;
+using plugins::FrontHubCarrier;
+using plugins::VehicleFrames;
 using plugins::PluginRegistry;
 using plugins::SwingarmAssembly;
 using plugins::SwingarmModel;
@@ -23,12 +23,14 @@ using plugins::SwingarmSite;
 using plugins::WheelSite;
 using plugins::addPinSpringDamper;
 using plugins::makeBuiltinRegistry;
+using plugins::makeRigidBody;
+using plugins::toVec3;
 using scenario::BodySpec;
+using scenario::NamedBody;
 using scenario::Scenario;
 using scenario::SuspensionSpec;
 using scenario::SwingarmFrame;
 using scenario::WheelSpec;
-using scenario::calcBodyRemainder;
 using scenario::calcStaticPivotMoment;
 using scenario::calcStaticWheelLoads;
 using scenario::calcSwingarmFrame;
@@ -59,8 +61,10 @@ MobilizedBody::Pin addSuspension(BuildContext& ctx, MobilizedBody& rearFrame, co
 }
 
 // What addRearAssembly and addFrontAssembly built: the mobilizers, the swingarm model, and the
-// named one-DOF mobilizers with their roles (swingarm compliance, rider_lean, fork_bending, fork_torsion).
+// named one-DOF mobilizers with their roles (swingarm compliance; extension coordinates such as
+// rider_lean, fork_bending, fork_torsion).
 using NamedMobilizers = std::vector<NamedMobilizer>;
+using Extensions = std::vector<std::unique_ptr<ExtensionModel>>;
 struct RearAssembly {
   MobilizedBody rearFrame, rearWheel, suspension;
   std::unique_ptr<SwingarmModel> swingarm;
@@ -75,18 +79,52 @@ struct CoordinateNames {
   std::vector<StateInfo> q, u;
 };
 
+// Hub positions in D: the rear and front frames' body origins.
+Vec3 getRearHub(const Scenario& s) { return Vec3(0, 0, s.rearWheel.radius); }
+Vec3 getFrontHub(const Scenario& s) { return Vec3(s.geometry.wheelbase, 0, s.frontWheel.radius); }
+
+// The frames' mass properties after every extension took or moved its share (adjustFrames, in order).
+FrameMasses calcFrameMasses(const Scenario& s, const Extensions& extensions) {
+  FrameMasses frames{s.rearFrame, s.frontFrame};
+  for (const auto& e : extensions) e->adjustFrames(frames);
+  return frames;
+}
+
+// The bodies of the model of `s` with `extensions` (listModelBodies).
+std::vector<NamedBody> listBodiesWith(const Scenario& s, const Extensions& extensions) {
+  const FrameMasses frames = calcFrameMasses(s, extensions);
+  std::vector<NamedBody> out{{"rear_frame", frames.rearFrame}};
+  auto addTakenFrom = [&](ExtensionBody::Frame frame) {
+    for (const auto& e : extensions)
+      for (const ExtensionBody& b : e->getBodies())
+        if (b.takenFrom == frame) out.push_back(b.body);
+  };
+  addTakenFrom(ExtensionBody::Frame::Rear);
+  for (NamedBody& b : scenario::listOtherBodies(s)) {
+    if (b.name == "front_frame") {
+      out.push_back({"front_frame", frames.frontFrame});
+      addTakenFrom(ExtensionBody::Frame::Front);
+    } else {
+      out.push_back(std::move(b));
+    }
+  }
+  return out;
+}
+
 // Rear frame on a Bushing whose frames are permuted (F.x = G.z, F.y = G.x, F.z = G.y) so that its
-// body-fixed 1-2-3 angles are yaw, roll, pitch and its translations are height, x, y; with a leaning
-// rider the upper body is its own body and the rear frame keeps the rest. The rear wheel hangs from the
-// rear frame, or from the swingarm's hub carrier.
-RearAssembly addRearAssembly(const Scenario& s, PluginRegistry& registry, BuildContext& ctx) {
+// body-fixed 1-2-3 angles are yaw, roll, pitch and its translations are height, x, y; the extensions'
+// rear bodies (a leaning rider's upper body) hang from it. The rear wheel hangs from the rear frame,
+// or from the swingarm's hub carrier.
+RearAssembly addRearAssembly(const Scenario& s, const BodySpec& rearBody, PluginRegistry& registry, BuildContext& ctx,
+                             const Extensions& extensions) {
   RearAssembly out;
-  const Vec3 pRearHub_D(0, 0, s.rearWheel.radius);
+  const Vec3 pRearHub_D = getRearHub(s);
   const Rotation R_perm(SimTK::Mat33(0, 1, 0, 0, 0, 1, 1, 0, 0), true);
-  const BodySpec rearBody = s.hasRiderLean ? calcBodyRemainder(s.rearFrame, s.riderLean.body) : s.rearFrame;
-  out.rearFrame = MobilizedBody::Bushing(ctx.matter.Ground(), Transform(R_perm, Vec3(0)), makeBody(rearBody, pRearHub_D),
+  out.rearFrame = MobilizedBody::Bushing(ctx.matter.Ground(), Transform(R_perm, Vec3(0)), makeRigidBody(rearBody, pRearHub_D),
                                          Transform(R_perm, Vec3(0)));
-  if (s.hasRiderLean) out.extension.push_back(addRiderLean(ctx, out.rearFrame, pRearHub_D, s.riderLean));
+  const VehicleFrames frames{out.rearFrame, MobilizedBody(), pRearHub_D, getFrontHub(s)};
+  for (const auto& e : extensions)
+    for (NamedMobilizer& m : e->addRearBodies(ctx, frames)) out.extension.push_back(std::move(m));
   if (!s.hasSwingarm) {
     out.rearWheel = addPinAtDesignPose(out.rearFrame, Transform(), makeWheel(s.rearWheel), Vec3(0), Vec3(0, 1, 0));
     return out;
@@ -101,7 +139,7 @@ RearAssembly addRearAssembly(const Scenario& s, PluginRegistry& registry, BuildC
     out.suspension = armParent = addSuspension(ctx, out.rearFrame, p_PS, s);
     p_PS = Vec3(0);
   }
-  const SwingarmSite site{armParent, Transform(R_RS, p_PS), Vec3(f.length, 0, 0), makeBody(s.swingarm.body, Vec3(0))};
+  const SwingarmSite site{armParent, Transform(R_RS, p_PS), Vec3(f.length, 0, 0), makeRigidBody(s.swingarm.body, Vec3(0))};
   const SwingarmAssembly arm = out.swingarm->addSwingarm(ctx, site);
   MobilizedBody carrier = arm.hubCarrier;
   out.rearWheel = addPinAtDesignPose(carrier, arm.X_CH, makeWheel(s.rearWheel), Vec3(0), Vec3(0, 1, 0));
@@ -110,21 +148,25 @@ RearAssembly addRearAssembly(const Scenario& s, PluginRegistry& registry, BuildC
 }
 
 // Front frame on the steer axis through the ground point (w + c, 0, 0), tilted back by lambda; the
-// front wheel on it, or on the fork's hub carrier (fork_compliance).
-FrontAssembly addFrontAssembly(const Scenario& s, BuildContext& ctx, MobilizedBody& rearFrame) {
+// front wheel on it, or on the hub carrier an extension puts between them (fork_compliance).
+FrontAssembly addFrontAssembly(const Scenario& s, const BodySpec& frontBody, BuildContext& ctx, MobilizedBody& rearFrame,
+                               const Extensions& extensions) {
   FrontAssembly out;
   const double w = s.geometry.wheelbase, lambda = s.geometry.steerAxisTilt;
-  const Vec3 pRearHub_D(0, 0, s.rearWheel.radius), pFrontHub_D(w, 0, s.frontWheel.radius);
+  const Vec3 pRearHub_D = getRearHub(s), pFrontHub_D = getFrontHub(s);
   const Vec3 steerAxis(-std::sin(lambda), 0, std::cos(lambda));
   const Vec3 pSteer_D(w + s.geometry.trail, 0, 0);
-  const BodySpec frontBody = s.hasForkCompliance ? calcBodyRemainder(s.frontFrame, s.forkCompliance.carrier) : s.frontFrame;
-  out.frontFrame = addPinAtDesignPose(rearFrame, Transform(pFrontHub_D - pRearHub_D), makeBody(frontBody, pFrontHub_D),
+  out.frontFrame = addPinAtDesignPose(rearFrame, Transform(pFrontHub_D - pRearHub_D), makeRigidBody(frontBody, pFrontHub_D),
                                       pSteer_D - pFrontHub_D, steerAxis);
   MobilizedBody carrier = out.frontFrame;
-  if (s.hasForkCompliance) {
-    const ForkAssembly fork = addForkCompliance(ctx, out.frontFrame, pFrontHub_D, s);
-    carrier = fork.hubCarrier;
-    out.extension = fork.coordinates;
+  const VehicleFrames frames{rearFrame, out.frontFrame, pRearHub_D, pFrontHub_D};
+  for (const auto& e : extensions) {
+    FrontHubCarrier c = e->addFrontHubCarrier(ctx, frames);
+    if (c.carrier.isEmptyHandle()) continue;
+    if (carrier.getMobilizedBodyIndex() != out.frontFrame.getMobilizedBodyIndex())
+      throw InputError({s.sourceFile, 0, 0, ""}, "two model extensions each put a carrier between the front frame and the front wheel");
+    carrier = c.carrier;
+    out.extension = std::move(c.coordinates);
   }
   out.frontWheel = addPinAtDesignPose(carrier, Transform(), makeWheel(s.frontWheel), Vec3(0), Vec3(0, 1, 0));
   return out;
@@ -212,13 +254,15 @@ void VehicleModel::build(PluginRegistry& registry, const std::vector<ModelExtens
   registry_ = registry;
   extensions_ = extensions;
   auto contact = registry.createContactModel(s.contact, s.inputs);
+  extensionModels_ = registry.createExtensionModels(s, s.inputs);
   BuildContext ctx{system_, matter_, forces_, s.gravity};
 
-  RearAssembly rear = addRearAssembly(s, registry, ctx);
+  const FrameMasses frames = calcFrameMasses(s, extensionModels_);
+  RearAssembly rear = addRearAssembly(s, frames.rearFrame, registry, ctx, extensionModels_);
   rearFrame_ = rear.rearFrame;
   rearWheel_ = rear.rearWheel;
   swingarm_ = std::move(rear.swingarm);
-  const FrontAssembly front = addFrontAssembly(s, ctx, rearFrame_);
+  const FrontAssembly front = addFrontAssembly(s, frames.frontFrame, ctx, rearFrame_, extensionModels_);
   frontFrame_ = front.frontFrame;
   frontWheel_ = front.frontWheel;
 
@@ -237,13 +281,10 @@ void VehicleModel::build(PluginRegistry& registry, const std::vector<ModelExtens
     addZ(contact->getStates(*site));
   }
   contacts_.push_back(std::move(contact));
-  const Vec3 pRearHub_D(0, 0, s.rearWheel.radius);
-  if (s.hasAerodynamics) addAerodynamicDrag(ctx, rearFrame_, s.aerodynamics, toVec3(s.aerodynamics.centreOfPressure) - pRearHub_D);
-  if (s.hasSteerDamper) addSteerDamper(ctx, frontFrame_, s.steerDamper);
-  if (s.hasRiderArms) addRiderArms(ctx, frontFrame_, s.riderArms);
-  if (s.hasSteerController) {
-    steerController_ = addSteerController(ctx, rearFrame_, frontFrame_, s.steerController);
-    addZ(steerController_->getStates());
+  const VehicleFrames vehicleFrames{rearFrame_, frontFrame_, getRearHub(s), getFrontHub(s)};
+  for (const auto& e : extensionModels_) {
+    e->addForces(ctx, vehicleFrames);
+    addZ(e->getStates());
   }
   for (const auto& extend : extensions) addZ(extend(ctx, *this));
   for (const StateInfo& z : zStates_) zNames_.push_back(z.name);
@@ -264,8 +305,35 @@ void VehicleModel::build(PluginRegistry& registry, const std::vector<ModelExtens
   system_.realize(defaultState_, SimTK::Stage::Instance);
 }
 
-double VehicleModel::calcSteerControllerTorque(const SimTK::State& state) const {
-  return steerController_ ? steerController_->calcTorque(state) : 0.0;
+std::vector<std::string> VehicleModel::getExtensionOutputNames() const {
+  std::vector<std::string> out;
+  for (const auto& e : extensionModels_)
+    for (const auto& n : e->getOutputNames()) out.push_back(n);
+  return out;
+}
+
+std::vector<double> VehicleModel::calcExtensionOutputs(const SimTK::State& state) const {
+  std::vector<double> out;
+  for (const auto& e : extensionModels_)
+    for (double v : e->calcOutputs(state)) out.push_back(v);
+  return out;
+}
+
+void VehicleModel::describeExtensions(std::ostream& out) const {
+  for (const auto& e : extensionModels_) e->describe(out);
+}
+
+std::vector<NamedBody> VehicleModel::listBodies() const { return listBodiesWith(scenario_, extensionModels_); }
+
+std::vector<NamedBody> listModelBodies(const Scenario& s) {
+  PluginRegistry registry = makeBuiltinRegistry();
+  try {
+    for (size_t i = 0; i < s.plugins.size(); ++i)
+      registry.loadLibrary(s.plugins[i], {s.sourceFile, 0, 0, "plugins[" + std::to_string(i) + "]"});
+    return listBodiesWith(s, registry.createExtensionModels(s, s.inputs));
+  } catch (const InputError& e) {
+    rethrowNamingOverride(e, s.overrides);
+  }
 }
 
 bool VehicleModel::applyLateralRoadStep(SimTK::State& state, WheelSide wheel, double offset) const {

@@ -4,16 +4,17 @@
 // a contact plugin per wheel. Coordinates (ground: x forward, y left, z up):
 //   q = yaw, roll, pitch (body-fixed z-x-y of the rear frame), height, x, y of the rear wheel centre,
 //       then steer, rear and front wheel spin angles, and, with a swingarm, the optional rear
-//       suspension angle `suspension_pitch` and the compliance coordinates `swingarm_*`; with the
-//       optional extensions `rider_lean` (vehicle/rider_lean.h), `fork_bending` and `fork_torsion`
-//       (vehicle/fork_compliance.h). A steer damper (vehicle/steer_damper.h) adds no coordinate;
-//       a steer controller (vehicle/steer_controller.h) adds the z state `steer_controller_delay`
-//       when it has a delay.
-//       Every u is the corresponding qdot.
+//       suspension angle `suspension_pitch` and the compliance coordinates `swingarm_*`; then the
+//       coordinates of the model extensions (extensions/: `rider_lean`, `fork_bending`, `fork_torsion`).
+//       Every u is the corresponding qdot. z: the contact model's states, then the extensions' (e.g.
+//       `steer_controller_delay`).
+// The model extensions are plugins (plugins/plugin_api.h ExtensionModel), one per extension section
+// of the scenario, called at each assembly stage in the registry's order.
 // Every state has a role (plugins/state_role.h: roll, steer, tyre lag, swingarm twist, ...), reported
 // by the element that adds it; the analysis reads roles, names are for files and people.
 // Signs: roll > 0 leans right, yaw > 0 turns left, steer > 0 steers left, pitch > 0 nose down.
 #include <functional>
+#include <iosfwd>
 #include <memory>
 #include <string>
 #include <vector>
@@ -46,7 +47,7 @@ struct CoordinateIndices {
   int steer = -1, rearSpin = -1, frontSpin = -1;
   std::vector<int> compliance;  ///< swingarm compliance coordinates, if any
   int suspension = -1;          ///< rear suspension angle about the pivot (rad, > 0 lifts the hub), if any
-  std::vector<int> extension;   ///< rider_lean, fork_bending, fork_torsion, those present
+  std::vector<int> extension;   ///< the model extensions' coordinates (rider_lean, fork_bending, fork_torsion, ...)
 };
 
 /// Model inputs: generalized forces the trim may solve for and B is taken against.
@@ -54,7 +55,6 @@ enum class Input { SteerTorque = 0, DriveTorque = 1, RollTorque = 2 };
 constexpr int kNumInputs = 3;
 
 class VehicleModel;
-class SteerController;
 
 /// Adds elements (perturbation forces, controllers) to a model while it is assembled, after the
 /// bodies and contacts and before Simbody's topology is realized. Returns any z states it
@@ -114,10 +114,14 @@ class VehicleModel {
   /// Their values, state realized to Velocity.
   std::vector<double> calcContactOutputs(const SimTK::State& state) const;
 
-  /// The torque (N m) the scenario's steer_controller applies between front and rear frame in
-  /// `state` (realized to Velocity); 0 without one.
-  double calcSteerControllerTorque(const SimTK::State& state) const;
-  bool hasSteerController() const { return steerController_ != nullptr; }
+  /// Named outputs of the model extensions (e.g. steer_controller_torque, N m), in their order.
+  std::vector<std::string> getExtensionOutputNames() const;
+  /// Their values, state realized to Velocity.
+  std::vector<double> calcExtensionOutputs(const SimTK::State& state) const;
+  /// Writes what each model extension adds, one or more lines each (ExtensionModel::describe).
+  void describeExtensions(std::ostream& out) const;
+  /// Every body as the model is built (listModelBodies).
+  std::vector<scenario::NamedBody> listBodies() const;
 
   /// Forward speed: velocity of the rear wheel centre along ground x, m/s.
   double getForwardSpeed(const SimTK::State& state) const { return state.getU()[idx_.x]; }
@@ -140,7 +144,7 @@ class VehicleModel {
   SimTK::Force::DiscreteForces inputs_;
   std::vector<std::unique_ptr<plugins::ContactModel>> contacts_;
   std::unique_ptr<plugins::SwingarmModel> swingarm_;
-  std::shared_ptr<const SteerController> steerController_;
+  std::vector<std::unique_ptr<plugins::ExtensionModel>> extensionModels_;
   std::vector<plugins::WheelSite> wheelSites_;
   SimTK::State defaultState_;
   int nq_ = 0;
@@ -148,5 +152,12 @@ class VehicleModel {
   std::vector<std::string> qNames_, uNames_, zNames_;
   std::vector<StateInfo> qStates_, uStates_, zStates_;
 };
+
+/// Every body of the model of `scenario` as it is built, in D, without building it (its extension
+/// sections read, built-in and from its plugin libraries): `rear_frame` (without what the extensions
+/// took from it), the extensions' bodies taken from it (`rider_upper_body`), `front_frame` (with the
+/// rider's grips, without a fork's hub carrier), the bodies taken from it (`fork_carrier`), the wheels and
+/// the swingarm. InputError as building the model.
+std::vector<scenario::NamedBody> listModelBodies(const scenario::Scenario& scenario);
 
 }  // namespace motostab::vehicle

@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "analysis/sweep.h"
+#include "io/result_error.h"
 #include "scenario/scenario.h"
 
 namespace motostab::analysis {
@@ -86,14 +87,15 @@ TEST(Modes, PrecomputedCostsGiveTheSameBranches) {
   }
 }
 
-// A non-finite eigenvalue is an error naming the speed index, not a silent mis-assignment.
+// A non-finite eigenvalue is an error naming the speed index, not a silent mis-assignment: a result
+// that could not be computed (ResultError, exit code 3), not a bug.
 TEST(Modes, NonFiniteEigenvalueIsNamed) {
   SweepResult r = sweepEnduro();
   r.models[3].eigenvalues[2] = std::complex<double>(std::nan(""), 0);
   try {
     trackModes(r.models, 1);
     FAIL() << "NaN must not be tracked";
-  } catch (const std::runtime_error& e) {
+  } catch (const io::ResultError& e) {
     EXPECT_NE(std::string(e.what()).find("speed index 3"), std::string::npos) << e.what();
   }
 }

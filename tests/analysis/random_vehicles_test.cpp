@@ -21,6 +21,7 @@
 #include <cmath>
 #include <sstream>
 
+#include "tests/support/extension_sections.h"
 #include "analysis/linearize.h"
 #include "analysis/sweep.h"
 #include "analysis/trim.h"
@@ -209,8 +210,7 @@ int sweepAndCheck(const Scenario& s, double start, double stop, double step, con
   const VehicleModel model(s);
   // The same vehicle with a small steering damper (0.05 N m s/rad: a few percent of a road damper's).
   Scenario withDamper = s;
-  withDamper.hasSteerDamper = true;
-  withDamper.steerDamper.damping = 0.05;
+  testing::setExtension(withDamper, "steer_damper", "{damping_Nms_per_rad: 0.05}");
   const VehicleModel damperModel(withDamper);
   int wobbles = 0;
   for (double rollDeg : rollsDeg) {

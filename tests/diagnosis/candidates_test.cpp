@@ -5,6 +5,8 @@
 // share 0.678 of the assumed rider mass; its stiffness start is 4 m g d with d = 0.25 m.
 #include <gtest/gtest.h>
 
+#include "tests/support/extension_sections.h"
+#include "vehicle/vehicle_model.h"
 #include "diagnosis/candidates.h"
 
 #include <algorithm>
@@ -47,10 +49,11 @@ TEST(Candidates, RiderLeanWhereTheRearFrameHoldsARider) {
   std::vector<std::string> ov = c->fixedOverrides.format();
   ov.push_back("rider_lean.stiffness_Nm_per_rad=1234");
   const Scenario s = loadScenario(file, ov);
-  ASSERT_TRUE(s.hasRiderLean);
-  EXPECT_NEAR(s.riderLean.body.mass, mU, 1e-9);
-  EXPECT_NEAR(s.riderLean.stiffness, 1234, 1e-9);
-  EXPECT_NEAR(s.riderLean.body.com[2] - s.riderLean.hingeHeight, 0.25, 1e-9);
+  auto lean = [&](const std::string& key) { return testing::getExtensionValue(s, "rider_lean", key); };
+  EXPECT_NEAR(lean("mass_kg").as<double>(), mU, 1e-9);
+  EXPECT_NEAR(lean("stiffness_Nm_per_rad").as<double>(), 1234, 1e-9);
+  EXPECT_NEAR(lean("com_m")[2].as<double>() - lean("hinge_height_m").as<double>(), 0.25, 1e-9);
+  EXPECT_NO_THROW(vehicle::VehicleModel{s});  // the section is a valid rider_lean
   EXPECT_TRUE(unavailable.empty());
 }
 
@@ -150,10 +153,11 @@ TEST(Candidates, RiderArmsOnTheSupersport) {
   std::vector<std::string> ov = c->fixedOverrides.format();
   ov.push_back("rider_arms.damping_Nms_per_rad=7");
   const Scenario s = loadScenario(file, ov);
-  ASSERT_TRUE(s.hasRiderArms);
-  EXPECT_NEAR(s.riderArms.inertia, 0.20, 1e-12);
-  EXPECT_NEAR(s.riderArms.stiffness, 50, 1e-12);
-  EXPECT_NEAR(s.riderArms.damping, 7, 1e-12);
+  auto arms = [&](const std::string& key) { return testing::getExtensionValue(s, "rider_arms", key).as<double>(); };
+  EXPECT_NEAR(arms("inertia_kgm2"), 0.20, 1e-12);
+  EXPECT_NEAR(arms("stiffness_Nm_per_rad"), 50, 1e-12);
+  EXPECT_NEAR(arms("damping_Nms_per_rad"), 7, 1e-12);
+  EXPECT_NO_THROW(vehicle::VehicleModel{s});
   EXPECT_EQ(find(listCandidates(makeScenarioTree(file, ov), {}), "rider_arms"), nullptr);  // it has them
 }
 

@@ -2,6 +2,7 @@
 // eigenvalue file, row and response run is read strictly, each row is predicted with its own setting
 // (checked against a direct linearisation of the scenario with that setting), a candidate's override
 // acts on every setting, and the controller's candidates are listed.
+#include "tests/support/extension_sections.h"
 #include "diagnosis/controller_groups.h"
 
 #include <gtest/gtest.h>
@@ -171,8 +172,7 @@ TEST(ControllerGroups, BalanceAssistExample) {
   for (const char* key : {"gravity_mps2", "geometry", "rear_frame", "front_frame", "rear_wheel", "front_wheel", "contact", "uncertainty"})
     EXPECT_EQ(YAML::Dump(bundled[key]), YAML::Dump(imported[key])) << key;
   const Scenario s = loadScenario(src + "/scenarios/balance-assist.yaml");
-  ASSERT_TRUE(s.hasSteerController);
-  EXPECT_LT(s.steerController.rollRateGain, 0);  // into the fall
+  EXPECT_LT(testing::getExtensionValue(s, "steer_controller", "roll_rate_Nms_per_rad").as<double>(), 0);  // into the fall
   const MeasuredData data = loadMeasuredData(src + "/examples/balance-assist/weave.yaml");
   ASSERT_EQ(data.eigenvalues.size(), 21u);
   const std::vector<ControllerGroup> groups = splitByController(data);

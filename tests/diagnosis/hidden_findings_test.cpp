@@ -132,7 +132,7 @@ TEST_F(HiddenFindingsTest, HiddenSteerDamperIsNamedWithAnIntervalCoveringIt) {
   }
 }
 
-// The rider's arms on the bars (vehicle/rider_arms.h: Sharp 1994's 0.2 kg m^2 of added steer inertia, a
+// The rider's arms on the bars (extensions/rider_arms.h: Sharp 1994's 0.2 kg m^2 of added steer inertia, a
 // drawn stiffness and damping): named as rider_arms, or as its documented look-alike steer_damper
 // (the arms' damping acts as a steering damper), with the drawn damping inside the 95 % profile interval.
 TEST_F(HiddenFindingsTest, HiddenRiderArmsAreNamedOrTheirLookAlike) {

@@ -1,4 +1,6 @@
-// Fuzz target: the scenario loader (scenario/scenario.h, loadScenario) on one YAML file.
+// Fuzz target: the scenario loader (scenario/scenario.h, loadScenario) on one YAML file, and the
+// built-in plugins reading its extension sections (no plugin library is loaded).
+#include "plugins/builtin.h"
 #include "scenario/scenario.h"
 #include "tests/fuzz/fuzz_support.h"
 
@@ -8,6 +10,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   motostab::fuzz::expectInputErrorOnly([&] {
     const motostab::scenario::Scenario s = motostab::scenario::loadScenario(file.string());
     motostab::scenario::calcMassSummary(s);
+    motostab::plugins::makeBuiltinRegistry().createExtensionModels(s, s.inputs);
   });
   return 0;
 }

@@ -8,6 +8,7 @@
 
 #include "scenario/scenario.h"
 #include "io/yaml_map.h"
+#include "vehicle/vehicle_model.h"
 
 namespace motostab::scenario {
 
@@ -83,7 +84,7 @@ TEST(ParameterPaths, BadPathsAreNamedInputErrors) {
   EXPECT_THROW(loadScenario(kWhipple, {"rear_frame.com_m[3]=1"}), InputError);
   EXPECT_THROW(loadScenario(kWhipple, {"rear_frame.com_m[x]=1"}), InputError);
   EXPECT_THROW(loadScenario(kWhipple, {"rear_frame.mass_kg[0]=1"}), InputError);
-  EXPECT_THROW(loadScenario(kWhipple, {"nothing.here=1"}), InputError);
+  EXPECT_THROW(vehicle::VehicleModel{loadScenario(kWhipple, {"nothing.here=1"})}, InputError);  // an unknown section
   EXPECT_THROW(loadScenario(kWhipple, {"rear_frame.mass_kg=[1, 2"}), InputError);
   try {
     loadScenario(kWhipple, {"rear_frame.com_m[7]=1"});

@@ -1,4 +1,4 @@
-// Steer controller in the time domain (vehicle/steer_controller.h): a saturating torque limit holds
+// Steer controller in the time domain (extensions/steer_controller.h): a saturating torque limit holds
 // the applied torque at the limit, and the energy budget closes: with rolling constraints, no drag
 // and no speed control, the kinetic plus gravitational energy changes by exactly the controller's
 // work, the integral of T steer_rate (the steer pin's power), with T recomputed in the test from the

@@ -2,6 +2,7 @@
 // the supersport with a hidden steering damper of drawn value; the verdicts of the scenario without it
 // disagree, the diagnosis names the damper, and extended.yaml, loaded back and swept here, reproduces
 // the extended motorcycle's reported figures and verdicts.
+#include "tests/support/extension_sections.h"
 #include "studies/study_verdicts.h"
 
 #include <gtest/gtest.h>
@@ -86,8 +87,8 @@ TEST(StudyVerdictsTest, ExtendedYamlReproducesTheReportedFigures) {
   output::writeVerdictOutputs(dir, kSupersport, v);
   // extended.yaml on its own: a complete scenario with the named damping.
   const scenario::Scenario ext = scenario::loadScenario((dir / "extended.yaml").string());
-  ASSERT_TRUE(ext.hasSteerDamper);
-  EXPECT_NEAR(ext.steerDamper.damping, v.causes[0].fit.values[0].value, 1e-12 * c);
+  EXPECT_NEAR(testing::getExtensionValue(ext, "steer_damper", "damping_Nms_per_rad").as<double>(),
+              v.causes[0].fit.values[0].value, 1e-12 * c);
   for (const auto& f : v.findings) {
     EXPECT_EQ(f.extended.verdict, Verdict::Agrees) << f.statement << ": " << f.extended.text;
     const std::vector<double> speeds = diagnosis::getFindingSpeeds(f.finding);

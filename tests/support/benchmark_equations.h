@@ -104,12 +104,17 @@ inline Benchmark getTable1Matrices() {
 }
 
 /// The first-order state matrix at speed v (m/s) and gravity g (m/s^2), states (roll, steer, roll
-/// rate, steer rate).
-inline Eigen::Matrix4d calcBenchmarkStateMatrix(const Benchmark& b, double g, double v) {
+/// rate, steer rate); with a steer spring k (N m/rad) and damper c (N m s/rad) between the frames in
+/// the steer entries of K and C (as Meijaard et al. 2007 sec. 4 add a steering damper):
+/// M q'' + (v C1 + diag(0, c)) q' + (g K0 + v^2 K2 + diag(0, k)) q = 0.
+inline Eigen::Matrix4d calcBenchmarkStateMatrix(const Benchmark& b, double g, double v, double steerStiffness = 0,
+                                                double steerDamping = 0) {
+  const Eigen::Matrix2d K = g * b.K0 + v * v * b.K2 + Eigen::Vector2d(0, steerStiffness).asDiagonal().toDenseMatrix();
+  const Eigen::Matrix2d C = v * b.C1 + Eigen::Vector2d(0, steerDamping).asDiagonal().toDenseMatrix();
   Eigen::Matrix4d A = Eigen::Matrix4d::Zero();
   A.topRightCorner<2, 2>().setIdentity();
-  A.bottomLeftCorner<2, 2>() = -b.M.inverse() * (g * b.K0 + v * v * b.K2);
-  A.bottomRightCorner<2, 2>() = -b.M.inverse() * (v * b.C1);
+  A.bottomLeftCorner<2, 2>() = -b.M.inverse() * K;
+  A.bottomRightCorner<2, 2>() = -b.M.inverse() * C;
   return A;
 }
 

@@ -5,6 +5,7 @@
 
 #include <complex>
 
+#include "tests/support/extension_sections.h"
 #include "../support/catch_input_error.h"
 #include "analysis/linearize.h"
 #include "core/portable_random.h"
@@ -85,7 +86,9 @@ TEST(RelaxationLinear, TrimHasNoSlipOrLeanWhenSymmetric) {
   // torque equals drag times the height of the rear hub above the rear contact point, to within the
   // tyre's radial deflection and the small pitch of the trimmed vehicle.
   const Scenario& s = model.getScenario();
-  const double drag = 0.5 * s.aerodynamics.airDensity * s.aerodynamics.dragArea * 400.0;
+  const double rho = testing::getExtensionValue(s, "aerodynamics", "air_density_kgpm3").as<double>();
+  const double dragArea = testing::getExtensionValue(s, "aerodynamics", "drag_area_m2").as<double>();
+  const double drag = 0.5 * rho * dragArea * 400.0;
   EXPECT_NEAR(model.getInput(trim.state, Input::DriveTorque), drag * s.rearWheel.radius, 0.02 * drag * s.rearWheel.radius);
 }
 

@@ -1,4 +1,4 @@
-// Lateral fork compliance (vehicle/fork_compliance.h, scenario `fork_compliance`): mass split keeps the
+// Lateral fork compliance (extensions/fork_compliance.h, scenario `fork_compliance`): mass split keeps the
 // totals, locked-vehicle frequencies sqrt(k/J) against hand calculations, the stiff limit, labels,
 // --set and malformed input.
 #include <gtest/gtest.h>
@@ -9,14 +9,17 @@
 
 #include "core/portable_random.h"
 #include "extension_test_util.h"
+#include "extensions/fork_compliance.h"
+#include "plugins/plugin_registry.h"
 
-namespace motostab::vehicle {
+namespace motostab::extensions {
 
 using analysis::SweepResult;
 using core::PortableRandom;
 using scenario::InertiaSpec;
 using scenario::Scenario;
 using scenario::loadScenario;
+using vehicle::VehicleModel;
 
 
 namespace {
@@ -78,7 +81,7 @@ TEST(ForkCompliance, MassSplitKeepsTheTotals) {
   for (const std::string& file : {kWhipple, kEnduro}) {
     const Scenario base = loadScenario(file);
     const Scenario fork = loadScenario(file, {toYaml(drawFork(rng, true))});
-    ASSERT_TRUE(fork.hasForkCompliance);
+    ASSERT_NE(scenario::findExtension(fork, "fork_compliance"), nullptr);
     EXPECT_LT(calcTotalsDifference(calcVehicleTotals(base), calcVehicleTotals(fork), base.geometry.wheelbase), 1e-13) << file;
   }
 }
@@ -126,11 +129,15 @@ TEST(ForkCompliance, LabelsNameTheForkModeAndKeepWeaveAndWobble) {
 TEST(ForkCompliance, DefaultsAndSet) {
   const Scenario s = loadScenario(kEnduro, {"fork_compliance={stiffness_Nm_per_rad: 40000, damping_Nms_per_rad: 10}",
                                             "fork_compliance.torsion={stiffness_Nm_per_rad: 50000, damping_Nms_per_rad: 5}"});
-  ASSERT_TRUE(s.hasForkCompliance && s.forkCompliance.hasTorsion);
-  EXPECT_DOUBLE_EQ(s.forkCompliance.torsionStiffness, 50000);
+  io::YamlMap section = getExtensionSection(s, "fork_compliance");
+  const ForkComplianceParams f = readForkCompliance(section, plugins::makeVehicleLayout(s));
+  ASSERT_TRUE(f.hasTorsion);
+  EXPECT_DOUBLE_EQ(f.torsion.stiffness, 50000);
   // Default axis point: the steer-axis point at the height of the tyre's top, 2 r_F.
-  EXPECT_NEAR(s.forkCompliance.axisDistance * std::cos(s.geometry.steerAxisTilt), 2 * s.frontWheel.radius, 1e-12);
-  EXPECT_NEAR(s.forkCompliance.carrier.mass, 0.3 * s.frontFrame.mass, 1e-12);
+  EXPECT_NEAR(f.axisDistance * std::cos(s.geometry.steerAxisTilt), 2 * s.frontWheel.radius, 1e-12);
+  EXPECT_NEAR(f.carrier.mass, 0.3 * s.frontFrame.mass, 1e-12);
+  EXPECT_NEAR(getModelBody(s, "fork_carrier").mass, 0.3 * s.frontFrame.mass, 1e-12);
+  EXPECT_NEAR(getModelBody(s, "front_frame").mass, 0.7 * s.frontFrame.mass, 1e-12);
   const VehicleModel model(s);
   EXPECT_GE(findCoordinate(model, "fork_bending"), 0);
   EXPECT_GE(findCoordinate(model, "fork_torsion"), 0);
@@ -164,4 +171,4 @@ TEST(ForkCompliance, MalformedInputNamesFileLineColumnAndKey) {
 }
 
 }  // namespace
-}  // namespace motostab::vehicle
+}  // namespace motostab::extensions

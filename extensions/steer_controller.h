@@ -3,7 +3,7 @@
 // balance-assist and steer-by-wire bicycles, electronic steering dampers and rider models (steer
 // torque as feedback of roll and steer angles and rates: Moore 2012, "Human control of a bicycle",
 // PhD thesis, UC Davis; the balance-assist law T = k (v0 - v) roll_rate: Haitjema 2023, TU Delft).
-// Signs are those of ISO 8855 and the model (vehicle/vehicle_model.h): roll phi > 0 leans right,
+// Signs are those of ISO 8855 and the vehicle model (vehicle/vehicle_model.h): roll phi > 0 leans right,
 // steer delta > 0 steers left, the torque T > 0 turns the front frame to the left (its reaction acts
 // on the rear frame). Steering INTO the fall (to the right when falling to the right) therefore needs
 // NEGATIVE roll and roll-rate gains.
@@ -26,14 +26,45 @@
 // trim). The schedule's speed dependence enters only multiplied by states that are zero in straight
 // running, so it does not couple to the forward speed at an upright trim. The clamp is inactive at
 // the trim unless |y_trim| >= L: then the finite differences see its flat part (zero gain there).
+#include <array>
 #include <memory>
 #include <string>
 #include <vector>
 
 #include "plugins/plugin_api.h"
-#include "scenario/scenario.h"
 
-namespace motostab::vehicle {
+namespace motostab::extensions {
+
+/// The shortest delay, s: a tenth of a millisecond, below any rider's or actuator's (human reaction
+/// ~0.1-0.3 s, electric steer actuators ~1-10 ms). The Pade pole -2/tau of a shorter delay swamps
+/// every other root (1e-300 s gives -2e300 1/s and loses the weave).
+constexpr double kMinSteerDelay = 1e-4;
+
+/// The section `steer_controller: {roll_angle_Nm_per_rad?, roll_rate_Nms_per_rad?, steer_angle_Nm_per_rad?,
+/// steer_rate_Nms_per_rad?, gain_factor?, schedule: {below_mps: v0} | {table: [[v, f], ...]}?, delay_s?,
+/// torque_limit_Nm?}`: the law above.
+struct SteerControllerParams {
+  enum class Schedule { None, Below, Table };
+  double rollAngleGain = 0;   ///< k_phi, N m/rad (per m/s with a `below_mps` schedule)
+  double rollRateGain = 0;    ///< k_phid, N m s/rad (likewise)
+  double steerAngleGain = 0;  ///< k_delta, N m/rad
+  double steerRateGain = 0;   ///< k_deltad, N m s/rad
+  double gainFactor = 1;      ///< g, dimensionless (> 0): scales every gain
+  Schedule schedule = Schedule::None;
+  double scheduleBelow = 0;   ///< v0, m/s: f = v0 - v for v < v0, else 0
+  std::vector<std::array<double, 2>> scheduleTable;  ///< (v m/s, f) sorted by v: f interpolated linearly
+  double delay = 0;           ///< tau, s (0: none, else >= kMinSteerDelay): first-order Pade delay
+  double torqueLimit = 0;     ///< N m (> 0 when given; 0: none): |T| <= limit
+};
+
+/// Reads and checks the section (the caller finishes `m`). The table needs at least two rows with
+/// strictly increasing speeds; a negative delay or one between 0 and kMinSteerDelay, a non-positive
+/// limit or gain factor are errors.
+SteerControllerParams readSteerController(io::YamlMap& m);
+
+/// The scalar keys of the section (gains, gain_factor, delay_s, torque_limit_Nm), for readers that
+/// set them per measurement (diagnosis/measured_data.h).
+const std::vector<std::string>& getSteerControllerScalarKeys();
 
 /// The states the controller reads: roll (rad), roll rate (rad/s), steer (rad), steer rate (rad/s),
 /// forward speed v (m/s).
@@ -42,44 +73,43 @@ struct SteerControllerInputs {
 };
 
 /// The schedule factor f(v) (dimensionless; m/s for `below_mps`), as above.
-double calcScheduleFactor(const scenario::SteerControllerSpec& spec, double speed);
+double calcScheduleFactor(const SteerControllerParams& spec, double speed);
 
 /// The undelayed, unsaturated law u (N m), as above.
-double calcSteerControllerCommand(const scenario::SteerControllerSpec& spec, const SteerControllerInputs& x);
+double calcSteerControllerCommand(const SteerControllerParams& spec, const SteerControllerInputs& x);
 
 /// The applied torque T = clamp(y, -L, L) (N m) for the (delayed) command y.
-double calcSaturatedTorque(const scenario::SteerControllerSpec& spec, double command);
+double calcSaturatedTorque(const SteerControllerParams& spec, double command);
 
 /// The controller element of one model: reads the states, writes the delay state's derivative.
 class SteerController {
  public:
   SteerController(SimTK::GeneralForceSubsystem& forces, const SimTK::MobilizedBody& rearFrame,
-                  const SimTK::MobilizedBody& frontFrame, const scenario::SteerControllerSpec& spec);
+                  const SimTK::MobilizedBody& frontFrame, const SteerControllerParams& spec);
   /// Allocates the delay state (if any); called from the force element's realizeTopology.
   void allocateState(SimTK::State& state) const;
-  /// The z states allocated: {"steer_controller_delay"} (N m, role Controller) with a delay, else none.
-  std::vector<plugins::AuxiliaryState> getStates() const;
   /// The fed-back states of `state` (realized to Velocity).
   SteerControllerInputs getInputs(const SimTK::State& state) const;
   /// The applied torque T (N m) in `state` (realized to Velocity).
   double calcTorque(const SimTK::State& state) const;
   /// Applies T to the steer mobility and writes z' (delay); state realized to Velocity.
   void apply(const SimTK::State& state, SimTK::Vector& mobilityForces) const;
-  const scenario::SteerControllerSpec& getSpec() const { return spec_; }
+  const SteerControllerParams& getSpec() const { return spec_; }
 
  private:
   double calcDelayedCommand(const SimTK::State& state, double command) const;
 
   SimTK::GeneralForceSubsystem& forces_;
   SimTK::MobilizedBody rear_, front_;
-  scenario::SteerControllerSpec spec_;
+  SteerControllerParams spec_;
   mutable SimTK::ZIndex zIndex_;
 };
 
-/// Adds the controller between `rearFrame` (the model's 6-DOF Bushing: q = yaw, roll, pitch,
-/// height, x, y; u = their rates) and `frontFrame` (the steer Pin) as a Force::Custom element.
-std::shared_ptr<const SteerController> addSteerController(plugins::BuildContext& context, const SimTK::MobilizedBody& rearFrame,
-                                                          const SimTK::MobilizedBody& frontFrame,
-                                                          const scenario::SteerControllerSpec& spec);
+/// The extension with these parameters (typed constructor). Its output `steer_controller_torque`
+/// (N m) is the applied torque T, not included in the model's steer_torque input.
+std::unique_ptr<plugins::ExtensionModel> makeSteerController(const SteerControllerParams& params);
 
-}  // namespace motostab::vehicle
+/// Registers `steer_controller`.
+void registerSteerController(plugins::PluginRegistrar& registry);
+
+}  // namespace motostab::extensions

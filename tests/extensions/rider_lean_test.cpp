@@ -1,4 +1,4 @@
-// Passive rider lean (vehicle/rider_lean.h, scenario `rider_lean`): totals kept, the locked-vehicle
+// Passive rider lean (extensions/rider_lean.h, scenario `rider_lean`): totals kept, the locked-vehicle
 // frequency sqrt(k/J) against a hand calculation, the stiff limit, --set and malformed input.
 #include <gtest/gtest.h>
 
@@ -7,14 +7,16 @@
 
 #include "core/portable_random.h"
 #include "extension_test_util.h"
+#include "extensions/rider_lean.h"
+#include "plugins/plugin_registry.h"
 
-namespace motostab::vehicle {
+namespace motostab::extensions {
 
 using core::PortableRandom;
 using scenario::BodySpec;
-using scenario::RiderLeanSpec;
 using scenario::Scenario;
 using scenario::loadScenario;
+using vehicle::VehicleModel;
 
 
 namespace {
@@ -25,8 +27,8 @@ using namespace motostab::testing;
 // frame's and 0.2-0.3 m above the hinge, inertia of a trunk-sized body (Winter 2009, Table 4.1:
 // head-arms-trunk radius of gyration about 0.5 of its 0.5 m length). Small enough that the rest of the
 // Meijaard (2007) rear frame (85 kg, I_xx 9.2 kg m^2) stays a valid body.
-RiderLeanSpec drawRider(PortableRandom& rng, const BodySpec& rearFrame) {
-  RiderLeanSpec r;
+RiderLeanParams drawRider(PortableRandom& rng, const BodySpec& rearFrame) {
+  RiderLeanParams r;
   r.body.mass = rng.drawUniform(20, 30);
   r.body.com = {rearFrame.com[0] + rng.drawUniform(-0.05, 0.05), 0, rearFrame.com[2] + rng.drawUniform(0.15, 0.25)};
   r.hingeHeight = r.body.com[2] - rng.drawUniform(0.2, 0.3);
@@ -37,7 +39,7 @@ RiderLeanSpec drawRider(PortableRandom& rng, const BodySpec& rearFrame) {
   return r;
 }
 
-std::string toYaml(const RiderLeanSpec& r, double stiffnessScale = 1, double dampingScale = 1) {
+std::string toYaml(const RiderLeanParams& r, double stiffnessScale = 1, double dampingScale = 1) {
   std::ostringstream o;
   o.precision(17);
   const auto& I = r.body.inertia;
@@ -53,9 +55,9 @@ TEST(RiderLean, WholeVehicleTotalsAreKept) {
   PortableRandom rng(1010);
   for (const std::string& file : {kWhipple, kEnduro}) {
     const Scenario base = loadScenario(file);
-    const RiderLeanSpec r = drawRider(rng, base.rearFrame);
+    const RiderLeanParams r = drawRider(rng, base.rearFrame);
     const Scenario lean = loadScenario(file, {toYaml(r)});
-    ASSERT_TRUE(lean.hasRiderLean);
+    ASSERT_NE(scenario::findExtension(lean, "rider_lean"), nullptr);
     EXPECT_LT(calcTotalsDifference(calcVehicleTotals(base), calcVehicleTotals(lean), base.geometry.wheelbase), 1e-13) << file;
   }
 }
@@ -65,7 +67,7 @@ TEST(RiderLean, WholeVehicleTotalsAreKept) {
 TEST(RiderLean, LockedVehicleFrequencyIsSqrtKOverJ) {
   PortableRandom rng(2020);
   for (int trial = 0; trial < 3; ++trial) {
-    const RiderLeanSpec r = drawRider(rng, loadScenario(kEnduro).rearFrame);
+    const RiderLeanParams r = drawRider(rng, loadScenario(kEnduro).rearFrame);
     const Scenario s = loadScenario(kEnduro, {toYaml(r), "gravity_mps2=0"});
     const double dz = r.body.com[2] - r.hingeHeight;
     const double J = r.body.inertia.xx + r.body.mass * dz * dz;
@@ -83,11 +85,12 @@ TEST(RiderLean, StiffRiderReproducesTheRigidRider) {
 
 TEST(RiderLean, SetCreatesTheSectionAndEditsIt) {
   PortableRandom rng(4040);
-  const RiderLeanSpec r = drawRider(rng, loadScenario(kWhipple).rearFrame);
+  const RiderLeanParams r = drawRider(rng, loadScenario(kWhipple).rearFrame);
   const Scenario s = loadScenario(kWhipple, {toYaml(r), "rider_lean.stiffness_Nm_per_rad=1234"});
-  ASSERT_TRUE(s.hasRiderLean);
-  EXPECT_DOUBLE_EQ(s.riderLean.stiffness, 1234);
-  EXPECT_DOUBLE_EQ(s.riderLean.body.mass, r.body.mass);
+  io::YamlMap section = getExtensionSection(s, "rider_lean");
+  const RiderLeanParams read = readRiderLean(section, plugins::makeVehicleLayout(s));
+  EXPECT_DOUBLE_EQ(read.stiffness, 1234);
+  EXPECT_DOUBLE_EQ(read.body.mass, r.body.mass);
   const VehicleModel model(s);
   EXPECT_GE(findCoordinate(model, "rider_lean"), 0);
   EXPECT_EQ(model.getIndices().extension.size(), 1u);
@@ -123,4 +126,4 @@ TEST(RiderLean, MalformedInputNamesFileLineColumnAndKey) {
 }
 
 }  // namespace
-}  // namespace motostab::vehicle
+}  // namespace motostab::extensions

@@ -10,15 +10,29 @@
 // time domain (simulate); sweeps of dampers with friction show the locked-steer limit as f/omega_s grows.
 // Viscous steering dampers in the literature: Meijaard et al. (2007) sec. 4 (c added to the steer
 // entry of C), Cossalter (2006) sec. 8.5, Sharp & Limebeer (2001) (c about 6.8 N m s/rad on a sports bike).
+#include <memory>
+
 #include "plugins/plugin_api.h"
-#include "scenario/scenario.h"
 
-namespace motostab::vehicle {
+namespace motostab::extensions {
 
-/// Adds the damper to the steer mobilizer of `frontFrame` (a one-DOF Pin whose u is the steer rate).
-void addSteerDamper(plugins::BuildContext& context, const SimTK::MobilizedBody& frontFrame, const scenario::SteerDamperSpec& spec);
+/// The section `steer_damper: {damping_Nms_per_rad, coulomb_Nm?, coulomb_smoothing_rad_per_s?}`.
+struct SteerDamperParams {
+  double damping = 0;            ///< c, N m s/rad (>= 0)
+  double coulomb = 0;            ///< f, N m (>= 0): smoothed Coulomb friction
+  double coulombSmoothing = 0.1; ///< omega_s, rad/s (> 0): steer rate at which tanh reaches 76 % of f
+};
+
+/// Reads and checks the section (the caller finishes `m`).
+SteerDamperParams readSteerDamper(io::YamlMap& m);
 
 /// The damper torque T (N m) at steer rate `steerRate` (rad/s), as above.
-double calcSteerDamperTorque(const scenario::SteerDamperSpec& spec, double steerRate);
+double calcSteerDamperTorque(const SteerDamperParams& params, double steerRate);
 
-}  // namespace motostab::vehicle
+/// The extension with these parameters (typed constructor; tests build it without YAML).
+std::unique_ptr<plugins::ExtensionModel> makeSteerDamper(const SteerDamperParams& params);
+
+/// Registers `steer_damper`.
+void registerSteerDamper(plugins::PluginRegistrar& registry);
+
+}  // namespace motostab::extensions

@@ -1,4 +1,4 @@
-// Steering damper (vehicle/steer_damper.h, scenario `steer_damper`): against an independent linear
+// Steering damper (extensions/steer_damper.h, scenario `steer_damper`): against an independent linear
 // model, the zero-damping limit, the linearised Coulomb friction, --set and malformed input.
 #include <gtest/gtest.h>
 
@@ -8,9 +8,9 @@
 #include "core/portable_random.h"
 #include "extension_test_util.h"
 #include "tests/support/benchmark_equations.h"
-#include "vehicle/steer_damper.h"
+#include "extensions/steer_damper.h"
 
-namespace motostab::vehicle {
+namespace motostab::extensions {
 
 using analysis::SweepResult;
 using core::PortableRandom;
@@ -22,25 +22,13 @@ namespace {
 
 using namespace motostab::testing;
 
-// Eigenvalues of M q'' + (v C1 + diag(0, c)) q' + (g K0 + v^2 K2) q = 0.
-Eigen::VectorXcd calcBenchmarkEigenvalues(const Benchmark& b, double g, double v, double c) {
-  const Eigen::Matrix2d C = v * b.C1 + Eigen::Vector2d(0, c).asDiagonal().toDenseMatrix();
-  const Eigen::Matrix2d K = g * b.K0 + v * v * b.K2;
-  const Eigen::Matrix2d Minv = b.M.inverse();
-  Eigen::Matrix4d A = Eigen::Matrix4d::Zero();
-  A.topRightCorner<2, 2>().setIdentity();
-  A.bottomLeftCorner<2, 2>() = -Minv * K;
-  A.bottomRightCorner<2, 2>() = -Minv * C;
-  return Eigen::EigenSolver<Eigen::Matrix4d>(A).eigenvalues();
-}
-
 // All eigenvalues at 0..10 m/s within 1e-8 (relative to max(1, |lambda|)); the model's one extra
 // eigenvalue (forward speed) is zero.
 void expectMatchesBenchmark(const Scenario& s, double c) {
   const Benchmark b = calcMeijaardMatrices(s);
   double worst = 0;
   for (int v = 0; v <= 10; ++v) {
-    const Eigen::VectorXcd ref = calcBenchmarkEigenvalues(b, s.gravity, v, c);
+    const Eigen::VectorXcd ref = Eigen::EigenSolver<Eigen::Matrix4d>(calcBenchmarkStateMatrix(b, s.gravity, v, 0, c)).eigenvalues();
     const Eigen::VectorXcd got = calcEigenvaluesAt(s, v);
     ASSERT_EQ(got.size(), 5);
     worst = std::max(worst, calcSpectrumDistance(ref, got));
@@ -52,7 +40,7 @@ void expectMatchesBenchmark(const Scenario& s, double c) {
 
 TEST(SteerDamper, BenchmarkBicycleMatchesMeijaardWithDampingInC) {
   Scenario s = loadScenario(kWhipple, {"steer_damper={damping_Nms_per_rad: 0.5}"});
-  ASSERT_TRUE(s.hasSteerDamper);
+  ASSERT_NE(scenario::findExtension(s, "steer_damper"), nullptr);
   expectMatchesBenchmark(s, 0.5);
 }
 
@@ -65,9 +53,9 @@ TEST(SteerDamper, RandomBicycleMatchesMeijaard) {
   s.rearFrame.com[2] *= rng.drawUniform(0.9, 1.1);
   s.frontFrame.mass *= rng.drawUniform(0.7, 1.3);
   s.geometry.trail *= rng.drawUniform(0.7, 1.3);
-  s.hasSteerDamper = true;
-  s.steerDamper.damping = rng.drawUniform(0.1, 2.0);
-  expectMatchesBenchmark(s, s.steerDamper.damping);
+  const double c = rng.drawUniform(0.1, 2.0);
+  setExtension(s, "steer_damper", "{damping_Nms_per_rad: " + io::formatNumber(c) + "}");
+  expectMatchesBenchmark(s, c);
 }
 
 TEST(SteerDamper, ZeroDampingReproducesTheUndampedModel) {
@@ -90,23 +78,24 @@ TEST(SteerDamper, LinearisedCoulombFrictionIsViscous) {
   const Scenario dry = loadScenario(kWhipple, {"steer_damper={damping_Nms_per_rad: " + std::to_string(c) +
                                                    ", coulomb_Nm: " + std::to_string(f) +
                                                    ", coulomb_smoothing_rad_per_s: " + std::to_string(ws) + "}"});
-  ASSERT_NEAR(dry.steerDamper.coulomb, f, 1e-6);
+  io::YamlMap section = getExtensionSection(dry, "steer_damper");
+  const SteerDamperParams p = readSteerDamper(section);
+  ASSERT_NEAR(p.coulomb, f, 1e-6);
   Scenario viscous = loadScenario(kWhipple);
-  viscous.hasSteerDamper = true;
-  viscous.steerDamper.damping = dry.steerDamper.damping + dry.steerDamper.coulomb / dry.steerDamper.coulombSmoothing;
+  setExtension(viscous, "steer_damper", "{damping_Nms_per_rad: " + io::formatNumber(p.damping + p.coulomb / p.coulombSmoothing) + "}");
   for (double v : {3.0, 6.0}) EXPECT_LT(calcSpectrumDistance(calcEigenvaluesAt(viscous, v), calcEigenvaluesAt(dry, v)), 1e-7);
   // The torque law itself, at a rate drawn at random.
   const double rate = rng.drawUniform(-3, 3);
-  EXPECT_NEAR(calcSteerDamperTorque(dry.steerDamper, rate),
-              -dry.steerDamper.damping * rate - dry.steerDamper.coulomb * std::tanh(rate / dry.steerDamper.coulombSmoothing), 1e-14);
+  EXPECT_NEAR(calcSteerDamperTorque(p, rate), -p.damping * rate - p.coulomb * std::tanh(rate / p.coulombSmoothing), 1e-14);
 }
 
 TEST(SteerDamper, SetCreatesAndEditsTheSection) {
   const Scenario s = loadScenario(kWhipple, {"steer_damper={damping_Nms_per_rad: 0.4}", "steer_damper.coulomb_Nm=0.3"});
-  EXPECT_TRUE(s.hasSteerDamper);
-  EXPECT_DOUBLE_EQ(s.steerDamper.damping, 0.4);
-  EXPECT_DOUBLE_EQ(s.steerDamper.coulomb, 0.3);
-  EXPECT_FALSE(loadScenario(kWhipple).hasSteerDamper);
+  io::YamlMap section = getExtensionSection(s, "steer_damper");
+  const SteerDamperParams p = readSteerDamper(section);
+  EXPECT_DOUBLE_EQ(p.damping, 0.4);
+  EXPECT_DOUBLE_EQ(p.coulomb, 0.3);
+  EXPECT_EQ(scenario::findExtension(loadScenario(kWhipple), "steer_damper"), nullptr);
 }
 
 TEST(SteerDamper, MalformedInputNamesFileLineColumnAndKey) {
@@ -126,4 +115,4 @@ TEST(SteerDamper, MalformedInputNamesFileLineColumnAndKey) {
 }
 
 }  // namespace
-}  // namespace motostab::vehicle
+}  // namespace motostab::extensions

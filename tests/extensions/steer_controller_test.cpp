@@ -1,4 +1,4 @@
-// Steer controller (vehicle/steer_controller.h, scenario `steer_controller`): the closed-loop Whipple
+// Steer controller (extensions/steer_controller.h, scenario `steer_controller`): the closed-loop Whipple
 // bicycle against Meijaard et al. (2007) with the feedback added in the test (gains, schedule and
 // Pade delay drawn), the sign convention (steering into the fall stabilises weave), the schedule
 // factor, --set, and malformed input.
@@ -11,17 +11,17 @@
 #include "io/csv.h"
 #include "core/portable_random.h"
 #include "tests/support/benchmark_equations.h"
-#include "vehicle/steer_controller.h"
+#include "extensions/steer_controller.h"
 
-namespace motostab::vehicle {
+namespace motostab::extensions {
 
 using analysis::TrimResult;
 using analysis::calcTrim;
 using core::PortableRandom;
 using io::formatNumber;
 using scenario::Scenario;
-using scenario::SteerControllerSpec;
 using scenario::loadScenario;
+using vehicle::VehicleModel;
 
 
 namespace {
@@ -105,7 +105,7 @@ TEST(SteerController, WhippleWithFullStateFeedbackMatchesMeijaard) {
   PortableRandom rng(20261125);
   const Feedback k = drawFeedback(rng);
   const Scenario s = loadScenario(kWhipple, {makeSection(k, 0, 0)});
-  ASSERT_TRUE(s.hasSteerController);
+  ASSERT_NE(scenario::findExtension(s, "steer_controller"), nullptr);
   const double worst = expectClosedLoopMatches(s, k, 0, 1e-8);
   std::cout << "full state feedback " << k.kPhi << ", " << k.kPhiDot << ", " << k.kDelta << ", " << k.kDeltaDot
             << ": worst eigenvalue error against Meijaard over 0.5-10 m/s " << worst << "\n";
@@ -177,18 +177,19 @@ TEST(SteerController, TorqueSteersRightWhenRollingRight) {
   st = trim.state;
   st.updU()[model.getIndices().roll] = 0.2;
   model.getSystem().realize(st, SimTK::Stage::Velocity);
-  EXPECT_NEAR(model.calcSteerControllerTorque(st), -10 * 0.2, 1e-12);
+  ASSERT_EQ(model.getExtensionOutputNames(), std::vector<std::string>{"steer_controller_torque"});
+  EXPECT_NEAR(model.calcExtensionOutputs(st).at(0), -10 * 0.2, 1e-12);
 }
 
 TEST(SteerController, ScheduleFactor) {
-  SteerControllerSpec c;
+  SteerControllerParams c;
   EXPECT_EQ(calcScheduleFactor(c, 3.0), 1.0);
-  c.schedule = SteerControllerSpec::Schedule::Below;
+  c.schedule = SteerControllerParams::Schedule::Below;
   c.scheduleBelow = 5;
   EXPECT_DOUBLE_EQ(calcScheduleFactor(c, 1.66), 5 - 1.66);
   EXPECT_EQ(calcScheduleFactor(c, 5.0), 0.0);
   EXPECT_EQ(calcScheduleFactor(c, 7.0), 0.0);
-  c.schedule = SteerControllerSpec::Schedule::Table;
+  c.schedule = SteerControllerParams::Schedule::Table;
   c.scheduleTable = {{{1, 2}}, {{3, 6}}, {{5, 0}}};
   EXPECT_DOUBLE_EQ(calcScheduleFactor(c, 0.5), 2);    // held below the first speed
   EXPECT_DOUBLE_EQ(calcScheduleFactor(c, 2.0), 4);    // halfway 1..3
@@ -203,12 +204,13 @@ TEST(SteerController, ScheduleFactor) {
 TEST(SteerController, SetCreatesAndEditsTheSection) {
   const Scenario s = loadScenario(kWhipple, {"steer_controller={roll_rate_Nms_per_rad: -6, schedule: {below_mps: 5}}",
                                              "steer_controller.roll_rate_Nms_per_rad=-8", "steer_controller.delay_s=0.03"});
-  ASSERT_TRUE(s.hasSteerController);
-  EXPECT_EQ(s.steerController.rollRateGain, -8);
-  EXPECT_EQ(s.steerController.delay, 0.03);
-  EXPECT_EQ(s.steerController.scheduleBelow, 5);
-  EXPECT_EQ(s.steerController.rollAngleGain, 0);
-  EXPECT_FALSE(loadScenario(kWhipple).hasSteerController);
+  io::YamlMap section = getExtensionSection(s, "steer_controller");
+  const SteerControllerParams c = readSteerController(section);
+  EXPECT_EQ(c.rollRateGain, -8);
+  EXPECT_EQ(c.delay, 0.03);
+  EXPECT_EQ(c.scheduleBelow, 5);
+  EXPECT_EQ(c.rollAngleGain, 0);
+  EXPECT_EQ(scenario::findExtension(loadScenario(kWhipple), "steer_controller"), nullptr);
 }
 
 TEST(SteerController, MalformedInputNamesFileLineColumnAndKey) {
@@ -231,4 +233,4 @@ TEST(SteerController, MalformedInputNamesFileLineColumnAndKey) {
 }
 
 }  // namespace
-}  // namespace motostab::vehicle
+}  // namespace motostab::extensions

@@ -1,5 +1,5 @@
 #pragma once
-// Shared by the model-extension tests: eigenvalues at one speed, matching of spectra,
+// Shared by the model-extension tests (extensions/): eigenvalues at one speed, matching of spectra,
 // labelled modes of a sweep, scenario files with an extra section, and a portable random draw.
 #include <gtest/gtest.h>
 
@@ -15,7 +15,9 @@
 #include <vector>
 
 #include "core/portable_random.h"
+#include "io/number.h"
 #include "tests/support/analysis_chain.h"
+#include "tests/support/extension_sections.h"
 #include "analysis/linearize.h"
 #include "analysis/sweep.h"
 #include "analysis/trim.h"
@@ -107,10 +109,31 @@ inline std::string writeScenarioWith(const std::string& base, const std::string&
   return path;
 }
 
-/// Loads `file` expecting an InputError at (line, column) naming `key`; returns the message.
+/// The body `name` of the model of `s` as it is built (vehicle::listModelBodies).
+inline scenario::BodySpec getModelBody(const Scenario& s, const std::string& name) {
+  for (const scenario::NamedBody& b : vehicle::listModelBodies(s))
+    if (b.name == name) return b.body;
+  ADD_FAILURE() << "no body " << name;
+  return {};
+}
+
+/// The whole vehicle composed from the model's bodies as built.
+inline scenario::BodySpec calcModelTotal(const Scenario& s) {
+  std::vector<scenario::BodySpec> parts;
+  for (const scenario::NamedBody& b : vehicle::listModelBodies(s)) parts.push_back(b.body);
+  return scenario::composeBodies(parts);
+}
+
+/// Loads `file` with `overrides` and builds its model: the InputError of either propagates.
+inline void loadAndBuild(const std::string& file, const std::vector<std::string>& overrides) {
+  const VehicleModel model(loadScenario(file, overrides));
+}
+
+/// Loads `file` and builds its model (which reads the extension sections) expecting an InputError at
+/// (line, column) naming `key`; returns the message.
 inline std::string expectInputError(const std::string& file, int line, int column, const std::string& key) {
   try {
-    loadScenario(file);
+    const VehicleModel model(loadScenario(file));
   } catch (const InputError& e) {
     EXPECT_EQ(e.getLocation().file, file);
     EXPECT_EQ(e.getLocation().line, line) << e.what();

@@ -1,0 +1,50 @@
+#include "extensions/steer_head_friction.h"
+
+#include <ostream>
+
+#include "extensions/steer_torque.h"
+
+namespace motostab::extensions {
+
+namespace {
+
+class SteerHeadFriction : public plugins::ExtensionModel {
+ public:
+  explicit SteerHeadFriction(const SteerHeadFrictionParams& p) : p_(p) {}
+  void addForces(plugins::BuildContext& ctx, const plugins::VehicleFrames& frames) override {
+    const SteerHeadFrictionParams p = p_;
+    addSteerTorque(ctx, frames.frontFrame, [p](double, double rate) { return calcSteerHeadFrictionTorque(p, rate); });
+  }
+  void describe(std::ostream& os) const override {
+    os << "  steer-head friction   " << p_.torque << " N m (smoothing " << p_.smoothing << " rad/s; linearised "
+       << p_.torque / p_.smoothing << " N m s/rad)\n";
+  }
+
+ private:
+  SteerHeadFrictionParams p_;
+};
+
+}  // namespace
+
+SteerHeadFrictionParams readSteerHeadFriction(io::YamlMap& m) {
+  SteerHeadFrictionParams p;
+  p.torque = m.getNonNegative("torque_Nm");
+  p.smoothing = m.getPositive("smoothing_rad_per_s", p.smoothing);
+  return p;
+}
+
+double calcSteerHeadFrictionTorque(const SteerHeadFrictionParams& p, double steerRate) {
+  return calcSmoothedFrictionTorque(p.torque, p.smoothing, steerRate);
+}
+
+std::unique_ptr<plugins::ExtensionModel> makeSteerHeadFriction(const SteerHeadFrictionParams& p) {
+  return std::make_unique<SteerHeadFriction>(p);
+}
+
+void registerSteerHeadFriction(plugins::PluginRegistrar& registry) {
+  registry.addExtensionModel("steer_head_friction", [](io::YamlMap& m, const plugins::VehicleLayout&) {
+    return makeSteerHeadFriction(readSteerHeadFriction(m));
+  });
+}
+
+}  // namespace motostab::extensions
