@@ -69,7 +69,8 @@ void registerDiagnoseCommands(CLI::App& app) {
   addStrictOption(cmd, a->strict);
   cmd->callback([a]() {
     const ParameterOverrides changes(a->overrides);  // the --set text, parsed once
-    Scenario scenario = ScenarioSource(a->scenario).load(changes);
+    const auto source = ScenarioSource::open(a->scenario);  // the file read once, for the command and every prediction
+    Scenario scenario = source->load(changes);
     reportScenarioWarnings(scenario, a->strict);
     const MeasuredData data = loadMeasuredData(a->measurements);
     DiagnosisOptions opt;
@@ -83,7 +84,7 @@ void registerDiagnoseCommands(CLI::App& app) {
     if (terminal) opt.progress = showProgress;
     const std::string out = getOutputFolder(a->out, scenario.name, "diagnose");
     OutputFolder folder(out);  // inputs read; from here an error or a kill leaves the old outputs whole
-    const DiagnosisResult result = runDiagnosis(a->scenario, data, opt);
+    const DiagnosisResult result = runDiagnosis(source, data, opt);
     const auto& fits = result.candidates;  // a failed fit has no score (diagnosis/model_fit.h, fitOrFail)
     if (!fits.empty() && std::none_of(fits.begin(), fits.end(), [](const auto& f) { return std::isfinite(f.bic); }))
       throw io::ResultError("every one of the " + std::to_string(fits.size()) + " candidates failed to fit (the first: " +

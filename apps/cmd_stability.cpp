@@ -241,8 +241,8 @@ void registerStudyCommand(CLI::App& app) {
   addStrictOption(study, st->strict);
   study->callback([st, dampingOption]() {
     const ParameterOverrides changes(st->overrides);  // the --set text, parsed once
-    const ScenarioSource source(st->scenario);        // the file, read once for every variant
-    Scenario scenario = source.load(changes);
+    const auto source = ScenarioSource::open(st->scenario);  // the file, read once for every variant and verdict
+    Scenario scenario = source->load(changes);
     reportScenarioWarnings(scenario, st->strict);
     StudyOptions opt;
     opt.sweep.start = scenario.speeds.start;
@@ -265,16 +265,16 @@ void registerStudyCommand(CLI::App& app) {
     if (!vo.findingsFile.empty()) {  // bad input before any work
       diagnosis::loadMeasuredData(vo.findingsFile);
       std::vector<std::string> unavailable;
-      studies::selectStudyCandidates(*ScenarioSource::open(st->scenario), vo, unavailable);
+      studies::selectStudyCandidates(*source, vo, unavailable);
     }
     const std::string out = getOutputFolder(st->out, scenario.name, "study");
     OutputFolder folder(out);
     const auto t0 = std::chrono::steady_clock::now();
-    const StudyResult result = runStudy(source, opt);
+    const StudyResult result = runStudy(*source, opt);
     const double sweepSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     const studies::StudyFindings findings = studies::calcStudyFindings(result);
     std::optional<studies::StudyVerdicts> verdicts;
-    if (!vo.findingsFile.empty()) verdicts = studies::runStudyVerdicts(ScenarioSource::open(st->scenario), vo);
+    if (!vo.findingsFile.empty()) verdicts = studies::runStudyVerdicts(source, vo);
     const studies::StudyVerdicts* v = verdicts ? &*verdicts : nullptr;
     writeStudyOutputs(folder.getPath(), result, findings, opt, v, st->scenario);
     writeScenarioJson(folder.getPath(), scenario);

@@ -17,6 +17,7 @@
 #include "io/output_folder.h"
 #include "io/yaml_map.h"
 #include "output/tyre_curve_output.h"
+#include "plugins/builtin.h"
 #include "scenario/scenario.h"
 #include "tyres/magic_formula.h"
 #include "tyres/magic_formula_tyre.h"
@@ -118,6 +119,7 @@ InspectedTyre loadScenarioTyre(const TyreArgs& a) {
   const Scenario s = loadScenario(a.file, a.overrides);
   try {
     InspectedTyre t = readContactTyre(s, a.wheel);
+    plugins::makeBuiltinRegistry().createExtensionModels(s, s.inputs);  // its extension sections, checked
     for (const io::InputWarning& w : s.inputs->getWarnings())
       std::cerr << "motostab: warning: " << w.where.describe() << ": " << w.message << "\n";
     return t;

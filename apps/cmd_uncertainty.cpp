@@ -112,9 +112,10 @@ void checkResultSize(const UncertaintyArgs& a, const UncertaintySetup& setup) {
 void runUncertainty(const UncertaintyArgs& a) {
   DistributedSession session;
   const ParameterOverrides changes(a.overrides);  // the --set text, parsed once
-  Scenario scenario = ScenarioSource(a.scenario).load(changes);
+  const auto source = ScenarioSource::open(a.scenario);  // the file read once, for the command and every sample
+  Scenario scenario = source->load(changes);
   reportScenarioWarnings(scenario, a.strict, session.getRank() == 0);
-  const UncertaintySetup setup = prepareUncertainty(a.scenario, changes, makeOptions(a, scenario));
+  const UncertaintySetup setup = prepareUncertainty(source, changes, makeOptions(a, scenario));
   checkResultSize(a, setup);
   const std::string out = getOutputFolder(a.out, scenario.name, "uncertainty");
   std::unique_ptr<OutputFolder> folder;  // rank 0 writes; inputs are all checked by now

@@ -15,6 +15,7 @@
 #include "scenario/parameter_paths.h"
 #include "scenario/scenario.h"
 #include "tyres/relaxation_linear.h"
+#include "vehicle/vehicle_model.h"
 
 namespace motostab::diagnosis {
 
@@ -41,6 +42,16 @@ double getScalar(const YAML::Node& tree, const char* section, const char* key, d
 std::optional<scenario::BodySpec> getRearFrame(const YAML::Node& tree) {
   try {
     return scenario::readScenarioTree(tree, "", {}).rearFrame;
+  } catch (const io::InputError&) {
+    return std::nullopt;
+  }
+}
+
+// The rear frame as the model of a scenario tree builds it: getRearFrame less what the model
+// extensions take from it (the grips of `rider_arms`, a leaning upper body); none when it does not build.
+std::optional<scenario::BodySpec> getModelRearFrame(const YAML::Node& tree) {
+  try {
+    return vehicle::listModelBodies(scenario::readScenarioTree(tree, "", {})).front().body;
   } catch (const io::InputError&) {
     return std::nullopt;
   }
@@ -154,7 +165,7 @@ void addRiderLeanCandidate(const YAML::Node& tree, std::vector<Candidate>& out, 
     unavailable.push_back("rider_lean: the scenario has one already (its stiffness and damping are parameter candidates)");
     return;
   }
-  const auto rf = getRearFrame(tree);  // with `total:` the derived one
+  const auto rf = getModelRearFrame(tree);  // with `total:` the derived one; without the grips of rider_arms
   const double mB = rf ? rf->mass : getScalar(tree, "rear_frame", "mass_kg", 0);
   if (!(mB > kRiderMass_kg)) {
     unavailable.push_back("rider_lean: the rear frame (" + formatNumber(mB) + " kg) is lighter than a " +

@@ -14,6 +14,7 @@
 #include "diagnosis/steer_rate_amplitude.h"
 #include "diagnosis/stepwise_search.h"
 #include "io/yaml_map.h"
+#include "plugins/builtin.h"
 #include "scenario/scenario.h"
 #include "scenario/scenario_source.h"
 
@@ -35,7 +36,8 @@ std::vector<const Candidate*> probeCandidates(const ScenarioSource& source, cons
     const ModelSpec m = makeModel({}, &c);
     ov.append(m.makeOverrides(m.getStart()));
     try {
-      source.load(ov);
+      scenario::Scenario s = source.load(ov);
+      plugins::makeBuiltinRegistry().readScenarioSections(s);  // the extension sections it adds, read as a build would
       out.push_back(&c);
     } catch (const InputError& e) {
       unavailable.push_back(c.name + ": " + e.getReason() + " (" + e.getLocation().key + ")");

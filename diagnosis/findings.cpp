@@ -6,6 +6,7 @@
 #include "io/csv.h"
 #include "io/input_error.h"
 #include "io/number.h"
+#include "plugins/builtin.h"
 #include "scenario/parameter_overrides.h"
 
 namespace motostab::diagnosis {
@@ -207,7 +208,8 @@ void checkFindingChanges(const scenario::ScenarioSource& source, const scenario:
       all.append(scenario::ParameterOverrides(f.variant));
       all.append(scenario::ParameterOverrides(extra));
       try {
-        source.load(all);
+        scenario::Scenario s = source.load(all);
+        plugins::makeBuiltinRegistry().readScenarioSections(s);  // extension sections too, as a build would read them
       } catch (const io::InputError& bad) {
         io::InputLocation at = f.where;
         at.key = key;

@@ -4,7 +4,7 @@
 #include <ostream>
 
 #include "multibody/pin_joint.h"
-#include "plugins/pin_spring_damper.h"
+#include "multibody/pin_spring_damper.h"
 #include "plugins/rigid_body.h"
 #include "scenario/scenario.h"
 
@@ -28,13 +28,13 @@ class ForkCompliance : public plugins::ExtensionModel {
     SimTK::MobilizedBody front = frames.frontFrame;
     SimTK::MobilizedBody::Pin carrier = multibody::addPinAtDesignPose(
         front, SimTK::Transform(), plugins::makeRigidBody(p_.carrier, frames.p_DF), p_FP, n_b_);
-    plugins::addPinSpringDamper(ctx.forces, carrier, p_.bending.stiffness, p_.bending.damping);
+    multibody::addPinSpringDamper(ctx.forces, carrier, p_.bending.stiffness, p_.bending.damping);
     out.coordinates.push_back({"fork_bending", plugins::StateRole::ForkBending, carrier});
     out.carrier = carrier;
     if (p_.hasTorsion) {
       SimTK::MobilizedBody::Pin link =
           multibody::addPinAtDesignPose(carrier, SimTK::Transform(), SimTK::Body::Massless(), p_FP, n_s_);
-      plugins::addPinSpringDamper(ctx.forces, link, p_.torsion.stiffness, p_.torsion.damping);
+      multibody::addPinSpringDamper(ctx.forces, link, p_.torsion.stiffness, p_.torsion.damping);
       out.coordinates.push_back({"fork_torsion", plugins::StateRole::ForkTorsion, link});
       out.carrier = link;
     }

@@ -4,7 +4,7 @@
 
 #include "extensions/extension_input.h"
 #include "multibody/pin_joint.h"
-#include "plugins/pin_spring_damper.h"
+#include "multibody/pin_spring_damper.h"
 #include "plugins/rigid_body.h"
 #include "scenario/scenario.h"
 
@@ -24,7 +24,7 @@ class RiderLean : public plugins::ExtensionModel {
     SimTK::MobilizedBody::Pin upper = multibody::addPinAtDesignPose(rear, SimTK::Transform(p_DH - frames.p_DR),
                                                                     plugins::makeRigidBody(p_.body, p_DH), SimTK::Vec3(0),
                                                                     SimTK::Vec3(1, 0, 0));
-    plugins::addPinSpringDamper(ctx.forces, upper, p_.stiffness, p_.damping);
+    multibody::addPinSpringDamper(ctx.forces, upper, p_.stiffness, p_.damping);
     return {{"rider_lean", plugins::StateRole::RiderLean, upper}};
   }
   std::vector<plugins::ExtensionBody> getBodies() const override {

@@ -163,13 +163,15 @@ class ExtensionModel {
   /// before the frames are built: the vehicle's totals stay as the scenario gives them.
   virtual void adjustFrames(FrameMasses& frames) const {}
   /// Adds bodies hanging from the rear frame; returns their one-DOF mobilizers with names and roles.
+  /// The front frame is not built yet: frames.frontFrame is an empty handle here.
   virtual std::vector<NamedMobilizer> addRearBodies(BuildContext& context, const VehicleFrames& frames) { return {}; }
   /// Puts a carrier between the front frame and the front wheel; an empty carrier handle: none. At
   /// most one extension of a model may give one (the vehicle checks).
   virtual FrontHubCarrier addFrontHubCarrier(BuildContext& context, const VehicleFrames& frames) { return {}; }
-  /// Adds force elements (after the wheels and contacts).
+  /// Adds force elements (after the wheels and contacts). The only stage that may allocate auxiliary
+  /// states (z): the vehicle names them, in order, right after it.
   virtual void addForces(BuildContext& context, const VehicleFrames& frames) {}
-  /// The auxiliary states (z) it allocates, in allocation order, with their roles.
+  /// The auxiliary states (z) its forces allocate, in allocation order, with their roles.
   virtual std::vector<AuxiliaryState> getStates() const { return {}; }
   /// The bodies it built that take mass from the frames (adjustFrames), for reports.
   virtual std::vector<ExtensionBody> getBodies() const { return {}; }

@@ -137,7 +137,7 @@ std::vector<std::unique_ptr<ExtensionModel>> PluginRegistry::createExtensionMode
   const std::vector<std::string> known = getExtensionModelNames();
   for (const PluginSpec& section : s.extensions)
     if (std::find(known.begin(), known.end(), section.model) == known.end())
-      YamlMap(section.params, section.file, section.path).fail("",
+      throw InputError(section.where,
           "unknown section '" + section.model + "': not a scenario section, nor a model extension (known: " +
               joinNames(known) + "; a plugin library listed under plugins: may register more)");
   const VehicleLayout vehicle = makeVehicleLayout(s);
@@ -147,6 +147,7 @@ std::vector<std::unique_ptr<ExtensionModel>> PluginRegistry::createExtensionMode
     if (!section) continue;
     YamlMap params(section->params, section->file, section->path, inputs);
     out.push_back(factory(params, vehicle));
+    if (!out.back()) params.fail("", "the '" + name + "' plugin made no model of this section");
     params.finish();
   }
   return out;

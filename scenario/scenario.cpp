@@ -332,8 +332,10 @@ Scenario readScenario(const std::string& file, YamlMap& m) {
   // Every other mapping is a model-extension section, read by the plugin of its name at build.
   for (const std::string& key : m.getUnreadKeys()) {
     const YAML::Node section = m.getNode()[key];
-    if (!section.IsMap()) m.fail(key, "unknown key: not a scenario key, nor a model-extension section (a mapping of its own keys)");
-    s.extensions.push_back({key, section, file, key});
+    if (!section.IsMap())
+      m.fail(key, "expected a mapping: a key the scenario format does not define is a model-extension section "
+                  "(steer_damper, rider_lean, ...), a mapping of its own keys");
+    s.extensions.push_back({key, section, file, key, m.locate(key)});
     m.markUsed(key);
   }
   m.finish();

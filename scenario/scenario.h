@@ -61,6 +61,7 @@ struct PluginSpec {
   YAML::Node params;    ///< the whole mapping, including `model`
   std::string file;     ///< for error messages
   std::string path;     ///< key path, e.g. "contact"
+  io::InputLocation where;  ///< where its key is given (an extension section: its name), for messages
 };
 
 /// Default speed range for sweeps, m/s.

@@ -2,7 +2,7 @@
 
 #include "multibody/pin_joint.h"
 #include "plugins/builtin.h"
-#include "plugins/pin_spring_damper.h"
+#include "multibody/pin_spring_damper.h"
 #include "plugins/rigid_body.h"
 #include "scenario/whole_vehicle.h"
 
@@ -21,7 +21,7 @@ using plugins::SwingarmAssembly;
 using plugins::SwingarmModel;
 using plugins::SwingarmSite;
 using plugins::WheelSite;
-using plugins::addPinSpringDamper;
+using multibody::addPinSpringDamper;
 using plugins::makeBuiltinRegistry;
 using plugins::makeRigidBody;
 using plugins::toVec3;
@@ -83,10 +83,17 @@ struct CoordinateNames {
 Vec3 getRearHub(const Scenario& s) { return Vec3(0, 0, s.rearWheel.radius); }
 Vec3 getFrontHub(const Scenario& s) { return Vec3(s.geometry.wheelbase, 0, s.frontWheel.radius); }
 
-// The frames' mass properties after every extension took or moved its share (adjustFrames, in order).
+// The frames' mass properties after every extension took or moved its share (adjustFrames, in order);
+// each must remain a body (each extension checks its own share; together they may take too much).
 FrameMasses calcFrameMasses(const Scenario& s, const Extensions& extensions) {
   FrameMasses frames{s.rearFrame, s.frontFrame};
   for (const auto& e : extensions) e->adjustFrames(frames);
+  for (const auto& [name, b] : {std::pair{"rear_frame", frames.rearFrame}, std::pair{"front_frame", frames.frontFrame}}) {
+    const std::string why = b.mass > 0 ? scenario::checkInertia(b.inertia) : "no mass left";
+    if (!why.empty())
+      throw InputError({s.sourceFile, 0, 0, name}, std::string("the model extensions together take more than the ") + name +
+                                                       " has: what remains of it is no body (" + why + ")");
+  }
   return frames;
 }
 

@@ -4,7 +4,7 @@
 #include <filesystem>
 
 #include "multibody/pin_joint.h"
-#include "plugins/pin_spring_damper.h"
+#include "multibody/pin_spring_damper.h"
 
 namespace motostab::swingarm {
 
@@ -16,7 +16,7 @@ using plugins::SwingarmAssembly;
 using plugins::SwingarmModel;
 using plugins::SwingarmModelFactory;
 using plugins::SwingarmSite;
-using plugins::addPinSpringDamper;
+using multibody::addPinSpringDamper;
 
 
 using SimTK::MobilizedBody;

@@ -5,7 +5,9 @@
 // identify virtual-rig compute nothing that can: they have exit 2 only). A failed run writes nothing.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <filesystem>
+#include <iterator>
 #include <fstream>
 #include <random>
 #include <sstream>
@@ -199,6 +201,28 @@ TEST(ExitCodes, CommandsWithoutAResultFailure) {
   expectExit({"identify", "cog", kExamples + "static.yaml"}, 2, "static.yaml", dir);
   expectExit({"identify", "inertia", kExamples + "cog.yaml"}, 2, "cog.yaml", dir);
   expectExit({"identify", "virtual-rig", "--noise-factor", "-1"}, 2, "--noise-factor", dir);
+}
+
+// A misspelt model-extension section is bad input for every command that reads a scenario, named at
+// its file, line and column with the extensions known (the commands read the sections right after
+// loading, before any work).
+TEST(ExitCodes, MisspeltExtensionSectionIsBadInput) {
+  const fs::path dir = makeTempDir("exit_misspelt_section");
+  std::ifstream in(kWhipple);
+  std::stringstream text;
+  text << in.rdbuf();
+  const int line = static_cast<int>(std::count(std::istreambuf_iterator<char>(text), {}, '\n')) + 1;
+  const fs::path file = dir / "misspelt.yaml";
+  std::ofstream(file) << text.str() << "steer_dampr: {damping_Nms_per_rad: 1}\n";
+  const std::string where = file.string() + ":" + std::to_string(line) + ":";
+  for (const std::vector<std::string>& args :
+       {std::vector<std::string>{"sweep", file.string(), "--speeds", "1:2:1"},
+        std::vector<std::string>{"linearize", file.string(), "--speed", "3"},
+        std::vector<std::string>{"simulate", file.string(), "--speed", "4", "--duration", "0.1", "--perturb", "steer-torque:1:0.1:0.05"},
+        std::vector<std::string>{"uncertainty", file.string(), "--samples", "2"}}) {
+    expectExit(args, 2, where, dir);
+    expectExit(args, 2, "unknown section 'steer_dampr'", dir);
+  }
 }
 
 TEST(ExitCodes, VersionAndHelpExit0) {

@@ -173,6 +173,7 @@ TEST(ControllerGroups, BalanceAssistExample) {
     EXPECT_EQ(YAML::Dump(bundled[key]), YAML::Dump(imported[key])) << key;
   const Scenario s = loadScenario(src + "/scenarios/balance-assist.yaml");
   EXPECT_LT(testing::getExtensionValue(s, "steer_controller", "roll_rate_Nms_per_rad").as<double>(), 0);  // into the fall
+  EXPECT_EQ(VehicleModel(s).getExtensionOutputNames(), std::vector<std::string>{"steer_controller_torque"});
   const MeasuredData data = loadMeasuredData(src + "/examples/balance-assist/weave.yaml");
   ASSERT_EQ(data.eigenvalues.size(), 21u);
   const std::vector<ControllerGroup> groups = splitByController(data);

@@ -234,5 +234,25 @@ TEST_F(FindingsTest, FindingsOfTheUnchangedBicycleNameNothing) {
   EXPECT_LT(r.baseline.deviance, 1);
 }
 
+// A finding's change that the scenario refuses is bad input at the finding, also when the refusal comes
+// from a model-extension section (read by its plugin, not by the loader).
+TEST(Findings, ChangeTheScenarioRefusesIsNamedAtTheFinding) {
+  const auto source = scenario::ScenarioSource::open(kBenchmark);
+  for (const char* change : {"steer_damper={damping_Nms_per_rad: -1}", "steer_dampr={damping_Nms_per_rad: 1}",
+                             "geometry.trail_m=.nan"}) {
+    Finding f;
+    f.change = {change};
+    f.where = {"findings.yaml", 7, 5, ""};
+    try {
+      checkFindingChanges(*source, {}, {f});
+      ADD_FAILURE() << change << ": accepted";
+    } catch (const InputError& e) {
+      EXPECT_EQ(e.getLocation().line, 7) << e.what();
+      EXPECT_EQ(e.getLocation().key, "change") << e.what();
+      EXPECT_NE(std::string(e.what()).find("refuses this change"), std::string::npos) << e.what();
+    }
+  }
+}
+
 }  // namespace
 }  // namespace motostab::diagnosis

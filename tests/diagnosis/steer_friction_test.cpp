@@ -10,6 +10,7 @@
 #include <fstream>
 
 #include "tests/support/extension_sections.h"
+#include "vehicle/vehicle_model.h"
 #include "core/portable_random.h"
 #include "diagnosis/candidates.h"
 #include "diagnosis/diagnosis.h"
@@ -106,6 +107,7 @@ TEST(SteerFriction, AddsToAnExistingDamperOrMakesOne) {
     const scenario::Scenario s = scenario::loadScenario(kBenchmark, ov);
     EXPECT_NEAR(testing::getExtensionValue(s, "steer_damper", "damping_Nms_per_rad").as<double>(),
                 (hasDamper ? c0 : 0.0) + ceq, 1e-9 * (1 + c0));
+    EXPECT_NO_THROW(vehicle::VehicleModel{s});  // a valid steer_damper section
   }
   std::vector<std::string> unavailable;
   const auto all = listCandidates(makeScenarioTree(kBenchmark, {}), {}, &unavailable, {0, "no steer-rate amplitude"});

@@ -178,7 +178,7 @@ def test_study_report_equals_the_command_line(motostab, tmp_path):
 
 
 def test_a_scenario_with_a_plugin_library_equals_the_command_line(motostab, tmp_path):
-    # The example contact plugin (plugins/examples/vertical_spring_contact.cpp), named by the scenario.
+    # The example contact plugin (examples/plugins/vertical_spring_contact.cpp), named by the scenario.
     plugin = os.environ["MOTOSTAB_EXAMPLE_PLUGIN"]
     text = WHIPPLE.read_text()
     scenario = tmp_path / "sprung.yaml"

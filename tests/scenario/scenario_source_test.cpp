@@ -106,6 +106,7 @@ TEST(ScenarioSource, SwitchesAndSectionsAsTyped) {
   const Scenario s = source.load(o);
   EXPECT_EQ(s.swingarm.compliance, "twist");
   EXPECT_EQ(testing::getExtensionValue(s, "steer_damper", "damping_Nms_per_rad").as<double>(), 0.4);
+  EXPECT_NO_THROW(vehicle::VehicleModel{s});  // a valid steer_damper section
   // A later key inside a section set before it wins, and the section stays the override's own copy.
   o.set("steer_damper.damping_Nms_per_rad", 0.7);
   EXPECT_EQ(testing::getExtensionValue(source.load(o), "steer_damper", "damping_Nms_per_rad").as<double>(), 0.7);

@@ -1,4 +1,4 @@
-// plugins/pin_spring_damper.h: the generalized force and potential energy of the one-element pin
+// multibody/pin_spring_damper.h: the generalized force and potential energy of the one-element pin
 // spring-damper, against tau = -k (q - q0) - c u and V = k (q - q0)^2 / 2 written here, at random
 // (seeded) values; and its free oscillation against the damped-oscillator solution.
 #include <gtest/gtest.h>
@@ -6,9 +6,9 @@
 #include <cmath>
 
 #include "core/portable_random.h"
-#include "plugins/pin_spring_damper.h"
+#include "multibody/pin_spring_damper.h"
 
-namespace motostab::plugins {
+namespace motostab::multibody {
 
 using core::PortableRandom;
 
@@ -62,4 +62,4 @@ TEST(PinSpringDamper, FreeOscillationFollowsTheDampedOscillator) {
 }
 
 }  // namespace
-}  // namespace motostab::plugins
+}  // namespace motostab::multibody

@@ -2,7 +2,7 @@
 // A linear torsional spring and viscous damper on a one-DOF mobilizer, as one force element.
 #include "Simbody.h"
 
-namespace motostab::plugins {
+namespace motostab::multibody {
 
 /// Adds tau = -stiffness (q - freeAngle) - damping u on mobilizer `pin`'s first coordinate
 /// (stiffness N m/rad or N/m, damping N m s/rad or N s/m, freeAngle rad or m), with potential
@@ -13,4 +13,4 @@ namespace motostab::plugins {
 void addPinSpringDamper(SimTK::GeneralForceSubsystem& forces, const SimTK::MobilizedBody& pin, double stiffness,
                         double damping, double freeAngle = 0);
 
-}  // namespace motostab::plugins
+}  // namespace motostab::multibody

@@ -1,6 +1,6 @@
-#include "plugins/pin_spring_damper.h"
+#include "multibody/pin_spring_damper.h"
 
-namespace motostab::plugins {
+namespace motostab::multibody {
 namespace {
 
 class PinSpringDamper : public SimTK::Force::Custom::Implementation {
@@ -28,4 +28,4 @@ void addPinSpringDamper(SimTK::GeneralForceSubsystem& forces, const SimTK::Mobil
   SimTK::Force::Custom(forces, new PinSpringDamper(pin, stiffness, damping, freeAngle));
 }
 
-}  // namespace motostab::plugins
+}  // namespace motostab::multibody
