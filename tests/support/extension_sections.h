@@ -30,7 +30,7 @@ inline YAML::Node getExtensionValue(const scenario::Scenario& s, const std::stri
 inline void setExtension(scenario::Scenario& s, const std::string& name, const std::string& yaml) {
   auto& e = s.extensions;
   e.erase(std::remove_if(e.begin(), e.end(), [&](const scenario::PluginSpec& x) { return x.model == name; }), e.end());
-  e.push_back({name, YAML::Load(yaml), s.sourceFile, name});
+  e.push_back({name, YAML::Load(yaml), s.sourceFile, name, {s.sourceFile, 0, 0, name}});
 }
 
 }  // namespace motostab::testing
