@@ -1,4 +1,5 @@
-// motostab check | import.
+// motostab check | fields | import.
+#include <algorithm>
 #include <filesystem>
 #include <iomanip>
 #include <iostream>
@@ -8,6 +9,7 @@
 #include "io/atomic_file.h"
 #include "io/input_error.h"
 #include "output/scenario_output.h"
+#include "plugins/builtin.h"
 #include "scenario/bicycle_parameters.h"
 #include "vehicle/vehicle_model.h"
 
@@ -17,8 +19,6 @@ using io::writeFileAtomically;
 using output::formatVehicleTable;
 using scenario::InertiaRepair;
 using scenario::Scenario;
-using scenario::calcStaticPivotMoment;
-using scenario::calcSuspensionLever;
 using scenario::loadScenario;
 using scenario::writeBicycleParametersScenario;
 using vehicle::VehicleModel;
@@ -54,17 +54,28 @@ void registerScenarioCommands(CLI::App& app) {
               << "Model\n  contact model         " << s.contact.model << "\n"
               << "  degrees of freedom    " << model.getNumQ() << " coordinates, " << model.getNumZ() << " auxiliary states\n";
     if (s.hasSwingarm) {
+      const bool sprung = std::any_of(model.getQStates().begin(), model.getQStates().end(),
+                                      [](const auto& q) { return q.role == plugins::StateRole::Suspension; });
       std::cout << "  swingarm              compliance " << s.swingarm.compliance << ", pivot "
-                << (s.swingarm.hasSuspension ? "sprung" : "rigid in-plane") << "\n";
-      if (s.swingarm.hasSuspension) {
-        const double l = calcSuspensionLever(s);
-        std::cout << "  rear suspension       " << s.swingarm.suspension.stiffness << " N m/rad, "
-                  << s.swingarm.suspension.damping << " N m s/rad about the pivot (at the wheel "
-                  << s.swingarm.suspension.stiffness / (l * l) << " N/m, " << s.swingarm.suspension.damping / (l * l)
-                  << " N s/m; lever " << l << " m); static pivot moment " << calcStaticPivotMoment(s) << " N m\n";
-      }
+                << (sprung ? "sprung" : "rigid in-plane") << "\n";
     }
     model.describeExtensions(std::cout);
+  });
+
+  auto sections = std::make_shared<std::vector<std::string>>();
+  CLI::App* f = app.add_subcommand("fields", "List the declared fields of scenario sections: key, unit, range, default, meaning");
+  f->add_option("section", *sections, "Sections to list, as key paths (geometry, rider_lean, swingarm.suspension); default all");
+  f->callback([sections]() {
+    const std::vector<io::SectionFields> all = plugins::listSectionFields(plugins::makeBuiltinRegistry());
+    for (const std::string& name : *sections)
+      if (std::none_of(all.begin(), all.end(), [&](const io::SectionFields& s) { return s.path == name; })) {
+        std::string known;
+        for (const io::SectionFields& s : all) known += (known.empty() ? "" : ", ") + s.path;
+        throw io::InputError({"command line", 0, 0, name}, "no such section (known: " + known + ")");
+      }
+    for (const io::SectionFields& s : all)
+      if (sections->empty() || std::find(sections->begin(), sections->end(), s.path) != sections->end())
+        std::cout << "Section `" << s.path << "`\n\n" << io::formatFieldTable(s) << "\n";
   });
 
   struct ImportArgs {

@@ -4,7 +4,7 @@
 
 namespace motostab::cli {
 
-void registerScenarioCommands(CLI::App& app);   ///< check, import (apps/cmd_scenario.cpp)
+void registerScenarioCommands(CLI::App& app);   ///< check, fields, import (apps/cmd_scenario.cpp)
 void registerStabilityCommands(CLI::App& app);  ///< sweep, linearize, study (apps/cmd_stability.cpp); compare
 void registerCompareCommands(CLI::App& app);    ///< compare (apps/cmd_compare.cpp), registered by registerStabilityCommands
 void registerTurnCommands(CLI::App& app);       ///< trim (apps/cmd_turn.cpp)

@@ -12,6 +12,7 @@
 #include "io/csv.h"
 #include "io/input_error.h"
 #include "io/yaml_map.h"
+#include "plugins/builtin.h"
 #include "scenario/parameter_paths.h"
 #include "scenario/scenario.h"
 #include "tyres/relaxation_linear.h"
@@ -216,19 +217,16 @@ bool isMeasured(const ScalarParameter& p, const std::vector<std::pair<std::strin
   return false;
 }
 
-// Bounds keep the vehicle physical: masses, inertias and positive lengths stay above a tenth of their
-// value; a measured parameter within kParameterRangeSigmas sigma (room for a gross error), one with the
-// default sigma within 30 (already wide: 30 % of a mass, 30 deg); and within a factor 5 of positive masses
-// and inertias.
+// Bounds keep the vehicle physical: a parameter whose field admits positive values only (a mass, a
+// radius, a principal moment) stays above a tenth of its value; a measured parameter within
+// kParameterRangeSigmas sigma (room for a gross error), one with the default sigma within 30 (already
+// wide: 30 % of a mass, 30 deg); and masses and inertias within a factor 5.
 Candidate makeParameterCandidate(const ScalarParameter& p, double sigma, bool measured = false) {
   const double range = (measured ? kParameterRangeSigmas : 30) * sigma;
   CandidateParameter c = makeFreeParameter("value", p.path, p.value - range, p.value + range, p.value, 1e-3 * sigma);
-  const bool positive = p.value > 0 && (p.kind == ParameterKind::Mass || p.kind == ParameterKind::Inertia ||
-                                        (p.kind == ParameterKind::Length && p.path.find("com_m") == std::string::npos &&
-                                         p.path.find("pivot") == std::string::npos));
-  if (positive) {
+  if (p.positive && p.value > 0) {
     c.lower = std::max(c.lower, 0.1 * p.value);
-    if (p.kind != ParameterKind::Length) c.upper = std::min(c.upper, 5 * p.value);
+    if (p.kind == ParameterKind::Mass || p.kind == ParameterKind::Inertia) c.upper = std::min(c.upper, 5 * p.value);
   }
   c.off = p.value;
   c.priorMean = p.value;
@@ -388,7 +386,7 @@ std::vector<Candidate> listCandidates(const YAML::Node& tree,
   addSteerControllerCandidates(tree, out);
   addTyreScalingCandidates(tree, out);
   addPhysicalCandidates(tree, out);
-  for (const ScalarParameter& p : listScalarParameters(tree)) {
+  for (const ScalarParameter& p : listScalarParameters(tree, plugins::listSectionFields(plugins::makeBuiltinRegistry()))) {
     const double sigma = findSigma(p, uncertainty);
     if (sigma > 0) out.push_back(makeParameterCandidate(p, sigma, isMeasured(p, uncertainty)));
     if (sigma > 0) out.back().parameters[0].priorMeasured = isMeasured(p, uncertainty);

@@ -44,11 +44,23 @@ class Aerodynamics : public plugins::ExtensionModel {
 
 }  // namespace
 
+const io::SectionFields& getAerodynamicsFields() {
+  using io::Field;
+  using io::Range;
+  static const io::SectionFields f{
+      "aerodynamics",
+      {Field::number("drag_area_m2", "m^2", Range::NonNegative, "CdA, drag coefficient times frontal area"),
+       Field::number("air_density_kgpm3", "kg/m^3", Range::Positive, "rho, air density"),
+       Field::of(io::Shape::Vector3, "centre_of_pressure_m", "m", "", "centre of pressure in D, on the rear frame")}};
+  return f;
+}
+
 AerodynamicsParams readAerodynamics(io::YamlMap& m) {
+  const io::SectionFields& f = getAerodynamicsFields();
   AerodynamicsParams a;
-  a.dragArea = m.getNonNegative("drag_area_m2");
-  a.airDensity = m.getPositive("air_density_kgpm3");
-  a.centreOfPressure = m.getVec3("centre_of_pressure_m");
+  a.dragArea = io::readNumber(m, f.get("drag_area_m2"));
+  a.airDensity = io::readNumber(m, f.get("air_density_kgpm3"));
+  a.centreOfPressure = io::readVector3(m, f.get("centre_of_pressure_m"));
   return a;
 }
 
@@ -57,6 +69,7 @@ std::unique_ptr<plugins::ExtensionModel> makeAerodynamics(const AerodynamicsPara
 }
 
 void registerAerodynamics(plugins::PluginRegistrar& registry) {
+  registry.addSectionFields(getAerodynamicsFields());
   registry.addExtensionModel("aerodynamics", [](io::YamlMap& m, const plugins::VehicleLayout&) {
     return makeAerodynamics(readAerodynamics(m));
   });

@@ -14,6 +14,9 @@ struct AerodynamicsParams {
   scenario::Vec3d centreOfPressure{0, 0, 0};  ///< in D, m
 };
 
+/// The section's declared fields.
+const io::SectionFields& getAerodynamicsFields();
+
 /// Reads and checks the section (the caller finishes `m`).
 AerodynamicsParams readAerodynamics(io::YamlMap& m);
 

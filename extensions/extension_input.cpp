@@ -4,10 +4,19 @@ namespace motostab::extensions {
 
 using scenario::BodySpec;
 
+const io::SectionFields& getSpringDamperFields() {
+  using io::Field;
+  using io::Range;
+  static const io::SectionFields f{"", {Field::number("stiffness_Nm_per_rad", "N m/rad", Range::Positive, "k, stiffness"),
+                                        Field::number("damping_Nms_per_rad", "N m s/rad", Range::NonNegative, "c, damping")}};
+  return f;
+}
+
 SpringDamper readSpringDamper(io::YamlMap& m) {
+  const io::SectionFields& f = getSpringDamperFields();
   SpringDamper out;
-  out.stiffness = m.getPositive("stiffness_Nm_per_rad");
-  out.damping = m.getNonNegative("damping_Nms_per_rad");
+  out.stiffness = io::readNumber(m, f.get("stiffness_Nm_per_rad"));
+  out.damping = io::readNumber(m, f.get("damping_Nms_per_rad"));
   return out;
 }
 

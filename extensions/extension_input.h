@@ -2,6 +2,7 @@
 // Reading helpers shared by the model-extension plugins of this folder.
 #include <string>
 
+#include "io/field.h"
 #include "io/yaml_map.h"
 #include "scenario/body_spec.h"
 
@@ -12,6 +13,10 @@ struct SpringDamper {
   double stiffness = 0;
   double damping = 0;
 };
+
+/// The fields of a torsional spring and damper: stiffness_Nm_per_rad > 0, damping_Nms_per_rad >= 0
+/// (path empty: sections take them into their own).
+const io::SectionFields& getSpringDamperFields();
 
 /// `{stiffness_Nm_per_rad > 0, damping_Nms_per_rad >= 0}` from `m` (the caller finishes it).
 SpringDamper readSpringDamper(io::YamlMap& m);

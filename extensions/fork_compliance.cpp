@@ -3,10 +3,12 @@
 #include <cmath>
 #include <ostream>
 
+#include "extensions/extension_input.h"
 #include "multibody/pin_joint.h"
 #include "multibody/pin_spring_damper.h"
 #include "plugins/rigid_body.h"
 #include "scenario/scenario.h"
+#include "scenario/scenario_fields.h"
 
 namespace motostab::extensions {
 
@@ -22,9 +24,9 @@ class ForkCompliance : public plugins::ExtensionModel {
   void adjustFrames(plugins::FrameMasses& frames) const override {
     frames.frontFrame = scenario::calcBodyRemainder(frames.frontFrame, p_.carrier);
   }
-  plugins::FrontHubCarrier addFrontHubCarrier(plugins::BuildContext& ctx, const plugins::VehicleFrames& frames) override {
+  plugins::BodyCarrier addFrontHubCarrier(plugins::BuildContext& ctx, const plugins::VehicleFrames& frames) override {
     const SimTK::Vec3 p_FP = p_DP_ - frames.p_DF;  // hinge point from the hub (body frames share axes)
-    plugins::FrontHubCarrier out;
+    plugins::BodyCarrier out;
     SimTK::MobilizedBody front = frames.frontFrame;
     SimTK::MobilizedBody::Pin carrier = multibody::addPinAtDesignPose(
         front, SimTK::Transform(), plugins::makeRigidBody(p_.carrier, frames.p_DF), p_FP, n_b_);
@@ -81,10 +83,44 @@ SimTK::Vec3 calcForkBendingAxis(const plugins::VehicleLayout& v) {
   return SimTK::Vec3(std::cos(lambda), 0, std::sin(lambda));
 }
 
+const std::vector<io::SectionFields>& getForkComplianceFields() {
+  using io::Field;
+  using io::Quantity;
+  using io::Range;
+  using io::Shape;
+  static const std::vector<io::SectionFields> f = [] {
+    io::SectionFields fork{"fork_compliance", {}};
+    const io::SectionFields& k = getSpringDamperFields();
+    fork.fields.push_back(Field::number(k.fields[0].key, k.fields[0].unit, k.fields[0].range, "k_b, bending stiffness about n_b"));
+    fork.fields.push_back(Field::number(k.fields[1].key, k.fields[1].unit, k.fields[1].range, "c_b, bending damping"));
+    fork.fields.push_back(Field::number("axis_distance_along_steer_m", "m", Range::Any,
+                                        "d, along the steer axis from its ground point; absent: the fork crown estimate "
+                                        "2 r_F / cos lambda (the steer-axis point at the height of the tyre's top)")
+                              .optional());
+    fork.fields.push_back(Field::number("carrier_mass_fraction", "", Range::Fraction,
+                                        "the carrier as this fraction of the front frame (of its mass at its CoM, and of its "
+                                        "inertia; an estimate for lower legs, axle and brake); instead of `carrier`")
+                              .withDefault(kDefaultForkCarrierFraction));
+    fork.fields.push_back(Field::of(Shape::Other, "carrier", "", "",
+                                    "the carrier's own mass properties `{mass_kg, com_m, inertia_kgm2}` in D, instead of "
+                                    "`carrier_mass_fraction`")
+                              .optional());
+    fork.fields.push_back(Field::of(Shape::Other, "torsion", "", "",
+                                    "`{stiffness_Nm_per_rad, damping_Nms_per_rad}`: a massless link in series between "
+                                    "carrier and wheel turning about the steer-axis direction through P")
+                              .optional());
+    io::SectionFields carrier = scenario::makeBodyFields("fork_compliance.carrier", "fork's hub carrier (lower legs, axle, brake) in D");
+    io::SectionFields torsion{"fork_compliance.torsion", k.fields};
+    return std::vector<io::SectionFields>{fork, carrier, torsion};
+  }();
+  return f;
+}
+
 ForkComplianceParams readForkCompliance(io::YamlMap& m, const plugins::VehicleLayout& v) {
+  const io::SectionFields& fields = getForkComplianceFields().front();
   ForkComplianceParams f;
   f.bending = readSpringDamper(m);
-  f.axisDistance = m.has("axis_distance_along_steer_m") ? m.getDouble("axis_distance_along_steer_m")
+  f.axisDistance = m.has("axis_distance_along_steer_m") ? io::readNumber(m, fields.get("axis_distance_along_steer_m"))
                                                         : calcDefaultForkAxisDistance(v);
   if (m.has("carrier") && m.has("carrier_mass_fraction"))
     m.fail("carrier_mass_fraction", "give only one of carrier and carrier_mass_fraction");
@@ -95,8 +131,7 @@ ForkComplianceParams readForkCompliance(io::YamlMap& m, const plugins::VehicleLa
     c.finish();
     carrierKey = "carrier";
   } else {
-    f.carrierFraction = m.has(carrierKey) ? m.getPositive(carrierKey) : kDefaultForkCarrierFraction;
-    if (f.carrierFraction >= 1) m.fail(carrierKey, "must be below 1");
+    f.carrierFraction = io::readNumber(m, fields.get(carrierKey));
     f.carrier = calcDefaultForkCarrier(v, f.carrierFraction);
   }
   checkRemainder(m, carrierKey, v.frontFrame, f.carrier, "front_frame");
@@ -114,6 +149,7 @@ std::unique_ptr<plugins::ExtensionModel> makeForkCompliance(const ForkCompliance
 }
 
 void registerForkCompliance(plugins::PluginRegistrar& registry) {
+  for (const io::SectionFields& f : getForkComplianceFields()) registry.addSectionFields(f);
   registry.addExtensionModel("fork_compliance", [](io::YamlMap& m, const plugins::VehicleLayout& v) {
     return makeForkCompliance(readForkCompliance(m, v), v);
   });

@@ -15,6 +15,7 @@
 // The carrier's mass properties are taken out of the front frame's, so the totals are unchanged;
 // steer torque still acts between front frame and rear frame.
 #include <memory>
+#include <vector>
 
 #include "extensions/extension_input.h"
 #include "plugins/plugin_api.h"
@@ -36,6 +37,9 @@ struct ForkComplianceParams {
   bool hasTorsion = false;
   SpringDamper torsion;          ///< k_t (N m/rad, > 0), c_t (N m s/rad, >= 0)
 };
+
+/// The section's declared fields: `fork_compliance`, its `carrier` body and its `torsion` (in this order).
+const std::vector<io::SectionFields>& getForkComplianceFields();
 
 /// Reads and checks the section; the front frame of `vehicle` without the carrier must remain a valid
 /// body (the caller finishes `m`).

@@ -53,12 +53,33 @@ BodySpec calcGripMasses(const RiderArmsParams& a, const plugins::VehicleLayout& 
   return b;
 }
 
+const io::SectionFields& getRiderArmsFields() {
+  using io::Field;
+  using io::Quantity;
+  using io::Range;
+  static const io::SectionFields f{
+      "rider_arms",
+      {Field::number("inertia_kgm2", "kg m^2", Range::Positive,
+                     "J_a, added steer inertia about the steer axis (Sharp 1994: 0.20 kg m^2)")
+           .measures(Quantity::Inertia),
+       Field::number("stiffness_Nm_per_rad", "N m/rad", Range::NonNegative, "k_a (Sharp 1994: 50 N m/rad)")
+           .measures(Quantity::Other),
+       Field::number("damping_Nms_per_rad", "N m s/rad", Range::NonNegative,
+                     "c_a (Sharp 1994: 6 N m s/rad hands on against 1 hands off)")
+           .measures(Quantity::Other),
+       Field::number("grip_half_width_m", "m", Range::Positive, "d, the grips' distance from the steer axis")
+           .withDefault(RiderArmsParams().gripHalfWidth)
+           .measures(Quantity::Length)}};
+  return f;
+}
+
 RiderArmsParams readRiderArms(io::YamlMap& m, const plugins::VehicleLayout& v) {
+  const io::SectionFields& f = getRiderArmsFields();
   RiderArmsParams a;
-  a.inertia = m.getPositive("inertia_kgm2");
-  a.stiffness = m.getNonNegative("stiffness_Nm_per_rad");
-  a.damping = m.getNonNegative("damping_Nms_per_rad");
-  if (m.has("grip_half_width_m")) a.gripHalfWidth = m.getPositive("grip_half_width_m");
+  a.inertia = io::readNumber(m, f.get("inertia_kgm2"));
+  a.stiffness = io::readNumber(m, f.get("stiffness_Nm_per_rad"));
+  a.damping = io::readNumber(m, f.get("damping_Nms_per_rad"));
+  a.gripHalfWidth = io::readNumber(m, f.get("grip_half_width_m"));
   checkRemainder(m, "inertia_kgm2", v.rearFrame, calcGripMasses(a, v), "rear_frame");
   return a;
 }
@@ -72,6 +93,7 @@ std::unique_ptr<plugins::ExtensionModel> makeRiderArms(const RiderArmsParams& p,
 }
 
 void registerRiderArms(plugins::PluginRegistrar& registry) {
+  registry.addSectionFields(getRiderArmsFields());
   registry.addExtensionModel("rider_arms", [](io::YamlMap& m, const plugins::VehicleLayout& v) {
     return makeRiderArms(readRiderArms(m, v), v);
   });

@@ -28,6 +28,9 @@ struct RiderArmsParams {
   double gripHalfWidth = 0.25;   ///< d, m (> 0): grip distance from the steer axis
 };
 
+/// The section's declared fields.
+const io::SectionFields& getRiderArmsFields();
+
 /// Reads and checks the section: the rear frame of `vehicle` must be able to give up the grip masses
 /// (the caller finishes `m`).
 RiderArmsParams readRiderArms(io::YamlMap& m, const plugins::VehicleLayout& vehicle);

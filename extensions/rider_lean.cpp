@@ -7,6 +7,7 @@
 #include "multibody/pin_spring_damper.h"
 #include "plugins/rigid_body.h"
 #include "scenario/scenario.h"
+#include "scenario/scenario_fields.h"
 
 namespace motostab::extensions {
 
@@ -41,9 +42,26 @@ class RiderLean : public plugins::ExtensionModel {
 
 }  // namespace
 
+const io::SectionFields& getRiderLeanFields() {
+  using io::Field;
+  using io::Quantity;
+  using io::Range;
+  static const io::SectionFields f = [] {
+    io::SectionFields s{"rider_lean",
+                        {Field::number("hinge_height_m", "m", Range::Positive,
+                                       "h, height of the hinge axis above the ground (hip / saddle)")
+                             .measures(Quantity::Length)}};
+    for (const Field& b : scenario::makeBodyFields("", "upper body (in D; CoM in the plane of symmetry, y = 0)").fields)
+      s.fields.push_back(b);
+    for (const Field& k : getSpringDamperFields().fields) s.fields.push_back(k.measures(Quantity::Other));
+    return s;
+  }();
+  return f;
+}
+
 RiderLeanParams readRiderLean(io::YamlMap& m, const plugins::VehicleLayout& v) {
   RiderLeanParams r;
-  r.hingeHeight = m.getPositive("hinge_height_m");
+  r.hingeHeight = io::readNumber(m, getRiderLeanFields().get("hinge_height_m"));
   r.body = scenario::readBodyKeys(m);
   const SpringDamper k = readSpringDamper(m);
   r.stiffness = k.stiffness;
@@ -56,6 +74,7 @@ RiderLeanParams readRiderLean(io::YamlMap& m, const plugins::VehicleLayout& v) {
 std::unique_ptr<plugins::ExtensionModel> makeRiderLean(const RiderLeanParams& p) { return std::make_unique<RiderLean>(p); }
 
 void registerRiderLean(plugins::PluginRegistrar& registry) {
+  registry.addSectionFields(getRiderLeanFields());
   registry.addExtensionModel("rider_lean", [](io::YamlMap& m, const plugins::VehicleLayout& v) {
     return makeRiderLean(readRiderLean(m, v));
   });

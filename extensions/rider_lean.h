@@ -24,6 +24,9 @@ struct RiderLeanParams {
   double damping = 0;            ///< c, N m s/rad (>= 0)
 };
 
+/// The section's declared fields.
+const io::SectionFields& getRiderLeanFields();
+
 /// Reads and checks the section: the rear frame of `vehicle` without the upper body must remain a
 /// valid body (the caller finishes `m`).
 RiderLeanParams readRiderLean(io::YamlMap& m, const plugins::VehicleLayout& vehicle);

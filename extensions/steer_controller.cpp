@@ -135,7 +135,7 @@ void readSchedule(io::YamlMap m, SteerControllerParams& c) {
   if (m.has("below_mps") == m.has("table")) m.fail("", "give exactly one of below_mps and table");
   if (m.has("below_mps")) {
     c.schedule = SteerControllerParams::Schedule::Below;
-    c.scheduleBelow = m.getPositive("below_mps");
+    c.scheduleBelow = io::readNumber(m, getSteerControllerFields()[1].get("below_mps"));
   } else {
     c.schedule = SteerControllerParams::Schedule::Table;
     const YAML::Node t = m.getNode()["table"];
@@ -165,16 +165,51 @@ const std::vector<std::string>& getSteerControllerScalarKeys() {
   return keys;
 }
 
+const std::vector<io::SectionFields>& getSteerControllerFields() {
+  using io::Field;
+  using io::Quantity;
+  using io::Range;
+  using io::Shape;
+  static const std::vector<io::SectionFields> f{
+      {"steer_controller",
+       {Field::number("roll_angle_Nm_per_rad", "N m/rad", Range::Any, "k_phi").withDefault(0).measures(Quantity::Other),
+        Field::number("roll_rate_Nms_per_rad", "N m s/rad", Range::Any, "k_phid").withDefault(0).measures(Quantity::Other),
+        Field::number("steer_angle_Nm_per_rad", "N m/rad", Range::Any, "k_delta").withDefault(0).measures(Quantity::Other),
+        Field::number("steer_rate_Nms_per_rad", "N m s/rad", Range::Any, "k_deltad").withDefault(0).measures(Quantity::Other),
+        Field::number("gain_factor", "", Range::Positive,
+                      "g, multiplies every gain (the diagnosis fits it as `steer_controller_gain`)")
+            .withDefault(1)
+            .measures(Quantity::Other),
+        Field::of(Shape::Other, "schedule", "", "", "`{below_mps: v0}` or `{table: [[speed_mps, factor], ...]}` (below)").optional(),
+        Field::number("delay_s", "s", Range::Any,
+                      "tau, a first-order Pade delay adding the z state `steer_controller_delay` (N m); 0: none (a "
+                      "shorter delay's Pade root -2/tau would swamp every other root)")
+            .within("0, or >= 1e-4")
+            .withDefault(0)
+            .measures(Quantity::Other),
+        Field::number("torque_limit_Nm", "N m", Range::Positive, "L, saturation of the applied torque; absent: none").optional()}},
+      {"steer_controller.schedule",
+       {Field::number("below_mps", "m/s", Range::Positive, "v0: gains per m/s times v0 - v below v0, zero above; give exactly one of `below_mps` and `table`")
+            .optional()
+            .measures(Quantity::Other),
+        Field::of(Shape::Other, "table", "", "at least two rows, speeds strictly increasing",
+                  "`[[speed_mps, factor], ...]`: factor linear in speed, held beyond the ends")
+            .optional()}}};
+  return f;
+}
+
 SteerControllerParams readSteerController(io::YamlMap& m) {
+  const io::SectionFields& f = getSteerControllerFields().front();
   SteerControllerParams c;
-  c.rollAngleGain = m.getDouble("roll_angle_Nm_per_rad", 0);
-  c.rollRateGain = m.getDouble("roll_rate_Nms_per_rad", 0);
-  c.steerAngleGain = m.getDouble("steer_angle_Nm_per_rad", 0);
-  c.steerRateGain = m.getDouble("steer_rate_Nms_per_rad", 0);
-  c.gainFactor = m.getPositive("gain_factor", 1);
+  c.rollAngleGain = io::readNumber(m, f.get("roll_angle_Nm_per_rad"));
+  c.rollRateGain = io::readNumber(m, f.get("roll_rate_Nms_per_rad"));
+  c.steerAngleGain = io::readNumber(m, f.get("steer_angle_Nm_per_rad"));
+  c.steerRateGain = io::readNumber(m, f.get("steer_rate_Nms_per_rad"));
+  c.gainFactor = io::readNumber(m, f.get("gain_factor"));
   if (m.has("schedule")) readSchedule(m.getMap("schedule"), c);
-  c.delay = m.getZeroOrAtLeast("delay_s", kMinSteerDelay, "s", 0);
-  if (m.has("torque_limit_Nm")) c.torqueLimit = m.getPositive("torque_limit_Nm");
+  const io::Field& delay = f.get("delay_s");
+  c.delay = m.getZeroOrAtLeast(delay.key, kMinSteerDelay, delay.unit, delay.fallback);
+  if (m.has("torque_limit_Nm")) c.torqueLimit = io::readNumber(m, f.get("torque_limit_Nm"));
   return c;
 }
 
@@ -183,6 +218,7 @@ std::unique_ptr<plugins::ExtensionModel> makeSteerController(const SteerControll
 }
 
 void registerSteerController(plugins::PluginRegistrar& registry) {
+  for (const io::SectionFields& f : getSteerControllerFields()) registry.addSectionFields(f);
   registry.addExtensionModel("steer_controller", [](io::YamlMap& m, const plugins::VehicleLayout&) {
     return makeSteerController(readSteerController(m));
   });

@@ -57,6 +57,9 @@ struct SteerControllerParams {
   double torqueLimit = 0;     ///< N m (> 0 when given; 0: none): |T| <= limit
 };
 
+/// The section's declared fields: `steer_controller` and its `schedule`.
+const std::vector<io::SectionFields>& getSteerControllerFields();
+
 /// Reads and checks the section (the caller finishes `m`). The table needs at least two rows with
 /// strictly increasing speeds; a negative delay or one between 0 and kMinSteerDelay, a non-positive
 /// limit or gain factor are errors.

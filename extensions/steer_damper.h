@@ -23,6 +23,9 @@ struct SteerDamperParams {
   double coulombSmoothing = 0.1; ///< omega_s, rad/s (> 0): steer rate at which tanh reaches 76 % of f
 };
 
+/// The section's declared fields.
+const io::SectionFields& getSteerDamperFields();
+
 /// Reads and checks the section (the caller finishes `m`).
 SteerDamperParams readSteerDamper(io::YamlMap& m);
 

@@ -26,10 +26,24 @@ class SteerHeadFriction : public plugins::ExtensionModel {
 
 }  // namespace
 
+const io::SectionFields& getSteerHeadFrictionFields() {
+  using io::Field;
+  using io::Range;
+  static const io::SectionFields f{
+      "steer_head_friction",
+      {Field::number("torque_Nm", "N m", Range::NonNegative,
+                     "T_f, the breakaway torque at the handlebar, front wheel off the ground"),
+       Field::number("smoothing_rad_per_s", "rad/s", Range::Positive,
+                     "omega_s, steer rate at which the friction reaches 76 % of T_f")
+           .withDefault(SteerHeadFrictionParams().smoothing)}};
+  return f;
+}
+
 SteerHeadFrictionParams readSteerHeadFriction(io::YamlMap& m) {
+  const io::SectionFields& f = getSteerHeadFrictionFields();
   SteerHeadFrictionParams p;
-  p.torque = m.getNonNegative("torque_Nm");
-  p.smoothing = m.getPositive("smoothing_rad_per_s", p.smoothing);
+  p.torque = io::readNumber(m, f.get("torque_Nm"));
+  p.smoothing = io::readNumber(m, f.get("smoothing_rad_per_s"));
   return p;
 }
 
@@ -42,6 +56,7 @@ std::unique_ptr<plugins::ExtensionModel> makeSteerHeadFriction(const SteerHeadFr
 }
 
 void registerSteerHeadFriction(plugins::PluginRegistrar& registry) {
+  registry.addSectionFields(getSteerHeadFrictionFields());
   registry.addExtensionModel("steer_head_friction", [](io::YamlMap& m, const plugins::VehicleLayout&) {
     return makeSteerHeadFriction(readSteerHeadFriction(m));
   });

@@ -22,6 +22,9 @@ struct SteerHeadFrictionParams {
   double smoothing = 0.1; ///< omega_s, rad/s (> 0)
 };
 
+/// The section's declared fields.
+const io::SectionFields& getSteerHeadFrictionFields();
+
 /// Reads and checks the section (the caller finishes `m`).
 SteerHeadFrictionParams readSteerHeadFriction(io::YamlMap& m);
 

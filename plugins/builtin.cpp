@@ -2,6 +2,7 @@
 
 #include "extensions/aerodynamics.h"
 #include "extensions/fork_compliance.h"
+#include "extensions/rear_suspension.h"
 #include "extensions/rider_arms.h"
 #include "extensions/rider_lean.h"
 #include "extensions/steer_controller.h"
@@ -26,9 +27,10 @@ PluginRegistry makeBuiltinRegistry() {
   registerRelaxationLinear(registry);
   registerMagicFormula(registry);
   registerSwingarmModels(registry);
-  // Model extensions: their assembly stages run in this order (plugin_api.h ExtensionModel). The rider's
-  // arms move their grips before the upper body and the fork's carrier take their mass out; the forces
+  // Model extensions: their assembly stages run in this order (plugin_api.h ExtensionModel). The rear
+  // suspension first: `scenario check` lists it under the swingarm. The rider's arms move their grips before the upper body and the fork's carrier take their mass out; the forces
   // follow in this order too.
+  extensions::registerRearSuspension(registry);
   extensions::registerAerodynamics(registry);
   extensions::registerSteerDamper(registry);
   extensions::registerRiderArms(registry);

@@ -15,6 +15,7 @@
 
 #include "Simbody.h"
 
+#include "io/field.h"
 #include "io/yaml_map.h"
 #include "plugins/contact_geometry.h"
 #include "plugins/state_role.h"
@@ -22,7 +23,7 @@
 
 /// Version of this interface. A library built against another version is refused at load; bump it
 /// whenever a type in this header changes layout or meaning.
-#define MOTOSTAB_PLUGIN_API_VERSION 6
+#define MOTOSTAB_PLUGIN_API_VERSION 7
 
 namespace motostab::plugins {
 
@@ -74,8 +75,8 @@ class ContactModel {
 /// Makes a contact model from its scenario parameters (the `contact` mapping; `model` is consumed).
 using ContactModelFactory = std::function<std::unique_ptr<ContactModel>(io::YamlMap& params)>;
 
-/// Where a swingarm model is attached: the body it hangs from (the rear frame, or the massless
-/// suspension link turning about the pivot when the scenario has a rear suspension), the swingarm
+/// Where a swingarm model is attached: the body it hangs from (the rear frame, or the carrier a model
+/// extension put at the pivot, e.g. the rear suspension's link turning about the pivot), the swingarm
 /// frame S in that body's frame (origin at the pivot, x towards the rear hub, z up; the parent's
 /// axes are the design frame's at the design pose), the hub in S, and the swingarm body (mass
 /// properties in S).
@@ -117,6 +118,11 @@ struct VehicleLayout {
   double frontWheelRadius = 0;  ///< m
   scenario::BodySpec rearFrame;   ///< rear frame with the whole rider
   scenario::BodySpec frontFrame;  ///< fork and handlebar, without the wheel
+  bool hasSwingarm = false;       ///< false: the rear wheel turns on the rear frame; the values below are 0
+  scenario::Vec3d swingarmPivot{0, 0, 0};  ///< pivot in D, m
+  /// Moment (N m) about the pivot's lateral axis (positive lifts the hub) that the rear tyre's static
+  /// load and the weights of swingarm and rear wheel exert on the swingarm at the design pose.
+  double staticPivotMoment = 0;
 };
 
 /// The two frames' mass properties while the vehicle is assembled (D). An extension whose bodies
@@ -143,9 +149,10 @@ struct VehicleFrames {
   SimTK::Vec3 p_DR, p_DF;
 };
 
-/// What an extension put between the front frame and the front wheel: the body that carries the wheel
-/// (origin at the front hub, axes parallel to D at the design pose) and its one-DOF mobilizers.
-struct FrontHubCarrier {
+/// A body an extension put in series between two parts of the vehicle (the front frame and the front
+/// wheel; the rear frame and the swingarm) and its one-DOF mobilizers. Its origin is where the next
+/// part attaches (the front hub; the swingarm pivot), its axes parallel to D at the design pose.
+struct BodyCarrier {
   SimTK::MobilizedBody carrier;
   std::vector<NamedMobilizer> coordinates;
 };
@@ -153,8 +160,9 @@ struct FrontHubCarrier {
 /// The common interface of model extensions: elements a scenario section adds to the vehicle (a
 /// damper, a controller, a leaning rider, a compliant fork). The vehicle is assembled in stages and
 /// calls each extension at every stage, in the order the extensions were registered:
-///   adjustFrames -> rear frame built -> addRearBodies -> front frame built -> addFrontHubCarrier
-///   -> wheels and contacts -> addForces -> topology realized
+///   adjustFrames -> rear frame built -> addRearBodies -> addSwingarmCarrier (with a swingarm) ->
+///   swingarm -> front frame built -> addFrontHubCarrier -> wheels and contacts -> addForces ->
+///   topology realized
 /// Each stage's default does nothing.
 class ExtensionModel {
  public:
@@ -165,9 +173,15 @@ class ExtensionModel {
   /// Adds bodies hanging from the rear frame; returns their one-DOF mobilizers with names and roles.
   /// The front frame is not built yet: frames.frontFrame is an empty handle here.
   virtual std::vector<NamedMobilizer> addRearBodies(BuildContext& context, const VehicleFrames& frames) { return {}; }
+  /// Puts a carrier between the rear frame and the swingarm (its origin at the pivot p_DP, in D, m),
+  /// called only when the scenario has a swingarm; an empty carrier handle: none. At most one extension
+  /// of a model may give one (the vehicle checks). The front frame is not built yet.
+  virtual BodyCarrier addSwingarmCarrier(BuildContext& context, const VehicleFrames& frames, const SimTK::Vec3& p_DP) {
+    return {};
+  }
   /// Puts a carrier between the front frame and the front wheel; an empty carrier handle: none. At
   /// most one extension of a model may give one (the vehicle checks).
-  virtual FrontHubCarrier addFrontHubCarrier(BuildContext& context, const VehicleFrames& frames) { return {}; }
+  virtual BodyCarrier addFrontHubCarrier(BuildContext& context, const VehicleFrames& frames) { return {}; }
   /// Adds force elements (after the wheels and contacts). The only stage that may allocate auxiliary
   /// states (z): the vehicle names them, in order, right after it.
   virtual void addForces(BuildContext& context, const VehicleFrames& frames) {}
@@ -199,6 +213,9 @@ class PluginRegistrar {
   virtual void addSwingarmModel(const std::string& name, SwingarmModelFactory factory) = 0;
   /// Registers a model extension under the name of its scenario section (e.g. "steer_damper").
   virtual void addExtensionModel(const std::string& name, ExtensionModelFactory factory) = 0;
+  /// Declares the fields of a section a plugin reads (io/field.h): its measured fields join the
+  /// parameter list that uncertainty studies and diagnosis vary, and docs tables print from it.
+  virtual void addSectionFields(io::SectionFields fields) = 0;
 };
 
 }  // namespace motostab::plugins

@@ -7,6 +7,8 @@
 #include <mutex>
 #include <stdexcept>
 
+#include "scenario/scenario_fields.h"
+
 namespace motostab::plugins {
 
 using io::InputError;
@@ -38,6 +40,8 @@ struct LibraryRegistrations : PluginRegistrar {
   void addContactModel(const std::string& name, ContactModelFactory f) override { contacts.emplace_back(name, std::move(f)); }
   void addSwingarmModel(const std::string& name, SwingarmModelFactory f) override { swingarms.emplace_back(name, std::move(f)); }
   void addExtensionModel(const std::string& name, ExtensionModelFactory f) override { extensions.emplace_back(name, std::move(f)); }
+  std::vector<io::SectionFields> fields;
+  void addSectionFields(io::SectionFields f) override { fields.push_back(std::move(f)); }
 };
 
 // Opens `file` (canonical) and runs its entry point into a fresh record; the handle is never closed,
@@ -119,6 +123,18 @@ void PluginRegistry::addExtensionModel(const std::string& name, ExtensionModelFa
   extensionModels_.emplace_back(name, std::move(factory));
 }
 
+void PluginRegistry::addSectionFields(io::SectionFields fields) {
+  for (const io::SectionFields& f : sectionFields_)
+    if (f.path == fields.path) throw std::runtime_error("the fields of section '" + fields.path + "' are declared twice");
+  sectionFields_.push_back(std::move(fields));
+}
+
+std::vector<io::SectionFields> listSectionFields(const PluginRegistry& registry) {
+  std::vector<io::SectionFields> out = scenario::getScenarioFields();
+  for (const io::SectionFields& f : registry.getSectionFields()) out.push_back(f);
+  return out;
+}
+
 VehicleLayout makeVehicleLayout(const scenario::Scenario& s) {
   VehicleLayout v;
   v.gravity = s.gravity;
@@ -129,6 +145,11 @@ VehicleLayout makeVehicleLayout(const scenario::Scenario& s) {
   v.frontWheelRadius = s.frontWheel.radius;
   v.rearFrame = s.rearFrame;
   v.frontFrame = s.frontFrame;
+  v.hasSwingarm = s.hasSwingarm;
+  if (s.hasSwingarm) {
+    v.swingarmPivot = s.swingarm.pivot;
+    v.staticPivotMoment = scenario::calcStaticPivotMoment(s);
+  }
   return v;
 }
 
@@ -204,6 +225,7 @@ void PluginRegistry::loadLibrary(const std::string& path, const InputLocation& w
     for (const auto& [name, f] : record->contacts) staged.addContactModel(name, f);
     for (const auto& [name, f] : record->swingarms) staged.addSwingarmModel(name, f);
     for (const auto& [name, f] : record->extensions) staged.addExtensionModel(name, f);
+    for (const io::SectionFields& f : record->fields) staged.addSectionFields(f);
   } catch (const std::exception& e) {
     throw InputError(where, std::string(e.what()) + " (by " + file + ")");
   }

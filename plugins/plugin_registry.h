@@ -15,6 +15,11 @@ namespace motostab::plugins {
 /// The vehicle an extension sees (plugin_api.h VehicleLayout): the scenario's geometry, wheel radii and frames.
 VehicleLayout makeVehicleLayout(const scenario::Scenario& scenario);
 
+class PluginRegistry;
+
+/// Every declared section: the loader's own (scenario/scenario_fields.h), then the plugins' of `registry`.
+std::vector<io::SectionFields> listSectionFields(const PluginRegistry& registry);
+
 /// Plugins registered by name. Names are unique across built-in and loaded plugins. A registry is a
 /// value: copying it copies the factories (sweep workers build their models from a copy).
 class PluginRegistry : public PluginRegistrar {
@@ -47,6 +52,10 @@ class PluginRegistry : public PluginRegistrar {
                                                                      std::shared_ptr<io::InputStore> inputs = nullptr) const;
   /// Names of the registered extensions, in registration order.
   std::vector<std::string> getExtensionModelNames() const;
+  /// Declares a plugin section's fields; a section declared twice throws std::runtime_error.
+  void addSectionFields(io::SectionFields fields) override;
+  /// The plugins' declared sections, in registration order.
+  const std::vector<io::SectionFields>& getSectionFields() const { return sectionFields_; }
 
   /// Adds the plugins of the library at `path` (absolute, or relative to the working directory;
   /// a bare file name is refused rather than searched on the system path). The library is opened
@@ -63,6 +72,7 @@ class PluginRegistry : public PluginRegistrar {
   std::map<std::string, ContactModelFactory> contactModels_;
   std::map<std::string, SwingarmModelFactory> swingarmModels_;
   std::vector<std::pair<std::string, ExtensionModelFactory>> extensionModels_;
+  std::vector<io::SectionFields> sectionFields_;
   std::vector<std::string> libraries_;
 };
 

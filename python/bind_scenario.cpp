@@ -170,7 +170,9 @@ void bindScenario(py::module_& m) {
            py::arg("path"))
       .def("parameters", [](const ScenarioHandle& h) {
         py::dict out;
-        for (const auto& p : scenario::listScalarParameters(h.makeTree())) out[py::str(p.path)] = p.value;
+        const YAML::Node tree = h.makeTree();
+        for (const auto& p : scenario::listScalarParameters(tree, plugins::listSectionFields(plugins::makeBuiltinRegistry())))
+          out[py::str(p.path)] = p.value;
         return out;
       });
 }

@@ -7,10 +7,12 @@
 #include <string>
 #include <vector>
 
+#include "io/field.h"
+
 namespace motostab::scenario {
 
-/// What a parameter measures, from its key's unit suffix (_m, _kg, _kgm2, _deg).
-enum class ParameterKind { Length, Mass, Inertia, Angle, Other };
+/// What a parameter measures: its field's declared quantity.
+using ParameterKind = io::Quantity;
 
 struct ScalarParameter {
   std::string path;     ///< key path as --set takes it
@@ -20,23 +22,20 @@ struct ScalarParameter {
   /// the largest principal-axis (diagonal) entry of the same tensor (a zero product of inertia still
   /// has a scale), in the key's unit.
   double scale = 0;
+  /// Its field admits positive values only (io::Range::Positive; an inertia tensor's diagonal entries).
+  bool positive = false;
 };
 
-/// Every scalar of the vehicle's measured description present in a scenario tree: geometry, the whole
-/// vehicle (`total`), the rear and front frames (mass, each CoM coordinate, each inertia entry), both wheels, the
-/// swingarm's pivot and mass properties, and when present the leaning rider's hinge height, upper
-/// body, lean stiffness and damping (`rider_lean`) and an explicit fork hub carrier
-/// (`fork_compliance.carrier`), the rider's arms (`rider_arms`), and a steer controller's gains, gain factor, delay and `below_mps`
-/// (`steer_controller`). Order: as in the scenario format.
-std::vector<ScalarParameter> listScalarParameters(const YAML::Node& scenarioTree);
+/// Every scalar of the vehicle's measured description present in a scenario tree: the measured fields
+/// of `sections` (io::Field::measured; the loader's own sections, scenario/scenario_fields.h, and the
+/// plugins' declared ones), a vector field as its three entries (`com_m[2]`), an inertia tensor as its
+/// six (`inertia_kgm2.xz`). Order: the sections', then their fields' declaration order.
+std::vector<ScalarParameter> listScalarParameters(const YAML::Node& scenarioTree, const std::vector<io::SectionFields>& sections);
 
 /// The number at any key path of a tree (also plugin sections, e.g.
 /// `swingarm.torsion.stiffness_Nm_per_rad`). InputError naming the path if it is absent or not a
 /// finite number.
 double getScalarParameter(const YAML::Node& tree, const std::string& path);
-
-/// The kind of a key path from its unit suffix.
-ParameterKind getParameterKind(const std::string& path);
 
 /// "path=value" with 17 significant digits (round-trips the double), for loadScenario overrides.
 std::string formatOverride(const std::string& path, double value);

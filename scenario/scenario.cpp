@@ -6,6 +6,7 @@
 
 #include "scenario/parameter_paths.h"
 #include "scenario/plausibility.h"
+#include "scenario/scenario_fields.h"
 #include "scenario/scenario_source.h"
 #include "io/csv.h"
 #include "io/number.h"
@@ -17,6 +18,8 @@ namespace motostab::scenario {
 
 using io::InputError;
 using io::YamlMap;
+using io::readNumber;
+using io::readVector3;
 
 namespace {
 
@@ -37,10 +40,11 @@ InertiaSpec readInertia(YamlMap m) {
 }  // namespace
 
 BodySpec readBodyKeys(YamlMap& m) {
+  static const io::SectionFields f = makeBodyFields("", "body");
   BodySpec b;
-  b.mass = m.getPositive("mass_kg");
-  b.com = m.getVec3("com_m");
-  b.inertia = readInertia(m.getMap("inertia_kgm2"));
+  b.mass = readNumber(m, f.get("mass_kg"));
+  b.com = readVector3(m, f.get("com_m"));
+  b.inertia = readInertia(m.getMap(f.get("inertia_kgm2").key));
   return b;
 }
 
@@ -58,13 +62,14 @@ std::string formatAssumed(double value, const std::string& unit) { return io::fo
 // defaults of getDefaultWheel, each recorded in `assumed`.
 WheelSpec readWheel(YamlMap m, bool front, std::vector<AssumedValue>* assumed) {
   const WheelDefaults d = getDefaultWheel(front);
+  static const io::SectionFields f = makeWheelFields("");
   auto readOrAssume = [&](const std::string& key, double fallback, const std::string& unit) {
-    if (!assumed || m.has(key)) return m.getPositive(key);
+    if (!assumed || m.has(key)) return readNumber(m, f.get(key));
     assumed->push_back({m.getPath() + "." + key, formatAssumed(fallback, unit), kWholeVehicleDefaultSource});
     return fallback;
   };
   WheelSpec w;
-  w.radius = m.getPositive("radius_m");
+  w.radius = readNumber(m, f.get("radius_m"));
   w.crownRadius = m.getNonNegative("crown_radius_m");
   if (w.crownRadius >= w.radius) m.fail("crown_radius_m", "must be smaller than radius_m");
   w.mass = readOrAssume("mass_kg", d.mass, "kg");
@@ -75,25 +80,6 @@ WheelSpec readWheel(YamlMap m, bool front, std::vector<AssumedValue>* assumed) {
     m.fail("spin_inertia_kgm2", "violates the triangle inequality: spin inertia exceeds twice the diametral inertia");
   m.finish();
   return w;
-}
-
-// One suspension quantity, given about the pivot (key `pivot`) or referred to the wheel (key
-// `wheel`, converted with lever^2); exactly one of the two keys.
-double readPivotOrWheel(YamlMap& m, const std::string& pivot, const std::string& wheel, double lever, bool positive) {
-  const std::string path = m.getPath() + ".";
-  if (m.has(pivot) && m.has(wheel)) m.fail(wheel, "give only one of " + pivot + " and " + wheel);
-  if (!m.has(pivot) && !m.has(wheel)) m.fail("", "missing key '" + path + wheel + "' (or '" + path + pivot + "')");
-  const std::string key = m.has(pivot) ? pivot : wheel;
-  const double v = positive ? m.getPositive(key) : m.getNonNegative(key);
-  return key == pivot ? v : v * lever * lever;
-}
-
-SuspensionSpec readSuspension(YamlMap m, double lever) {
-  SuspensionSpec su;
-  su.stiffness = readPivotOrWheel(m, "stiffness_Nm_per_rad", "wheel_rate_N_per_m", lever, true);
-  su.damping = readPivotOrWheel(m, "damping_Nms_per_rad", "damping_Ns_per_m", lever, false);
-  m.finish();
-  return su;
 }
 
 // Centre of mass of the swingarm in D, m.
@@ -160,7 +146,11 @@ long countSpeeds(double start, double stop, double step, std::string& why) {
 }
 
 const std::vector<std::string>& getSwingarmLoaderKeys() {
-  static const std::vector<std::string> keys{"pivot_m", "mass_kg", "com_m", "inertia_kgm2", "compliance", "suspension"};
+  static const std::vector<std::string> keys = [] {
+    std::vector<std::string> k;
+    for (const io::Field& f : getSwingarmFields().fields) k.push_back(f.key);
+    return k;
+  }();
   return keys;
 }
 
@@ -281,14 +271,15 @@ Scenario readScenario(const std::string& file, YamlMap& m) {
   }
   {
     YamlMap g = m.getMap("geometry");
-    s.geometry.wheelbase = g.getPositive("wheelbase_m");
-    s.geometry.steerAxisTilt = g.getDouble("steer_axis_tilt_deg") * M_PI / 180.0;
+    const io::SectionFields& f = getGeometryFields();
+    s.geometry.wheelbase = readNumber(g, f.get("wheelbase_m"));
+    s.geometry.steerAxisTilt = readNumber(g, f.get("steer_axis_tilt_deg")) * M_PI / 180.0;
     if (std::abs(s.geometry.steerAxisTilt) >= M_PI / 2) g.fail("steer_axis_tilt_deg", "must lie in (-90, 90) degrees");
     if (!g.has("trail_m") && !g.has("normal_trail_m"))
       g.failMissing("trail_m", "normal_trail_m");
     if (g.has("trail_m") && g.has("normal_trail_m")) g.fail("normal_trail_m", "give only one of trail_m and normal_trail_m");
-    s.geometry.trail = g.has("trail_m") ? g.getDouble("trail_m")
-                                        : g.getDouble("normal_trail_m") / std::cos(s.geometry.steerAxisTilt);
+    s.geometry.trail = g.has("trail_m") ? readNumber(g, f.get("trail_m"))
+                                        : readNumber(g, f.get("normal_trail_m")) / std::cos(s.geometry.steerAxisTilt);
     g.finish();
   }
   readFramesAndWheels(m, s);
@@ -302,18 +293,18 @@ Scenario readScenario(const std::string& file, YamlMap& m) {
   if (m.has("swingarm")) {
     YamlMap sw = m.getMap("swingarm");
     s.hasSwingarm = true;
-    s.swingarm.pivot = sw.getVec3("pivot_m");
-    s.swingarm.body.mass = sw.getPositive("mass_kg");
-    s.swingarm.body.com = sw.getVec3("com_m");
-    s.swingarm.body.inertia = readInertia(sw.getMap("inertia_kgm2"));
-    s.swingarm.compliance = sw.getString("compliance");
+    s.swingarm.pivot = readVector3(sw, getSwingarmFields().get("pivot_m"));
+    s.swingarm.body = readBodyKeys(sw);
+    s.swingarm.compliance = sw.getString(getSwingarmFields().get("compliance").key);
     s.swingarm.params = sw.getNode();
     s.swingarm.file = file;
     const double dx = s.swingarm.pivot[0], dz = s.swingarm.pivot[2] - s.rearWheel.radius;
     if (dx <= 0 || std::hypot(dx, dz) < 1e-3) sw.fail("pivot_m", "the pivot must lie ahead of the rear wheel centre");
-    if (sw.has("suspension")) {
-      s.swingarm.hasSuspension = true;
-      s.swingarm.suspension = readSuspension(sw.getMap("suspension"), calcSuspensionLever(s));
+    // The swingarm's own model-extension section, read by its plugin at build.
+    if (sw.has(kSwingarmSuspension)) {
+      if (!sw.getNode()[kSwingarmSuspension].IsMap()) sw.fail(kSwingarmSuspension, "expected a mapping");
+      const std::string path = "swingarm." + std::string(kSwingarmSuspension);
+      s.extensions.push_back({path, sw.getNode()[kSwingarmSuspension], file, path, sw.locate(kSwingarmSuspension)});
     }
     for (const auto& k : getSwingarmLoaderKeys()) sw.markUsed(k);
     // The compliance plugin reads and checks the rest of this mapping.
@@ -412,8 +403,6 @@ std::array<double, 2> calcStaticWheelLoads(const Scenario& s) {
   const double front = weight * ms.com[0] / s.geometry.wheelbase;
   return {weight - front, front};
 }
-
-double calcSuspensionLever(const Scenario& s) { return s.swingarm.pivot[0]; }  // the hub is at x = 0
 
 double calcStaticPivotMoment(const Scenario& s) {
   // M_y = -(x - x_pivot) F_z for a vertical force F_z at x: rear tyre load at the contact point

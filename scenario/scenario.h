@@ -34,23 +34,12 @@ struct GeometrySpec {
   double steerAxisTilt = 0;
 };
 
-/// An optional rear suspension: the swingarm turns about the pivot's lateral axis (design y) against
-/// a rotational spring and damper. Always stored about the pivot; the scenario may give them
-/// referred to the wheel (k_theta = k_wheel l^2, c_theta = c_wheel l^2, l = horizontal pivot-to-hub
-/// distance, see calcSuspensionLever).
-struct SuspensionSpec {
-  double stiffness = 0;     ///< k_theta, N m/rad (> 0)
-  double damping = 0;       ///< c_theta, N m s/rad (>= 0)
-};
-
 /// The swingarm between rear frame and rear wheel (seed sec. 2.4 and 4). Its own frame S: origin at
 /// the pivot, x towards the rear hub, z up in the vehicle's plane of symmetry.
 struct SwingarmSpec {
   Vec3d pivot{0, 0, 0};     ///< pivot in D, m
   BodySpec body;            ///< mass; com and inertia in S (seed Table 1)
   std::string compliance;   ///< compliance plugin name: rigid, bending, torsion, twist, bending+torsion
-  bool hasSuspension = false;  ///< false: the pivot is rigid in-plane
-  SuspensionSpec suspension;
   YAML::Node params;        ///< the whole swingarm mapping, for the compliance plugin
   std::string file;
 };
@@ -186,9 +175,9 @@ std::array<double, 2> calcStaticWheelLoads(const Scenario& scenario);
 /// Keys of the `swingarm` mapping read by loadScenario itself; the compliance plugin reads the rest.
 const std::vector<std::string>& getSwingarmLoaderKeys();
 
-/// Suspension lever l: horizontal distance from the pivot to the rear hub at the design pose, m
-/// (vertical hub travel per radian of swingarm rotation; needs hasSwingarm).
-double calcSuspensionLever(const Scenario& scenario);
+/// The key of the swingarm's own model-extension section: the loader passes `swingarm.suspension`
+/// (the rear suspension, extensions/rear_suspension.h) on as the extension section of that path.
+inline constexpr const char* kSwingarmSuspension = "suspension";
 
 /// Moment (N m) about the pivot's +y axis (positive lifts the hub) that the rear tyre's static load
 /// and the weights of swingarm and rear wheel exert on the swingarm at the design pose; the

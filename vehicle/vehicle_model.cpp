@@ -2,7 +2,6 @@
 
 #include "multibody/pin_joint.h"
 #include "plugins/builtin.h"
-#include "multibody/pin_spring_damper.h"
 #include "plugins/rigid_body.h"
 #include "scenario/whole_vehicle.h"
 
@@ -14,24 +13,21 @@ using plugins::BuildContext;
 using plugins::ExtensionBody;
 using plugins::ExtensionModel;
 using plugins::FrameMasses;
-using plugins::FrontHubCarrier;
+using plugins::BodyCarrier;
 using plugins::VehicleFrames;
 using plugins::PluginRegistry;
 using plugins::SwingarmAssembly;
 using plugins::SwingarmModel;
 using plugins::SwingarmSite;
 using plugins::WheelSite;
-using multibody::addPinSpringDamper;
 using plugins::makeBuiltinRegistry;
 using plugins::makeRigidBody;
 using plugins::toVec3;
 using scenario::BodySpec;
 using scenario::NamedBody;
 using scenario::Scenario;
-using scenario::SuspensionSpec;
 using scenario::SwingarmFrame;
 using scenario::WheelSpec;
-using scenario::calcStaticPivotMoment;
 using scenario::calcStaticWheelLoads;
 using scenario::calcSwingarmFrame;
 using scenario::rethrowNamingOverride;
@@ -49,24 +45,13 @@ SimTK::Body::Rigid makeWheel(const WheelSpec& w) {
       w.mass, Vec3(0), SimTK::Inertia(w.diametralInertia, w.axialInertia, w.diametralInertia)));
 }
 
-// The rear suspension: a massless link on a pin about the design y axis through the pivot (at
-// p_RP in the rear frame; q > 0 lifts the hub), its body frame parallel to the design frame at
-// q = 0. The spring's free angle is set so that it carries the static pivot moment at q = 0.
-MobilizedBody::Pin addSuspension(BuildContext& ctx, MobilizedBody& rearFrame, const Vec3& p_RP, const Scenario& s) {
-  MobilizedBody::Pin link = addPinAtDesignPose(rearFrame, Transform(p_RP), SimTK::Body::Massless(), Vec3(0), Vec3(0, 1, 0));
-  const SuspensionSpec& su = s.swingarm.suspension;
-  const double freeAngle = -calcStaticPivotMoment(s) / su.stiffness;
-  addPinSpringDamper(ctx.forces, link, su.stiffness, su.damping, freeAngle);
-  return link;
-}
-
 // What addRearAssembly and addFrontAssembly built: the mobilizers, the swingarm model, and the
 // named one-DOF mobilizers with their roles (swingarm compliance; extension coordinates such as
-// rider_lean, fork_bending, fork_torsion).
+// rider_lean, suspension_pitch, fork_bending, fork_torsion).
 using NamedMobilizers = std::vector<NamedMobilizer>;
 using Extensions = std::vector<std::unique_ptr<ExtensionModel>>;
 struct RearAssembly {
-  MobilizedBody rearFrame, rearWheel, suspension;
+  MobilizedBody rearFrame, rearWheel;
   std::unique_ptr<SwingarmModel> swingarm;
   NamedMobilizers compliance, extension;
 };
@@ -118,6 +103,20 @@ std::vector<NamedBody> listBodiesWith(const Scenario& s, const Extensions& exten
   return out;
 }
 
+// The carrier the extensions put in series between two parts (`between` names them): at most one.
+BodyCarrier addCarrier(const Scenario& s, const std::string& between, const Extensions& extensions,
+                       const std::function<BodyCarrier(ExtensionModel&)>& stage) {
+  BodyCarrier out;
+  for (const auto& e : extensions) {
+    BodyCarrier c = stage(*e);
+    if (c.carrier.isEmptyHandle()) continue;
+    if (!out.carrier.isEmptyHandle())
+      throw InputError({s.sourceFile, 0, 0, ""}, "two model extensions each put a carrier between " + between);
+    out = std::move(c);
+  }
+  return out;
+}
+
 // Rear frame on a Bushing whose frames are permuted (F.x = G.z, F.y = G.x, F.z = G.y) so that its
 // body-fixed 1-2-3 angles are yaw, roll, pitch and its translations are height, x, y; the extensions'
 // rear bodies (a leaning rider's upper body) hang from it. The rear wheel hangs from the rear frame,
@@ -139,17 +138,22 @@ RearAssembly addRearAssembly(const Scenario& s, const BodySpec& rearBody, Plugin
   out.swingarm = registry.createSwingarmModel(s.swingarm, s.inputs);
   const SwingarmFrame f = calcSwingarmFrame(s);
   const Rotation R_RS(SimTK::Mat33(f.x[0], f.y[0], f.z[0], f.x[1], f.y[1], f.z[1], f.x[2], f.y[2], f.z[2]), true);
-  // The swingarm hangs from the rear frame, or from the suspension link (compliance in series).
+  // The swingarm hangs from the rear frame, or from the carrier an extension puts at the pivot (the
+  // rear suspension's link: compliance in series).
   MobilizedBody armParent = out.rearFrame;
   Vec3 p_PS = toVec3(f.origin) - pRearHub_D;
-  if (s.swingarm.hasSuspension) {
-    out.suspension = armParent = addSuspension(ctx, out.rearFrame, p_PS, s);
+  const BodyCarrier carrier = addCarrier(s, "the rear frame and the swingarm", extensions, [&](ExtensionModel& e) {
+    return e.addSwingarmCarrier(ctx, frames, toVec3(f.origin));
+  });
+  if (!carrier.carrier.isEmptyHandle()) {
+    armParent = carrier.carrier;
     p_PS = Vec3(0);
+    for (const NamedMobilizer& m : carrier.coordinates) out.extension.push_back(m);
   }
   const SwingarmSite site{armParent, Transform(R_RS, p_PS), Vec3(f.length, 0, 0), makeRigidBody(s.swingarm.body, Vec3(0))};
   const SwingarmAssembly arm = out.swingarm->addSwingarm(ctx, site);
-  MobilizedBody carrier = arm.hubCarrier;
-  out.rearWheel = addPinAtDesignPose(carrier, arm.X_CH, makeWheel(s.rearWheel), Vec3(0), Vec3(0, 1, 0));
+  MobilizedBody hubCarrier = arm.hubCarrier;
+  out.rearWheel = addPinAtDesignPose(hubCarrier, arm.X_CH, makeWheel(s.rearWheel), Vec3(0), Vec3(0, 1, 0));
   out.compliance = arm.coordinates;
   return out;
 }
@@ -165,16 +169,11 @@ FrontAssembly addFrontAssembly(const Scenario& s, const BodySpec& frontBody, Bui
   const Vec3 pSteer_D(w + s.geometry.trail, 0, 0);
   out.frontFrame = addPinAtDesignPose(rearFrame, Transform(pFrontHub_D - pRearHub_D), makeRigidBody(frontBody, pFrontHub_D),
                                       pSteer_D - pFrontHub_D, steerAxis);
-  MobilizedBody carrier = out.frontFrame;
   const VehicleFrames frames{rearFrame, out.frontFrame, pRearHub_D, pFrontHub_D};
-  for (const auto& e : extensions) {
-    FrontHubCarrier c = e->addFrontHubCarrier(ctx, frames);
-    if (c.carrier.isEmptyHandle()) continue;
-    if (carrier.getMobilizedBodyIndex() != out.frontFrame.getMobilizedBodyIndex())
-      throw InputError({s.sourceFile, 0, 0, ""}, "two model extensions each put a carrier between the front frame and the front wheel");
-    carrier = c.carrier;
-    out.extension = std::move(c.coordinates);
-  }
+  BodyCarrier c = addCarrier(s, "the front frame and the front wheel", extensions,
+                             [&](ExtensionModel& e) { return e.addFrontHubCarrier(ctx, frames); });
+  MobilizedBody carrier = c.carrier.isEmptyHandle() ? out.frontFrame : c.carrier;
+  out.extension = std::move(c.coordinates);
   out.frontWheel = addPinAtDesignPose(carrier, Transform(), makeWheel(s.frontWheel), Vec3(0), Vec3(0, 1, 0));
   return out;
 }
@@ -203,10 +202,6 @@ CoordinateNames nameCoordinates(const SimTK::State& state, const RearAssembly& r
       {idx.rearSpin, {"rear_wheel_angle", StateRole::WheelSpin, StateKind::Coordinate, WheelSide::Rear}},
       {idx.frontSpin, {"front_wheel_angle", StateRole::WheelSpin, StateKind::Coordinate, WheelSide::Front}}};
   for (const auto& [q, info] : fixed) names[q] = info;
-  if (!rear.suspension.isEmptyHandle()) {
-    idx.suspension = rear.suspension.getFirstQIndex(state);
-    names[idx.suspension] = {"suspension_pitch", StateRole::Suspension};
-  }
   auto addNames = [&](const NamedMobilizers& list, std::vector<int>& indices) {
     for (const NamedMobilizer& m : list) {
       const int q = m.mobilizer.getFirstQIndex(state);

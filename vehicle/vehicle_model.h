@@ -46,8 +46,7 @@ struct CoordinateIndices {
   int yaw = -1, roll = -1, pitch = -1, height = -1, x = -1, y = -1;
   int steer = -1, rearSpin = -1, frontSpin = -1;
   std::vector<int> compliance;  ///< swingarm compliance coordinates, if any
-  int suspension = -1;          ///< rear suspension angle about the pivot (rad, > 0 lifts the hub), if any
-  std::vector<int> extension;   ///< the model extensions' coordinates (rider_lean, fork_bending, fork_torsion, ...)
+  std::vector<int> extension;   ///< the model extensions' coordinates (rider_lean, suspension_pitch, fork_bending, ...)
 };
 
 /// Model inputs: generalized forces the trim may solve for and B is taken against.

@@ -80,9 +80,11 @@ TEST(ModeLabelRules, RollDivergenceThatLeavesAStiffTyreUndeflectedIsCapsize) {
         EXPECT_TRUE(labels[r] == ModeLabel::Capsize || labels[r] == ModeLabel::Other)
             << "draw " << draw << " root " << lin.eigenvalues[r] << " is " << toString(labels[r]);
     }
-    for (int r = 0; r < lin.eigenvalues.size(); ++r)
-      if (std::abs(lin.eigenvalues[r].imag()) > 1e-9)
+    for (int r = 0; r < lin.eigenvalues.size(); ++r) {
+      if (std::abs(lin.eigenvalues[r].imag()) > 1e-9) {
         EXPECT_EQ(labels[r], ModeLabel::Bounce) << "draw " << draw << " root " << lin.eigenvalues[r];
+      }
+    }
   }
 }
 

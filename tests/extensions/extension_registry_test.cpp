@@ -131,7 +131,10 @@ TEST(ExtensionRegistry, NamesAreUniqueAcrossKinds) {
   EXPECT_THROW(registry.addExtensionModel("steer_damper", make), std::runtime_error);
   EXPECT_THROW(registry.addExtensionModel("rolling_no_slip", make), std::runtime_error);
   const std::vector<std::string> names = registry.getExtensionModelNames();
-  EXPECT_EQ(names.front(), "aerodynamics");  // registration order, the order of the stages
+  EXPECT_EQ(names.front(), "swingarm.suspension");  // registration order, the order of the stages
+  EXPECT_EQ(names[1], "aerodynamics");
+  // A section's fields are declared once.
+  EXPECT_THROW(registry.addSectionFields({"steer_damper", {}}), std::runtime_error);
   EXPECT_EQ(names.back(), "steer_head_friction");
 }
 

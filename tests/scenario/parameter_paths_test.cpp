@@ -8,6 +8,7 @@
 
 #include "scenario/scenario.h"
 #include "io/yaml_map.h"
+#include "plugins/builtin.h"
 #include "vehicle/vehicle_model.h"
 
 namespace motostab::scenario {
@@ -22,6 +23,11 @@ namespace {
 
 const std::string kWhipple = std::string(MOTOSTAB_SOURCE_DIR) + "/scenarios/whipple-benchmark.yaml";
 const std::string kEnduro = std::string(MOTOSTAB_SOURCE_DIR) + "/scenarios/enduro.yaml";
+
+// The parameters of `tree` by the declared sections of the built-in plugins.
+std::vector<ScalarParameter> listScalarParameters(const YAML::Node& tree) {
+  return scenario::listScalarParameters(tree, plugins::listSectionFields(plugins::makeBuiltinRegistry()));
+}
 
 TEST(ParameterPaths, ListsEveryVehicleScalarOfTheBenchmarkOnce) {
   const YAML::Node tree = loadYamlFile(kWhipple).getNode();

@@ -8,14 +8,11 @@
 #include <sstream>
 
 #include "tests/support/temp_dir.h"
-#include "core/portable_random.h"
-#include "scenario/parameter_paths.h"
 #include "scenario/scenario.h"
 #include "vehicle/vehicle_model.h"
 
 namespace motostab::scenario {
 
-using core::PortableRandom;
 using io::InputError;
 using vehicle::VehicleModel;
 
@@ -141,50 +138,6 @@ TEST(Scenario, OverrideReplacesValue) {
   EXPECT_THROW(loadScenario(kScenario, {"geometry.trail_m.x=0.1"}), InputError);
 }
 
-// The enduro with a rear suspension mapping `fields` after its compliance line.
-std::string suspensionVariant(const std::string& name, const std::string& fields) {
-  return variant(name, "  compliance: rigid", "  compliance: rigid\n  suspension: {" + fields + "}", kEnduro);
-}
-
-TEST(Scenario, SuspensionNegativeWheelRate) {
-  expectError(suspensionVariant("susp_rate", "wheel_rate_N_per_m: -20000, damping_Ns_per_m: 1500"),
-              "wheel_rate_N_per_m: -20000", "swingarm.suspension.wheel_rate_N_per_m", "must be positive");
-}
-
-TEST(Scenario, SuspensionNegativeDamping) {
-  expectError(suspensionVariant("susp_damping", "stiffness_Nm_per_rad: 6000, damping_Nms_per_rad: -1"),
-              "damping_Nms_per_rad: -1", "swingarm.suspension.damping_Nms_per_rad", "must not be negative");
-}
-
-TEST(Scenario, SuspensionUnknownKey) {
-  expectError(suspensionVariant("susp_unknown", "wheel_rate_N_per_m: 20000, damping_Ns_per_m: 1500, preload_N: 10"),
-              "preload_N", "swingarm.suspension.preload_N", "unknown key");
-}
-
-TEST(Scenario, SuspensionMissingStiffness) {
-  expectError(suspensionVariant("susp_missing", "damping_Ns_per_m: 1500"), "suspension:",
-              "swingarm.suspension.wheel_rate_N_per_m", "missing key");
-}
-
-TEST(Scenario, SuspensionStiffnessGivenTwice) {
-  expectError(suspensionVariant("susp_twice", "wheel_rate_N_per_m: 2, stiffness_Nm_per_rad: 1, damping_Ns_per_m: 0"),
-              "stiffness_Nm_per_rad", "swingarm.suspension.wheel_rate_N_per_m", "give only one");
-}
-
-// Wheel-referred values are referred to the pivot by the horizontal pivot-to-hub distance (the
-// enduro's pivot_m[0] = 0.5502 m); pivot values are taken unchanged.
-TEST(Scenario, SuspensionWheelRateConversion) {
-  const Scenario none = loadScenario(kEnduro);
-  EXPECT_FALSE(none.swingarm.hasSuspension);
-  const Scenario wheel = loadScenario(kEnduro, {"swingarm.suspension={wheel_rate_N_per_m: 20000, damping_Ns_per_m: 1500}"});
-  ASSERT_TRUE(wheel.swingarm.hasSuspension);
-  EXPECT_NEAR(wheel.swingarm.suspension.stiffness, 20000 * 0.5502 * 0.5502, 1e-9);
-  EXPECT_NEAR(wheel.swingarm.suspension.damping, 1500 * 0.5502 * 0.5502, 1e-12);
-  const Scenario pivot = loadScenario(kEnduro, {"swingarm.suspension={stiffness_Nm_per_rad: 6000, damping_Nms_per_rad: 400}"});
-  EXPECT_DOUBLE_EQ(pivot.swingarm.suspension.stiffness, 6000);
-  EXPECT_DOUBLE_EQ(pivot.swingarm.suspension.damping, 400);
-}
-
 std::string catchMessage(const std::function<void()>& f) {
   try {
     f();
@@ -194,32 +147,11 @@ std::string catchMessage(const std::function<void()>& f) {
   return "";
 }
 
-// Key by key, --set creates the missing `suspension` map; the result equals the whole-section form
-// (values drawn in the test). A created section still meets the strict reader.
-TEST(Scenario, SetCreatesAMissingSectionKeyByKey) {
-  PortableRandom rng(20261124);
-  const double rate = 1e4 + 3e4 * rng.drawUniform(), damping = 500 + 2000 * rng.drawUniform();
-  const Scenario keys = loadScenario(kEnduro, {formatOverride("swingarm.suspension.wheel_rate_N_per_m", rate),
-                                               formatOverride("swingarm.suspension.damping_Ns_per_m", damping)});
-  const std::string r = formatOverride("r", rate).substr(2), c = formatOverride("c", damping).substr(2);
-  const Scenario whole =
-      loadScenario(kEnduro, {"swingarm.suspension={wheel_rate_N_per_m: " + r + ", damping_Ns_per_m: " + c + "}"});
-  ASSERT_TRUE(keys.swingarm.hasSuspension);
-  EXPECT_EQ(keys.swingarm.suspension.stiffness, whole.swingarm.suspension.stiffness);
-  EXPECT_EQ(keys.swingarm.suspension.damping, whole.swingarm.suspension.damping);
-  EXPECT_NEAR(keys.swingarm.suspension.stiffness, rate * 0.5502 * 0.5502, 1e-9 * rate);
-  // Only one of the two required keys: the reader names the missing one.
-  const std::string missing = catchMessage([] { loadScenario(kEnduro, {"swingarm.suspension.damping_Ns_per_m=1500"}); });
-  EXPECT_NE(missing.find("wheel_rate_N_per_m"), std::string::npos) << missing;
-  // A created section that neither the scenario format nor any extension knows is an unknown section,
-  // named when the model is built (its extension sections are read then).
+// A section --set creates that neither the scenario format nor any extension knows is an unknown
+// section, named when the model is built (its extension sections are read then).
+TEST(Scenario, SetCreatingAnUnknownSectionIsNamedAtBuild) {
   const std::string unknown = catchMessage([] { vehicle::VehicleModel{loadScenario(kEnduro, {"no_such_section.x_m=1"})}; });
   EXPECT_NE(unknown.find("no_such_section"), std::string::npos) << unknown;
-  const std::string deep = catchMessage([] {
-    loadScenario(kEnduro, {"swingarm.suspension.wheel_rate_N_per_m=2e4", "swingarm.suspension.damping_Ns_per_m=1e3",
-                           "swingarm.suspension.spring.rate=1"});
-  });
-  EXPECT_NE(deep.find("spring"), std::string::npos) << deep;
 }
 
 // Derived quantities against hand calculation from Meijaard et al. (2007) Table 1.

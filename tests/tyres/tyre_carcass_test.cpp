@@ -136,7 +136,9 @@ TEST(TyreCarcass, EigenvaluesAreTheConstantLengthModelsAtTheTrimLoadAndSpeed) {
     const TrimResult trimC = calcTrim(carcass, V, opt);
     auto sigma = [&](const char* tyre, const Carcass& c) {
       const double speed = calcWheelSpeed(carcass, trimC.state, tyre);
-      if (opt.roll == 0) EXPECT_NEAR(speed, V, 1e-9 * V);
+      if (opt.roll == 0) {
+        EXPECT_NEAR(speed, V, 1e-9 * V);
+      }
       return calcSigma(test::findContactOutput(carcass, trimC.state, std::string(tyre) + "_tyre_Fz_N"),
                        contact[tyre]["cornering_stiffness_per_rad"].as<double>(), c, speed);
     };

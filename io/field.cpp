@@ -1,0 +1,107 @@
+#include "io/field.h"
+
+#include <stdexcept>
+#include <utility>
+
+#include "io/number.h"
+
+namespace motostab::io {
+
+Field Field::number(std::string key, std::string unit, Range range, std::string meaning) {
+  Field f;
+  f.key = std::move(key);
+  f.unit = std::move(unit);
+  f.range = range;
+  f.meaning = std::move(meaning);
+  return f;
+}
+
+Field Field::of(Shape shape, std::string key, std::string unit, std::string rangeNote, std::string meaning) {
+  Field f = number(std::move(key), std::move(unit), rangeNote.empty() ? Range::Any : Range::Custom, std::move(meaning));
+  f.shape = shape;
+  f.rangeNote = std::move(rangeNote);
+  return f;
+}
+
+Field Field::withDefault(double value) const {
+  Field f = *this;
+  f.required = false;
+  f.fallback = value;
+  f.hasFallback = true;
+  return f;
+}
+
+Field Field::optional() const {
+  Field f = *this;
+  f.required = false;
+  return f;
+}
+
+Field Field::within(std::string note) const {
+  Field f = *this;
+  f.range = Range::Custom;
+  f.rangeNote = std::move(note);
+  return f;
+}
+
+Field Field::measures(Quantity q) const {
+  Field f = *this;
+  f.measured = true;
+  f.quantity = q;
+  return f;
+}
+
+const Field& SectionFields::get(const std::string& key) const {
+  for (const Field& f : fields)
+    if (f.key == key) return f;
+  throw std::logic_error("section " + path + " declares no field " + key);
+}
+
+double readNumber(YamlMap& m, const Field& f) {
+  if (f.shape != Shape::Number) throw std::logic_error(f.key + " is not a number field");
+  if (!f.required && !m.has(f.key)) {
+    if (!f.hasFallback) throw std::logic_error(f.key + " is optional without a default: ask has() first");
+    return f.fallback;
+  }
+  switch (f.range) {
+    case Range::Positive: return m.getPositive(f.key);
+    case Range::NonNegative: return m.getNonNegative(f.key);
+    case Range::Fraction: {
+      const double v = m.getDouble(f.key);
+      if (!(v > 0 && v < 1)) m.fail(f.key, "must lie strictly between 0 and 1");
+      return v;
+    }
+    case Range::Any:
+    case Range::Custom: return m.getDouble(f.key);
+  }
+  return 0;
+}
+
+std::array<double, 3> readVector3(YamlMap& m, const Field& f) {
+  if (f.shape != Shape::Vector3) throw std::logic_error(f.key + " is not an [x, y, z] field");
+  return m.getVec3(f.key);
+}
+
+std::string formatRange(const Field& f) {
+  switch (f.range) {
+    case Range::Any: return f.shape == Shape::Other ? "-" : "any";
+    case Range::Positive: return "> 0";
+    case Range::NonNegative: return ">= 0";
+    case Range::Fraction: return "0 < x < 1";
+    case Range::Custom: return f.rangeNote;
+  }
+  return "";
+}
+
+std::string formatFieldTable(const SectionFields& section) {
+  std::string out = "| key | unit | range | default | meaning |\n|---|---|---|---|---|\n";
+  for (const Field& f : section.fields) {
+    const std::string shape = f.shape == Shape::Vector3 ? " [x, y, z]" : f.shape == Shape::Inertia ? " {xx, yy, zz, xy, xz, yz}" : "";
+    const std::string fallback = f.required ? "required" : f.hasFallback ? formatShortest(f.fallback) : "none";
+    out += "| `" + f.key + "`" + shape + " | " + (f.unit.empty() ? "-" : f.unit) + " | " + formatRange(f) + " | " + fallback +
+           " | " + f.meaning + " |\n";
+  }
+  return out;
+}
+
+}  // namespace motostab::io

@@ -1,0 +1,85 @@
+#pragma once
+// Declared fields of a scenario section, in the spirit of Drake's Serialize(Archive*): each key is
+// declared once, with its unit, its range, whether it is a measured property of the vehicle (and what
+// it measures) and its meaning. The section's reader reads through the declaration, the parameter list
+// that uncertainty studies and diagnosis vary takes the measured fields with their quantity, and the
+// scenario-format tables of docs/scenario-format.md are printed from it (a test compares them).
+#include <array>
+#include <string>
+#include <vector>
+
+#include "io/yaml_map.h"
+
+namespace motostab::io {
+
+/// What a measured field measures: sets the default standard deviation of an uncertainty study
+/// (10 mm for lengths, 1 degree for angles, 10 % otherwise) and the scale of inertia entries.
+enum class Quantity { Length, Mass, Inertia, Angle, Other };
+
+/// The values a number admits (checked by the reader, printed in the docs tables).
+enum class Range {
+  Any,
+  Positive,     ///< > 0
+  NonNegative,  ///< >= 0
+  Fraction,     ///< 0 < x < 1
+  Custom        ///< checked by the section's reader; Field::rangeNote gives it
+};
+
+/// How a field is written.
+enum class Shape {
+  Number,
+  Vector3,  ///< [x, y, z]
+  Inertia,  ///< {xx, yy, zz, xy, xz, yz}
+  Other     ///< a mapping, list or string that the section's reader reads itself
+};
+
+/// One key of a section.
+struct Field {
+  std::string key;
+  std::string unit;      ///< "m", "kg m^2", "N m s/rad"; empty for dimensionless values and non-numbers
+  Shape shape = Shape::Number;
+  Range range = Range::Any;
+  std::string rangeNote;  ///< the range in words when the reader checks it itself (Range::Custom)
+  bool required = true;
+  double fallback = 0;    ///< the default of an optional number
+  bool hasFallback = false;
+  bool measured = false;  ///< a measured property of the vehicle: listed for uncertainty and diagnosis
+  Quantity quantity = Quantity::Other;
+  std::string meaning;
+
+  /// A number: key, unit, range, meaning.
+  static Field number(std::string key, std::string unit, Range range, std::string meaning);
+  /// A field of another shape (Range::Custom with `rangeNote`, or none).
+  static Field of(Shape shape, std::string key, std::string unit, std::string rangeNote, std::string meaning);
+  /// The same field, optional with this default.
+  Field withDefault(double value) const;
+  /// The same field, optional without a default (absent: the element is off, or the reader derives it).
+  Field optional() const;
+  /// The same field with a range its section's reader checks itself, given in words ("-90 < x < 90").
+  Field within(std::string note) const;
+  /// The same field, a measured property of the vehicle of this quantity.
+  Field measures(Quantity q) const;
+};
+
+/// The declared fields of one section, `path` as --set addresses it ("rider_lean", "swingarm.suspension").
+struct SectionFields {
+  std::string path;
+  std::vector<Field> fields;
+  /// The field of `key`; std::logic_error if none is declared (a reader asking for an undeclared key is a bug).
+  const Field& get(const std::string& key) const;
+};
+
+/// Reads a number field from `m`: its range checked (InputError at the key), the default when an
+/// optional field is absent (an optional field without a default must be asked with has() first).
+double readNumber(YamlMap& m, const Field& field);
+
+/// Reads an [x, y, z] field.
+std::array<double, 3> readVector3(YamlMap& m, const Field& field);
+
+/// The range as the docs tables print it: "> 0", ">= 0", "0 < x < 1", "any" (a non-number: "-"), or the note.
+std::string formatRange(const Field& field);
+
+/// The section's markdown table: | key | unit | range | default | meaning |, one row per field.
+std::string formatFieldTable(const SectionFields& section);
+
+}  // namespace motostab::io

@@ -1,0 +1,83 @@
+#include "scenario/scenario_fields.h"
+
+namespace motostab::scenario {
+
+using io::Field;
+using io::Quantity;
+using io::Range;
+using io::SectionFields;
+using io::Shape;
+
+namespace {
+
+std::vector<Field> makeBodyFieldList(const std::string& what) {
+  return {Field::number("mass_kg", "kg", Range::Positive, "mass of the " + what).measures(Quantity::Mass),
+          Field::of(Shape::Vector3, "com_m", "m", "", "centre of mass").measures(Quantity::Length),
+          Field::of(Shape::Inertia, "inertia_kgm2", "kg m^2", "positive definite, triangle inequality",
+                    "inertia tensor about the centre of mass; all six entries")
+              .measures(Quantity::Inertia)};
+}
+
+}  // namespace
+
+const SectionFields& getGeometryFields() {
+  static const SectionFields f{
+      "geometry",
+      {Field::number("wheelbase_m", "m", Range::Positive, "w, distance between the contact points").measures(Quantity::Length),
+       Field::number("trail_m", "m", Range::Any,
+                     "c, distance of the front contact point behind where the steer axis meets the ground; give exactly "
+                     "one of `trail_m` and `normal_trail_m`")
+           .optional()
+           .measures(Quantity::Length),
+       Field::number("normal_trail_m", "m", Range::Any, "trail x cos(steer_axis_tilt), instead of `trail_m`")
+           .optional()
+           .measures(Quantity::Length),
+       Field::number("steer_axis_tilt_deg", "deg", Range::Any,
+                     "lambda, steer axis angle from vertical (caster angle), top towards the rear")
+           .within("-90 < x < 90")
+           .measures(Quantity::Angle)}};
+  return f;
+}
+
+SectionFields makeBodyFields(const std::string& path, const std::string& what) { return {path, makeBodyFieldList(what)}; }
+
+SectionFields makeWheelFields(const std::string& path) {
+  return {path,
+          {Field::number("radius_m", "m", Range::Positive, "outer rolling radius; the wheel centre sits this high at rest")
+               .measures(Quantity::Length),
+           Field::number("crown_radius_m", "m", Range::Any, "tyre cross-section radius; 0 is a knife edge")
+               .within("0 <= x < radius_m")
+               .measures(Quantity::Length),
+           Field::number("mass_kg", "kg", Range::Positive, "mass (beside `total`: optional, a motorcycle wheel assumed)")
+               .measures(Quantity::Mass),
+           Field::number("spin_inertia_kgm2", "kg m^2", Range::Positive, "moment of inertia about the axle; at most twice the diametral")
+               .measures(Quantity::Inertia),
+           Field::number("diametral_inertia_kgm2", "kg m^2", Range::Positive, "moment of inertia about a diameter")
+               .measures(Quantity::Inertia)}};
+}
+
+const SectionFields& getSwingarmFields() {
+  static const SectionFields f = [] {
+    SectionFields s{"swingarm", {Field::of(Shape::Vector3, "pivot_m", "m", "ahead of the rear wheel centre", "pivot in D")
+                                     .measures(Quantity::Length)}};
+    for (const Field& b : makeBodyFieldList("swingarm (in S)")) s.fields.push_back(b);
+    s.fields.push_back(Field::of(Shape::Other, "compliance", "", "", "compliance plugin: `rigid`, `bending`, `torsion`, `twist`, `bending+torsion`"));
+    s.fields.push_back(Field::of(Shape::Other, "suspension", "", "", "rear suspension at the pivot (model extension `swingarm.suspension`); absent: the pivot is rigid in-plane")
+                           .optional());
+    return s;
+  }();
+  return f;
+}
+
+const std::vector<SectionFields>& getScenarioFields() {
+  static const std::vector<SectionFields> all{getGeometryFields(),
+                                              makeBodyFields("total", "whole vehicle with rider"),
+                                              makeBodyFields("rear_frame", "rear frame with rigid rider"),
+                                              makeBodyFields("front_frame", "front frame (fork, handlebar)"),
+                                              makeWheelFields("rear_wheel"),
+                                              makeWheelFields("front_wheel"),
+                                              getSwingarmFields()};
+  return all;
+}
+
+}  // namespace motostab::scenario

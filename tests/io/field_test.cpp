@@ -1,0 +1,84 @@
+// Declared fields (io/field.h): a number is read with its declared range and default; the docs
+// table prints one row per field.
+#include "io/field.h"
+
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "core/portable_random.h"
+#include "io/input_error.h"
+#include "io/number.h"
+
+namespace motostab::io {
+
+using core::PortableRandom;
+
+namespace {
+
+YamlMap makeMap(const std::string& yaml) { return YamlMap(YAML::Load(yaml), "test.yaml", "section"); }
+
+TEST(Field, NumbersAreReadWithinTheirDeclaredRange) {
+  PortableRandom rng(20261129);
+  const Field positive = Field::number("k_Nm_per_rad", "N m/rad", Range::Positive, "stiffness");
+  const Field nonNegative = Field::number("c_Nms_per_rad", "N m s/rad", Range::NonNegative, "damping");
+  const Field fraction = Field::number("share", "", Range::Fraction, "a share");
+  const Field any = Field::number("gain", "N m/rad", Range::Any, "a gain");
+  for (int i = 0; i < 20; ++i) {
+    const double v = 1e-3 + 1e3 * rng.drawUniform(), u = rng.drawUniform();
+    YamlMap ok = makeMap("{k_Nm_per_rad: " + formatNumber(v) + ", c_Nms_per_rad: 0, share: " + formatNumber(0.01 + 0.98 * u) +
+                         ", gain: " + formatNumber(-v) + "}");
+    EXPECT_EQ(readNumber(ok, positive), v);
+    EXPECT_EQ(readNumber(ok, nonNegative), 0.0);
+    EXPECT_EQ(readNumber(ok, fraction), 0.01 + 0.98 * u);
+    EXPECT_EQ(readNumber(ok, any), -v);
+    ok.finish();
+    YamlMap bad = makeMap("{k_Nm_per_rad: 0, c_Nms_per_rad: " + formatNumber(-v) + ", share: " + formatNumber(1 + u) + "}");
+    for (const Field* f : {&positive, &nonNegative, &fraction}) {
+      try {
+        readNumber(bad, *f);
+        ADD_FAILURE() << f->key << " accepted out of range";
+      } catch (const InputError& e) {
+        EXPECT_EQ(e.getLocation().key, "section." + f->key) << e.what();
+        EXPECT_EQ(e.getLocation().line, 1) << e.what();
+      }
+    }
+  }
+}
+
+TEST(Field, AnAbsentOptionalNumberTakesItsDefault) {
+  const Field smoothing = Field::number("smoothing_rad_per_s", "rad/s", Range::Positive, "").withDefault(0.1);
+  YamlMap empty = makeMap("{}");
+  EXPECT_EQ(readNumber(empty, smoothing), 0.1);
+  YamlMap given = makeMap("{smoothing_rad_per_s: 0.25}");
+  EXPECT_EQ(readNumber(given, smoothing), 0.25);
+  // Required and absent: the reader names the missing key.
+  EXPECT_THROW(readNumber(empty, Field::number("torque_Nm", "N m", Range::NonNegative, "")), InputError);
+  // Optional without a default must be asked with has() first; asking for an undeclared key is a bug.
+  EXPECT_THROW(readNumber(empty, Field::number("limit_Nm", "N m", Range::Positive, "").optional()), std::logic_error);
+  const SectionFields section{"s", {smoothing}};
+  EXPECT_THROW(section.get("smoothing"), std::logic_error);
+  EXPECT_EQ(&section.get("smoothing_rad_per_s"), &section.fields[0]);
+}
+
+TEST(Field, TableHasOneRowPerFieldWithUnitRangeAndDefault) {
+  const SectionFields section{
+      "steer_thing",
+      {Field::number("torque_Nm", "N m", Range::NonNegative, "T_f, breakaway torque"),
+       Field::number("smoothing_rad_per_s", "rad/s", Range::Positive, "omega_s").withDefault(0.1),
+       Field::number("share", "", Range::Fraction, "a share").optional(),
+       Field::number("delay_s", "s", Range::Any, "tau").within("0, or >= 1e-4").withDefault(0),
+       Field::of(Shape::Vector3, "point_m", "m", "", "a point")}};
+  const std::string expected =
+      "| key | unit | range | default | meaning |\n"
+      "|---|---|---|---|---|\n"
+      "| `torque_Nm` | N m | >= 0 | required | T_f, breakaway torque |\n"
+      "| `smoothing_rad_per_s` | rad/s | > 0 | 0.1 | omega_s |\n"
+      "| `share` | - | 0 < x < 1 | none | a share |\n"
+      "| `delay_s` | s | 0, or >= 1e-4 | 0 | tau |\n"
+      "| `point_m` [x, y, z] | m | any | required | a point |\n";
+  EXPECT_EQ(formatFieldTable(section), expected);
+}
+
+}  // namespace
+}  // namespace motostab::io
