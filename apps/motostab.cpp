@@ -29,6 +29,9 @@ int main(int argc, char** argv) {
   } catch (const CLI::ParseError& e) {
     // --help and --version exit 0; every parse or validation error is bad input: 2, not CLI11's code.
     return app.exit(e) == 0 ? 0 : 2;
+  } catch (const motostab::io::OutputError& e) {
+    std::cerr << "motostab: cannot write output: " << e.what() << "\n";
+    return 2;
   } catch (const motostab::io::InputError& e) {
     std::cerr << "motostab: input error: " << e.what() << "\n";
     return 2;

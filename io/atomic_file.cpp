@@ -9,14 +9,17 @@
 #include <random>
 #include <stdexcept>
 
+#include "io/input_error.h"
+
 namespace motostab::io {
 namespace {
 
-[[noreturn]] void failWith(const std::string& what, const std::string& tmp, int fd) {
+// OutputError at `path`: `what` failed for the system's reason (errno); the temporary is removed.
+[[noreturn]] void failWith(const std::filesystem::path& path, const std::string& what, const std::string& tmp, int fd) {
   const std::string reason = std::strerror(errno);
   if (fd >= 0) ::close(fd);
   if (!tmp.empty()) ::unlink(tmp.c_str());
-  throw std::runtime_error(what + ": " + reason);
+  throw OutputError(path.string(), what + ": " + reason);
 }
 
 // Opens a new temporary sibling exclusively (never an existing file), retrying on a name clash.
@@ -79,19 +82,23 @@ void writeFileAtomically(const std::filesystem::path& path, const std::string& c
 
 void writeFileAtomically(const std::filesystem::path& path, const std::string& content,
                          const std::function<void(const std::filesystem::path&)>& check) {
-  if (!path.parent_path().empty()) std::filesystem::create_directories(path.parent_path());
+  if (!path.parent_path().empty()) {
+    std::error_code ec;
+    std::filesystem::create_directories(path.parent_path(), ec);
+    if (ec) throw OutputError(path.string(), "cannot create its folder " + path.parent_path().string() + ": " + ec.message());
+  }
   removeKilledTemporaries(path);
   std::string tmp;
   const int fd = openFreshSibling(path, tmp);
-  if (fd < 0) failWith("cannot write " + tmp, "", -1);
+  if (fd < 0) failWith(path, "cannot create a temporary file beside it (" + tmp + ")", "", -1);
   for (std::size_t done = 0; done < content.size();) {
     const ssize_t n = ::write(fd, content.data() + done, content.size() - done);
     if (n < 0 && errno == EINTR) continue;
-    if (n <= 0) failWith("failed writing " + path.string(), tmp, fd);
+    if (n <= 0) failWith(path, "failed writing", tmp, fd);
     done += static_cast<std::size_t>(n);
   }
-  if (::fsync(fd) != 0) failWith("failed writing " + path.string(), tmp, fd);
-  if (::close(fd) != 0) failWith("failed closing " + path.string(), tmp, -1);
+  if (::fsync(fd) != 0) failWith(path, "failed writing", tmp, fd);
+  if (::close(fd) != 0) failWith(path, "failed closing", tmp, -1);
   if (check) {
     try {
       check(tmp);
@@ -100,7 +107,7 @@ void writeFileAtomically(const std::filesystem::path& path, const std::string& c
       throw;
     }
   }
-  if (::rename(tmp.c_str(), path.c_str()) != 0) failWith("cannot rename into " + path.string(), tmp, -1);
+  if (::rename(tmp.c_str(), path.c_str()) != 0) failWith(path, "cannot rename the temporary into it", tmp, -1);
   syncFolder(path.parent_path());
 }
 

@@ -10,7 +10,7 @@ namespace motostab::io {
 /// never sees a partial file: the temporary is created exclusively, written, synced to disk and closed
 /// (each step checked) before the rename, and the folder is synced after it. Creates missing parent
 /// folders. On failure the temporary is removed, an existing `path` keeps its old content, and
-/// std::runtime_error names the path and the system's reason. Temporaries of `path` left by killed
+/// OutputError (io/input_error.h) names the path and the system's reason. Temporaries of `path` left by killed
 /// writers (makeTemporarySibling's names, with a process id no longer running) are removed first.
 void writeFileAtomically(const std::filesystem::path& path, const std::string& content);
 

@@ -27,4 +27,12 @@ class InputError : public std::runtime_error {
   std::string reason_;
 };
 
+/// Output the user asked for cannot be written where they asked (a folder that is a file, no permission,
+/// a full disk): theirs to fix, as bad input (exit code 2), not a bug. The location's file is the path;
+/// the reason names the step and the system's reason.
+class OutputError : public InputError {
+ public:
+  OutputError(const std::string& path, const std::string& what) : InputError({path, 0, 0, ""}, what) {}
+};
+
 }  // namespace motostab::io

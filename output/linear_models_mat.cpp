@@ -8,6 +8,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "io/input_error.h"
 #include "output/writer_tools.h"
 
 namespace motostab::output {
@@ -69,11 +70,11 @@ void checkModels(const std::vector<LinearModel>& models) {
 // Writes the variables into a new MAT 5 file at `path`.
 void writeMatFile(const std::string& path, const std::vector<MatVar>& vars) {
   mat_t* mat = Mat_CreateVer(path.c_str(), nullptr, MAT_FT_MAT5);
-  if (!mat) throw std::runtime_error("cannot create " + path);
+  if (!mat) throw io::OutputError(path, "matio cannot create the file");
   bool ok = true;
   for (const MatVar& v : vars) ok = ok && v && Mat_VarWrite(mat, v.get(), MAT_COMPRESSION_NONE) == 0;
   Mat_Close(mat);
-  if (!ok) throw std::runtime_error("matio could not write " + path);
+  if (!ok) throw io::OutputError(path, "matio could not write the variables (a full disk?)");
 }
 
 }  // namespace

@@ -196,6 +196,19 @@ TEST(ExitCodes, CommandsWithoutAResultFailure) {
     EXPECT_EQ(none.exitCode, 2) << none.output;
     EXPECT_NE(none.output.find("--out: '" + std::string(noFile) + "' names no file"), std::string::npos) << none.output;
   }
+  // Output that cannot be written where the user asked (its folder is a file): exit 2 naming the path,
+  // never an internal error, and the file in the way untouched.
+  std::ofstream(dir / "taken") << "mine\n";
+  const std::string benchmark = std::string(MOTOSTAB_TEST_DATA_DIR) +
+                                "/measured-data/BicycleParameters/data/bicycles/Benchmark/Parameters/BenchmarkBenchmark.txt";
+  const CliRun blocked = runCli({"import", benchmark, "--format", "bicycleparameters", "--out", "taken/b.yaml"}, dir.string());
+  EXPECT_EQ(blocked.exitCode, 2) << blocked.output;
+  EXPECT_NE(blocked.output.find("cannot write output: taken/b.yaml"), std::string::npos) << blocked.output;
+  EXPECT_EQ(blocked.output.find("internal error"), std::string::npos) << blocked.output;
+  std::ifstream taken(dir / "taken");
+  std::string kept;
+  std::getline(taken, kept);
+  EXPECT_EQ(kept, "mine");
   const std::string tir = std::string(MOTOSTAB_TEST_DATA_DIR) + "/reference/MF61-sample-tir/sample_MF61_ExternData.tir";
   expectExit({"tyre", tir, "--fz", "4000", "--slip-deg", "-1:", "--camber-deg", "0"}, 2, "--slip-deg", dir);
   expectExit({"identify", "cog", kExamples + "static.yaml"}, 2, "static.yaml", dir);
