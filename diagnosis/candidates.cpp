@@ -217,8 +217,8 @@ bool isMeasured(const ScalarParameter& p, const std::vector<std::pair<std::strin
   return false;
 }
 
-// Bounds keep the vehicle physical: a parameter whose field admits positive values only (a mass, a
-// radius, a principal moment) stays above a tenth of its value; a measured parameter within
+// Bounds keep the vehicle physical: a parameter whose field keeps its sign (a mass, a radius, a trail,
+// a principal moment; io::Field::keepsSign) stays above a tenth of a positive value; a measured parameter within
 // kParameterRangeSigmas sigma (room for a gross error), one with the default sigma within 30 (already
 // wide: 30 % of a mass, 30 deg); and masses and inertias within a factor 5.
 Candidate makeParameterCandidate(const ScalarParameter& p, double sigma, bool measured = false) {

@@ -91,8 +91,12 @@ const std::vector<io::SectionFields>& getForkComplianceFields() {
   static const std::vector<io::SectionFields> f = [] {
     io::SectionFields fork{"fork_compliance", {}};
     const io::SectionFields& k = getSpringDamperFields();
-    fork.fields.push_back(Field::number(k.fields[0].key, k.fields[0].unit, k.fields[0].range, "k_b, bending stiffness about n_b"));
-    fork.fields.push_back(Field::number(k.fields[1].key, k.fields[1].unit, k.fields[1].range, "c_b, bending damping"));
+    for (const auto& [key, meaning] : {std::pair<std::string, std::string>{"stiffness_Nm_per_rad", "k_b, bending stiffness about n_b"},
+                                       {"damping_Nms_per_rad", "c_b, bending damping"}}) {
+      Field f = k.get(key);
+      f.meaning = meaning;
+      fork.fields.push_back(f);
+    }
     fork.fields.push_back(Field::number("axis_distance_along_steer_m", "m", Range::Any,
                                         "d, along the steer axis from its ground point; absent: the fork crown estimate "
                                         "2 r_F / cos lambda (the steer-axis point at the height of the tyre's top)")

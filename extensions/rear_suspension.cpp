@@ -34,10 +34,8 @@ class RearSuspension : public plugins::ExtensionModel {
 // One quantity given about the pivot (field `pivot`) or referred to the wheel (field `wheel`,
 // converted with lever^2); exactly one of the two keys.
 double readPivotOrWheel(io::YamlMap& m, const io::Field& pivot, const io::Field& wheel, double lever) {
-  const std::string path = m.getPath() + ".";
   if (m.has(pivot.key) && m.has(wheel.key)) m.fail(wheel.key, "give only one of " + pivot.key + " and " + wheel.key);
-  if (!m.has(pivot.key) && !m.has(wheel.key))
-    m.fail("", "missing key '" + path + wheel.key + "' (or '" + path + pivot.key + "')");
+  if (!m.has(pivot.key) && !m.has(wheel.key)) m.failMissing(wheel.key, pivot.key);
   return m.has(pivot.key) ? io::readNumber(m, pivot) : io::readNumber(m, wheel) * lever * lever;
 }
 

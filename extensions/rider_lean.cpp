@@ -51,8 +51,8 @@ const io::SectionFields& getRiderLeanFields() {
                         {Field::number("hinge_height_m", "m", Range::Positive,
                                        "h, height of the hinge axis above the ground (hip / saddle)")
                              .measures(Quantity::Length)}};
-    for (const Field& b : scenario::makeBodyFields("", "upper body (in D; CoM in the plane of symmetry, y = 0)").fields)
-      s.fields.push_back(b);
+    for (const Field& b : scenario::makeBodyFields("", "upper body (in D)").fields)
+      s.fields.push_back(b.key == "com_m" ? b.inPlaneOfSymmetry() : b);
     for (const Field& k : getSpringDamperFields().fields) s.fields.push_back(k.measures(Quantity::Other));
     return s;
   }();

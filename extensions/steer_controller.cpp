@@ -135,7 +135,7 @@ void readSchedule(io::YamlMap m, SteerControllerParams& c) {
   if (m.has("below_mps") == m.has("table")) m.fail("", "give exactly one of below_mps and table");
   if (m.has("below_mps")) {
     c.schedule = SteerControllerParams::Schedule::Below;
-    c.scheduleBelow = io::readNumber(m, getSteerControllerFields()[1].get("below_mps"));
+    c.scheduleBelow = io::readNumber(m, getSteerControllerFields().back().get("below_mps"));
   } else {
     c.schedule = SteerControllerParams::Schedule::Table;
     const YAML::Node t = m.getNode()["table"];
@@ -160,8 +160,12 @@ void readSchedule(io::YamlMap m, SteerControllerParams& c) {
 }  // namespace
 
 const std::vector<std::string>& getSteerControllerScalarKeys() {
-  static const std::vector<std::string> keys{"roll_angle_Nm_per_rad", "roll_rate_Nms_per_rad", "steer_angle_Nm_per_rad",
-                                             "steer_rate_Nms_per_rad", "gain_factor", "delay_s", "torque_limit_Nm"};
+  static const std::vector<std::string> keys = [] {
+    std::vector<std::string> k;
+    for (const io::Field& f : getSteerControllerFields().front().fields)
+      if (f.shape == io::Shape::Number) k.push_back(f.key);
+    return k;
+  }();
   return keys;
 }
 

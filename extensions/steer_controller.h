@@ -57,7 +57,7 @@ struct SteerControllerParams {
   double torqueLimit = 0;     ///< N m (> 0 when given; 0: none): |T| <= limit
 };
 
-/// The section's declared fields: `steer_controller` and its `schedule`.
+/// The section's declared fields: `steer_controller` and its `schedule` (first and last).
 const std::vector<io::SectionFields>& getSteerControllerFields();
 
 /// Reads and checks the section (the caller finishes `m`). The table needs at least two rows with

@@ -12,6 +12,7 @@ Field Field::number(std::string key, std::string unit, Range range, std::string 
   f.key = std::move(key);
   f.unit = std::move(unit);
   f.range = range;
+  f.keepsSign = range == Range::Positive || range == Range::Fraction;
   f.meaning = std::move(meaning);
   return f;
 }
@@ -34,6 +35,20 @@ Field Field::withDefault(double value) const {
 Field Field::optional() const {
   Field f = *this;
   f.required = false;
+  return f;
+}
+
+Field Field::keepingSign() const {
+  Field f = *this;
+  f.keepsSign = true;
+  return f;
+}
+
+Field Field::inPlaneOfSymmetry() const {
+  Field f = *this;
+  f.inPlane = true;
+  f.range = Range::Custom;
+  f.rangeNote = "y = 0";
   return f;
 }
 
@@ -67,8 +82,8 @@ double readNumber(YamlMap& m, const Field& f) {
     case Range::Positive: return m.getPositive(f.key);
     case Range::NonNegative: return m.getNonNegative(f.key);
     case Range::Fraction: {
-      const double v = m.getDouble(f.key);
-      if (!(v > 0 && v < 1)) m.fail(f.key, "must lie strictly between 0 and 1");
+      const double v = m.getPositive(f.key);
+      if (!(v < 1)) m.fail(f.key, "must lie strictly between 0 and 1");
       return v;
     }
     case Range::Any:

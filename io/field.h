@@ -2,7 +2,7 @@
 // Declared fields of a scenario section, in the spirit of Drake's Serialize(Archive*): each key is
 // declared once, with its unit, its range, whether it is a measured property of the vehicle (and what
 // it measures) and its meaning. The section's reader reads through the declaration, the parameter list
-// that uncertainty studies and diagnosis vary takes the measured fields with their quantity, and the
+// that diagnosis varies takes the measured fields with their quantity, and the
 // scenario-format tables of docs/scenario-format.md are printed from it (a test compares them).
 #include <array>
 #include <string>
@@ -12,8 +12,9 @@
 
 namespace motostab::io {
 
-/// What a measured field measures: sets the default standard deviation of an uncertainty study
-/// (10 mm for lengths, 1 degree for angles, 10 % otherwise) and the scale of inertia entries.
+/// What a measured field measures: sets the default standard deviation diagnosis assumes for a
+/// parameter the scenario gives no uncertainty for (10 mm for lengths, 1 degree for angles, 10 %
+/// otherwise) and the scale of inertia entries.
 enum class Quantity { Length, Mass, Inertia, Angle, Other };
 
 /// The values a number admits (checked by the reader, printed in the docs tables).
@@ -43,8 +44,10 @@ struct Field {
   bool required = true;
   double fallback = 0;    ///< the default of an optional number
   bool hasFallback = false;
-  bool measured = false;  ///< a measured property of the vehicle: listed for uncertainty and diagnosis
+  bool measured = false;  ///< a measured property of the vehicle: listed for diagnosis and the Python module
   Quantity quantity = Quantity::Other;
+  bool keepsSign = false;  ///< a fit keeps a positive value above a tenth of it (Range::Positive, or set)
+  bool inPlane = false;    ///< an [x, y, z] point whose y must be 0: its y is no parameter
   std::string meaning;
 
   /// A number: key, unit, range, meaning.
@@ -59,6 +62,10 @@ struct Field {
   Field within(std::string note) const;
   /// The same field, a measured property of the vehicle of this quantity.
   Field measures(Quantity q) const;
+  /// The same field, whose fitted value keeps the sign of a positive given value (a trail, a radius).
+  Field keepingSign() const;
+  /// The same [x, y, z] field, a point in the plane of symmetry (y = 0, checked by the reader).
+  Field inPlaneOfSymmetry() const;
 };
 
 /// The declared fields of one section, `path` as --set addresses it ("rider_lean", "swingarm.suspension").

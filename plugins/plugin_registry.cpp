@@ -131,7 +131,12 @@ void PluginRegistry::addSectionFields(io::SectionFields fields) {
 
 std::vector<io::SectionFields> listSectionFields(const PluginRegistry& registry) {
   std::vector<io::SectionFields> out = scenario::getScenarioFields();
-  for (const io::SectionFields& f : registry.getSectionFields()) out.push_back(f);
+  for (const io::SectionFields& f : registry.getSectionFields()) {
+    // A plugin reading the rest of a loader's section (the swingarm models) adds its keys to it.
+    auto same = std::find_if(out.begin(), out.end(), [&](const io::SectionFields& s) { return s.path == f.path; });
+    if (same == out.end()) out.push_back(f);
+    else same->fields.insert(same->fields.end(), f.fields.begin(), f.fields.end());
+  }
   return out;
 }
 

@@ -17,7 +17,8 @@ VehicleLayout makeVehicleLayout(const scenario::Scenario& scenario);
 
 class PluginRegistry;
 
-/// Every declared section: the loader's own (scenario/scenario_fields.h), then the plugins' of `registry`.
+/// Every declared section: the loader's own (scenario/scenario_fields.h), then the plugins' of
+/// `registry`; a plugin's fields of a loader's section (the swingarm models') join that section.
 std::vector<io::SectionFields> listSectionFields(const PluginRegistry& registry);
 
 /// Plugins registered by name. Names are unique across built-in and loaded plugins. A registry is a

@@ -27,10 +27,11 @@ void collect(const YAML::Node& node, const std::string& path, const io::Field& f
     if (readFinite(n, v)) out.push_back({p, v, f.quantity, std::abs(v), positive});
   };
   switch (f.shape) {
-    case io::Shape::Number: add(node, path, f.range == io::Range::Positive); break;
+    case io::Shape::Number: add(node, path, f.keepsSign); break;
     case io::Shape::Vector3:
       if (node.IsSequence())
-        for (size_t i = 0; i < node.size(); ++i) add(node[i], path + "[" + std::to_string(i) + "]", false);
+        for (size_t i = 0; i < node.size(); ++i)
+          if (!(f.inPlane && i == 1)) add(node[i], path + "[" + std::to_string(i) + "]", false);
       break;
     case io::Shape::Inertia: {
       if (!node.IsMap()) break;

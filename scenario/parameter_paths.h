@@ -22,7 +22,8 @@ struct ScalarParameter {
   /// the largest principal-axis (diagonal) entry of the same tensor (a zero product of inertia still
   /// has a scale), in the key's unit.
   double scale = 0;
-  /// Its field admits positive values only (io::Range::Positive; an inertia tensor's diagonal entries).
+  /// A fit keeps its sign: its field admits positive values only or keeps its sign (io::Field::keepsSign;
+  /// an inertia tensor's diagonal entries).
   bool positive = false;
 };
 

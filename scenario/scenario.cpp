@@ -70,7 +70,7 @@ WheelSpec readWheel(YamlMap m, bool front, std::vector<AssumedValue>* assumed) {
   };
   WheelSpec w;
   w.radius = readNumber(m, f.get("radius_m"));
-  w.crownRadius = m.getNonNegative("crown_radius_m");
+  w.crownRadius = m.getNonNegative(f.get("crown_radius_m").key);
   if (w.crownRadius >= w.radius) m.fail("crown_radius_m", "must be smaller than radius_m");
   w.mass = readOrAssume("mass_kg", d.mass, "kg");
   w.axialInertia = readOrAssume("spin_inertia_kgm2", d.axialInertia, "kg m^2");
@@ -326,6 +326,8 @@ Scenario readScenario(const std::string& file, YamlMap& m) {
     if (!section.IsMap())
       m.fail(key, "expected a mapping: a key the scenario format does not define is a model-extension section "
                   "(steer_damper, rider_lean, ...), a mapping of its own keys");
+    if (key.find('.') != std::string::npos)
+      m.fail(key, "a section's name has no '.': a section inside another is written nested (swingarm: {suspension: ...})");
     s.extensions.push_back({key, section, file, key, m.locate(key)});
     m.markUsed(key);
   }

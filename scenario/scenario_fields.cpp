@@ -28,9 +28,11 @@ const SectionFields& getGeometryFields() {
                      "c, distance of the front contact point behind where the steer axis meets the ground; give exactly "
                      "one of `trail_m` and `normal_trail_m`")
            .optional()
+           .keepingSign()
            .measures(Quantity::Length),
        Field::number("normal_trail_m", "m", Range::Any, "trail x cos(steer_axis_tilt), instead of `trail_m`")
            .optional()
+           .keepingSign()
            .measures(Quantity::Length),
        Field::number("steer_axis_tilt_deg", "deg", Range::Any,
                      "lambda, steer axis angle from vertical (caster angle), top towards the rear")
@@ -41,18 +43,33 @@ const SectionFields& getGeometryFields() {
 
 SectionFields makeBodyFields(const std::string& path, const std::string& what) { return {path, makeBodyFieldList(what)}; }
 
+namespace {
+
+// The whole vehicle: its centre of mass between the contact points (else a wheel load is negative).
+SectionFields makeTotalFields() {
+  SectionFields s = makeBodyFields("total", "whole vehicle with rider");
+  for (Field& f : s.fields)
+    if (f.key == "com_m") f = f.within("0 < x < wheelbase_m");
+  return s;
+}
+
+}  // namespace
+
 SectionFields makeWheelFields(const std::string& path) {
   return {path,
           {Field::number("radius_m", "m", Range::Positive, "outer rolling radius; the wheel centre sits this high at rest")
                .measures(Quantity::Length),
            Field::number("crown_radius_m", "m", Range::Any, "tyre cross-section radius; 0 is a knife edge")
                .within("0 <= x < radius_m")
+               .keepingSign()
                .measures(Quantity::Length),
            Field::number("mass_kg", "kg", Range::Positive, "mass (beside `total`: optional, a motorcycle wheel assumed)")
                .measures(Quantity::Mass),
-           Field::number("spin_inertia_kgm2", "kg m^2", Range::Positive, "moment of inertia about the axle; at most twice the diametral")
+           Field::number("spin_inertia_kgm2", "kg m^2", Range::Positive,
+                         "moment of inertia about the axle, at most twice the diametral (beside `total`: optional, as the mass)")
                .measures(Quantity::Inertia),
-           Field::number("diametral_inertia_kgm2", "kg m^2", Range::Positive, "moment of inertia about a diameter")
+           Field::number("diametral_inertia_kgm2", "kg m^2", Range::Positive,
+                         "moment of inertia about a diameter (beside `total`: optional, as the mass)")
                .measures(Quantity::Inertia)}};
 }
 
@@ -71,7 +88,7 @@ const SectionFields& getSwingarmFields() {
 
 const std::vector<SectionFields>& getScenarioFields() {
   static const std::vector<SectionFields> all{getGeometryFields(),
-                                              makeBodyFields("total", "whole vehicle with rider"),
+                                              makeTotalFields(),
                                               makeBodyFields("rear_frame", "rear frame with rigid rider"),
                                               makeBodyFields("front_frame", "front frame (fork, handlebar)"),
                                               makeWheelFields("rear_wheel"),

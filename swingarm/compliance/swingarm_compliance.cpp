@@ -135,12 +135,39 @@ class CompliantSwingarm : public SwingarmModel {
   std::vector<std::pair<std::string, AxisSpec>> axes_;
 };
 
+}  // namespace
+
+const io::SectionFields& getSwingarmModelFields() {
+  using io::Field;
+  using io::Range;
+  using io::Shape;
+  const std::string axis =
+      " axis: `{arm_m, beta_deg}` (seed eq. 2-10, Fig. 8) or `{point_m, direction}` in S, with `stiffness_Nm_per_rad`, "
+      "`damping_Nms_per_rad` and optional `*_stderr`; every axis present is validated, the model uses those it names";
+  static const io::SectionFields f{
+      "swingarm",
+      {Field::of(Shape::Other, "bending", "", "", "bending" + axis).optional(),
+       Field::of(Shape::Other, "torsion", "", "", "torsion" + axis).optional(),
+       Field::of(Shape::Other, "twist", "", "", "twist" + axis).optional(),
+       Field::number("stiffness_scale", "", Range::Positive, "factor on every axis stiffness, for sensitivity studies (seed Fig. 11: 0.5)")
+           .withDefault(1),
+       Field::number("damping_scale", "", Range::NonNegative,
+                     "factor on every axis damping, for sensitivity studies (seed Fig. 11: 1/sqrt 2)")
+           .withDefault(1),
+       Field::of(Shape::Other, "axes_from", "", "", "a file written by `motostab identify swingarm` whose axes are used where "
+                                                  "the section gives none (path relative to the scenario)")
+           .optional(),
+       Field::of(Shape::Other, "identification", "", "", "provenance of identified axes, not read").optional()}};
+  return f;
+}
+
+namespace {
+
 // Every axis mapping present is validated; the model uses those it names.
 SwingarmModelFactory makeFactory(std::vector<std::string> axisNames) {
   return [axisNames](YamlMap& m) -> std::unique_ptr<SwingarmModel> {
-    const double kScale = m.getDouble("stiffness_scale", 1.0), cScale = m.getDouble("damping_scale", 1.0);
-    if (!(kScale > 0)) m.fail("stiffness_scale", "must be positive");
-    if (cScale < 0) m.fail("damping_scale", "must not be negative");
+    const io::SectionFields& f = getSwingarmModelFields();
+    const double kScale = io::readNumber(m, f.get("stiffness_scale")), cScale = io::readNumber(m, f.get("damping_scale"));
     std::vector<std::pair<std::string, AxisSpec>> present;
     for (const char* key : {"bending", "torsion", "twist"})
       if (m.has(key)) present.push_back({key, readAxis(m.getMap(key), kScale, cScale)});
@@ -171,6 +198,7 @@ SwingarmModelFactory makeFactory(std::vector<std::string> axisNames) {
 }  // namespace
 
 void registerSwingarmModels(PluginRegistrar& registry) {
+  registry.addSectionFields(getSwingarmModelFields());
   registry.addSwingarmModel("rigid", makeFactory({}));
   registry.addSwingarmModel("bending", makeFactory({"bending"}));
   registry.addSwingarmModel("torsion", makeFactory({"torsion"}));

@@ -21,4 +21,8 @@ ComplianceAxis makeAxisFromArm(const SimTK::Vec3& p_SH, double arm, double beta,
 /// Registers rigid, bending, torsion, twist and bending+torsion.
 void registerSwingarmModels(plugins::PluginRegistrar& registry);
 
+/// The `swingarm` keys the compliance models read (the loader reads pivot, body and `compliance`):
+/// the axes, the stiffness and damping scales, `axes_from`.
+const io::SectionFields& getSwingarmModelFields();
+
 }  // namespace motostab::swingarm

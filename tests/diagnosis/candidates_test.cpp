@@ -8,6 +8,7 @@
 #include "tests/support/extension_sections.h"
 #include "vehicle/vehicle_model.h"
 #include "diagnosis/candidates.h"
+#include "plugins/builtin.h"
 
 #include <algorithm>
 #include <cmath>
@@ -179,6 +180,58 @@ TEST(Candidates, AnExistingRiderLeanHasItsStiffnessAndDampingAsParameters) {
     EXPECT_LT(c->parameters[0].lower, c->parameters[0].start);
     EXPECT_GT(c->parameters[0].upper, c->parameters[0].start);
   }
+}
+
+}  // namespace
+}  // namespace motostab::diagnosis
+
+namespace motostab::diagnosis {
+namespace {
+
+// Where `path` (a --set key path) lies in the declared sections: the failure message if it names a
+// key a declared section does not declare, "" if it is declared or in a plugin's own undeclared
+// mapping (swingarm.bending.*, contact.*).
+std::string checkDeclared(const std::vector<io::SectionFields>& sections, const std::string& path) {
+  const io::SectionFields* in = nullptr;
+  for (const io::SectionFields& s : sections)
+    if (path.rfind(s.path + ".", 0) == 0 && (!in || s.path.size() > in->path.size())) in = &s;
+  if (!in) return "";
+  const std::string rest = path.substr(in->path.size() + 1);
+  const size_t end = rest.find_first_of(".[");
+  const std::string key = rest.substr(0, end);
+  for (const io::Field& f : in->fields)
+    if (f.key == key) return "";
+  return end == std::string::npos ? path + ": section " + in->path + " declares no key " + key : "";
+}
+
+// Every key a candidate writes (its parameters' paths and the sections its fixed changes switch on) is
+// one its section declares, so the extended scenarios diagnosis writes read back with the declared
+// meaning, on motorcycles, bicycles and a controlled bicycle.
+TEST(Candidates, WrittenKeysAreDeclaredFields) {
+  const std::vector<io::SectionFields> sections = plugins::listSectionFields(plugins::makeBuiltinRegistry());
+  int checked = 0;
+  for (const char* name : {"enduro", "supersport", "whipple-benchmark", "balance-assist", "kooijman-silvercity"}) {
+    const std::string file = kDir + "/scenarios/" + name + ".yaml";
+    for (const Candidate& c : listCandidates(makeScenarioTree(file, {}), {})) {
+      for (const CandidateParameter& p : c.parameters) {
+        EXPECT_EQ(checkDeclared(sections, p.path), "") << name << " " << c.name;
+        for (const std::string& also : p.alsoPaths) EXPECT_EQ(checkDeclared(sections, also), "") << name << " " << c.name;
+        ++checked;
+      }
+      for (const scenario::ParameterOverride& o : c.fixedOverrides.getItems()) {
+        EXPECT_EQ(checkDeclared(sections, o.path), "") << name << " " << c.name;
+        if (const YAML::Node* node = std::get_if<YAML::Node>(&o.value); node && node->IsMap())
+          for (const auto& kv : *node) {
+            EXPECT_EQ(checkDeclared(sections, o.path + "." + kv.first.as<std::string>()), "") << name << " " << c.name;
+            ++checked;
+          }
+      }
+    }
+  }
+  EXPECT_GT(checked, 100);
+  // The check itself: an undeclared key of a declared section is named.
+  EXPECT_NE(checkDeclared(sections, "steer_damper.damping_Ns_per_rad"), "");
+  EXPECT_EQ(checkDeclared(sections, "rider_lean.inertia_kgm2.xz"), "");
 }
 
 }  // namespace

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "core/portable_random.h"
+#include "tests/support/temp_dir.h"
 #include "io/field.h"
 #include "io/number.h"
 #include "plugins/builtin.h"
@@ -109,6 +110,15 @@ TEST(DeclaredFields, ReadersRefuseValuesOutsideTheDeclaredRange) {
       ++checked;
     }
   EXPECT_GE(checked, 30);  // the core sections' and every extension's ranged numbers
+  // A dotted top-level key is no section name (the rear suspension is written inside the swingarm).
+  const std::string dotted = (makeTempDir("declared_fields") / "dotted.yaml").string();
+  std::ofstream(dotted) << readText(kEnduro) << "\"swingarm.suspension\": {wheel_rate_N_per_m: 2.0e4, damping_Ns_per_m: 1.0e3}\n";
+  try {
+    const VehicleModel model(loadScenario(dotted));
+    ADD_FAILURE() << "a dotted top-level section was accepted";
+  } catch (const io::InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("no '.'"), std::string::npos) << e.what();
+  }
 }
 
 // The parameter list is the measured fields present, with their declared quantity; fields that are
@@ -121,7 +131,16 @@ TEST(DeclaredFields, ParameterListIsTheMeasuredFields) {
   EXPECT_EQ(listed.at("rider_arms.grip_half_width_m"), io::Quantity::Length);
   EXPECT_EQ(listed.at("rider_arms.inertia_kgm2"), io::Quantity::Inertia);
   EXPECT_EQ(listed.at("rider_lean.inertia_kgm2.xz"), io::Quantity::Inertia);
-  EXPECT_EQ(listed.at("rider_lean.com_m[1]"), io::Quantity::Length);
+  EXPECT_EQ(listed.at("rider_lean.com_m[2]"), io::Quantity::Length);
+  EXPECT_EQ(listed.count("rider_lean.com_m[1]"), 0u);  // in the plane of symmetry: y is 0, no parameter
+  // A fit keeps the sign of masses, radii, trails and positive settings, not of a product of inertia.
+  std::map<std::string, bool> positive;
+  for (const auto& p : scenario::listScalarParameters(tree, sections)) positive[p.path] = p.positive;
+  for (const char* kept : {"total.mass_kg", "geometry.normal_trail_m", "rear_wheel.crown_radius_m", "rider_lean.inertia_kgm2.xx",
+                           "rider_lean.stiffness_Nm_per_rad"})
+    EXPECT_TRUE(positive.at(kept)) << kept;
+  for (const char* free : {"rider_lean.inertia_kgm2.xz", "total.com_m[0]", "steer_controller.roll_angle_Nm_per_rad"})
+    EXPECT_FALSE(positive.at(free)) << free;
   EXPECT_EQ(listed.at("steer_controller.schedule.below_mps"), io::Quantity::Other);
   EXPECT_EQ(listed.at("steer_controller.delay_s"), io::Quantity::Other);
   EXPECT_EQ(listed.at("geometry.steer_axis_tilt_deg"), io::Quantity::Angle);
