@@ -214,7 +214,7 @@ class PluginRegistrar {
   /// Registers a model extension under the name of its scenario section (e.g. "steer_damper").
   virtual void addExtensionModel(const std::string& name, ExtensionModelFactory factory) = 0;
   /// Declares the fields of a section a plugin reads (io/field.h): its measured fields join the
-  /// parameter list that uncertainty studies and diagnosis vary, and docs tables print from it.
+  /// parameter list diagnosis varies, and `motostab fields` prints its docs table.
   virtual void addSectionFields(io::SectionFields fields) = 0;
 };
 
