@@ -4,6 +4,8 @@
 // published linear equations).
 #include <gtest/gtest.h>
 
+#include "tests/support/text_file.h"
+
 #include <Eigen/Eigenvalues>
 #include <cmath>
 #include <fstream>
@@ -33,13 +35,6 @@ const std::string kDir = MOTOSTAB_SOURCE_DIR;
 const std::string kKooijman = kDir + "/scenarios/kooijman-silvercity.yaml";
 const std::string kExample = kDir + "/examples/diagnosis/kooijman2008.yaml";
 const std::string kBenchmark = kDir + "/scenarios/whipple-benchmark.yaml";
-
-std::string readText(const std::string& path) {
-  std::ifstream in(path);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
 
 // The scenario text with the line `  key: old` (first occurrence after `section:`) replaced.
 std::string replaceValue(std::string text, const std::string& section, const std::string& key, double value) {

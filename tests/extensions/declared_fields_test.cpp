@@ -3,6 +3,8 @@
 // takes the measured fields with their declared quantity.
 #include <gtest/gtest.h>
 
+#include "tests/support/text_file.h"
+
 #include <fstream>
 #include <map>
 #include <set>
@@ -52,13 +54,6 @@ const std::vector<std::string> kEverySection{
 YAML::Node makeExtendedTree() { return scenario::ScenarioSource(kEnduro).makeTree(scenario::ParameterOverrides(kEverySection)); }
 
 std::vector<SectionFields> getDeclaredSections() { return plugins::listSectionFields(plugins::makeBuiltinRegistry()); }
-
-std::string readText(const std::string& path) {
-  std::ifstream in(path);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
 
 // docs/scenario-format.md holds each declared section's table verbatim (`motostab fields` prints
 // them), and no table of that form without a declaration.

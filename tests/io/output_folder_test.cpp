@@ -2,6 +2,8 @@
 // outputs, never a mix.
 #include <gtest/gtest.h>
 
+#include "tests/support/text_file.h"
+
 #include <unistd.h>
 
 #include <filesystem>
@@ -43,13 +45,6 @@ void makeEarlierOutputs(const fs::path& folder) {
 std::set<std::string> withMarker(std::set<std::string> names) {
   names.insert(kOutputMarker);
   return names;
-}
-
-std::string readText(const fs::path& p) {
-  std::ifstream in(p);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
 }
 
 TEST(OutputFolder, CommitReplacesTheOldFolderAsAWhole) {

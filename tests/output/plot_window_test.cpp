@@ -4,6 +4,8 @@
 // escaped enhanced text. Spectra are drawn at random; the expectations are the rule itself.
 #include <gtest/gtest.h>
 
+#include "tests/support/text_file.h"
+
 #include <algorithm>
 #include <cmath>
 #include <complex>
@@ -31,13 +33,6 @@ using core::PortableRandom;
 using cd = std::complex<double>;
 
 const std::vector<ModeLabel> kNamed{ModeLabel::Weave, ModeLabel::Wobble, ModeLabel::Capsize, ModeLabel::Castor};
-
-std::string readText(const std::filesystem::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream os;
-  os << in.rdbuf();
-  return os.str();
-}
 
 bool hasGnuplot() { return std::system("gnuplot --version >/dev/null 2>&1") == 0; }
 

@@ -5,6 +5,8 @@
 // and the range between them shaded. The script is parsed back; the images are rendered by gnuplot.
 #include <gtest/gtest.h>
 
+#include "tests/support/text_file.h"
+
 #include <algorithm>
 #include <complex>
 #include <cstdlib>
@@ -39,13 +41,6 @@ using cd = std::complex<double>;
 
 constexpr double kWeaveSpeed = 4.29238253634111;    // Meijaard et al. (2007), Table 2
 constexpr double kCapsizeSpeed = 6.02426201538837;  // Meijaard et al. (2007), Table 2
-
-std::string readText(const std::filesystem::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream os;
-  os << in.rdbuf();
-  return os.str();
-}
 
 struct Marks {
   std::vector<std::pair<std::string, double>> lines;  // label text, speed of each vertical line

@@ -3,6 +3,8 @@
 // on every bundled scenario.
 #include <gtest/gtest.h>
 
+#include "tests/support/text_file.h"
+
 #include <algorithm>
 #include <cmath>
 #include <iomanip>
@@ -22,13 +24,6 @@ using core::PortableRandom;
 namespace {
 
 const std::string kDir = std::string(MOTOSTAB_SOURCE_DIR) + "/scenarios/";
-
-std::string readText(const std::string& path) {
-  std::ifstream in(path);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
 
 // `base` with the first `from` replaced by `to`, loaded; `line` receives the line holding `to`.
 Scenario loadVariant(const std::string& base, const std::string& from, const std::string& to, int& line) {

@@ -1,6 +1,8 @@
 // Strict scenario loading: each class of bad input has its own error naming file, line, column and key.
 #include <gtest/gtest.h>
 
+#include "tests/support/text_file.h"
+
 #include <filesystem>
 #include <fstream>
 #include <functional>
@@ -19,13 +21,6 @@ using vehicle::VehicleModel;
 namespace {
 
 const std::string kScenario = std::string(MOTOSTAB_SOURCE_DIR) + "/scenarios/whipple-benchmark.yaml";
-
-std::string readText(const std::string& path) {
-  std::ifstream in(path);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
 
 const std::string kEnduro = std::string(MOTOSTAB_SOURCE_DIR) + "/scenarios/enduro.yaml";
 

@@ -3,6 +3,8 @@
 // BicycleParameters file (Moore et al. 2010).
 #include <gtest/gtest.h>
 
+#include "tests/support/text_file.h"
+
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -21,13 +23,6 @@ using core::PortableRandom;
 using io::InputError;
 
 namespace {
-
-std::string readText(const std::string& p) {
-  std::ifstream in(p);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
 
 // The bundled scenario with `section` appended; the section starts at line (returned .second).
 std::pair<std::string, int> writeWith(const std::string& bundled, const std::string& section, const std::string& tag) {

@@ -2,6 +2,8 @@
 // MF61-sample-tir) and files broken on purpose, each an InputError naming file:line and the key.
 #include <gtest/gtest.h>
 
+#include "tests/support/text_file.h"
+
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -21,13 +23,6 @@ using io::InputError;
 namespace {
 
 const std::string kSample = std::string(MOTOSTAB_TEST_DATA_DIR) + "/reference/MF61-sample-tir/sample_MF61_ExternData.tir";
-
-std::string readText(const std::string& path) {
-  std::ifstream in(path);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
 
 // The sample with the first line matching `pattern` replaced by `replacement` (the whole line).
 std::string editLine(const std::string& pattern, const std::string& replacement) {
