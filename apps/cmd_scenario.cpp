@@ -64,7 +64,7 @@ void registerScenarioCommands(CLI::App& app) {
 
   auto sections = std::make_shared<std::vector<std::string>>();
   CLI::App* f = app.add_subcommand("fields", "List the declared fields of scenario sections: key, unit, range, default, meaning");
-  f->add_option("section", *sections, "Sections to list, as key paths (geometry, rider_lean, swingarm.suspension); default all");
+  f->add_option("section", *sections, "Sections to list, as key paths (geometry, rider_lean, swingarm.suspension; \"\" the top level); default all");
   f->callback([sections]() {
     const std::vector<io::SectionFields> all = plugins::listSectionFields(plugins::makeBuiltinRegistry());
     for (const std::string& name : *sections)
@@ -75,7 +75,7 @@ void registerScenarioCommands(CLI::App& app) {
       }
     for (const io::SectionFields& s : all)
       if (sections->empty() || std::find(sections->begin(), sections->end(), s.path) != sections->end())
-        std::cout << "Section `" << s.path << "`\n\n" << io::formatFieldTable(s) << "\n";
+        std::cout << io::formatSectionHeading(s) << "\n\n" << io::formatFieldTable(s) << "\n";
   });
 
   struct ImportArgs {

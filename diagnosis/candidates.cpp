@@ -368,9 +368,15 @@ void addTyreCarcassCandidate(const YAML::Node& tree, std::vector<Candidate>& out
 
 }  // namespace
 
+const std::vector<io::SectionFields>& getBuiltinSectionFields() {
+  static const std::vector<io::SectionFields> sections = plugins::listSectionFields(plugins::makeBuiltinRegistry());
+  return sections;
+}
+
 std::vector<Candidate> listCandidates(const YAML::Node& tree,
                                       const std::vector<std::pair<std::string, double>>& uncertainty,
-                                      std::vector<std::string>* unavailable, const SteerRateAmplitude& steerRate) {
+                                      std::vector<std::string>* unavailable, const SteerRateAmplitude& steerRate,
+                                      const std::vector<io::SectionFields>& sections) {
   std::vector<Candidate> out;
   std::vector<std::string> none;
   if (!tree["steer_damper"]) out.push_back(makeSteerDamper(tree));
@@ -386,7 +392,7 @@ std::vector<Candidate> listCandidates(const YAML::Node& tree,
   addSteerControllerCandidates(tree, out);
   addTyreScalingCandidates(tree, out);
   addPhysicalCandidates(tree, out);
-  for (const ScalarParameter& p : listScalarParameters(tree, plugins::listSectionFields(plugins::makeBuiltinRegistry()))) {
+  for (const ScalarParameter& p : listScalarParameters(tree, sections)) {
     const double sigma = findSigma(p, uncertainty);
     if (sigma > 0) out.push_back(makeParameterCandidate(p, sigma, isMeasured(p, uncertainty)));
     if (sigma > 0) out.back().parameters[0].priorMeasured = isMeasured(p, uncertainty);

@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "io/field.h"
 #include "scenario/parameter_overrides.h"
 
 namespace motostab::diagnosis {
@@ -51,6 +52,9 @@ struct Candidate {
   std::string sameModelAs = {};
 };
 
+/// The declared sections of the built-in plugins (plugins::listSectionFields of the built-in registry).
+const std::vector<io::SectionFields>& getBuiltinSectionFields();
+
 /// Every candidate the scenario (its YAML tree after base overrides, and the measured parameters'
 /// uncertainties given as path -> sigma) admits: model extensions this build knows, swingarm
 /// compliance variants for scenarios with a swingarm, the bicycle tyre preset (tyre_slip) for
@@ -67,10 +71,14 @@ struct Candidate {
 /// factor) for scenarios with relaxation_linear tyres; `tyre_carcass` (their relaxation lengths from
 /// the load and a lateral carcass stiffness whose compliance grows with speed, the published speed
 /// dependence times one factor, candidates.cpp) for such tyres with constant relaxation lengths.
+/// The parameter candidates are the measured fields of `sections` (the declarations of the scenario's
+/// registry, plugins::makeScenarioRegistry, so that a plugin library's measured fields are varied too;
+/// by default the built-in ones).
 std::vector<Candidate> listCandidates(const YAML::Node& scenarioTree,
                                       const std::vector<std::pair<std::string, double>>& uncertainty,
                                       std::vector<std::string>* unavailable = nullptr,
-                                      const SteerRateAmplitude& steerRate = {});
+                                      const SteerRateAmplitude& steerRate = {},
+                                      const std::vector<io::SectionFields>& sections = getBuiltinSectionFields());
 
 /// Steer inertia the `rider_arms` candidate adds with the hands on the bars: Sharp (1994), front-frame
 /// steer inertia 0.71 kg m^2 hands off, 0.91 hands on.

@@ -56,8 +56,9 @@ std::vector<std::pair<std::string, double>> getUncertainty(const ScenarioSource&
 // are not one value and go to `unavailable`.
 std::vector<Candidate> selectCandidates(const ScenarioSource& source, const MeasuredData& data, const Predictor& nominal,
                                         const DiagnosisOptions& opt, std::vector<std::string>& unavailable) {
+  const auto sections = plugins::listSectionFields(plugins::makeScenarioRegistry(source.load(opt.overrides)));
   std::vector<Candidate> listed = listCandidates(source.makeTree(opt.overrides), getUncertainty(source, opt), &unavailable,
-                                                 findSteerRateAmplitude(data, nominal));
+                                                 findSteerRateAmplitude(data, nominal), sections);
   for (const std::string& path : getControllerPaths(data))
     for (auto it = listed.begin(); it != listed.end();)
       if (it->name == "parameter:" + path) {

@@ -72,6 +72,8 @@ const Field& SectionFields::get(const std::string& key) const {
   throw std::logic_error("section " + path + " declares no field " + key);
 }
 
+std::string SectionFields::getKeyPath(const std::string& key) const { return path.empty() ? key : path + "." + key; }
+
 double readNumber(YamlMap& m, const Field& f) {
   if (f.shape != Shape::Number) throw std::logic_error(f.key + " is not a number field");
   if (!f.required && !m.has(f.key)) {
@@ -106,6 +108,24 @@ std::string formatRange(const Field& f) {
     case Range::Custom: return f.rangeNote;
   }
   return "";
+}
+
+bool SectionFields::isSelectedIn(const YAML::Node& tree) const {
+  if (whenPath.empty()) return true;
+  const YAML::Node selector = findKeyPath(tree, whenPath);
+  return selector && selector.IsScalar() && selector.Scalar() == whenValue;
+}
+
+SectionFields SectionFields::selectedBy(std::string selectorPath, std::string value) const {
+  SectionFields s = *this;
+  s.whenPath = std::move(selectorPath);
+  s.whenValue = std::move(value);
+  return s;
+}
+
+std::string formatSectionHeading(const SectionFields& s) {
+  const std::string head = s.path.empty() ? "Top level" : "Section `" + s.path + "`";
+  return s.whenPath.empty() ? head : head + " (`" + s.whenPath + "`: `" + s.whenValue + "`)";
 }
 
 std::string formatFieldTable(const SectionFields& section) {

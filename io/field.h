@@ -69,11 +69,21 @@ struct Field {
 };
 
 /// The declared fields of one section, `path` as --set addresses it ("rider_lean", "swingarm.suspension").
+/// A plugin of a selectable kind declares its keys for when the selector names it: `contact` when
+/// `contact.model` is `relaxation_linear` (whenPath "contact.model", whenValue "relaxation_linear").
 struct SectionFields {
   std::string path;
   std::vector<Field> fields;
+  std::string whenPath = {};   ///< the key path of the selector; empty: the section's keys always apply
+  std::string whenValue = {};  ///< the selector's value for which they apply
+  /// Whether these keys apply to a scenario tree: no selector, or the selector has the value.
+  bool isSelectedIn(const YAML::Node& tree) const;
+  /// The same section, applying when the key at `selectorPath` is `value` (`contact.model`, `magic_formula`).
+  SectionFields selectedBy(std::string selectorPath, std::string value) const;
   /// The field of `key`; std::logic_error if none is declared (a reader asking for an undeclared key is a bug).
   const Field& get(const std::string& key) const;
+  /// The key path of one of its keys, as --set takes it ("swingarm.suspension.damping_Ns_per_m"; at the top level the key).
+  std::string getKeyPath(const std::string& key) const;
 };
 
 /// Reads a number field from `m`: its range checked (InputError at the key), the default when an
@@ -85,6 +95,10 @@ std::array<double, 3> readVector3(YamlMap& m, const Field& field);
 
 /// The range as the docs tables print it: "> 0", ">= 0", "0 < x < 1", "any" (a non-number: "-"), or the note.
 std::string formatRange(const Field& field);
+
+/// The heading of a section's table: "Section `PATH`" ("Top level" for the path ""), with its
+/// selector: "Section `contact` (`contact.model`: `relaxation_linear`)".
+std::string formatSectionHeading(const SectionFields& section);
 
 /// The section's markdown table: | key | unit | range | default | meaning |, one row per field.
 std::string formatFieldTable(const SectionFields& section);

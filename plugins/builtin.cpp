@@ -41,4 +41,14 @@ PluginRegistry makeBuiltinRegistry() {
   return registry;
 }
 
+PluginRegistry makeScenarioRegistry(const scenario::Scenario& s) {
+  PluginRegistry registry = makeBuiltinRegistry();
+  try {
+    registry.loadScenarioLibraries(s);
+  } catch (const io::InputError& e) {
+    scenario::rethrowNamingOverride(e, s.overrides);
+  }
+  return registry;
+}
+
 }  // namespace motostab::plugins

@@ -11,4 +11,9 @@ namespace motostab::plugins {
 /// fork_compliance and steer_head_friction (in that order).
 PluginRegistry makeBuiltinRegistry();
 
+/// The built-in registry with the plugin libraries a scenario lists loaded (PluginRegistry::loadScenarioLibraries):
+/// the plugins that scenario's sections can name, and their declared fields. InputError at `plugins[i]`
+/// (naming the --set that gave it).
+PluginRegistry makeScenarioRegistry(const scenario::Scenario& s);
+
 }  // namespace motostab::plugins

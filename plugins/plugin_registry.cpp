@@ -125,7 +125,9 @@ void PluginRegistry::addExtensionModel(const std::string& name, ExtensionModelFa
 
 void PluginRegistry::addSectionFields(io::SectionFields fields) {
   for (const io::SectionFields& f : sectionFields_)
-    if (f.path == fields.path) throw std::runtime_error("the fields of section '" + fields.path + "' are declared twice");
+    if (f.path == fields.path && f.whenPath == fields.whenPath && f.whenValue == fields.whenValue)
+      throw std::runtime_error("the fields of section '" + fields.path + "'" +
+                               (f.whenPath.empty() ? "" : " for " + f.whenPath + " " + f.whenValue) + " are declared twice");
   sectionFields_.push_back(std::move(fields));
 }
 
@@ -133,7 +135,9 @@ std::vector<io::SectionFields> listSectionFields(const PluginRegistry& registry)
   std::vector<io::SectionFields> out = scenario::getScenarioFields();
   for (const io::SectionFields& f : registry.getSectionFields()) {
     // A plugin reading the rest of a loader's section (the swingarm models) adds its keys to it.
-    auto same = std::find_if(out.begin(), out.end(), [&](const io::SectionFields& s) { return s.path == f.path; });
+    auto same = std::find_if(out.begin(), out.end(), [&](const io::SectionFields& s) {
+      return s.path == f.path && s.whenPath == f.whenPath && s.whenValue == f.whenValue;
+    });
     if (same == out.end()) out.push_back(f);
     else same->fields.insert(same->fields.end(), f.fields.begin(), f.fields.end());
   }
@@ -205,10 +209,14 @@ std::unique_ptr<ContactModel> PluginRegistry::createContactModel(const PluginSpe
   return model;
 }
 
+void PluginRegistry::loadScenarioLibraries(const scenario::Scenario& s) {
+  for (size_t i = 0; i < s.plugins.size(); ++i)
+    loadLibrary(s.plugins[i], {s.sourceFile, 0, 0, "plugins[" + std::to_string(i) + "]"});
+}
+
 void PluginRegistry::readScenarioSections(scenario::Scenario& s) {
   try {
-    for (size_t i = 0; i < s.plugins.size(); ++i)
-      loadLibrary(s.plugins[i], {s.sourceFile, 0, 0, "plugins[" + std::to_string(i) + "]"});
+    loadScenarioLibraries(s);
     createContactModel(s.contact, s.inputs);
     if (s.hasSwingarm) createSwingarmModel(s.swingarm, s.inputs);
     createExtensionModels(s, s.inputs);

@@ -65,6 +65,8 @@ class PluginRegistry : public PluginRegistrar {
   /// MOTOSTAB_PLUGIN_API_VERSION. Registration is all-or-nothing: on any failure (entry point
   /// throws, duplicate name) no name of the library is added. Failures are InputErrors at `where`.
   void loadLibrary(const std::string& path, const io::InputLocation& where);
+  /// Adds the libraries a scenario lists under `plugins` (loadLibrary; InputError at `plugins[i]`).
+  void loadScenarioLibraries(const scenario::Scenario& s);
   /// Canonical paths of the libraries added to this registry, in load order.
   const std::vector<std::string>& getLibraries() const { return libraries_; }
 

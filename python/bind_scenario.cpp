@@ -171,7 +171,8 @@ void bindScenario(py::module_& m) {
       .def("parameters", [](const ScenarioHandle& h) {
         py::dict out;
         const YAML::Node tree = h.makeTree();
-        for (const auto& p : scenario::listScalarParameters(tree, plugins::listSectionFields(plugins::makeBuiltinRegistry())))
+        const auto sections = plugins::listSectionFields(plugins::makeScenarioRegistry(*h.scenario));
+        for (const auto& p : scenario::listScalarParameters(tree, sections))
           out[py::str(p.path)] = p.value;
         return out;
       });

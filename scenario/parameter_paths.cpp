@@ -53,10 +53,11 @@ void collect(const YAML::Node& node, const std::string& path, const io::Field& f
 std::vector<ScalarParameter> listScalarParameters(const YAML::Node& tree, const std::vector<io::SectionFields>& sections) {
   std::vector<ScalarParameter> out;
   for (const io::SectionFields& section : sections) {
-    const YAML::Node n = findKeyPath(tree, section.path);
+    if (!section.isSelectedIn(tree)) continue;
+    const YAML::Node n = section.path.empty() ? tree : findKeyPath(tree, section.path);
     if (!n || !n.IsMap()) continue;
     for (const io::Field& f : section.fields)
-      if (f.measured && n[f.key]) collect(n[f.key], section.path + "." + f.key, f, out);
+      if (f.measured && n[f.key]) collect(n[f.key], section.getKeyPath(f.key), f, out);
   }
   return out;
 }

@@ -253,16 +253,18 @@ void readTotal(YamlMap& root, Scenario& s) {
 Scenario readScenario(const std::string& file, YamlMap& m) {
   Scenario s;
   s.sourceFile = file;
-  s.name = m.getString("name");
+  const io::SectionFields& top = getTopLevelFields();
+  s.name = m.getString(top.get("name").key);
   if (const std::string why = io::describeBadFolderName(s.name); !why.empty())
     m.fail("name", "the name becomes the output folder's name and " + why);
-  s.description = m.getString("description", "");
-  s.gravity = m.getNonNegative("gravity_mps2");
-  if (m.has("speeds_mps")) {
+  s.description = m.getString(top.get("description").key, "");
+  s.gravity = readNumber(m, top.get("gravity_mps2"));
+  if (m.has(top.get("speeds_mps").key)) {
     YamlMap sp = m.getMap("speeds_mps");
-    s.speeds.start = sp.getNonNegative("start");
-    s.speeds.stop = sp.getNonNegative("stop");
-    s.speeds.step = sp.getPositive("step");
+    const io::SectionFields& f = getSpeedRangeFields();
+    s.speeds.start = readNumber(sp, f.get("start"));
+    s.speeds.stop = readNumber(sp, f.get("stop"));
+    s.speeds.step = readNumber(sp, f.get("step"));
     if (s.speeds.stop < s.speeds.start) sp.fail("stop", "must not be below start");
     std::string why;
     countSpeeds(s.speeds.start, s.speeds.stop, s.speeds.step, why);

@@ -20,6 +20,40 @@ std::vector<Field> makeBodyFieldList(const std::string& what) {
 
 }  // namespace
 
+const SectionFields& getTopLevelFields() {
+  auto section = [](const char* key, const std::string& meaning) { return Field::of(Shape::Other, key, "", "", meaning); };
+  static const SectionFields f{
+      "",
+      {section("name", "study name, the default output folder's name"),
+       section("description", "free text").optional(),
+       Field::number("gravity_mps2", "m/s^2", Range::NonNegative, "gravity, acting along -z"),
+       section("speeds_mps", "the default sweep range (section `speeds_mps`); absent: 0 to 10 by 0.1").optional(),
+       section("geometry", "wheelbase, trail and steer axis tilt (section `geometry`)"),
+       section("total", "the whole vehicle with rider, instead of `rear_frame` (section `total`); the rear frame is derived")
+           .optional(),
+       section("rear_frame", "rear frame with rigid rider (section `rear_frame`); or `total`").optional(),
+       section("front_frame", "front frame (section `front_frame`); beside `total` optional, a motorcycle's assumed")
+           .optional(),
+       section("rear_wheel", "rear wheel (section `rear_wheel`)"),
+       section("front_wheel", "front wheel (section `front_wheel`)"),
+       section("contact", "`{model: NAME, ...}`: the contact plugin of that name reads the rest"),
+       section("swingarm", "swingarm between rear frame and rear wheel (section `swingarm`); absent: the rear wheel on the rear frame")
+           .optional(),
+       section("plugins", "shared libraries loaded before the model is built, by path relative to this file (docs/plugins.md)")
+           .optional(),
+       section("uncertainty", "standard deviations of parameters, keyed by the paths `--set` takes (docs/uncertainty.md)")
+           .optional()}};
+  return f;
+}
+
+const SectionFields& getSpeedRangeFields() {
+  static const SectionFields f{"speeds_mps",
+                               {Field::number("start", "m/s", Range::NonNegative, "lowest speed"),
+                                Field::number("stop", "m/s", Range::NonNegative, "highest speed, at least `start` and at most 150"),
+                                Field::number("step", "m/s", Range::Positive, "step; at most 10000 speeds")}};
+  return f;
+}
+
 const SectionFields& getGeometryFields() {
   static const SectionFields f{
       "geometry",
@@ -87,7 +121,9 @@ const SectionFields& getSwingarmFields() {
 }
 
 const std::vector<SectionFields>& getScenarioFields() {
-  static const std::vector<SectionFields> all{getGeometryFields(),
+  static const std::vector<SectionFields> all{getTopLevelFields(),
+                                              getSpeedRangeFields(),
+                                              getGeometryFields(),
                                               makeTotalFields(),
                                               makeBodyFields("rear_frame", "rear frame with rigid rider"),
                                               makeBodyFields("front_frame", "front frame (fork, handlebar)"),

@@ -1,5 +1,6 @@
 #pragma once
-// The declared fields (io/field.h) of the sections the scenario loader reads itself: geometry, the
+// The declared fields (io/field.h) of the sections the scenario loader reads itself: the top level,
+// speeds_mps, geometry, the
 // bodies (rear_frame, front_frame, total), the wheels and the swingarm's pivot and body. The loader
 // reads through them; the plugins declare their own sections (PluginRegistrar::addSectionFields).
 #include <vector>
@@ -7,6 +8,13 @@
 #include "io/field.h"
 
 namespace motostab::scenario {
+
+/// The top-level keys the loader reads (path ""): name, gravity, the sections; every other top-level
+/// mapping is a model-extension section.
+const io::SectionFields& getTopLevelFields();
+
+/// `speeds_mps`: start, stop, step of the default sweep, m/s.
+const io::SectionFields& getSpeedRangeFields();
 
 /// `geometry`: wheelbase_m, trail_m or normal_trail_m, steer_axis_tilt_deg.
 const io::SectionFields& getGeometryFields();
@@ -22,7 +30,7 @@ io::SectionFields makeWheelFields(const std::string& path);
 /// The `swingarm` keys the loader reads (pivot_m, the body, compliance; suspension is an extension's).
 const io::SectionFields& getSwingarmFields();
 
-/// Every section above, in the order of the scenario format: geometry, total, rear_frame,
+/// Every section above, in the order of the scenario format: the top level, speeds_mps, geometry, total, rear_frame,
 /// front_frame, rear_wheel, front_wheel, swingarm.
 const std::vector<io::SectionFields>& getScenarioFields();
 

@@ -9,6 +9,7 @@
 #include "diagnosis/findings.h"
 #include "io/csv.h"
 #include "io/input_error.h"
+#include "plugins/builtin.h"
 
 namespace motostab::studies {
 
@@ -64,7 +65,8 @@ CauseFit summariseFit(const FitSummary& f) {
 std::vector<std::string> selectStudyCandidates(const scenario::ScenarioSource& source, const VerdictOptions& opt,
                                                std::vector<std::string>& unavailable) {
   std::vector<std::string> why;
-  const auto all = diagnosis::listCandidates(source.makeTree(opt.overrides), {}, &why);
+  const auto sections = plugins::listSectionFields(plugins::makeScenarioRegistry(source.load(opt.overrides)));
+  const auto all = diagnosis::listCandidates(source.makeTree(opt.overrides), {}, &why, {}, sections);
   std::vector<std::string> out;
   for (const auto& name : opt.candidates) {
     if (std::any_of(all.begin(), all.end(), [&](const auto& c) { return c.name == name; })) {

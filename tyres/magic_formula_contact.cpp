@@ -92,6 +92,18 @@ std::unique_ptr<ContactModel> makeMagicFormulaContact(MagicFormulaTyre front, Ma
 }
 
 void registerMagicFormula(PluginRegistrar& registry) {
+  using io::Field;
+  using io::Shape;
+  auto tyre = [](const char* side) {
+    return Field::of(Shape::Other, side, "", "", std::string(side) + " tyre (section `contact." + side + "`)");
+  };
+  const io::SectionFields contact{"contact", {Field::of(Shape::Other, "model", "", "", "`magic_formula`"), tyre("front"), tyre("rear")}};
+  registry.addSectionFields(contact.selectedBy("contact.model", "magic_formula"));
+  for (const char* side : {"front", "rear"}) {
+    io::SectionFields t = getMagicFormulaTyreFields();
+    t.path = std::string("contact.") + side;
+    registry.addSectionFields(t.selectedBy("contact.model", "magic_formula"));
+  }
   registry.addContactModel("magic_formula", [](YamlMap& m) -> std::unique_ptr<ContactModel> {
     return makeMagicFormulaContact(readMagicFormulaTyre(m.getMap("front")), readMagicFormulaTyre(m.getMap("rear")));
   });

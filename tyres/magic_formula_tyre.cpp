@@ -34,9 +34,11 @@ std::map<std::string, double> readScaling(YamlMap& m, MagicFormulaVariant varian
 }
 
 // A radial law value: the scenario's key, else the coefficient `fileKey` of the source.
-double readRadial(YamlMap& m, const char* key, const CoefficientSource& source, const char* fileKey, bool positive) {
+double readRadial(YamlMap& m, const io::Field& field, const CoefficientSource& source, const char* fileKey) {
+  const char* key = field.key.c_str();
+  const bool positive = field.range == io::Range::Positive;
   const auto fromFile = source.find(fileKey);  // read always, so that an inline map's key counts as used
-  if (m.has(key)) return positive ? m.getPositive(key) : m.getNonNegative(key);
+  if (m.has(key)) return io::readNumber(m, field);
   if (!fromFile) m.fail(key, std::string("missing: give it here or as ") + fileKey + " with the coefficients");
   if (positive ? !(*fromFile > 0) : !(*fromFile >= 0)) source.fail(fileKey, positive ? "must be positive" : "must be >= 0");
   return *fromFile;
@@ -62,7 +64,32 @@ MotorcycleConventions readConventions(YamlMap& m, MagicFormulaVariant variant) {
 
 }  // namespace
 
+const io::SectionFields& getMagicFormulaTyreFields() {
+  using io::Field;
+  using io::Range;
+  using io::Shape;
+  static const io::SectionFields f{
+      "",
+      {Field::of(Shape::Other, "tir", "", "", "an MF 6.1/6.2 property file, relative to the scenario; or `coefficients`").optional(),
+       Field::of(Shape::Other, "coefficients", "", "", "inline coefficients `{NAME: value}` (names of the .tir file), with `variant`")
+           .optional(),
+       Field::of(Shape::Other, "variant", "", "", "`mf61`, `mf62` or `motorcycle`; beside `tir` its FITTYP by default").optional(),
+       Field::of(Shape::Other, "scaling", "", "", "scaling factors `{LKY: ...}` of the variant (tyres.md)").optional(),
+       Field::number("pressure_Pa", "Pa", Range::Positive, "inflation pressure; absent: INFLPRES, else NOMPRES").optional(),
+       Field::number("relaxation_length_m", "m", Range::Any,
+                     "sigma (0: no lag); required only when the law has no relaxation length of its own")
+           .within("0 or >= 1e-4")
+           .optional(),
+       Field::number("radial_stiffness_N_per_m", "N/m", Range::Positive, "radial stiffness; absent: VERTICAL_STIFFNESS").optional(),
+       Field::number("radial_damping_Ns_per_m", "N s/m", Range::NonNegative, "radial damping; absent: VERTICAL_DAMPING").optional(),
+       Field::of(Shape::Other, "paper_axes", "", "", "`z_down` (default) or `z_up`: how the paper's equations are read (variant `motorcycle`)")
+           .optional(),
+       Field::of(Shape::Other, "slip_variable", "", "", "`angle` (default) or `tangent` (variant `motorcycle`)").optional()}};
+  return f;
+}
+
 MagicFormulaTyre readMagicFormulaTyre(YamlMap m) {
+  const io::SectionFields& f = getMagicFormulaTyreFields();
   if (m.has("tir") == m.has("coefficients")) m.fail("tir", "give exactly one of `tir: FILE` and `coefficients: {...}`");
   std::optional<MagicFormulaVariant> variant;
   if (m.has("variant")) {
@@ -70,14 +97,14 @@ MagicFormulaTyre readMagicFormulaTyre(YamlMap m) {
     if (!variant) m.fail("variant", "unknown Magic Formula variant (known: mf61, mf62, motorcycle)");
   }
   std::optional<double> pressure;
-  if (m.has("pressure_Pa")) pressure = m.getPositive("pressure_Pa");
+  if (m.has("pressure_Pa")) pressure = io::readNumber(m, f.get("pressure_Pa"));
   MagicFormulaTyre t;
   auto build = [&](const CoefficientSource& source) {
     t.variant = *variant;
     t.conventions = readConventions(m, *variant);
     t.law = makeTyreForceLaw(*variant, source, pressure, t.conventions);
-    t.radial.stiffness = readRadial(m, "radial_stiffness_N_per_m", source, "VERTICAL_STIFFNESS", true);
-    t.radial.damping = readRadial(m, "radial_damping_Ns_per_m", source, "VERTICAL_DAMPING", false);
+    t.radial.stiffness = readRadial(m, f.get("radial_stiffness_N_per_m"), source, "VERTICAL_STIFFNESS");
+    t.radial.damping = readRadial(m, f.get("radial_damping_Ns_per_m"), source, "VERTICAL_DAMPING");
   };
   if (m.has("tir")) {
     const std::string path = m.getFilePath("tir");
@@ -96,7 +123,8 @@ MagicFormulaTyre readMagicFormulaTyre(YamlMap m) {
     build(*makeYamlSource(coefficients, &scaling));
     coefficients.finish();
   }
-  if (m.has("relaxation_length_m")) t.relaxationLength = m.getZeroOrAtLeast("relaxation_length_m", kMinRelaxationLength, "m", 0);
+  if (m.has("relaxation_length_m"))
+    t.relaxationLength = m.getZeroOrAtLeast(f.get("relaxation_length_m").key, kMinRelaxationLength, "m", 0);
   t.where = m.locate();
   if (std::isnan(t.relaxationLength) && std::isnan(t.law->calcRelaxationLength(t.law->getNominalLoad(), 0, 0)))
     m.fail("relaxation_length_m", "required: this Magic Formula variant has no relaxation length of its own");

@@ -18,6 +18,7 @@
 #include <memory>
 #include <string>
 
+#include "io/field.h"
 #include "io/input_error.h"
 #include "io/yaml_map.h"
 #include "tyres/magic_formula.h"
@@ -39,6 +40,11 @@ struct MagicFormulaTyre {
 /// refuses, is an InputError at the key or the coefficient that causes it. Unused nonzero coefficients
 /// of a .tir file are reported on std::cerr.
 MagicFormulaTyre readMagicFormulaTyre(io::YamlMap m);
+
+/// The declared keys of one Magic Formula tyre (its path "", placed at `contact.front` and
+/// `contact.rear` by the contact plugin): the coefficient source, variant, scaling, pressure, relaxation,
+/// radial law and the motorcycle variant's conventions.
+const io::SectionFields& getMagicFormulaTyreFields();
 
 /// A law whose moments use a crown radius (the motorcycle one) must sit on a wheel of that crown:
 /// InputError at the tyre's map naming `wheel`.crown_radius_m (m) otherwise.

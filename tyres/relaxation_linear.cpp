@@ -35,20 +35,48 @@ std::pair<double, double> findComplianceMinimum(double b1, double b2, double vMa
   return best;
 }
 
+// The keys of one tyre (`contact.front`, `contact.rear`), per unit load where the unit says /rad or
+// m/rad (header); each required without a preset, optional over one.
+std::vector<io::Field> makeTyreFieldList() {
+  using io::Field;
+  using io::Range;
+  return {
+      Field::number("cornering_stiffness_per_rad", "1/rad", Range::Positive, "k_alpha: Fy = Fz k_alpha alpha (seed Table 6)"),
+      Field::number("camber_stiffness_per_rad", "1/rad", Range::Any, "k_phi: Fy = Fz k_phi phi, towards the lean").within(">= 0"),
+      Field::number("self_aligning_stiffness_m_per_rad", "m/rad", Range::Any,
+                    "k_mz: Mz = Fz k_mz alpha, -pneumatic trail x k_alpha (turns the wheel towards its velocity)")
+          .within("<= 0"),
+      Field::number("twisting_stiffness_m_per_rad", "m/rad", Range::Any, "k_mt: Mz = Fz k_mt phi, the twisting moment of camber"),
+      Field::number("relaxation_length_m", "m", Range::Any,
+                    "sigma, constant (0: no lag, no state); give this or `lateral_carcass_stiffness_N_per_m`")
+          .within("0 or >= 1e-4")
+          .optional(),
+      Field::number(kCarcassKey, "N/m", Range::Positive,
+                    "k_y0, the lateral carcass stiffness at standstill: sigma = Fz k_alpha (1 + b1 V + b2 V^2) / k_y0, "
+                    "instead of `relaxation_length_m`")
+          .optional(),
+      Field::number(kSpeedKey, "s/m", Range::Any, "b1, with the carcass stiffness").withDefault(0),
+      Field::number(kSpeedKey2, "s^2/m^2", Range::Any, "b2, with the carcass stiffness; 1 + b1 V + b2 V^2 > 0 up to 150 m/s")
+          .withDefault(0),
+      Field::number("radial_stiffness_N_per_m", "N/m", Range::Positive, "k_r, radial (vertical) stiffness"),
+      Field::number("radial_damping_Ns_per_m", "N s/m", Range::NonNegative, "c_r, radial damping"),
+      Field::number("longitudinal_stiffness", "", Range::Positive, "k_kappa: Fx = Fz k_kappa kappa")};
+}
+
 // The relaxation keys (header): relaxation_length_m or the carcass stiffness with its speed
 // coefficients. Over a preset the one given replaces the preset's.
-void readRelaxation(YamlMap& m, LinearTyreParameters& p, bool overPreset) {
+void readRelaxation(YamlMap& m, const io::SectionFields& f, LinearTyreParameters& p, bool overPreset) {
   const bool length = m.has("relaxation_length_m"), carcass = m.has(kCarcassKey);
   if (length && carcass)
     m.fail(kCarcassKey, "give relaxation_length_m (a constant sigma) or lateral_carcass_stiffness_N_per_m (sigma = Fz k_alpha / k_y), not both");
   if (!overPreset && !length && !carcass)
     m.fail("relaxation_length_m", "required (0: no lag), unless lateral_carcass_stiffness_N_per_m gives the relaxation length");
   if (length) {
-    p.relaxationLength = m.getZeroOrAtLeast("relaxation_length_m", kMinRelaxationLength, "m");
+    p.relaxationLength = m.getZeroOrAtLeast(f.get("relaxation_length_m").key, kMinRelaxationLength, "m");
     p.lateralCarcassStiffness = p.carcassSpeedCoefficient = p.carcassSpeedCoefficient2 = 0;
   }
   if (carcass) {
-    p.lateralCarcassStiffness = m.getPositive(kCarcassKey);
+    p.lateralCarcassStiffness = io::readNumber(m, f.get(kCarcassKey));
     p.carcassWhere = m.locate(kCarcassKey);
     p.relaxationLength = 0;
   }
@@ -56,7 +84,7 @@ void readRelaxation(YamlMap& m, LinearTyreParameters& p, bool overPreset) {
     if (!m.has(key)) continue;
     if (!(p.lateralCarcassStiffness > 0))
       m.fail(key, "needs lateral_carcass_stiffness_N_per_m (the speed coefficient is of the carcass's lateral compliance)");
-    (key == kSpeedKey ? p.carcassSpeedCoefficient : p.carcassSpeedCoefficient2) = m.getDouble(key);
+    (key == kSpeedKey ? p.carcassSpeedCoefficient : p.carcassSpeedCoefficient2) = io::readNumber(m, f.get(key));
   }
   const double vMax = scenario::SpeedRange::kMaxSpeed;
   const auto [factor, at] = findComplianceMinimum(p.carcassSpeedCoefficient, p.carcassSpeedCoefficient2, vMax);
@@ -69,14 +97,14 @@ void readRelaxation(YamlMap& m, LinearTyreParameters& p, bool overPreset) {
 }
 
 // One tyre's keys. With a preset every key is optional (given ones override the preset's value).
-LinearTyreParameters readTyre(YamlMap m, const LinearTyreParameters* preset) {
+LinearTyreParameters readTyre(YamlMap m, const io::SectionFields& f, const LinearTyreParameters* preset) {
   LinearTyreParameters p = preset ? *preset : LinearTyreParameters{};
-  auto read = [&](const char* key, double& v, double (YamlMap::*get)(const std::string&)) {
-    if (!preset || m.has(key)) v = (m.*get)(key);
+  auto read = [&](const char* key, double& v) {
+    if (!preset || m.has(key)) v = io::readNumber(m, f.get(key));
   };
-  read("cornering_stiffness_per_rad", p.corneringStiffness, &YamlMap::getPositive);
-  read("camber_stiffness_per_rad", p.camberStiffness, &YamlMap::getDouble);
-  read("self_aligning_stiffness_m_per_rad", p.selfAligningStiffness, &YamlMap::getDouble);
+  read("cornering_stiffness_per_rad", p.corneringStiffness);
+  read("camber_stiffness_per_rad", p.camberStiffness);
+  read("self_aligning_stiffness_m_per_rad", p.selfAligningStiffness);
   // The header's signs: camber thrust pushes the tyre towards the lean (k_phi >= 0) and the
   // self-aligning moment of a small slip turns the wheel towards its velocity (k_mz <= 0, a positive
   // pneumatic trail). The twisting moment may have either sign (measured bicycle tyres change it with load).
@@ -85,11 +113,11 @@ LinearTyreParameters readTyre(YamlMap m, const LinearTyreParameters* preset) {
   if (m.has("self_aligning_stiffness_m_per_rad") && p.selfAligningStiffness > 0)
     m.fail("self_aligning_stiffness_m_per_rad",
            "must not be positive: the self-aligning moment of a slip turns the wheel towards its velocity (k_mz = -trail k_alpha)");
-  read("twisting_stiffness_m_per_rad", p.twistingStiffness, &YamlMap::getDouble);
-  readRelaxation(m, p, preset != nullptr);
-  read("radial_stiffness_N_per_m", p.radialStiffness, &YamlMap::getPositive);
-  read("radial_damping_Ns_per_m", p.radialDamping, &YamlMap::getNonNegative);
-  read("longitudinal_stiffness", p.longitudinalStiffness, &YamlMap::getPositive);
+  read("twisting_stiffness_m_per_rad", p.twistingStiffness);
+  readRelaxation(m, f, p, preset != nullptr);
+  read("radial_stiffness_N_per_m", p.radialStiffness);
+  read("radial_damping_Ns_per_m", p.radialDamping);
+  read("longitudinal_stiffness", p.longitudinalStiffness);
   m.finish();
   return p;
 }
@@ -228,18 +256,40 @@ std::unique_ptr<TyreForceLaw> makeLinearTyreForceLaw(const LinearTyreParameters&
   return std::make_unique<LinearTyreForceLaw>(p);
 }
 
+const std::vector<io::SectionFields>& getRelaxationLinearFields() {
+  using io::Field;
+  using io::Shape;
+  static const std::vector<io::SectionFields> all = [] {
+    auto tyre = [](const char* side) {
+      return Field::of(Shape::Other, side, "", "", std::string(side) + " tyre (section `contact." + side + "`); optional over a preset");
+    };
+    const io::SectionFields contact{
+        "contact",
+        {Field::of(Shape::Other, "model", "", "", "`relaxation_linear`"),
+         Field::of(Shape::Other, "preset", "", "", "`bicycle`: both tyres from a measured set, each key given overrides it (below)").optional(),
+         tyre("front"), tyre("rear")}};
+    std::vector<io::SectionFields> out{contact.selectedBy("contact.model", "relaxation_linear")};
+    for (const char* side : {"front", "rear"})
+      out.push_back(io::SectionFields{std::string("contact.") + side, makeTyreFieldList()}.selectedBy("contact.model", "relaxation_linear"));
+    return out;
+  }();
+  return all;
+}
+
 std::pair<LinearTyreParameters, LinearTyreParameters> readRelaxationLinearTyres(YamlMap& m) {
-  if (!m.has("preset")) return {readTyre(m.getMap("front"), nullptr), readTyre(m.getMap("rear"), nullptr)};
+  const auto& sections = getRelaxationLinearFields();
+  const io::SectionFields &front = sections[1], &rear = sections[2];
+  if (!m.has("preset")) return {readTyre(m.getMap("front"), front, nullptr), readTyre(m.getMap("rear"), rear, nullptr)};
   const std::string name = m.getString("preset");
   const auto names = getRelaxationLinearPresetNames();
   if (std::find(names.begin(), names.end(), name) == names.end()) m.fail("preset", "unknown preset '" + name + "' (known: bicycle)");
   const LinearTyreParameters preset = getRelaxationLinearPreset(name);
-  auto side = [&](const char* key) {
+  auto side = [&](const char* key, const io::SectionFields& f) {
     if (!m.has(key)) return preset;
-    return readTyre(m.getMap(key), &preset);
+    return readTyre(m.getMap(key), f, &preset);
   };
-  const LinearTyreParameters front = side("front");
-  return {front, side("rear")};
+  const LinearTyreParameters frontTyre = side("front", front);
+  return {frontTyre, side("rear", rear)};
 }
 
 std::unique_ptr<ContactModel> makeRelaxationLinear(const LinearTyreParameters& front, const LinearTyreParameters& rear) {
@@ -247,6 +297,7 @@ std::unique_ptr<ContactModel> makeRelaxationLinear(const LinearTyreParameters& f
 }
 
 void registerRelaxationLinear(PluginRegistrar& registry) {
+  for (const io::SectionFields& f : getRelaxationLinearFields()) registry.addSectionFields(f);
   registry.addContactModel("relaxation_linear", [](YamlMap& m) -> std::unique_ptr<ContactModel> {
     const auto [front, rear] = readRelaxationLinearTyres(m);
     return makeRelaxationLinear(front, rear);

@@ -89,4 +89,8 @@ std::unique_ptr<plugins::ContactModel> makeRelaxationLinear(const LinearTyrePara
 /// Registers `relaxation_linear` (readRelaxationLinearTyres).
 void registerRelaxationLinear(plugins::PluginRegistrar& registry);
 
+/// The declared keys of `contact` (model, preset, front, rear), `contact.front` and `contact.rear` (one
+/// tyre each), for `contact.model: relaxation_linear`.
+const std::vector<io::SectionFields>& getRelaxationLinearFields();
+
 }  // namespace motostab::tyres

@@ -21,6 +21,7 @@ using plugins::SwingarmModel;
 using plugins::SwingarmSite;
 using plugins::WheelSite;
 using plugins::makeBuiltinRegistry;
+using plugins::makeScenarioRegistry;
 using plugins::makeRigidBody;
 using plugins::toVec3;
 using scenario::BodySpec;
@@ -251,8 +252,7 @@ std::unique_ptr<VehicleModel> VehicleModel::makeReplica() const {
 
 void VehicleModel::build(PluginRegistry& registry, const std::vector<ModelExtension>& extensions) {
   const Scenario& s = scenario_;
-  for (size_t i = 0; i < s.plugins.size(); ++i)
-    registry.loadLibrary(s.plugins[i], {s.sourceFile, 0, 0, "plugins[" + std::to_string(i) + "]"});
+  registry.loadScenarioLibraries(s);
   registry_ = registry;
   extensions_ = extensions;
   auto contact = registry.createContactModel(s.contact, s.inputs);
@@ -328,10 +328,8 @@ void VehicleModel::describeExtensions(std::ostream& out) const {
 std::vector<NamedBody> VehicleModel::listBodies() const { return listBodiesWith(scenario_, extensionModels_); }
 
 std::vector<NamedBody> listModelBodies(const Scenario& s) {
-  PluginRegistry registry = makeBuiltinRegistry();
+  const PluginRegistry registry = makeScenarioRegistry(s);
   try {
-    for (size_t i = 0; i < s.plugins.size(); ++i)
-      registry.loadLibrary(s.plugins[i], {s.sourceFile, 0, 0, "plugins[" + std::to_string(i) + "]"});
     return listBodiesWith(s, registry.createExtensionModels(s, s.inputs));
   } catch (const InputError& e) {
     rethrowNamingOverride(e, s.overrides);

@@ -1,6 +1,7 @@
 // An example third-party plugin: a contact model `example_vertical_spring` that only supports the
 // wheels vertically (a linear spring under the wheel centre). Build it as a shared library and list
 // it in a scenario: `plugins: [path/to/libmotostab_example_plugin.so]` (see docs/plugins.md).
+#include "io/field.h"
 #include "plugins/plugin_api.h"
 
 namespace {
@@ -42,14 +43,28 @@ class VerticalSpringContact : public motostab::plugins::ContactModel {
 
 namespace {
 int entryCalls = 0;
+
+// The plugin's keys of the `contact` section, declared once: read through here, listed by diagnosis
+// (a measured field is a parameter it may fit) and by the Python module's `parameters()`.
+const motostab::io::SectionFields& getFields() {
+  using motostab::io::Field;
+  static const motostab::io::SectionFields fields{
+      "contact",
+      {Field::number("stiffness_N_per_m", "N/m", motostab::io::Range::Positive, "vertical stiffness under each wheel")
+           .measures(motostab::io::Quantity::Other)},
+      "contact.model",
+      "example_vertical_spring"};
+  return fields;
 }
+}  // namespace
 
 /// How often the entry point ran in this process (tests check that a library loads once).
 extern "C" int motostab_example_entry_calls() { return entryCalls; }
 
 MOTOSTAB_PLUGIN_ENTRY {
   ++entryCalls;
+  registry.addSectionFields(getFields());
   registry.addContactModel("example_vertical_spring", [](motostab::io::YamlMap& params) -> std::unique_ptr<motostab::plugins::ContactModel> {
-    return std::make_unique<VerticalSpringContact>(params.getPositive("stiffness_N_per_m"));
+    return std::make_unique<VerticalSpringContact>(motostab::io::readNumber(params, getFields().get("stiffness_N_per_m")));
   });
 }

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <stdexcept>
 
 #include "multibody/pin_joint.h"
 #include "multibody/pin_spring_damper.h"
@@ -41,43 +42,73 @@ struct AxisSpec {
   }
 };
 
+constexpr const char* kAxisNames[] = {"bending", "torsion", "twist"};
+
+// What the identification writes beside an axis's model (docs/swingarm-identification.md): checked
+// (>= 0), not used. Key, unit, what it is.
+struct IdentificationValue {
+  const char* key;
+  const char* unit;
+  const char* meaning;
+};
+constexpr IdentificationValue kIdentificationValues[] = {
+    {"arm_m_stderr", "m", "standard error of `arm_m`"},
+    {"beta_deg_stderr", "deg", "standard error of `beta_deg`"},
+    {"stiffness_Nm_per_rad_stderr", "N m/rad", "standard error of `stiffness_Nm_per_rad`"},
+    {"damping_Nms_per_rad_stderr", "N m s/rad", "standard error of `damping_Nms_per_rad`"},
+    {"reduced_stiffness_Nm_per_rad", "N m/rad", "stiffness reduced to the twist axis (seed eq. 11-15)"},
+    {"reduced_stiffness_Nm_per_rad_stderr", "N m/rad", "its standard error"},
+    {"frequency_hz", "Hz", "natural frequency of the rig mode"},
+    {"frequency_hz_stderr", "Hz", "its standard error"},
+    {"damping_ratio", "", "damping ratio of the rig mode"},
+    {"damping_ratio_stderr", "", "its standard error"}};
+
+bool isGeometryKey(const std::string& key) {
+  return key == "arm_m" || key == "beta_deg" || key == "point_m" || key == "direction" || key == "arm_m_stderr" ||
+         key == "beta_deg_stderr";
+}
+
 // The axis geometry: {arm_m, beta_deg} (relative to the hub) or {point_m, direction} (in S). The
 // identification's fragment nests it under `axis:` and gives both; arm and beta are used then.
-void readAxisGeometry(YamlMap& m, AxisSpec& a) {
+void readAxisGeometry(YamlMap& m, const io::SectionFields& f, AxisSpec& a) {
   if (m.has("arm_m") || m.has("beta_deg")) {
-    a.arm = m.getDouble("arm_m");
-    a.beta = m.getDouble("beta_deg") * M_PI / 180;
+    for (const char* k : {"arm_m", "beta_deg"})
+      if (!m.has(k)) m.getDouble(k);  // the missing-key error: the pair goes together
+    a.arm = io::readNumber(m, f.get("arm_m"));
+    a.beta = io::readNumber(m, f.get("beta_deg")) * M_PI / 180;
     for (const char* k : {"point_m", "direction"})
-      if (m.has(k)) m.getVec3(k);
+      if (m.has(k)) io::readVector3(m, f.get(k));
   } else {
-    const auto p = m.getVec3("point_m");
-    const auto d = m.getVec3("direction");
+    const auto p = io::readVector3(m, f.get("point_m"));
+    const auto d = io::readVector3(m, f.get("direction"));
     a.explicitAxis = true;
     a.point = Vec3(p[0], p[1], p[2]);
     a.direction = Vec3(d[0], d[1], d[2]);
     if (a.direction.norm() < 1e-9) m.fail("direction", "must not be zero");
     a.direction /= a.direction.norm();
   }
-  for (const char* k : {"arm_m_stderr", "beta_deg_stderr"})
-    if (m.has(k)) m.getNonNegative(k);
 }
 
-AxisSpec readAxis(YamlMap m, double kScale, double cScale) {
+// The identification's values present in `m` whose keys pass `keep` (checked, not used).
+template <class Keep>
+void checkIdentificationValues(YamlMap& m, const io::SectionFields& f, Keep keep) {
+  for (const IdentificationValue& v : kIdentificationValues)
+    if (keep(std::string(v.key)) && m.has(v.key)) io::readNumber(m, f.get(v.key));
+}
+
+AxisSpec readAxis(YamlMap m, const io::SectionFields& f, double kScale, double cScale) {
   AxisSpec a;
-  a.stiffness = m.getPositive("stiffness_Nm_per_rad") * kScale;
-  a.damping = m.getNonNegative("damping_Nms_per_rad") * cScale;
+  a.stiffness = io::readNumber(m, f.get("stiffness_Nm_per_rad")) * kScale;
+  a.damping = io::readNumber(m, f.get("damping_Nms_per_rad")) * cScale;
   if (m.has("axis")) {
     YamlMap axis = m.getMap("axis");
-    readAxisGeometry(axis, a);
+    readAxisGeometry(axis, f, a);
+    checkIdentificationValues(axis, f, isGeometryKey);
     axis.finish();
   } else {
-    readAxisGeometry(m, a);
+    readAxisGeometry(m, f, a);
   }
-  // Informational values the identification writes beside the model (docs/swingarm-identification.md).
-  for (const char* k : {"stiffness_Nm_per_rad_stderr", "damping_Nms_per_rad_stderr", "reduced_stiffness_Nm_per_rad",
-                        "reduced_stiffness_Nm_per_rad_stderr", "frequency_hz", "frequency_hz_stderr", "damping_ratio",
-                        "damping_ratio_stderr"})
-    if (m.has(k)) m.getNonNegative(k);
+  checkIdentificationValues(m, f, [&](const std::string& key) { return !m.has("axis") || !isGeometryKey(key); });
   m.finish();
   return a;
 }
@@ -141,14 +172,14 @@ const io::SectionFields& getSwingarmModelFields() {
   using io::Field;
   using io::Range;
   using io::Shape;
-  const std::string axis =
-      " axis: `{arm_m, beta_deg}` (seed eq. 2-10, Fig. 8) or `{point_m, direction}` in S, with `stiffness_Nm_per_rad`, "
-      "`damping_Nms_per_rad` and optional `*_stderr`; every axis present is validated, the model uses those it names";
+  auto axis = [](const char* name) {
+    return Field::of(Shape::Other, name, "", "", std::string(name) + " axis with its stiffness and damping (section `swingarm." +
+                                                     name + "`); every axis present is validated, the model uses those it names")
+        .optional();
+  };
   static const io::SectionFields f{
       "swingarm",
-      {Field::of(Shape::Other, "bending", "", "", "bending" + axis).optional(),
-       Field::of(Shape::Other, "torsion", "", "", "torsion" + axis).optional(),
-       Field::of(Shape::Other, "twist", "", "", "twist" + axis).optional(),
+      {axis("bending"), axis("torsion"), axis("twist"),
        Field::number("stiffness_scale", "", Range::Positive, "factor on every axis stiffness, for sensitivity studies (seed Fig. 11: 0.5)")
            .withDefault(1),
        Field::number("damping_scale", "", Range::NonNegative,
@@ -161,6 +192,43 @@ const io::SectionFields& getSwingarmModelFields() {
   return f;
 }
 
+const io::SectionFields& getSwingarmAxisFields(const std::string& name) {
+  using io::Field;
+  using io::Range;
+  using io::Shape;
+  auto make = [](const std::string& axis) {
+    io::SectionFields s{
+        "swingarm." + axis,
+        {Field::number("stiffness_Nm_per_rad", "N m/rad", Range::Positive,
+                       "lumped stiffness about the " + axis + " axis (seed sec. 4), times `swingarm.stiffness_scale`"),
+         Field::number("damping_Nms_per_rad", "N m s/rad", Range::NonNegative,
+                       "lumped damping about the axis, times `swingarm.damping_scale`"),
+         Field::number("arm_m", "m", Range::Any, "a, signed distance of the axis from the hub (seed eq. 2-10, Fig. 8); with `beta_deg`")
+             .optional(),
+         Field::number("beta_deg", "deg", Range::Any,
+                       "beta, the axis direction (cos beta, 0, sin beta) in S, through hub + a (-sin beta, 0, cos beta)")
+             .optional(),
+         Field::of(Shape::Vector3, "point_m", "m", "", "a point of the axis in S, instead of `arm_m` and `beta_deg`").optional(),
+         Field::of(Shape::Vector3, "direction", "", "not zero", "the axis direction in S (normalised), with `point_m`").optional(),
+         Field::of(Shape::Other, "axis", "", "", "the geometry keys of this table and their standard errors nested, as "
+                                                 "`motostab identify swingarm` writes them (`arm_m`, `beta_deg` used when given)")
+             .optional()}};
+    for (const IdentificationValue& v : kIdentificationValues)
+      s.fields.push_back(
+          Field::number(v.key, v.unit, Range::NonNegative, std::string(v.meaning) + "; from the identification, checked, not used")
+              .optional());
+    return s;
+  };
+  static const std::vector<io::SectionFields> all = [&] {
+    std::vector<io::SectionFields> out;
+    for (const char* axis : kAxisNames) out.push_back(make(axis));
+    return out;
+  }();
+  for (const io::SectionFields& s : all)
+    if (s.path == "swingarm." + name) return s;
+  throw std::logic_error("no swingarm compliance axis " + name);
+}
+
 namespace {
 
 // Every axis mapping present is validated; the model uses those it names.
@@ -169,17 +237,17 @@ SwingarmModelFactory makeFactory(std::vector<std::string> axisNames) {
     const io::SectionFields& f = getSwingarmModelFields();
     const double kScale = io::readNumber(m, f.get("stiffness_scale")), cScale = io::readNumber(m, f.get("damping_scale"));
     std::vector<std::pair<std::string, AxisSpec>> present;
-    for (const char* key : {"bending", "torsion", "twist"})
-      if (m.has(key)) present.push_back({key, readAxis(m.getMap(key), kScale, cScale)});
+    for (const char* key : kAxisNames)
+      if (m.has(key)) present.push_back({key, readAxis(m.getMap(key), getSwingarmAxisFields(key), kScale, cScale)});
     if (m.has("identification")) m.markUsed("identification");  // provenance only
     // Axes written by `motostab identify swingarm`, used unchanged (path relative to the scenario);
     // read once, when the scenario is loaded (io/input_store.h), and kept for every later build.
     if (m.has("axes_from")) {
       YamlMap fragment = m.loadFileMap("axes_from");
       if (fragment.has("identification")) fragment.markUsed("identification");
-      for (const char* key : {"bending", "torsion", "twist"}) {
+      for (const char* key : kAxisNames) {
         const bool inline_ = std::any_of(present.begin(), present.end(), [&](const auto& p) { return p.first == key; });
-        if (fragment.has(key) && !inline_) present.push_back({key, readAxis(fragment.getMap(key), kScale, cScale)});
+        if (fragment.has(key) && !inline_) present.push_back({key, readAxis(fragment.getMap(key), getSwingarmAxisFields(key), kScale, cScale)});
         else if (fragment.has(key)) fragment.markUsed(key);
       }
       fragment.finish();
@@ -199,6 +267,7 @@ SwingarmModelFactory makeFactory(std::vector<std::string> axisNames) {
 
 void registerSwingarmModels(PluginRegistrar& registry) {
   registry.addSectionFields(getSwingarmModelFields());
+  for (const char* axis : kAxisNames) registry.addSectionFields(getSwingarmAxisFields(axis));
   registry.addSwingarmModel("rigid", makeFactory({}));
   registry.addSwingarmModel("bending", makeFactory({"bending"}));
   registry.addSwingarmModel("torsion", makeFactory({"torsion"}));

@@ -25,4 +25,9 @@ void registerSwingarmModels(plugins::PluginRegistrar& registry);
 /// the axes, the stiffness and damping scales, `axes_from`.
 const io::SectionFields& getSwingarmModelFields();
 
+/// The keys of one axis mapping, `name` bending, torsion or twist (section `swingarm.<name>`):
+/// stiffness, damping, the geometry ({arm_m, beta_deg} or {point_m, direction}, also nested under
+/// `axis`) and the identification's informational values. std::logic_error for another name.
+const io::SectionFields& getSwingarmAxisFields(const std::string& name);
+
 }  // namespace motostab::swingarm

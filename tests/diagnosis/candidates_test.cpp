@@ -189,19 +189,21 @@ namespace motostab::diagnosis {
 namespace {
 
 // Where `path` (a --set key path) lies in the declared sections: the failure message if it names a
-// key a declared section does not declare, "" if it is declared or in a plugin's own undeclared
-// mapping (swingarm.bending.*, contact.*).
+// key no declared section of its path declares (a section may be declared once per selector, e.g. the
+// contact models' `contact.front`), "" if one declares it or it lies in a plugin's undeclared mapping.
 std::string checkDeclared(const std::vector<io::SectionFields>& sections, const std::string& path) {
-  const io::SectionFields* in = nullptr;
+  size_t longest = 0;
   for (const io::SectionFields& s : sections)
-    if (path.rfind(s.path + ".", 0) == 0 && (!in || s.path.size() > in->path.size())) in = &s;
-  if (!in) return "";
-  const std::string rest = path.substr(in->path.size() + 1);
+    if (!s.path.empty() && path.rfind(s.path + ".", 0) == 0) longest = std::max(longest, s.path.size());
+  if (longest == 0) return "";
+  const std::string section = path.substr(0, longest), rest = path.substr(longest + 1);
   const size_t end = rest.find_first_of(".[");
   const std::string key = rest.substr(0, end);
-  for (const io::Field& f : in->fields)
-    if (f.key == key) return "";
-  return end == std::string::npos ? path + ": section " + in->path + " declares no key " + key : "";
+  for (const io::SectionFields& s : sections)
+    if (s.path == section)
+      for (const io::Field& f : s.fields)
+        if (f.key == key) return "";
+  return end == std::string::npos ? path + ": section " + section + " declares no key " + key : "";
 }
 
 // Every key a candidate writes (its parameters' paths and the sections its fixed changes switch on) is

@@ -62,7 +62,7 @@ TEST(DeclaredFields, DocsTablesAreTheDeclarations) {
   const std::vector<SectionFields> sections = getDeclaredSections();
   for (const SectionFields& s : sections) {
     const std::string table = io::formatFieldTable(s);
-    EXPECT_NE(docs.find("Section `" + s.path + "`\n\n" + table), std::string::npos)
+    EXPECT_NE(docs.find(io::formatSectionHeading(s) + "\n\n" + table), std::string::npos)
         << "docs/scenario-format.md lacks or differs from the table of `" << s.path << "` (motostab fields " << s.path
         << "):\n" << table;
   }
@@ -82,7 +82,7 @@ TEST(DeclaredFields, ReadersRefuseValuesOutsideTheDeclaredRange) {
   int checked = 0;
   for (const SectionFields& s : getDeclaredSections())
     for (const Field& f : s.fields) {
-      if (f.shape != io::Shape::Number || !io::findKeyPath(tree, s.path + "." + f.key)) continue;
+      if (!s.isSelectedIn(tree) || f.shape != io::Shape::Number || !io::findKeyPath(tree, s.getKeyPath(f.key))) continue;
       const double u = rng.drawUniform(0.01, 10);
       double bad = 0;
       switch (f.range) {
@@ -91,7 +91,7 @@ TEST(DeclaredFields, ReadersRefuseValuesOutsideTheDeclaredRange) {
         case Range::Fraction: bad = rng.drawUniform() < 0.5 ? 1 + u : -u; break;
         default: continue;
       }
-      const std::string path = s.path + "." + f.key;
+      const std::string path = s.getKeyPath(f.key);
       try {
         const VehicleModel model(loadScenario(kEnduro, [&] {
           std::vector<std::string> o = kEverySection;
@@ -147,7 +147,7 @@ TEST(DeclaredFields, ParameterListIsTheMeasuredFields) {
   std::set<std::string> measured;
   for (const SectionFields& s : sections)
     for (const Field& f : s.fields)
-      if (f.measured) measured.insert(s.path + "." + f.key);
+      if (f.measured) measured.insert(s.getKeyPath(f.key));
   for (const auto& [path, kind] : listed) {
     bool found = measured.count(path) > 0;
     for (const std::string& m : measured) found |= path.rfind(m + ".", 0) == 0 || path.rfind(m + "[", 0) == 0;

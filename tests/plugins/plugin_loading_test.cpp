@@ -8,7 +8,11 @@
 
 #include "tests/support/temp_dir.h"
 #include "analysis/sweep.h"
+#include "core/portable_random.h"
+#include "diagnosis/candidates.h"
+#include "io/number.h"
 #include "plugins/builtin.h"
+#include "scenario/parameter_paths.h"
 #include "vehicle/vehicle_model.h"
 
 namespace motostab::plugins {
@@ -133,6 +137,44 @@ TEST(Plugins, SharedLibraryContactReachesEverySweepWorker) {
   registry.loadLibrary(MOTOSTAB_EXAMPLE_PLUGIN, {"test", 0, 0, ""});
   const VehicleModel fromRegistry(unlisted, registry);
   EXPECT_LT(compareSweeps(serial, sweepWithThreads(fromRegistry, 2)), 1e-7);
+}
+
+// A plugin library's declared measured field is a parameter: listed with the scenario's registry
+// (the built-in one does not know it), varied by diagnosis as `parameter:contact.stiffness_N_per_m`,
+// and only while `contact.model` selects the plugin. The value is drawn.
+TEST(Plugins, LibraryDeclaredFieldsAreParameters) {
+  core::PortableRandom rng(20261129);
+  const double k = rng.drawUniform(5e4, 5e5);
+  const std::string file = scenarioWith(
+      "fields", "contact: {model: example_vertical_spring, stiffness_N_per_m: " + io::formatShortest(k) + "}", MOTOSTAB_EXAMPLE_PLUGIN);
+  const Scenario s = loadScenario(file);
+  const YAML::Node tree = YAML::LoadFile(file);
+  const auto find = [](const std::vector<scenario::ScalarParameter>& all, const std::string& path) {
+    return std::find_if(all.begin(), all.end(), [&](const auto& p) { return p.path == path; }) != all.end();
+  };
+  const auto sections = listSectionFields(makeScenarioRegistry(s));
+  const auto parameters = scenario::listScalarParameters(tree, sections);
+  ASSERT_TRUE(find(parameters, "contact.stiffness_N_per_m"));
+  for (const auto& p : parameters)
+    if (p.path == "contact.stiffness_N_per_m") {
+      EXPECT_EQ(p.value, k);
+      EXPECT_TRUE(p.positive);
+    }
+  EXPECT_FALSE(find(scenario::listScalarParameters(tree, listSectionFields(makeBuiltinRegistry())), "contact.stiffness_N_per_m"));
+  const auto candidates = diagnosis::listCandidates(tree, {}, nullptr, {}, sections);
+  EXPECT_TRUE(std::any_of(candidates.begin(), candidates.end(),
+                          [](const auto& c) { return c.name == "parameter:contact.stiffness_N_per_m"; }));
+  // Another contact model selected: the plugin's keys do not apply.
+  YAML::Node other = YAML::Clone(tree);
+  other["contact"]["model"] = "rolling_no_slip";
+  EXPECT_FALSE(find(scenario::listScalarParameters(other, sections), "contact.stiffness_N_per_m"));
+  // Read through the declaration: its range is checked at the key.
+  try {
+    const VehicleModel bad(loadScenario(file, {"contact.stiffness_N_per_m=-" + io::formatShortest(k)}));
+    ADD_FAILURE() << "a negative stiffness was accepted";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.getLocation().key, "contact.stiffness_N_per_m");
+  }
 }
 
 TEST(Plugins, ModelExtensionsReachEverySweepWorker) {

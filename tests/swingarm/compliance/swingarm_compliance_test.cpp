@@ -132,8 +132,11 @@ TEST(SwingarmCompliance, TiltedAxisTrimsWithSmallLateralStates) {
 
 #include <fstream>
 
+#include "core/portable_random.h"
+#include "io/number.h"
 #include "plugins/builtin.h"
 #include "swingarm/identification/decomposition.h"
+#include "swingarm/identification/swingarm_uncertainty.h"
 
 namespace motostab::swingarm {
 namespace {
@@ -208,6 +211,55 @@ TEST(SwingarmCompliance, AxesFileIsReadOnceAtLoad) {
   EXPECT_EQ(s.inputs->getReadCount(axes.string()), 1);
   const scenario::Scenario late = loadScenario(scenarioFile.string());
   EXPECT_THROW(VehicleModel{late}, io::InputError);
+}
+
+// The standard errors `motostab identify swingarm` writes as an `uncertainty:` section (drawn here) are
+// keyed by declared number fields of the axis sections, and load beside the enduro's inline axes: each
+// path names a number of the scenario.
+TEST(SwingarmCompliance, IdentifiedUncertaintiesAreDeclaredAxisFields) {
+  core::PortableRandom rng(20261129);
+  swingarm::identification::SwingarmIdentification id;
+  for (auto* m : {&id.bending, &id.torsion, &id.twist})
+    for (auto* e : {&m->arm, &m->betaDeg, &m->stiffness, &m->damping}) e->stderr_ = rng.drawUniform(1e-3, 10);
+  const YAML::Node written = YAML::Load(swingarm::identification::formatSwingarmUncertainty(id))["uncertainty"];
+  ASSERT_TRUE(written.IsMap());
+  EXPECT_EQ(written.size(), 12u);
+  YAML::Node tree = YAML::LoadFile(kEnduro);
+  tree["uncertainty"] = written;
+  for (const auto& kv : written) {
+    const std::string path = kv.first.as<std::string>();
+    const size_t dot = path.rfind('.');
+    const std::string section = path.substr(0, dot), key = path.substr(dot + 1);
+    ASSERT_EQ(section.rfind("swingarm.", 0), 0u) << path;
+    const io::Field& f = getSwingarmAxisFields(section.substr(9)).get(key);
+    EXPECT_EQ(f.shape, io::Shape::Number) << path;
+  }
+  const scenario::Scenario s = scenario::readScenarioTree(tree, kEnduro, {});
+  EXPECT_EQ(s.uncertainty.size(), 12u);
+}
+
+// A value the identification writes beside an axis is checked where it stands (at the top of the axis
+// or nested under `axis`): a negative one, drawn, is an input error at its key path.
+TEST(SwingarmCompliance, IdentificationValuesAreChecked) {
+  core::PortableRandom rng(7);
+  const std::string bad = io::formatShortest(-rng.drawUniform(0.01, 5));
+  const std::string base = "arm_m: 0.388, beta_deg: 90, stiffness_Nm_per_rad: 94200, damping_Nms_per_rad: 2.25";
+  const std::pair<std::string, std::string> cases[] = {
+      {"{" + base + ", frequency_hz: " + bad + "}", "swingarm.bending.frequency_hz"},
+      {"{stiffness_Nm_per_rad: 94200, damping_Nms_per_rad: 2.25, axis: {arm_m: 0.388, beta_deg: 90, arm_m_stderr: " + bad + "}}",
+       "swingarm.bending.axis.arm_m_stderr"}};
+  for (const auto& [value, key] : cases) {
+    try {
+      const VehicleModel model(loadScenario(kEnduro, {"swingarm.compliance=bending", "swingarm.bending=" + value}));
+      ADD_FAILURE() << key << " accepted";
+    } catch (const io::InputError& e) {
+      EXPECT_EQ(e.getLocation().key, key) << e.what();
+    }
+  }
+  // The axis nested and beside it at once is refused (the geometry is given once).
+  EXPECT_THROW(VehicleModel(loadScenario(kEnduro, {"swingarm.compliance=bending",
+                                                    "swingarm.bending={" + base + ", axis: {arm_m: 0.3, beta_deg: 90}}"})),
+               io::InputError);
 }
 
 }  // namespace
