@@ -4,6 +4,8 @@
 #include "apps/commands.h"
 #include "io/input_error.h"
 #include "io/result_error.h"
+#include "io/field.h"
+#include "plugins/builtin.h"
 #include "plugins/plugin_api.h"
 
 // Exit codes (docs/commands.md): 0 done; 2 bad input (io::InputError, CLI11's parse errors); 3 valid input
@@ -33,7 +35,13 @@ int main(int argc, char** argv) {
     std::cerr << "motostab: cannot write output: " << e.what() << "\n";
     return 2;
   } catch (const motostab::io::InputError& e) {
-    std::cerr << "motostab: input error: " << e.what() << "\n";
+    // A key no reader knows: what its section declares (the built-in declarations).
+    const bool unknown = e.getReason().rfind("unknown key", 0) == 0;
+    const std::string hint = unknown ? motostab::io::describeDeclaredKeys(
+                                           motostab::plugins::listSectionFields(motostab::plugins::makeBuiltinRegistry()),
+                                           e.getLocation().key)
+                                     : "";
+    std::cerr << "motostab: input error: " << e.what() << hint << "\n";
     return 2;
   } catch (const motostab::io::ResultError& e) {
     std::cerr << "motostab: no result: " << e.what() << "\n";

@@ -1,5 +1,6 @@
 #include "io/field.h"
 
+#include <algorithm>
 #include <stdexcept>
 #include <utility>
 
@@ -70,6 +71,46 @@ const Field& SectionFields::get(const std::string& key) const {
   for (const Field& f : fields)
     if (f.key == key) return f;
   throw std::logic_error("section " + path + " declares no field " + key);
+}
+
+namespace {
+
+// Levenshtein distance of two keys (insertions, deletions, substitutions).
+size_t calcEditDistance(const std::string& a, const std::string& b) {
+  std::vector<size_t> row(b.size() + 1);
+  for (size_t j = 0; j <= b.size(); ++j) row[j] = j;
+  for (size_t i = 1; i <= a.size(); ++i) {
+    size_t diagonal = row[0];
+    row[0] = i;
+    for (size_t j = 1; j <= b.size(); ++j) {
+      const size_t above = row[j];
+      row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] == b[j - 1] ? 0 : 1)});
+      diagonal = above;
+    }
+  }
+  return row[b.size()];
+}
+
+}  // namespace
+
+std::string describeDeclaredKeys(const std::vector<SectionFields>& sections, const std::string& keyPath) {
+  const size_t dot = keyPath.rfind('.');
+  const std::string parent = dot == std::string::npos ? "" : keyPath.substr(0, dot);
+  const std::string key = dot == std::string::npos ? keyPath : keyPath.substr(dot + 1);
+  std::vector<std::string> declared;
+  for (const SectionFields& s : sections)
+    if (s.path == parent)
+      for (const Field& f : s.fields)
+        if (std::find(declared.begin(), declared.end(), f.key) == declared.end()) declared.push_back(f.key);
+  if (declared.empty()) return "";
+  std::string closest;
+  size_t best = std::max<size_t>(2, key.size() / 4) + 1;
+  for (const std::string& d : declared)
+    if (const size_t e = calcEditDistance(key, d); e < best) best = e, closest = d;
+  if (!closest.empty()) return " (did you mean `" + closest + "`?)";
+  std::string list;
+  for (const std::string& d : declared) list += (list.empty() ? "" : ", ") + d;
+  return " (`" + (parent.empty() ? std::string("the top level") : parent) + "` declares: " + list + ")";
 }
 
 std::string SectionFields::getKeyPath(const std::string& key) const { return path.empty() ? key : path + "." + key; }

@@ -96,6 +96,11 @@ std::array<double, 3> readVector3(YamlMap& m, const Field& field);
 /// The range as the docs tables print it: "> 0", ">= 0", "0 < x < 1", "any" (a non-number: "-"), or the note.
 std::string formatRange(const Field& field);
 
+/// For an "unknown key" error at `keyPath` ("geometry.trial_m"): what the sections of its parent path
+/// declare, " (did you mean `trail_m`?)" for a declared key within a few typing errors, else
+/// " (`geometry` declares: wheelbase_m, trail_m, ...)"; "" when no section of that path is declared.
+std::string describeDeclaredKeys(const std::vector<SectionFields>& sections, const std::string& keyPath);
+
 /// The heading of a section's table: "Section `PATH`" ("Top level" for the path ""), with its
 /// selector: "Section `contact` (`contact.model`: `relaxation_linear`)".
 std::string formatSectionHeading(const SectionFields& section);

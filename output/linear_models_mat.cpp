@@ -2,6 +2,8 @@
 
 #include <matio.h>
 
+#include <cerrno>
+#include <cstring>
 #include <fstream>
 #include <memory>
 #include <sstream>
@@ -67,14 +69,16 @@ void checkModels(const std::vector<LinearModel>& models) {
   }
 }
 
-// Writes the variables into a new MAT 5 file at `path`.
-void writeMatFile(const std::string& path, const std::vector<MatVar>& vars) {
-  mat_t* mat = Mat_CreateVer(path.c_str(), nullptr, MAT_FT_MAT5);
-  if (!mat) throw io::OutputError(path, "matio cannot create the file");
+// Writes the variables into a new MAT 5 file at `scratch`, the temporary of the user's `file` (named in errors).
+void writeMatFile(const std::string& scratch, const std::string& file, const std::vector<MatVar>& vars) {
+  errno = 0;
+  mat_t* mat = Mat_CreateVer(scratch.c_str(), nullptr, MAT_FT_MAT5);
+  const std::string reason = errno ? std::string(": ") + std::strerror(errno) : "";
+  if (!mat) throw io::OutputError(file, "matio cannot create its temporary " + scratch + reason);
   bool ok = true;
   for (const MatVar& v : vars) ok = ok && v && Mat_VarWrite(mat, v.get(), MAT_COMPRESSION_NONE) == 0;
   Mat_Close(mat);
-  if (!ok) throw io::OutputError(path, "matio could not write the variables (a full disk?)");
+  if (!ok) throw io::OutputError(file, "matio could not write the variables into its temporary " + scratch + " (a full disk?)");
 }
 
 }  // namespace
@@ -99,7 +103,7 @@ void writeLinearModelsMat(const std::filesystem::path& file, const std::vector<L
   // matio writes to a path; the bytes then go through the atomic writer (complete or absent).
   const std::string scratch = io::makeTemporarySibling(file.string() + ".matio");
   try {
-    writeMatFile(scratch, vars);
+    writeMatFile(scratch, file.string(), vars);
     std::ifstream in(scratch, std::ios::binary);
     std::ostringstream bytes;
     bytes << in.rdbuf();

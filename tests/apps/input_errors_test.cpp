@@ -83,6 +83,16 @@ TEST(CliInput, BadSetNamesTheOverride) {
   expectInputError({"check", kWhipple, "--set", "geometry={wheelbase_m: 1, wheelbase_m: 2}"}, "duplicate key");
 }
 
+// A mistyped key of a declared section: the error says which declared key was meant, or lists them.
+TEST(CliInput, UnknownKeyNamesTheDeclaredOnes) {
+  const std::string enduro = std::string(MOTOSTAB_SOURCE_DIR) + "/scenarios/enduro.yaml";
+  expectInputError({"check", kWhipple, "--set", "geometry.trial_m=0.08"}, "unknown key (value from --set geometry.trial_m=0.08) (did you mean `trail_m`?)");
+  expectInputError({"check", enduro, "--set", "swingarm.bending.stifness_Nm_per_rad=1"}, "(did you mean `stiffness_Nm_per_rad`?)");
+  expectInputError({"check", enduro, "--set", "contact.front.cornering_stifness_per_rad=1"}, "(did you mean `cornering_stiffness_per_rad`?)");
+  expectInputError({"check", kWhipple, "--set", "speeds_mps={start: 0, stop: 5, step: 1, extra: 2}"},
+                   "(`speeds_mps` declares: start, stop, step)");
+}
+
 TEST(CliInput, BadScenarioFiles) {
   const auto dir = makeTempDir("cli_errors");
   std::filesystem::create_directories(dir);

@@ -80,5 +80,29 @@ TEST(Field, TableHasOneRowPerFieldWithUnitRangeAndDefault) {
   EXPECT_EQ(formatFieldTable(section), expected);
 }
 
+// A key one typing error from a declared one (drawn: a letter replaced, dropped or added) is suggested;
+// a key far from all lists the section's keys; a path no section declares gets no hint.
+TEST(Field, UnknownKeysGetTheDeclaredKeyMeant) {
+  const std::vector<SectionFields> sections{
+      {"geometry",
+       {Field::number("wheelbase_m", "m", Range::Positive, "w"), Field::number("trail_m", "m", Range::Any, "c"),
+        Field::number("steer_axis_tilt_deg", "deg", Range::Any, "lambda")}}};
+  PortableRandom rng(31);
+  for (int trial = 0; trial < 30; ++trial) {
+    const std::string key = sections[0].fields[static_cast<size_t>(rng.drawUniform() * 3) % 3].key;
+    std::string typo = key;
+    const size_t at = static_cast<size_t>(rng.drawUniform() * typo.size()) % typo.size();
+    const char letter = static_cast<char>('a' + static_cast<int>(rng.drawUniform() * 26) % 26);
+    switch (trial % 3) {
+      case 0: typo[at] = typo[at] == letter ? 'q' : letter; break;
+      case 1: typo.erase(at, 1); break;
+      default: typo.insert(at, 1, letter);
+    }
+    EXPECT_EQ(describeDeclaredKeys(sections, "geometry." + typo), " (did you mean `" + key + "`?)") << typo;
+  }
+  EXPECT_EQ(describeDeclaredKeys(sections, "geometry.colour"), " (`geometry` declares: wheelbase_m, trail_m, steer_axis_tilt_deg)");
+  EXPECT_EQ(describeDeclaredKeys(sections, "nowhere.trial_m"), "");
+}
+
 }  // namespace
 }  // namespace motostab::io

@@ -76,4 +76,23 @@ TEST(LinearModelsMat, RefusesModelsItCannotStack) {
   EXPECT_FALSE(std::filesystem::exists(file));
 }
 
+// A .mat file that cannot be written where the user asked (its folder is a file) is an OutputError
+// naming that file, not matio's temporary; the file in the way is left as it was.
+TEST(LinearModelsMat, UnwritableFileIsAnOutputErrorNamingIt) {
+  const VehicleModel model(loadScenario(kEnduro));
+  const LinearModel lm = linearize(model, calcTrim(model, 10));
+  const auto taken = makeTempDir("mat_unwritable") / "taken";
+  std::ofstream(taken) << "a user's file\n";
+  const auto file = taken / "linear_models.mat";
+  try {
+    writeLinearModelsMat(file, {lm});
+    ADD_FAILURE() << "no error";
+  } catch (const io::OutputError& e) {
+    EXPECT_EQ(e.getLocation().file, file.string());
+    EXPECT_NE(e.getReason().find("matio cannot create"), std::string::npos) << e.getReason();
+  }
+  std::ifstream in(taken);
+  EXPECT_EQ(std::string(std::istreambuf_iterator<char>(in), {}), "a user's file\n");
+}
+
 }  // namespace motostab::output
