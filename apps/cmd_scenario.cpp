@@ -69,8 +69,11 @@ void registerScenarioCommands(CLI::App& app) {
     const std::vector<io::SectionFields> all = plugins::listSectionFields(plugins::makeBuiltinRegistry());
     for (const std::string& name : *sections)
       if (std::none_of(all.begin(), all.end(), [&](const io::SectionFields& s) { return s.path == name; })) {
+        std::vector<std::string> paths;  // each path once ("" is the top level)
+        for (const io::SectionFields& s : all)
+          if (std::find(paths.begin(), paths.end(), s.path) == paths.end()) paths.push_back(s.path);
         std::string known;
-        for (const io::SectionFields& s : all) known += (known.empty() ? "" : ", ") + s.path;
+        for (const std::string& p : paths) known += (known.empty() ? "" : ", ") + (p.empty() ? std::string("\"\"") : p);
         throw io::InputError({"command line", 0, 0, name}, "no such section (known: " + known + ")");
       }
     for (const io::SectionFields& s : all)

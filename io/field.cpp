@@ -97,9 +97,11 @@ std::string describeDeclaredKeys(const std::vector<SectionFields>& sections, con
   const size_t dot = keyPath.rfind('.');
   const std::string parent = dot == std::string::npos ? "" : keyPath.substr(0, dot);
   const std::string key = dot == std::string::npos ? keyPath : keyPath.substr(dot + 1);
+  // Only sections that always apply: a selected one's keys may belong to another model than the file's,
+  // and the top level's to another file than a scenario (a measured-data file, a fragment).
   std::vector<std::string> declared;
   for (const SectionFields& s : sections)
-    if (s.path == parent)
+    if (!parent.empty() && s.path == parent && s.whenPath.empty())
       for (const Field& f : s.fields)
         if (std::find(declared.begin(), declared.end(), f.key) == declared.end()) declared.push_back(f.key);
   if (declared.empty()) return "";
@@ -110,7 +112,7 @@ std::string describeDeclaredKeys(const std::vector<SectionFields>& sections, con
   if (!closest.empty()) return " (did you mean `" + closest + "`?)";
   std::string list;
   for (const std::string& d : declared) list += (list.empty() ? "" : ", ") + d;
-  return " (`" + (parent.empty() ? std::string("the top level") : parent) + "` declares: " + list + ")";
+  return " (`" + parent + "` declares: " + list + ")";
 }
 
 std::string SectionFields::getKeyPath(const std::string& key) const { return path.empty() ? key : path + "." + key; }

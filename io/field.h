@@ -98,7 +98,8 @@ std::string formatRange(const Field& field);
 
 /// For an "unknown key" error at `keyPath` ("geometry.trial_m"): what the sections of its parent path
 /// declare, " (did you mean `trail_m`?)" for a declared key within a few typing errors, else
-/// " (`geometry` declares: wheelbase_m, trail_m, ...)"; "" when no section of that path is declared.
+/// " (`geometry` declares: wheelbase_m, trail_m, ...)"; "" when no section of that path always applies
+/// (none declared, a top-level key, or only sections with a selector such as the contact models').
 std::string describeDeclaredKeys(const std::vector<SectionFields>& sections, const std::string& keyPath);
 
 /// The heading of a section's table: "Section `PATH`" ("Top level" for the path ""), with its

@@ -72,10 +72,10 @@ bool isGeometryKey(const std::string& key) {
 // identification's fragment nests it under `axis:` and gives both; arm and beta are used then.
 void readAxisGeometry(YamlMap& m, const io::SectionFields& f, AxisSpec& a) {
   if (m.has("arm_m") || m.has("beta_deg")) {
-    for (const char* k : {"arm_m", "beta_deg"})
-      if (!m.has(k)) m.getDouble(k);  // the missing-key error: the pair goes together
-    a.arm = io::readNumber(m, f.get("arm_m"));
-    a.beta = io::readNumber(m, f.get("beta_deg")) * M_PI / 180;
+    // The pair goes together: a missing one is the missing-key error (arm first, as it is read first).
+    auto readPaired = [&](const char* k) { return m.has(k) ? io::readNumber(m, f.get(k)) : m.getDouble(k); };
+    a.arm = readPaired("arm_m");
+    a.beta = readPaired("beta_deg") * M_PI / 180;
     for (const char* k : {"point_m", "direction"})
       if (m.has(k)) io::readVector3(m, f.get(k));
   } else {

@@ -88,7 +88,10 @@ TEST(CliInput, UnknownKeyNamesTheDeclaredOnes) {
   const std::string enduro = std::string(MOTOSTAB_SOURCE_DIR) + "/scenarios/enduro.yaml";
   expectInputError({"check", kWhipple, "--set", "geometry.trial_m=0.08"}, "unknown key (value from --set geometry.trial_m=0.08) (did you mean `trail_m`?)");
   expectInputError({"check", enduro, "--set", "swingarm.bending.stifness_Nm_per_rad=1"}, "(did you mean `stiffness_Nm_per_rad`?)");
-  expectInputError({"check", enduro, "--set", "contact.front.cornering_stifness_per_rad=1"}, "(did you mean `cornering_stiffness_per_rad`?)");
+  // A contact model's keys depend on the model the file selects: no guess there.
+  const auto contact = runCli({"check", enduro, "--set", "contact.front.cornering_stifness_per_rad=1"}, getRunDir());
+  EXPECT_EQ(contact.exitCode, 2);
+  EXPECT_EQ(contact.output.find("did you mean"), std::string::npos) << contact.output;
   expectInputError({"check", kWhipple, "--set", "speeds_mps={start: 0, stop: 5, step: 1, extra: 2}"},
                    "(`speeds_mps` declares: start, stop, step)");
 }

@@ -102,6 +102,11 @@ TEST(Field, UnknownKeysGetTheDeclaredKeyMeant) {
   }
   EXPECT_EQ(describeDeclaredKeys(sections, "geometry.colour"), " (`geometry` declares: wheelbase_m, trail_m, steer_axis_tilt_deg)");
   EXPECT_EQ(describeDeclaredKeys(sections, "nowhere.trial_m"), "");
+  // A section with a selector (a contact model's) and the top level give no hint.
+  std::vector<SectionFields> selected{sections[0].selectedBy("contact.model", "x")};
+  EXPECT_EQ(describeDeclaredKeys(selected, "geometry.trial_m"), "");
+  std::vector<SectionFields> top{{"", {Field::number("gravity_mps2", "m/s^2", Range::NonNegative, "g")}}};
+  EXPECT_EQ(describeDeclaredKeys(top, "gravity_mps3"), "");
 }
 
 }  // namespace

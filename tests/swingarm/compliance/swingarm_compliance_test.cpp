@@ -257,9 +257,13 @@ TEST(SwingarmCompliance, IdentificationValuesAreChecked) {
     }
   }
   // The axis nested and beside it at once is refused (the geometry is given once).
-  EXPECT_THROW(VehicleModel(loadScenario(kEnduro, {"swingarm.compliance=bending",
-                                                    "swingarm.bending={" + base + ", axis: {arm_m: 0.3, beta_deg: 90}}"})),
-               io::InputError);
+  try {
+    const VehicleModel model(loadScenario(kEnduro, {"swingarm.compliance=bending", "swingarm.bending={" + base + ", axis: {arm_m: 0.3, beta_deg: 90}}"}));
+    ADD_FAILURE() << "the axis given twice was accepted";
+  } catch (const io::InputError& e) {
+    EXPECT_EQ(e.getLocation().key, "swingarm.bending.arm_m") << e.what();
+    EXPECT_NE(e.getReason().find("unknown key"), std::string::npos) << e.what();
+  }
 }
 
 }  // namespace
