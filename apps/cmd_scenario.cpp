@@ -62,12 +62,19 @@ void registerScenarioCommands(CLI::App& app) {
     model.describeExtensions(std::cout);
   });
 
-  auto sections = std::make_shared<std::vector<std::string>>();
+  struct FieldsArgs {
+    std::vector<std::string> sections, libraries;
+  };
+  auto fa = std::make_shared<FieldsArgs>();
   CLI::App* f = app.add_subcommand("fields", "List the declared fields of scenario sections: key, unit, range, default, meaning");
-  f->add_option("section", *sections, "Sections to list, as key paths (geometry, rider_lean, swingarm.suspension; \"\" the top level); default all");
-  f->callback([sections]() {
-    const std::vector<io::SectionFields> all = plugins::listSectionFields(plugins::makeBuiltinRegistry());
-    for (const std::string& name : *sections)
+  f->add_option("section", fa->sections, "Sections to list, as key paths (geometry, rider_lean, swingarm.suspension; \"\" the top level); default all");
+  f->add_option("--plugin", fa->libraries, "A plugin library (as a scenario's `plugins:` lists it) whose sections to list too; repeatable");
+  f->callback([fa]() {
+    plugins::PluginRegistry registry = plugins::makeBuiltinRegistry();
+    for (const std::string& library : fa->libraries) registry.loadLibrary(library, {"--plugin", 0, 0, library});
+    const std::vector<io::SectionFields> all = plugins::listSectionFields(registry);
+    const std::vector<std::string>& sections = fa->sections;
+    for (const std::string& name : sections)
       if (std::none_of(all.begin(), all.end(), [&](const io::SectionFields& s) { return s.path == name; })) {
         std::vector<std::string> paths;  // each path once ("" is the top level)
         for (const io::SectionFields& s : all)
@@ -77,7 +84,7 @@ void registerScenarioCommands(CLI::App& app) {
         throw io::InputError({"command line", 0, 0, name}, "no such section (known: " + known + ")");
       }
     for (const io::SectionFields& s : all)
-      if (sections->empty() || std::find(sections->begin(), sections->end(), s.path) != sections->end())
+      if (sections.empty() || std::find(sections.begin(), sections.end(), s.path) != sections.end())
         std::cout << io::formatSectionHeading(s) << "\n\n" << io::formatFieldTable(s) << "\n";
   });
 

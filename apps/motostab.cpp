@@ -36,7 +36,7 @@ int main(int argc, char** argv) {
     return 2;
   } catch (const motostab::io::InputError& e) {
     // A key no reader knows: what its section declares (the built-in declarations).
-    const bool unknown = e.getReason().rfind("unknown key", 0) == 0;
+    const bool unknown = e.getProblem() == motostab::io::InputProblem::UnknownKey;
     const std::string hint = unknown ? motostab::io::describeDeclaredKeys(
                                            motostab::plugins::listSectionFields(motostab::plugins::makeBuiltinRegistry()),
                                            e.getLocation().key)

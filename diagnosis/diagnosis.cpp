@@ -46,9 +46,9 @@ std::vector<const Candidate*> probeCandidates(const ScenarioSource& source, cons
   return out;
 }
 
-std::vector<std::pair<std::string, double>> getUncertainty(const ScenarioSource& source, const DiagnosisOptions& opt) {
+std::vector<std::pair<std::string, double>> getUncertainty(const scenario::Scenario& s) {
   std::vector<std::pair<std::string, double>> out;
-  for (const auto& u : source.load(opt.overrides).uncertainty) out.push_back({u.path, u.sigma});
+  for (const auto& u : s.uncertainty) out.push_back({u.path, u.sigma});
   return out;
 }
 
@@ -56,8 +56,9 @@ std::vector<std::pair<std::string, double>> getUncertainty(const ScenarioSource&
 // are not one value and go to `unavailable`.
 std::vector<Candidate> selectCandidates(const ScenarioSource& source, const MeasuredData& data, const Predictor& nominal,
                                         const DiagnosisOptions& opt, std::vector<std::string>& unavailable) {
-  const auto sections = plugins::listSectionFields(plugins::makeScenarioRegistry(source.load(opt.overrides)));
-  std::vector<Candidate> listed = listCandidates(source.makeTree(opt.overrides), getUncertainty(source, opt), &unavailable,
+  const scenario::Scenario s = source.load(opt.overrides);
+  const auto sections = plugins::listSectionFields(plugins::makeScenarioRegistry(s));
+  std::vector<Candidate> listed = listCandidates(source.makeTree(opt.overrides), getUncertainty(s), &unavailable,
                                                  findSteerRateAmplitude(data, nominal), sections);
   for (const std::string& path : getControllerPaths(data))
     for (auto it = listed.begin(); it != listed.end();)
@@ -86,9 +87,9 @@ std::vector<Candidate> selectCandidates(const ScenarioSource& source, const Meas
   try {
     return filterCandidates(listed, opt.candidates);
   } catch (const InputError& e) {  // say why a known candidate is missing
-    std::string why = e.getReason();
+    std::string why;
     for (const auto& u : unavailable) why += "; " + u;
-    throw InputError(e.getLocation(), why);
+    throw e.withReasonAdded(why);
   }
 }
 

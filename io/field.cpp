@@ -166,6 +166,10 @@ SectionFields SectionFields::selectedBy(std::string selectorPath, std::string va
   return s;
 }
 
+bool SectionFields::isSameSectionAs(const SectionFields& other) const {
+  return path == other.path && whenPath == other.whenPath && whenValue == other.whenValue;
+}
+
 std::string formatSectionHeading(const SectionFields& s) {
   const std::string head = s.path.empty() ? "Top level" : "Section `" + s.path + "`";
   return s.whenPath.empty() ? head : head + " (`" + s.whenPath + "`: `" + s.whenValue + "`)";

@@ -80,6 +80,8 @@ struct SectionFields {
   bool isSelectedIn(const YAML::Node& tree) const;
   /// The same section, applying when the key at `selectorPath` is `value` (`contact.model`, `magic_formula`).
   SectionFields selectedBy(std::string selectorPath, std::string value) const;
+  /// Whether `other` declares keys of the same section: the same path and selector.
+  bool isSameSectionAs(const SectionFields& other) const;
   /// The field of `key`; std::logic_error if none is declared (a reader asking for an undeclared key is a bug).
   const Field& get(const std::string& key) const;
   /// The key path of one of its keys, as --set takes it ("swingarm.suspension.damping_Ns_per_m"; at the top level the key).

@@ -12,7 +12,9 @@ std::string InputLocation::describe() const {
   return s;
 }
 
-InputError::InputError(const InputLocation& where, const std::string& what)
-    : std::runtime_error(where.describe() + ": " + what), where_(where), reason_(what) {}
+InputError::InputError(const InputLocation& where, const std::string& what, InputProblem problem)
+    : std::runtime_error(where.describe() + ": " + what), where_(where), reason_(what), problem_(problem) {}
+
+InputError InputError::withReasonAdded(const std::string& more) const { return InputError(where_, reason_ + more, problem_); }
 
 }  // namespace motostab::io

@@ -15,16 +15,23 @@ struct InputLocation {
   std::string describe() const;
 };
 
+/// What is wrong with the input: a value (or its absence), or a key no reader knows.
+enum class InputProblem { Value, UnknownKey };
+
 /// Bad input: the message names the file, line, column and key. Never a crash or a silent default.
 class InputError : public std::runtime_error {
  public:
-  InputError(const InputLocation& where, const std::string& what);
+  InputError(const InputLocation& where, const std::string& what, InputProblem problem = InputProblem::Value);
   const InputLocation& getLocation() const { return where_; }
   const std::string& getReason() const { return reason_; }
+  InputProblem getProblem() const { return problem_; }
+  /// The same error with `more` after its reason (where the value came from, what else was tried).
+  InputError withReasonAdded(const std::string& more) const;
 
  private:
   InputLocation where_;
   std::string reason_;
+  InputProblem problem_;
 };
 
 /// Output the user asked for cannot be written where they asked (a folder that is a file, no permission,

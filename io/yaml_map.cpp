@@ -347,7 +347,7 @@ std::vector<std::string> YamlMap::getFilePathList(const std::string& key) {
 void YamlMap::finish() const {
   for (const auto& kv : node_) {
     const std::string k = kv.first.Scalar();
-    if (!used_->count(k)) throw InputError(locationOf(kv.first, file_, childPath(k)), "unknown key");
+    if (!used_->count(k)) throw InputError(locationOf(kv.first, file_, childPath(k)), "unknown key", InputProblem::UnknownKey);
   }
 }
 

@@ -23,7 +23,7 @@
 
 /// Version of this interface. A library built against another version is refused at load; bump it
 /// whenever a type in this header changes layout or meaning.
-#define MOTOSTAB_PLUGIN_API_VERSION 8
+#define MOTOSTAB_PLUGIN_API_VERSION 9
 
 namespace motostab::plugins {
 

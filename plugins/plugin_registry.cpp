@@ -125,7 +125,7 @@ void PluginRegistry::addExtensionModel(const std::string& name, ExtensionModelFa
 
 void PluginRegistry::addSectionFields(io::SectionFields fields) {
   for (const io::SectionFields& f : sectionFields_)
-    if (f.path == fields.path && f.whenPath == fields.whenPath && f.whenValue == fields.whenValue)
+    if (f.isSameSectionAs(fields))
       throw std::runtime_error("the fields of section '" + fields.path + "'" +
                                (f.whenPath.empty() ? "" : " for " + f.whenPath + " " + f.whenValue) + " are declared twice");
   sectionFields_.push_back(std::move(fields));
@@ -135,9 +135,7 @@ std::vector<io::SectionFields> listSectionFields(const PluginRegistry& registry)
   std::vector<io::SectionFields> out = scenario::getScenarioFields();
   for (const io::SectionFields& f : registry.getSectionFields()) {
     // A plugin reading the rest of a loader's section (the swingarm models) adds its keys to it.
-    auto same = std::find_if(out.begin(), out.end(), [&](const io::SectionFields& s) {
-      return s.path == f.path && s.whenPath == f.whenPath && s.whenValue == f.whenValue;
-    });
+    auto same = std::find_if(out.begin(), out.end(), [&](const io::SectionFields& s) { return s.isSameSectionAs(f); });
     if (same == out.end()) out.push_back(f);
     else same->fields.insert(same->fields.end(), f.fields.begin(), f.fields.end());
   }

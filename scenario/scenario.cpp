@@ -182,7 +182,7 @@ void rethrowNamingOverride(const InputError& e, const std::vector<std::string>& 
   for (auto o = overrides.rbegin(); o != overrides.rend(); ++o) {
     const std::string p = getOverridePath(*o);
     if (key == p || key.rfind(p + ".", 0) == 0 || key.rfind(p + "[", 0) == 0)
-      throw InputError(e.getLocation(), e.getReason() + " (value from --set " + *o + ")");
+      throw e.withReasonAdded(" (value from --set " + *o + ")");
   }
   throw e;
 }

@@ -94,6 +94,11 @@ TEST(CliInput, UnknownKeyNamesTheDeclaredOnes) {
   EXPECT_EQ(contact.output.find("did you mean"), std::string::npos) << contact.output;
   expectInputError({"check", kWhipple, "--set", "speeds_mps={start: 0, stop: 5, step: 1, extra: 2}"},
                    "(`speeds_mps` declares: start, stop, step)");
+  // A bad value of a declared key is no unknown key: no list of keys.
+  const auto value = runCli({"check", kWhipple, "--set", "speeds_mps={start: 0, stop: 5, step: abc}"}, getRunDir());
+  EXPECT_EQ(value.exitCode, 2);
+  EXPECT_NE(value.output.find("speeds_mps.step"), std::string::npos) << value.output;
+  EXPECT_EQ(value.output.find("declares"), std::string::npos) << value.output;
 }
 
 TEST(CliInput, BadScenarioFiles) {

@@ -62,6 +62,28 @@ TEST(YamlMap, NonScalarKeyIsAnError) {
   EXPECT_EQ(e.getLocation().line, 1);
 }
 
+// An unread key is an UnknownKey problem at its own line, column and path; a bad value is not; words
+// added to the reason (where the value came from) keep both.
+TEST(YamlMap, UnknownKeysAreKnownAsSuch) {
+  YamlMap values = loadYamlFile(writeYaml("value.yaml", "w: abc\n"));
+  const InputError bad = catchInputError([&] { values.getDouble("w"); });
+  const std::string file = writeYaml("unknown.yaml", "sec:\n  v: 2\n  w: 3\n  colour: red\n");
+  YamlMap root = loadYamlFile(file);
+  YamlMap sec = root.getMap("sec");
+  sec.getDouble("v");
+  sec.getDouble("w");
+  EXPECT_EQ(bad.getProblem(), InputProblem::Value);
+  const InputError unknown = catchInputError([&] { sec.finish(); });
+  EXPECT_EQ(unknown.getProblem(), InputProblem::UnknownKey);
+  EXPECT_EQ(unknown.getLocation().key, "sec.colour");
+  EXPECT_EQ(unknown.getLocation().line, 4);
+  const InputError more = unknown.withReasonAdded(" (value from --set sec.colour=red)");
+  EXPECT_EQ(more.getProblem(), InputProblem::UnknownKey);
+  EXPECT_EQ(more.getLocation().line, 4);
+  EXPECT_EQ(more.getReason(), "unknown key (value from --set sec.colour=red)");
+  EXPECT_EQ(bad.withReasonAdded("!").getProblem(), InputProblem::Value);
+}
+
 TEST(YamlMap, NumbersMustBeFinite) {
   for (const char* bad : {".nan", ".NaN", "nan", ".inf", "-.inf", "inf", "1e999", "0x10", "1_000", "'abc'", "[1]", "{a: 1}", "~"}) {
     const std::string file = writeYaml("num.yaml", std::string("sec:\n  v: ") + bad + "\n  l: [1, 2]\n");

@@ -191,3 +191,8 @@ def test_a_scenario_with_a_plugin_library_equals_the_command_line(motostab, tmp_
     assert "bounce" in set(sweep.labels[0])  # the springs let the bicycle bounce
     # The plugin declares its stiffness a measured field: a parameter of the scenario that selects it.
     assert sprung.parameters()["contact.stiffness_N_per_m"] == 1.0e5
+    # `motostab fields --plugin` lists the library's declaration beside the built-in ones.
+    listed = run_cli("fields", "contact", "--plugin", plugin, cwd=tmp_path)
+    assert "(`contact.model`: `example_vertical_spring`)" in listed and "| `stiffness_N_per_m` | N/m | > 0 |" in listed
+    assert "example_vertical_spring" not in run_cli("fields", "contact", cwd=tmp_path)
+    assert "not a bare name searched" in run_cli("fields", "--plugin", os.path.basename(plugin), cwd=tmp_path, expect=2)
