@@ -345,6 +345,10 @@ Root* pickBest(std::vector<Root>& roots, Eligible eligible, Better better) {
 
 // The steer share below which an oscillation is not a wobble.
 constexpr double kWobbleSteer = 0.02;
+// A wobble coupled with the in-plane motion in a turn: its in-plane share at least this, and a steering
+// damper damping it at least this fraction as fast as the wobble (Re d lambda / d c).
+constexpr double kCoupledWobbleInPlane = 0.1;
+constexpr double kCoupledWobbleDamping = 0.25;
 
 // The lateral rigid-body modes (docs/methods.md): capsize (slowest roll-led real root), castor (most
 // negative steer-led real root), weave (of the lateral oscillations the one with the most roll, or the
@@ -468,6 +472,22 @@ void labelLateralModes(std::vector<Root>& roots, Capacity& cap, double zero) {
       cap.take(*c, ModeLabel::Capsize);
 }
 
+// In a turn the wobble couples with the in-plane motion (the roll tilts the steer motion into the plane
+// of the pitch and bounce): where their frequencies meet, oscillations share the steer, lateral and
+// in-plane motion, and a steering damper damps them alike. Those the damper damps at least a quarter
+// as fast as the wobble are wobbles too (beyond the label's one pair), whichever motion leads them.
+void labelCoupledWobble(std::vector<Root>& roots) {
+  const Root* wobble = nullptr;
+  for (const Root& r : roots)
+    if (r.label == ModeLabel::Wobble && r.steerDamping && *r.steerDamping < 0) wobble = &r;
+  if (!wobble) return;
+  const double damping = kCoupledWobbleDamping * *wobble->steerDamping;
+  for (Root& r : roots)
+    if (!r.label && r.oscillatory && r.auxiliary <= 0.5 && r.inPlane >= kCoupledWobbleInPlane &&
+        r.steer >= r.c.get(r.topCompliance) && r.steerDamping && *r.steerDamping <= damping)
+      r.label = ModeLabel::Wobble;
+}
+
 // In-plane, compliance, auxiliary and longitudinal roots by their family, largest share first; a root
 // whose label is taken keeps looking (`fallback`).
 void labelOtherModes(std::vector<Root>& roots, Capacity& cap) {
@@ -507,7 +527,9 @@ void labelOtherModes(std::vector<Root>& roots, Capacity& cap) {
     }
   }
   // What is left (e.g. a second lateral oscillation in a turn): the free label of its largest other
-  // share of at least 0.05 (in-plane, compliance, tyre lag), else other.
+  // share of at least 0.05 (in-plane, compliance, tyre lag); an oscillation the in-plane motion leads
+  // whose labels are all taken (in a turn overdamped in-plane roots and the pitch coupled with the
+  // wobble can outnumber them) keeps its own in-plane label, a second pair; else other.
   for (Root& r : roots) {
     if (r.label) continue;
     std::vector<std::pair<double, int>> shares{{r.inPlane, 0}, {r.compliance, 1}, {r.auxiliary, 2}};
@@ -518,6 +540,7 @@ void labelOtherModes(std::vector<Root>& roots, Capacity& cap) {
       if (kind == 1) cap.take(r, getComplianceLabel(r.topCompliance));
       if (kind == 2) cap.take(r, auxiliaryLabel(r));
     }
+    if (!r.label && r.oscillatory && findFamily(r) == Family::InPlane) r.label = inPlaneLabel(r);
     cap.take(r, ModeLabel::Other);
   }
 }
@@ -534,6 +557,7 @@ std::vector<ModeLabel> labelModes(const LinearModel& lin) {
   // A zero root the drift does not lead (its eigenvector mixed with a slow root's near a double root).
   for (Root& r : roots)
     if (std::abs(r.lambda) < zero) cap.take(r, ModeLabel::Neutral);
+  labelCoupledWobble(roots);
   labelOtherModes(roots, cap);
   std::vector<ModeLabel> out(lin.eigenvalues.size(), ModeLabel::Other);
   for (const Root& r : roots) {
@@ -611,8 +635,13 @@ void labelBranches(const std::vector<std::vector<ModeLabel>>& labels, std::vecto
 
 const ModeBranch* findLabelledBranch(const std::vector<ModeBranch>& branches, ModeLabel label, size_t k) {
   const ModeBranch* best = nullptr;
+  auto better = [k](const ModeBranch& b, const ModeBranch& than) {
+    const std::complex<double> l = b.eigenvalue[k], t = than.eigenvalue[k];
+    if ((l.imag() > 0) != (t.imag() > 0)) return l.imag() > t.imag();  // the upper member of a pair
+    return l.imag() > 0 && l.real() > t.real();                         // of two pairs, the less damped
+  };
   for (const ModeBranch& b : branches)
-    if (k < b.labels.size() && b.labels[k] == label && (!best || b.eigenvalue[k].imag() > best->eigenvalue[k].imag())) best = &b;
+    if (k < b.labels.size() && b.labels[k] == label && (!best || better(b, *best))) best = &b;
   return best;
 }
 

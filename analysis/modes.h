@@ -72,8 +72,9 @@ std::vector<ModeBranch> trackModes(const std::vector<LinearModel>& models, int t
 /// eigenvalue k at speed s) and its label to the most frequent of them.
 void labelBranches(const std::vector<std::vector<ModeLabel>>& labels, std::vector<ModeBranch>& branches);
 
-/// The branch labelled `label` at speed index k with the larger imaginary part there (the upper member
-/// of a complex pair), or nullptr when no branch has that label there.
+/// The branch labelled `label` at speed index k: the upper member of a complex pair (imaginary part > 0;
+/// of two pairs, a wobble coupled with the pitch in a turn, the one with the larger real part), or
+/// nullptr when no branch has that label there.
 const ModeBranch* findLabelledBranch(const std::vector<ModeBranch>& branches, ModeLabel label, size_t k);
 
 /// Cost of matching eigenvalue ka of `a` to kb of `b` (0 = identical).
