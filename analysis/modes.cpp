@@ -345,16 +345,27 @@ Root* pickBest(std::vector<Root>& roots, Eligible eligible, Better better) {
 
 // The steer share below which an oscillation is not a wobble.
 constexpr double kWobbleSteer = 0.02;
-// A wobble coupled with the in-plane motion in a turn: its in-plane share at least this, and a steering
-// damper damping it at least this fraction as fast as the wobble (Re d lambda / d c).
-constexpr double kCoupledWobbleInPlane = 0.1;
+// The in-plane share with which a lateral oscillation left without a label is named by its in-plane motion.
+constexpr double kInPlaneNamed = 0.25;
+// A wobble coupled with the in-plane motion: a steering damper damps it at least this fraction as fast
+// as the wobble (Re d lambda / d c).
 constexpr double kCoupledWobbleDamping = 0.25;
 
 // The lateral rigid-body modes (docs/methods.md): capsize (slowest roll-led real root), castor (most
 // negative steer-led real root), weave (of the lateral oscillations the one with the most roll, or the
 // pair of real roots it splits into at low speed), wobble (the oscillation with the most steer energy);
 // in a turn, a slow pair for a capsize joined with another root.
-void labelLateralModes(std::vector<Root>& roots, Capacity& cap, double zero) {
+// Whether `r` is the wobble coupled with the in-plane motion in a turn beside `wobble` (the oscillation a
+// steering damper damps most): led by the lateral or in-plane motion, steer at least its largest
+// compliance role's share, and damped by the damper at least kCoupledWobbleDamping as fast.
+bool isCoupledWobble(const Root& r, const Root& wobble) {
+  const Family family = findFamily(r);
+  return r.oscillatory && (family == Family::Lateral || family == Family::InPlane) && r.steer >= r.c.get(r.topCompliance) &&
+         wobble.steerDamping && *wobble.steerDamping < 0 && r.steerDamping &&
+         *r.steerDamping <= kCoupledWobbleDamping * *wobble.steerDamping;
+}
+
+void labelLateralModes(std::vector<Root>& roots, Capacity& cap, double zero, bool inTurn) {
   auto roll = [](const Root& r) { return r.c.get(StateRole::Roll); };
   auto moreRoll = [&](const Root& a, const Root& b) { return roll(a) > roll(b); };
   // Roll among the mechanical motion: a root that the tyre lags carry counts less.
@@ -447,7 +458,11 @@ void labelLateralModes(std::vector<Root>& roots, Capacity& cap, double zero) {
     Root* w = pickBest(roots, dampedBySteerDamper, moreDampedBySteerDamper);
     if (!w) w = pickBest(roots, wobbleCandidate, moreSteer);
     if (w) cap.take(*w, ModeLabel::Wobble);
-    Root* osc = pickBest(roots, weaveCandidate, moreMechanicalRoll);
+    // In a turn not a root the damper damps alike (the wobble coupled with the in-plane motion), where
+    // another lateral oscillation is left: the damper destabilises the high-speed weave.
+    Root* osc = pickBest(roots, [&](const Root& r) { return weaveCandidate(r) && !(inTurn && w && isCoupledWobble(r, *w)); },
+                         moreMechanicalRoll);
+    if (!osc) osc = pickBest(roots, weaveCandidate, moreMechanicalRoll);
     if (osc) cap.take(*osc, ModeLabel::Weave);
     // The wobble is the faster of the two: where the damper's root is the weave's frequency or less by
     // half (a bicycle's weave at walking pace, which a steer damper damps most), they change names.
@@ -461,12 +476,14 @@ void labelLateralModes(std::vector<Root>& roots, Capacity& cap, double zero) {
   // diverging (a tight turn's fall, as the diverging second real root above). Joined with the speed
   // root (a turn at a fixed roll ties the speed to the lean) the forward motion may lead it: a slow pair
   // with a lateral share of at least 0.2 is then a capsize too.
-  const Root* weave = nullptr;
-  for (const Root& r : roots)
+  const Root *weave = nullptr, *wobble = nullptr;
+  for (const Root& r : roots) {
     if (r.label == ModeLabel::Weave) weave = &r;
+    if (r.label == ModeLabel::Wobble) wobble = &r;
+  }
   if (!std::any_of(roots.begin(), roots.end(), [](const Root& r) { return r.label == ModeLabel::Capsize; }))
     if (Root* c = pickBest(roots, [&](const Root& r) {
-          return r.oscillatory && lateralOrWithSpeed(r) && rollLed(r) &&
+          return r.oscillatory && lateralOrWithSpeed(r) && rollLed(r) && !(inTurn && wobble && isCoupledWobble(r, *wobble)) &&
                  (!weave || std::abs(r.lambda) < 0.5 * std::abs(weave->lambda) || r.lambda.real() > 0);
         }, slower))
       cap.take(*c, ModeLabel::Capsize);
@@ -474,18 +491,16 @@ void labelLateralModes(std::vector<Root>& roots, Capacity& cap, double zero) {
 
 // In a turn the wobble couples with the in-plane motion (the roll tilts the steer motion into the plane
 // of the pitch and bounce): where their frequencies meet, oscillations share the steer, lateral and
-// in-plane motion, and a steering damper damps them alike. Those the damper damps at least a quarter
-// as fast as the wobble are wobbles too (beyond the label's one pair), whichever motion leads them.
-void labelCoupledWobble(std::vector<Root>& roots) {
+// in-plane motion, and a steering damper damps them alike. Those led by the lateral or in-plane motion
+// that the damper damps at least a quarter as fast as the wobble are wobbles too (beyond the label's
+// one pair). Only in a turn (`inTurn`): upright the lateral and in-plane motions do not couple.
+void labelCoupledWobble(std::vector<Root>& roots, bool inTurn) {
   const Root* wobble = nullptr;
   for (const Root& r : roots)
-    if (r.label == ModeLabel::Wobble && r.steerDamping && *r.steerDamping < 0) wobble = &r;
-  if (!wobble) return;
-  const double damping = kCoupledWobbleDamping * *wobble->steerDamping;
+    if (r.label == ModeLabel::Wobble) wobble = &r;
+  if (!inTurn || !wobble) return;
   for (Root& r : roots)
-    if (!r.label && r.oscillatory && r.auxiliary <= 0.5 && r.inPlane >= kCoupledWobbleInPlane &&
-        r.steer >= r.c.get(r.topCompliance) && r.steerDamping && *r.steerDamping <= damping)
-      r.label = ModeLabel::Wobble;
+    if (!r.label && isCoupledWobble(r, *wobble)) r.label = ModeLabel::Wobble;
 }
 
 // In-plane, compliance, auxiliary and longitudinal roots by their family, largest share first; a root
@@ -527,9 +542,10 @@ void labelOtherModes(std::vector<Root>& roots, Capacity& cap) {
     }
   }
   // What is left (e.g. a second lateral oscillation in a turn): the free label of its largest other
-  // share of at least 0.05 (in-plane, compliance, tyre lag); an oscillation the in-plane motion leads
-  // whose labels are all taken (in a turn overdamped in-plane roots and the pitch coupled with the
-  // wobble can outnumber them) keeps its own in-plane label, a second pair; else other.
+  // share of at least 0.05 (in-plane, compliance, tyre lag); a lateral or in-plane oscillation with an
+  // in-plane share of at least kInPlaneNamed whose labels are all taken (in a turn overdamped in-plane roots and oscillations
+  // coupling the lateral and in-plane motion can outnumber them) keeps its in-plane label, a second
+  // pair; else other.
   for (Root& r : roots) {
     if (r.label) continue;
     std::vector<std::pair<double, int>> shares{{r.inPlane, 0}, {r.compliance, 1}, {r.auxiliary, 2}};
@@ -540,7 +556,9 @@ void labelOtherModes(std::vector<Root>& roots, Capacity& cap) {
       if (kind == 1) cap.take(r, getComplianceLabel(r.topCompliance));
       if (kind == 2) cap.take(r, auxiliaryLabel(r));
     }
-    if (!r.label && r.oscillatory && findFamily(r) == Family::InPlane) r.label = inPlaneLabel(r);
+    const Family family = findFamily(r);
+    if (!r.label && r.oscillatory && (family == Family::InPlane || family == Family::Lateral) && r.inPlane >= kInPlaneNamed)
+      r.label = inPlaneLabel(r);
     cap.take(r, ModeLabel::Other);
   }
 }
@@ -553,11 +571,11 @@ std::vector<ModeLabel> labelModes(const LinearModel& lin) {
   const double zero = std::max(1e-6, 1e-9 * lin.A.cwiseAbs().rowwise().sum().maxCoeff());
   for (Root& r : roots)
     if (isNeutral(r, zero)) cap.take(r, ModeLabel::Neutral);
-  labelLateralModes(roots, cap, zero);
+  labelLateralModes(roots, cap, zero, lin.headingFrame);
   // A zero root the drift does not lead (its eigenvector mixed with a slow root's near a double root).
   for (Root& r : roots)
     if (std::abs(r.lambda) < zero) cap.take(r, ModeLabel::Neutral);
-  labelCoupledWobble(roots);
+  labelCoupledWobble(roots, lin.headingFrame);
   labelOtherModes(roots, cap);
   std::vector<ModeLabel> out(lin.eigenvalues.size(), ModeLabel::Other);
   for (const Root& r : roots) {
