@@ -350,21 +350,24 @@ constexpr double kInPlaneNamed = 0.25;
 // A wobble coupled with the in-plane motion: a steering damper damps it at least this fraction as fast
 // as the wobble (Re d lambda / d c).
 constexpr double kCoupledWobbleDamping = 0.25;
+// ... and its frequency at least this fraction of the wobble's (a 1 Hz bounce the damper damps is none).
+constexpr double kCoupledWobbleFrequency = 0.25;
+
+// Whether `r` is the wobble coupled with the in-plane motion in a turn beside `wobble` (the oscillation a
+// steering damper damps most): led by the lateral or in-plane motion, steer at least its largest
+// compliance role's share, at least kCoupledWobbleFrequency of the wobble's frequency, and
+// damped by the damper at least kCoupledWobbleDamping as fast.
+bool isCoupledWobble(const Root& r, const Root& wobble) {
+  const Family family = findFamily(r);
+  return r.oscillatory && (family == Family::Lateral || family == Family::InPlane) && r.steer >= r.c.get(r.topCompliance) &&
+         std::abs(r.lambda.imag()) >= kCoupledWobbleFrequency * std::abs(wobble.lambda.imag()) && wobble.steerDamping &&
+         *wobble.steerDamping < 0 && r.steerDamping && *r.steerDamping <= kCoupledWobbleDamping * *wobble.steerDamping;
+}
 
 // The lateral rigid-body modes (docs/methods.md): capsize (slowest roll-led real root), castor (most
 // negative steer-led real root), weave (of the lateral oscillations the one with the most roll, or the
 // pair of real roots it splits into at low speed), wobble (the oscillation with the most steer energy);
 // in a turn, a slow pair for a capsize joined with another root.
-// Whether `r` is the wobble coupled with the in-plane motion in a turn beside `wobble` (the oscillation a
-// steering damper damps most): led by the lateral or in-plane motion, steer at least its largest
-// compliance role's share, and damped by the damper at least kCoupledWobbleDamping as fast.
-bool isCoupledWobble(const Root& r, const Root& wobble) {
-  const Family family = findFamily(r);
-  return r.oscillatory && (family == Family::Lateral || family == Family::InPlane) && r.steer >= r.c.get(r.topCompliance) &&
-         wobble.steerDamping && *wobble.steerDamping < 0 && r.steerDamping &&
-         *r.steerDamping <= kCoupledWobbleDamping * *wobble.steerDamping;
-}
-
 void labelLateralModes(std::vector<Root>& roots, Capacity& cap, double zero, bool inTurn) {
   auto roll = [](const Root& r) { return r.c.get(StateRole::Roll); };
   auto moreRoll = [&](const Root& a, const Root& b) { return roll(a) > roll(b); };
@@ -458,17 +461,22 @@ void labelLateralModes(std::vector<Root>& roots, Capacity& cap, double zero, boo
     Root* w = pickBest(roots, dampedBySteerDamper, moreDampedBySteerDamper);
     if (!w) w = pickBest(roots, wobbleCandidate, moreSteer);
     if (w) cap.take(*w, ModeLabel::Wobble);
-    // In a turn not a root the damper damps alike (the wobble coupled with the in-plane motion), where
-    // another lateral oscillation is left: the damper destabilises the high-speed weave.
-    Root* osc = pickBest(roots, [&](const Root& r) { return weaveCandidate(r) && !(inTurn && w && isCoupledWobble(r, *w)); },
-                         moreMechanicalRoll);
-    if (!osc) osc = pickBest(roots, weaveCandidate, moreMechanicalRoll);
+    // In a turn preferably not a root the damper damps alike (the wobble coupled with the in-plane
+    // motion: the damper destabilises the high-speed weave); of such roots only, the one it damps least.
+    auto coupled = [&](const Root& r) { return inTurn && w && isCoupledWobble(r, *w); };
+    Root* osc = pickBest(roots, weaveCandidate, [&](const Root& a, const Root& b) {
+      if (coupled(a) != coupled(b)) return coupled(b);
+      return coupled(a) ? *a.steerDamping > *b.steerDamping : moreMechanicalRoll(a, b);
+    });
     if (osc) cap.take(*osc, ModeLabel::Weave);
     // The wobble is the faster of the two: where the damper's root is the weave's frequency or less by
     // half (a bicycle's weave at walking pace, which a steer damper damps most), they change names.
     if (w && osc && std::abs(w->lambda.imag()) < 0.5 * std::abs(osc->lambda.imag())) w->label = ModeLabel::Weave, osc->label = ModeLabel::Wobble;
   } else if (Root* osc = pickBest(roots, weaveCandidate, moreMechanicalRoll)) {
-    cap.take(*osc, ModeLabel::Weave);
+    // In a turn the weave may have joined the in-plane motion (led by the height): a lone candidate
+    // that the damper damps and that steers more than it rolls is then the wobble.
+    const bool wobbleLike = inTurn && osc->steerDamping && *osc->steerDamping < 0 && osc->steer > roll(*osc);
+    cap.take(*osc, wobbleLike ? ModeLabel::Wobble : ModeLabel::Weave);
   } else if (Root* w = pickBest(roots, [&](const Root& r) { return wobbleCandidate(r) && r.steer > roll(r); }, moreSteer)) {
     cap.take(*w, ModeLabel::Wobble);
   }
@@ -571,11 +579,12 @@ std::vector<ModeLabel> labelModes(const LinearModel& lin) {
   const double zero = std::max(1e-6, 1e-9 * lin.A.cwiseAbs().rowwise().sum().maxCoeff());
   for (Root& r : roots)
     if (isNeutral(r, zero)) cap.take(r, ModeLabel::Neutral);
-  labelLateralModes(roots, cap, zero, lin.headingFrame);
+  const bool inTurn = lin.headingFrame && lin.roll != 0;  // a turn, not straight running in the heading frame
+  labelLateralModes(roots, cap, zero, inTurn);
   // A zero root the drift does not lead (its eigenvector mixed with a slow root's near a double root).
   for (Root& r : roots)
     if (std::abs(r.lambda) < zero) cap.take(r, ModeLabel::Neutral);
-  labelCoupledWobble(roots, lin.headingFrame);
+  labelCoupledWobble(roots, inTurn);
   labelOtherModes(roots, cap);
   std::vector<ModeLabel> out(lin.eigenvalues.size(), ModeLabel::Other);
   for (const Root& r : roots) {
