@@ -551,9 +551,9 @@ void labelOtherModes(std::vector<Root>& roots, Capacity& cap) {
   }
   // What is left (e.g. a second lateral oscillation in a turn): the free label of its largest other
   // share of at least 0.05 (in-plane, compliance, tyre lag); a lateral or in-plane oscillation with an
-  // in-plane share of at least kInPlaneNamed whose labels are all taken (in a turn overdamped in-plane roots and oscillations
-  // coupling the lateral and in-plane motion can outnumber them) keeps its in-plane label, a second
-  // pair; else other.
+  // in-plane share of at least kInPlaneNamed whose labels are all taken (overdamped in-plane roots and,
+  // in a turn, oscillations coupling the lateral and in-plane motion can outnumber them) keeps its
+  // in-plane label, a second pair; else other.
   for (Root& r : roots) {
     if (r.label) continue;
     std::vector<std::pair<double, int>> shares{{r.inPlane, 0}, {r.compliance, 1}, {r.auxiliary, 2}};
