@@ -367,7 +367,8 @@ bool isCoupledWobble(const Root& r, const Root& wobble) {
 // The lateral rigid-body modes (docs/methods.md): capsize (slowest roll-led real root), castor (most
 // negative steer-led real root), weave (of the lateral oscillations the one with the most roll, or the
 // pair of real roots it splits into at low speed), wobble (the oscillation with the most steer energy);
-// in a turn, a slow pair for a capsize joined with another root.
+// in a turn, a slow pair for a capsize joined with another root, and the wobble coupled with the
+// in-plane motion (`inTurn`).
 void labelLateralModes(std::vector<Root>& roots, Capacity& cap, double zero, bool inTurn) {
   auto roll = [](const Root& r) { return r.c.get(StateRole::Roll); };
   auto moreRoll = [&](const Root& a, const Root& b) { return roll(a) > roll(b); };
@@ -495,20 +496,13 @@ void labelLateralModes(std::vector<Root>& roots, Capacity& cap, double zero, boo
                  (!weave || std::abs(r.lambda) < 0.5 * std::abs(weave->lambda) || r.lambda.real() > 0);
         }, slower))
       cap.take(*c, ModeLabel::Capsize);
-}
-
-// In a turn the wobble couples with the in-plane motion (the roll tilts the steer motion into the plane
-// of the pitch and bounce): where their frequencies meet, oscillations share the steer, lateral and
-// in-plane motion, and a steering damper damps them alike. Those led by the lateral or in-plane motion
-// that the damper damps at least a quarter as fast as the wobble are wobbles too (beyond the label's
-// one pair). Only in a turn (`inTurn`): upright the lateral and in-plane motions do not couple.
-void labelCoupledWobble(std::vector<Root>& roots, bool inTurn) {
-  const Root* wobble = nullptr;
-  for (const Root& r : roots)
-    if (r.label == ModeLabel::Wobble) wobble = &r;
-  if (!inTurn || !wobble) return;
-  for (Root& r : roots)
-    if (!r.label && isCoupledWobble(r, *wobble)) r.label = ModeLabel::Wobble;
+  // In a turn the wobble couples with the in-plane motion (the roll tilts the steer motion into the
+  // plane of the pitch and bounce): where their frequencies meet, oscillations share the steer, lateral
+  // and in-plane motion, and a steering damper damps them alike. Those isCoupledWobble accepts are
+  // wobbles too, beyond the label's one pair (upright the lateral and in-plane motions do not couple).
+  if (inTurn && wobble)
+    for (Root& r : roots)
+      if (!r.label && isCoupledWobble(r, *wobble)) r.label = ModeLabel::Wobble;
 }
 
 // In-plane, compliance, auxiliary and longitudinal roots by their family, largest share first; a root
@@ -584,7 +578,6 @@ std::vector<ModeLabel> labelModes(const LinearModel& lin) {
   // A zero root the drift does not lead (its eigenvector mixed with a slow root's near a double root).
   for (Root& r : roots)
     if (std::abs(r.lambda) < zero) cap.take(r, ModeLabel::Neutral);
-  labelCoupledWobble(roots, inTurn);
   labelOtherModes(roots, cap);
   std::vector<ModeLabel> out(lin.eigenvalues.size(), ModeLabel::Other);
   for (const Root& r : roots) {
